@@ -1,0 +1,35 @@
+"""Exceptions that carry a one-line, user-facing message.
+
+Every error that reaches the command line is a :class:`BallscanError`; the CLI
+prints its message on one line and exits non-zero, never a traceback.
+"""
+
+from __future__ import annotations
+
+
+class BallscanError(Exception):
+    """Base class: the message is a complete one-line explanation."""
+
+
+class CameraFileError(BallscanError, ValueError):
+    """A camera TOML file is missing, malformed or physically invalid."""
+
+    def __init__(self, source: str, problem: str, key: str | None = None):
+        where = f"{source}: key '{key}'" if key else f"{source}"
+        super().__init__(f"{where}: {problem}")
+        self.source = source
+        self.key = key
+        self.problem = problem
+
+
+class ImageFileError(BallscanError, ValueError):
+    """An image file cannot be used as a line-scan image."""
+
+    def __init__(self, source: str, problem: str):
+        super().__init__(f"{source}: {problem}")
+        self.source = source
+        self.problem = problem
+
+
+class GeometryError(BallscanError, ValueError):
+    """A geometric configuration the model cannot represent (e.g. camera inside the ball)."""
