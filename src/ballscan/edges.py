@@ -1,0 +1,368 @@
+"""Sub-pixel edge measurement on every scan line of a detected ball.
+
+For each line the profile is normalised, ``p_j = polarity (I_j - bg_j) / |contrast|``
+(about 0 outside the ball and about 1 inside it), and each of the two edges is
+located by a *local area* estimate:
+
+* a rough position ``k`` is the first (left) or last (right) pixel whose
+  ``p`` reaches a quarter of the line's peak;
+* the inner level ``L`` is taken *locally*, as the mean of ``p`` over the
+  ``n_level`` pixels just inside the edge window (the limb is shaded and the
+  felt/seam texture varies, so the ball's global contrast would bias the
+  edge by tenths of a pixel);
+* the edge is the uncovered length of a window ``[a, b]`` of pixels
+  straddling the transition, ``e_left = a - 1/2 + sum_j (1 - p_j / L)`` and
+  ``e_right = b + 1/2 - sum_j (1 - p_j / L)``.
+
+For a box pixel (pixel ``j`` spans ``[j - 1/2, j + 1/2]``) the summed partial
+coverage of the window is exact whatever the sub-pixel position, so the
+estimate has no "pixel-locking" bias, and it recovers the *mean* edge over the
+pixel's height and the exposure, which is exactly what
+:func:`ballscan.silhouette.silhouette` (``model="averaged"``) predicts.  Its
+standard deviation is the pixel noise propagated linearly through the
+estimator (window pixels with weight ``1/L``, level pixels with weight
+``S/L^2/n_level``, ``S`` the window's sum).
+
+On the first and last lines of a ball the segment is short and faint (the
+ball is present during part of the exposure / part of the pixel's height):
+there the edges are marked unusable and the line's summed coverage
+``area_px = sum_j p_j`` (pixels) and its centroid are what the fit uses; they
+are provided on every line.
+
+Edges are never dropped silently: an edge whose window reaches the sensor's
+first or last pixel, contains a saturated pixel, meets another ball's region
+or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+import numpy as np
+
+__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "measure_detection"]
+
+
+@dataclass(frozen=True)
+class EdgeSettings:
+    """Tuning of the local area edge estimator (pixels).
+
+    Attributes
+    ----------
+    n_out : int
+        Window pixels outside the rough edge pixel (besides the one next to
+        it); they absorb edges spread over the exposure.
+    n_in : int
+        Window pixels inside the rough edge pixel.
+    n_level : int
+        Pixels just inside the window averaged for the local inner level.
+    find_fraction : float
+        Fraction of the line's peak that locates the rough edge pixel.
+    margin_lines : int
+        Lines measured before and after the detected region (their area,
+        about 0, tells the fit where the ball is *not*).
+    pad_px : int
+        Columns added on both sides of the region's box.
+    min_snr : float
+        A line's peak must exceed this many noise sigmas to carry edges.
+    """
+
+    n_out: int = 1
+    n_in: int = 0
+    n_level: int = 2
+    find_fraction: float = 0.25
+    margin_lines: int = 2
+    pad_px: int = 5
+    min_snr: float = 6.0
+
+
+@dataclass(frozen=True)
+class EdgeMeasurements:
+    """Per-line edge and area measurements of one ball.
+
+    All arrays have one entry per measured line (the detected region plus
+    ``margin_lines`` lines on each side, clipped to the image).
+
+    Attributes
+    ----------
+    lines : ndarray of int
+        Image line (row) indices.
+    t_s : ndarray
+        Centre time of each line, seconds.
+    left_px, right_px : ndarray
+        Mean edge positions over the pixel's height and the exposure, pixels
+        (``u = j`` at the centre of pixel ``j``); NaN where not measured.
+    left_sigma_px, right_sigma_px : ndarray
+        1-sigma of the edges from the pixel noise, pixels.
+    left_ok, right_ok : ndarray of bool
+        Whether each edge is usable (see the module docstring).
+    area_px : ndarray
+        Summed normalised profile of the line (the ball's expected summed
+        pixel coverage times its relative brightness), pixels.
+    area_sigma_px : ndarray
+        1-sigma of ``area_px`` from the pixel noise, pixels.
+    centroid_px : ndarray
+        ``sum(j p_j) / sum(p_j)`` over the summed columns, pixels; NaN where
+        the area is not significant.
+    level : ndarray
+        Local inner level (mean of left and right levels, normalised units),
+        NaN where no edge was measured.
+    peak : ndarray
+        Peak of the normalised profile on each line.
+    end_line : ndarray of bool
+        Lines with signal but no usable edge pair (short, faint segments at
+        the ball's ends): the fit uses their area.
+    polarity : int
+        +1 for a ball brighter than the background, -1 for darker.
+    contrast_dn : float
+        ``|ball - background|`` used for the normalisation, DN.
+    flags : tuple of str
+        geometry.md flag words that apply (``cut_sensor_end``,
+        ``saturated``, ``overlap``).
+    """
+
+    lines: np.ndarray
+    t_s: np.ndarray
+    left_px: np.ndarray
+    right_px: np.ndarray
+    left_sigma_px: np.ndarray
+    right_sigma_px: np.ndarray
+    left_ok: np.ndarray
+    right_ok: np.ndarray
+    area_px: np.ndarray
+    area_sigma_px: np.ndarray
+    centroid_px: np.ndarray
+    level: np.ndarray
+    peak: np.ndarray
+    end_line: np.ndarray
+    polarity: int = 1
+    contrast_dn: float = 1.0
+    flags: tuple[str, ...] = ()
+
+    @property
+    def n_edges(self) -> int:
+        """Number of usable edges."""
+        return int(self.left_ok.sum() + self.right_ok.sum())
+
+    @property
+    def signal(self) -> np.ndarray:
+        """Lines whose peak shows the ball (edges measured or end line)."""
+        return (self.left_ok | self.right_ok) | self.end_line
+
+
+def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
+    """Broadcast a scalar, per-column (W,) or per-pixel (n_lines, W) array to (n_lines, W)."""
+    a = np.asarray(value, dtype=float)
+    if a.ndim == 0 or a.shape == (width,) or a.shape == (n_lines, width) or a.shape == (1, width):
+        return np.broadcast_to(a, (n_lines, width))
+    raise ValueError(f"{name}: expected a scalar, ({width},) or ({n_lines}, {width}) array, got shape {a.shape}")
+
+
+def _region_pixels(region: Any, n_lines: int, width: int) -> np.ndarray:
+    """Boolean full-image mask of a region (its mask box, or its whole box)."""
+    out = np.zeros((n_lines, width), dtype=bool)
+    l0, l1, c0, c1 = int(region.line_start), int(region.line_stop), int(region.col_start), int(region.col_stop)
+    mask = getattr(region, "mask", None)
+    if mask is None:
+        out[l0:l1, c0:c1] = True
+    else:
+        m = np.asarray(mask, dtype=bool)
+        out[l0 : l0 + m.shape[0], c0 : c0 + m.shape[1]] = m
+    return out
+
+
+def measure_edges(
+    data: np.ndarray,
+    region: Any,
+    background_dn: Any,
+    noise_dn: Any,
+    t_lines_s: np.ndarray,
+    *,
+    saturation_dn: float | None = None,
+    others: Sequence[Any] = (),
+    settings: EdgeSettings = EdgeSettings(),
+) -> EdgeMeasurements:
+    """Measure both edges and the summed coverage on every line of one ball.
+
+    Parameters
+    ----------
+    data : ndarray, shape (n_lines, W)
+        The image in DN as stored (:attr:`ballscan.images.LineImage.data`).
+    region : BallRegion-like
+        Any object with ``line_start, line_stop`` (exclusive), ``col_start,
+        col_stop`` (exclusive), ``polarity`` (+1/-1), ``contrast_dn`` and
+        optionally ``mask`` (bool box), e.g.
+        :class:`ballscan.detection.BallRegion`.
+    background_dn : float or ndarray
+        Background level, DN: scalar, per column ``(W,)`` or per pixel.
+    noise_dn : float or ndarray
+        Pixel noise 1-sigma, DN: scalar, per column or per pixel.
+    t_lines_s : ndarray, shape (n_lines,)
+        Centre time of each image line, seconds.
+    saturation_dn : float, optional
+        Pixels at or above it are clipped (their edges are unusable).
+    others : sequence of BallRegion-like
+        The other balls' regions: edges whose window meets one are unusable.
+    settings : EdgeSettings
+
+    Returns
+    -------
+    EdgeMeasurements
+    """
+    data = np.asarray(data, dtype=float)
+    if data.ndim != 2:
+        raise ValueError(f"data: expected a 2-D (n_lines, W) array, got shape {data.shape}")
+    n_img, W = data.shape
+    t_lines_s = np.asarray(t_lines_s, dtype=float)
+    if t_lines_s.shape != (n_img,):
+        raise ValueError(f"t_lines_s: expected {n_img} times, got shape {t_lines_s.shape}")
+    contrast = abs(float(region.contrast_dn))
+    if not np.isfinite(contrast) or contrast <= 0:
+        raise ValueError(f"region.contrast_dn: must be non-zero and finite, got {region.contrast_dn!r}")
+    pol = 1 if float(region.polarity) >= 0 else -1
+    s = settings
+
+    l0 = max(int(region.line_start) - s.margin_lines, 0)
+    l1 = min(int(region.line_stop) + s.margin_lines, n_img)
+    c0 = max(int(region.col_start) - s.pad_px, 0)
+    c1 = min(int(region.col_stop) + s.pad_px, W)
+    if l1 <= l0 or c1 <= c0:
+        raise ValueError("region: empty line or column range")
+    lines = np.arange(l0, l1)
+    cols = np.arange(c0, c1)
+    n, w = lines.size, cols.size
+
+    bg = _as_columns(background_dn, n_img, W, "background_dn")[l0:l1, c0:c1]
+    sd = _as_columns(noise_dn, n_img, W, "noise_dn")[l0:l1, c0:c1]
+    raw = data[l0:l1, c0:c1]
+    p = pol * (raw - bg) / contrast
+    sp = np.maximum(sd, 1e-12) / contrast  # noise of p, normalised units
+    sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
+    other = np.zeros((n, w), dtype=bool)
+    for o in others:
+        om = _region_pixels(o, n_img, W)[l0:l1, c0:c1]
+        # one pixel of dilation along the line: a neighbour's blur reaches it
+        other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
+
+    rows = np.arange(n)[:, None]
+    peak = p.max(axis=1)
+    noise_row = np.median(sp, axis=1)
+    has_signal = peak > s.min_snr * noise_row
+    above = p >= s.find_fraction * peak[:, None]
+    k_left = np.argmax(above, axis=1)
+    k_right = w - 1 - np.argmax(above[:, ::-1], axis=1)
+
+    def one_side(k: np.ndarray, sign: int):
+        # window and level pixel offsets relative to k, pointing inwards with `sign`
+        win_off = np.arange(-(s.n_out + 1), s.n_in + 1) * sign
+        lev_off = (s.n_in + 1 + np.arange(s.n_level)) * sign
+        win = k[:, None] + win_off[None, :]
+        lev = k[:, None] + lev_off[None, :]
+        inside_box = (win.min(1) >= 0) & (win.max(1) < w) & (lev.min(1) >= 0) & (lev.max(1) < w)
+        winc = np.clip(win, 0, w - 1)
+        levc = np.clip(lev, 0, w - 1)
+        pw, pl = p[rows, winc], p[rows, levc]
+        sw, sl = sp[rows, winc], sp[rows, levc]
+        L = pl.mean(axis=1)
+        S = pw.sum(axis=1)
+        Ls = np.where(L > 0, L, 1.0)
+        n_win = win_off.size
+        uncovered = n_win - S / Ls
+        # left: the window starts at its outermost pixel a; right: ends at b
+        e = np.where(sign > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
+        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * (sl**2).sum(axis=1) / s.n_level**2
+        sig = np.sqrt(var)
+        lo = np.minimum(win.min(1), lev.min(1))
+        hi = np.maximum(win.max(1), lev.max(1))
+        abs_lo, abs_hi = lo + c0, hi + c0
+        at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
+        allidx = np.concatenate([winc, levc], axis=1)
+        saturated = sat[rows, allidx].any(axis=1)
+        overlapping = other[rows, allidx].any(axis=1)
+        plausible = (L > 3.0 * np.sqrt((sl**2).sum(axis=1)) / s.n_level) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
+        ok = has_signal & plausible & ~at_sensor_end & ~saturated & ~overlapping
+        return e + c0, sig, ok, L, at_sensor_end & has_signal, saturated & has_signal, overlapping & has_signal
+
+    eL, sL, okL, LL, endL, satL, ovL = one_side(k_left, +1)
+    eR, sR, okR, LR, endR, satR, ovR = one_side(k_right, -1)
+    # both windows and level runs must fit in the segment without crossing
+    span_needed = 2 * (s.n_in + s.n_level) + 1
+    long_enough = (k_right - k_left) >= span_needed
+    okL &= long_enough
+    okR &= long_enough
+
+    # summed coverage: over the segment +- 3 px where the ball is seen, else the whole box
+    jj = np.arange(w)[None, :]
+    lo_c = np.where(has_signal, k_left - 3, 0)[:, None]
+    hi_c = np.where(has_signal, k_right + 3, w - 1)[:, None]
+    sel = (jj >= lo_c) & (jj <= hi_c)
+    area = np.where(sel, p, 0.0).sum(axis=1)
+    area_sig = np.sqrt(np.where(sel, sp**2, 0.0).sum(axis=1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        centroid = np.where(sel, p * (jj + c0), 0.0).sum(axis=1) / area
+    centroid = np.where(area > 3.0 * area_sig, centroid, np.nan)
+
+    level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
+    # faint/short lines whose area is clean: the fit uses their area instead of edges
+    spoiled = endL | endR | satL | satR | ovL | ovR
+    end_line = has_signal & ~(okL & okR) & ~spoiled
+
+    flags = []
+    if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or c1 == W and np.any(has_signal & (k_right >= w - 1)):
+        flags.append("cut_sensor_end")
+    if np.any(satL | satR) or np.any(sat & (p > 0.5)):
+        flags.append("saturated")
+    if np.any(other & (p > 0.5)) or np.any(ovL | ovR):
+        flags.append("overlap")
+
+    return EdgeMeasurements(
+        lines=lines,
+        t_s=t_lines_s[lines],
+        left_px=np.where(has_signal, eL, np.nan),
+        right_px=np.where(has_signal, eR, np.nan),
+        left_sigma_px=np.where(has_signal, sL, np.nan),
+        right_sigma_px=np.where(has_signal, sR, np.nan),
+        left_ok=okL,
+        right_ok=okR,
+        area_px=area,
+        area_sigma_px=area_sig,
+        centroid_px=centroid,
+        level=level,
+        peak=peak,
+        end_line=end_line,
+        polarity=pol,
+        contrast_dn=contrast,
+        flags=tuple(flags),
+    )
+
+
+def measure_detection(image: Any, detection: Any, t_lines_s: np.ndarray, settings: EdgeSettings = EdgeSettings()) -> tuple[EdgeMeasurements, ...]:
+    """:func:`measure_edges` for every region of a detection.
+
+    Parameters
+    ----------
+    image : LineImage
+        ``data`` (DN) and ``saturation_dn``.
+    detection : Detection
+        ``background_dn``, ``noise_dn`` and ``regions``.
+    t_lines_s : ndarray
+        Centre time of each image line, seconds.
+    """
+    regions = tuple(detection.regions)
+    out = []
+    for r in regions:
+        others = [o for o in regions if o is not r]
+        out.append(
+            measure_edges(
+                image.data,
+                r,
+                detection.background_dn,
+                detection.noise_dn,
+                t_lines_s,
+                saturation_dn=getattr(image, "saturation_dn", None),
+                others=others,
+                settings=settings,
+            )
+        )
+    return tuple(out)

@@ -1,0 +1,692 @@
+"""Weighted nonlinear least-squares fit of the ball's motion to measured edges.
+
+The model is the averaged silhouette of :mod:`ballscan.silhouette` (the
+paper's dynamic sphere, first Eq. (8), projected by Eq. (2), averaged over the
+pixel's height and the exposure).  It is fitted over the six parameters
+``theta = (t_c, y0, z0, vx, vy, vz)`` (:data:`ballscan.motion.PARAM_NAMES`)
+and, optionally, a symmetric edge bias ``b`` (pixels, a "dilation": left
+edges move by ``-b``, right edges by ``+b``) that absorbs the inward bias of
+edges on shaded limbs.
+
+Residuals (all whitened by their 1-sigma):
+
+* edge lines: ``left_model - b - left_meas`` and ``right_model + b -
+  right_meas`` where the edge is usable and the model's edge spread over the
+  exposure/pixel height is small enough for the local area estimate
+  (:mod:`ballscan.edges`) to capture it;
+* area lines (short, faint end lines and the lines just outside the ball):
+  ``area_model - area_meas``, so that lines where the model says "absent"
+  but the data shows ball (and vice versa) produce residuals.
+
+The fit uses :func:`scipy.optimize.least_squares` (trust-region reflective)
+with a ``soft_l1`` loss of scale 3 sigma (texture outliers), ``x_scale`` set
+to the parameters' natural sizes, and a Jacobian by forward differences of a
+vectorised copy of the averaged model (all perturbed parameter sets are
+evaluated in one numpy call; :func:`model_jacobian` is tested against
+central differences of :func:`ballscan.silhouette.silhouette`).
+
+Covariance
+----------
+``cov = (J^T J)^-1 * max(1, chi2_red)`` with ``J`` the Jacobian of the
+whitened residuals at the solution (scipy's loss-modified Jacobian).  Scaling
+by the reduced chi-square only when it exceeds 1 means that the reported
+sigmas are never smaller than what the stated pixel noise implies, and grow
+when the residuals show unmodelled errors (texture, shading): a metrology
+user gets an honest (if sometimes conservative) number.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from .camera import LineScanCamera
+from .edges import EdgeMeasurements
+from .motion import PARAM_NAMES, BallMotion
+from .silhouette import _gauss
+
+__all__ = [
+    "FitResult",
+    "FitSettings",
+    "MotionUncertainty",
+    "ModelEdges",
+    "averaged_model",
+    "model_jacobian",
+    "param_scale",
+    "fit_motion",
+    "propagate",
+    "synthetic_edges",
+]
+
+_DILATION = "edge_bias_px"
+
+
+# ------------------------------------------------------------------- model
+
+
+@dataclass(frozen=True)
+class ModelEdges:
+    """Averaged-silhouette predictions for P parameter sets and N lines.
+
+    Attributes
+    ----------
+    left_px, right_px : ndarray (P, N)
+        Mean edges over the present samples, pixels; where the ball is absent
+        both equal the projection of the centre (so that the model is
+        continuous as a line's presence goes to 0).
+    presence : ndarray (P, N)
+        Fraction of (exposure x pixel height) samples in which the ball is seen.
+    area_px : ndarray (P, N)
+        Expected summed pixel coverage, pixels.
+    spread_px : ndarray (P, N)
+        Weighted standard deviation of the sample edges about their mean
+        (the larger of left and right), pixels.
+    valid : ndarray (P, N) of bool
+        False where an edge ray would point backwards / the camera is inside.
+    samples : tuple or None
+        ``(u_lo, u_hi, weight)`` per sample, each (P, N, 3, n), when asked for.
+    """
+
+    left_px: np.ndarray
+    right_px: np.ndarray
+    presence: np.ndarray
+    area_px: np.ndarray
+    spread_px: np.ndarray
+    valid: np.ndarray
+    samples: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+
+
+def averaged_model(
+    camera: LineScanCamera,
+    thetas: np.ndarray,
+    radius_m: float,
+    t_lines_s: np.ndarray,
+    acceleration_mps2=(0.0, 0.0, 0.0),
+    n_nodes: int = 4,
+    return_samples: bool = False,
+) -> ModelEdges:
+    """Vectorised averaged silhouette for several parameter sets at once.
+
+    Same mathematics as :func:`ballscan.silhouette.silhouette` with
+    ``model="averaged"`` (see its Notes), broadcast over a leading axis of
+    parameter sets ``thetas`` of shape (P, 6) in :data:`PARAM_NAMES` order
+    (seconds, metres, m/s).  ``n_nodes = 4`` Gauss-Legendre nodes per piece
+    agree with 32 nodes to 1e-8 px on a tennis serve.
+    """
+    th = np.atleast_2d(np.asarray(thetas, dtype=float))
+    t_all = np.asarray(t_lines_s, dtype=float).reshape(-1)
+    if n_nodes <= 2 or return_samples:
+        return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes, return_samples)
+    # Lines well inside the ball's crossing (|x0| + A + B < 0.9 R for the first
+    # parameter set) have smooth edges in the quadrature variable: 2 nodes per
+    # piece are exact to 2e-6 px there; the end lines get n_nodes.
+    m0 = BallMotion.from_params(th[0], float(radius_m), acceleration_mps2)
+    c = m0.centre(t_all)
+    vx = np.abs(m0.velocity_at(t_all)[:, 0])
+    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) / (2 * camera.focal_px)
+    inner = reach < 0.9 * float(radius_m)
+    if not inner.any() or inner.all():
+        return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes if not inner.all() else 2, False)
+    a = _model_core(camera, th, float(radius_m), t_all[inner], acceleration_mps2, 2, False)
+    b = _model_core(camera, th, float(radius_m), t_all[~inner], acceleration_mps2, n_nodes, False)
+    out = {}
+    for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid"):
+        va, vb = getattr(a, k), getattr(b, k)
+        arr = np.empty((th.shape[0], t_all.size), dtype=va.dtype)
+        arr[:, inner] = va
+        arr[:, ~inner] = vb
+        out[k] = arr
+    return ModelEdges(**out)
+
+
+def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples) -> ModelEdges:
+    t = t_all.reshape(1, -1)
+    acc = np.asarray(acceleration_mps2, dtype=float)
+    has_acc = bool(np.any(acc))
+    tc = th[:, 0:1]
+    p0 = np.stack([np.zeros_like(th[:, 1]), th[:, 1], th[:, 2]], axis=-1)  # (P, 3)
+    vel = th[:, 3:6]  # (P, 3)
+
+    def centre(dt: np.ndarray, k: int) -> np.ndarray:
+        # component k of C(t) for dt of shape (P, ...) broadcast with (P,) params
+        extra = (1,) * (dt.ndim - 1)
+        c = p0[:, k].reshape(-1, *extra) + vel[:, k].reshape(-1, *extra) * dt
+        if has_acc:
+            c = c + 0.5 * acc[k] * dt * dt
+        return c
+
+    dt0 = t - tc  # (P, N)
+    x0 = centre(dt0, 0)
+    z_line = centre(dt0, 2)
+    a1 = vel[:, 0:1] + acc[0] * dt0
+    A = np.abs(a1) * camera.exposure / 2.0
+    B = np.where(z_line > 0, z_line / (2.0 * camera.focal_px), 0.0)
+    kinks = np.stack([x0 - A - B, x0 - np.abs(A - B), x0 + np.abs(A - B), x0 + A + B], axis=-1)
+    theta_e = np.arcsin(np.clip(kinks, -R, R) / R)  # (P, N, 4)
+    g, gw = _gauss(n_nodes)
+    th_a = theta_e[..., :-1, None]
+    half = (theta_e[..., 1:, None] - th_a) / 2.0
+    ang = th_a + half * (1.0 + g)  # (P, N, 3, n)
+    sin_a, cos_a = np.sin(ang), np.cos(ang)
+    d = R * sin_a
+    jac = R * cos_a * half * gw
+    x0b, Ab, Bb = x0[..., None, None], A[..., None, None], B[..., None, None]
+    width_total = 2.0 * (Ab + Bb)
+    plateau = 1.0 / np.maximum(2.0 * np.maximum(Ab, Bb), 1e-300)
+    dist = np.abs(d - x0b)
+    ramp = np.maximum(width_total / 2.0 - dist, 0.0) / np.maximum(4.0 * Ab * Bb, 1e-300)
+    dens = np.where(dist > np.abs(Ab - Bb), ramp, plateau)
+    dens = np.where(width_total > 0, dens, 0.0)
+    wgt = dens * jac
+    u_mean = 0.5 * (np.maximum(-Ab, d - x0b - Bb) + np.minimum(Ab, d - x0b + Bb))
+    a1b = a1[..., None, None]
+    dts = np.where(a1b != 0, u_mean / np.where(a1b == 0, 1.0, a1b), 0.0) + dt0[..., None, None]
+    xc, yc, zc = centre(dts, 0), centre(dts, 1), centre(dts, 2)
+    s = (xc - d) / np.where(zc > 0, zc, 1.0)
+    w = zc + s * xc
+    rho = R * cos_a
+    den = w * w - rho * rho
+    disc = yc * yc + den
+    ok = (w > rho) & (disc > 0)
+    root = np.sqrt(np.where(ok, disc, 1.0))
+    den_s = np.where(ok, den, 1.0)
+    n_lo = np.where(ok, (yc * w - rho * root) / den_s, 0.0)
+    n_hi = np.where(ok, (yc * w + rho * root) / den_s, 0.0)
+    u_lo = camera.project_normalised(n_lo)
+    u_hi = camera.project_normalised(n_hi)
+    wgt_ok = np.where(ok, wgt, 0.0)
+    mass = wgt_ok.sum(axis=(-2, -1))
+    m = np.where(mass > 0, mass, 1.0)
+    left = (wgt_ok * u_lo).sum(axis=(-2, -1)) / m
+    right = (wgt_ok * u_hi).sum(axis=(-2, -1)) / m
+    area = (wgt_ok * (u_hi - u_lo)).sum(axis=(-2, -1))
+    var_l = (wgt_ok * (u_lo - left[..., None, None]) ** 2).sum(axis=(-2, -1)) / m
+    var_r = (wgt_ok * (u_hi - right[..., None, None]) ** 2).sum(axis=(-2, -1)) / m
+    # absent lines: both edges at the centre's projection (the limit of a vanishing cap)
+    zl = np.where(z_line > 0, z_line, 1.0)
+    u_c = camera.project_normalised(centre(dt0, 1) / zl)
+    present = mass > 0
+    valid = ~np.any((~ok) & (wgt > 0), axis=(-2, -1)) & (z_line > 0)
+    return ModelEdges(
+        left_px=np.where(present, left, u_c),
+        right_px=np.where(present, right, u_c),
+        presence=np.clip(mass, 0.0, 1.0),
+        area_px=area,
+        spread_px=np.sqrt(np.maximum(var_l, var_r)),
+        valid=valid,
+        samples=(u_lo, u_hi, wgt_ok) if return_samples else None,
+    )
+
+
+def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
+    """Natural sizes of ``(t_c, y0, z0, vx, vy, vz)``: one line period, one
+    pixel's footprint at the ball (metres), and 0.1 % of the speed (m/s)."""
+    z = max(abs(motion.position_m[2]), 1e-3)
+    v = max(motion.speed_mps, 1e-6)
+    px_m = z / camera.focal_px
+    return np.array([1.0 / camera.line_rate_hz, px_m, px_m, 1e-3 * v, 1e-3 * v, 1e-3 * v])
+
+
+def model_jacobian(
+    camera: LineScanCamera,
+    theta: np.ndarray,
+    radius_m: float,
+    t_lines_s: np.ndarray,
+    scale: np.ndarray,
+    acceleration_mps2=(0.0, 0.0, 0.0),
+    rel_step: float = 1e-3,
+    n_nodes: int = 4,
+) -> tuple[ModelEdges, np.ndarray, np.ndarray, np.ndarray]:
+    """Model and its Jacobian (left, right, area with respect to theta).
+
+    Forward differences with steps ``rel_step * scale`` evaluated in one
+    vectorised call.  Returns ``(model, d_left, d_right, d_area)`` with the
+    derivatives of shape (N, 6), in pixels per parameter unit.
+    """
+    theta = np.asarray(theta, dtype=float)
+    h = rel_step * np.asarray(scale, dtype=float)
+    thetas = np.vstack([theta, theta + np.diag(h)])
+    me = averaged_model(camera, thetas, radius_m, t_lines_s, acceleration_mps2, n_nodes)
+    dl = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
+    dr = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
+    da = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
+    base = ModelEdges(
+        me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0], None
+    )
+    return base, dl, dr, da
+
+
+# ------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True)
+class FitSettings:
+    """Choices of :func:`fit_motion`.
+
+    Attributes
+    ----------
+    fit_edge_bias : bool
+        Fit the symmetric edge bias ``b`` (pixels) as a nuisance parameter.
+    max_spread_px : float
+        Edges are used only where the model's edge spread over the exposure
+        and pixel height is below this (pixels); wider transitions escape the
+        local area window and those lines contribute their area instead.
+    edge_floor_px : float
+        Added in quadrature to each edge sigma (texture, model), pixels.
+    area_rel_sigma : float
+        Relative systematic 1-sigma of an end line's area (its brightness is
+        not the ball's mean brightness), added in quadrature.
+    loss, f_scale : str, float
+        Robust loss of :func:`scipy.optimize.least_squares` and its scale in
+        sigmas.
+    min_edge_lines : int
+        Fewer lines with both edges usable make the fit degenerate.
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+    max_nfev : int
+    """
+
+    fit_edge_bias: bool = True
+    max_spread_px: float = 0.3
+    edge_floor_px: float = 0.01
+    area_rel_sigma: float = 0.15
+    loss: str = "soft_l1"
+    f_scale: float = 3.0
+    min_edge_lines: int = 5
+    n_nodes: int = 4
+    max_nfev: int = 50
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """Outcome of :func:`fit_motion`.
+
+    Attributes
+    ----------
+    motion : BallMotion
+        The fitted motion (camera frame; ``V.x >= 0`` unless the camera
+        states the crossing direction).
+    covariance : ndarray (6, 6)
+        Covariance of ``(t_c, y0, z0, vx, vy, vz)`` (s, m, m/s), scaled by
+        ``max(1, chi2_red)`` (module docstring); NaN rows/columns for
+        undetermined parameters.
+    chi2_red : float
+        Robust cost ``2 * cost / (m - p)`` (equal to the reduced chi-square
+        when no residual exceeds the loss scale).
+    residual_rms_px : float
+        RMS of the edge residuals, pixels.
+    n_iterations : int
+        Function evaluations of the optimiser.
+    status : int
+    message : str
+    converged : bool
+    undetermined : tuple of str
+        Parameter names (``PARAM_NAMES``) that the data cannot determine.
+    edge_bias_px : float
+        Fitted symmetric edge bias (0 when not fitted).
+    edge_bias_sigma_px : float
+    n_edges, n_area_lines : int
+        Residuals used.
+    run_time_s : float
+        Wall time of the fit.
+    """
+
+    motion: BallMotion
+    covariance: np.ndarray
+    chi2_red: float
+    residual_rms_px: float
+    n_iterations: int
+    status: int
+    message: str
+    converged: bool
+    undetermined: tuple[str, ...] = ()
+    edge_bias_px: float = 0.0
+    edge_bias_sigma_px: float = 0.0
+    n_edges: int = 0
+    n_area_lines: int = 0
+    run_time_s: float = 0.0
+    flags: tuple[str, ...] = field(default=())
+
+    @property
+    def sigmas(self) -> np.ndarray:
+        """1-sigma of the six parameters (s, m, m, m/s, m/s, m/s)."""
+        return np.sqrt(np.diag(self.covariance))
+
+    @property
+    def degenerate(self) -> bool:
+        return bool(self.undetermined)
+
+
+# ------------------------------------------------------------------- the fit
+
+
+def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
+    """Which lines give edge residuals and which give area residuals."""
+    narrow = (me.spread_px <= settings.max_spread_px) & (me.presence > 0.999) & me.valid
+    use_l = edges.left_ok & narrow & np.isfinite(edges.left_px)
+    use_r = edges.right_ok & narrow & np.isfinite(edges.right_px)
+    # area lines: no usable edge pair, and the line's area is not spoiled
+    # (edges.end_line), or no signal at all (lines around the ball)
+    no_signal = ~edges.signal & ~(edges.left_ok | edges.right_ok)
+    use_a = ~(use_l & use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
+    return use_l, use_r, use_a
+
+
+def fit_motion(
+    camera: LineScanCamera,
+    edges: EdgeMeasurements,
+    initial: BallMotion,
+    settings: FitSettings = FitSettings(),
+) -> FitResult:
+    """Fit the averaged-silhouette model to one ball's edge measurements.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    edges : EdgeMeasurements
+        From :func:`ballscan.edges.measure_edges` (or :func:`synthetic_edges`).
+    initial : BallMotion
+        Starting point (e.g. the paper's key-point guess); its radius and
+        known acceleration are kept fixed.
+    settings : FitSettings
+
+    Returns
+    -------
+    FitResult
+        Never raises for a degenerate geometry: ``undetermined`` names the
+        parameters the image cannot determine and ``converged`` is False when
+        the optimiser did not converge.
+    """
+    t0 = time.perf_counter()
+    R = initial.radius_m
+    acc = initial.acceleration_mps2
+    nn = settings.n_nodes
+    t = edges.t_s
+    theta0 = initial.to_params()
+    scale = param_scale(camera, initial)
+    me0 = averaged_model(camera, theta0[None], R, t, acc, nn)
+    me0 = ModelEdges(*(getattr(me0, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
+    use_l, use_r, use_a = _select(edges, me0, settings)
+    n_edge_lines = int((use_l & use_r).sum())
+    floor2 = settings.edge_floor_px**2
+    sl = np.sqrt(np.nan_to_num(edges.left_sigma_px[use_l]) ** 2 + floor2)
+    sr = np.sqrt(np.nan_to_num(edges.right_sigma_px[use_r]) ** 2 + floor2)
+    ml, mr = edges.left_px[use_l], edges.right_px[use_r]
+    ma = edges.area_px[use_a]
+    sa = np.sqrt(edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + 0.01)
+    fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
+    n_par = 6 + int(fit_b)
+    x_scale = np.concatenate([scale, [0.05]]) if fit_b else scale
+
+    def unpack(x):
+        return x[:6], (x[6] if fit_b else 0.0)
+
+    def resid_and_jac(x):
+        th, b = unpack(x)
+        me, dl, dr, da = model_jacobian(camera, th, R, t, scale, acc, n_nodes=nn)
+        r = np.concatenate(
+            [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa]
+        )
+        J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
+        if fit_b:
+            jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size)])
+            J = np.hstack([J, jb[:, None]])
+        return r, J
+
+    cache: dict = {}
+
+    def fun(x):
+        key = x.tobytes()
+        if key not in cache:
+            cache.clear()
+            cache[key] = resid_and_jac(x)
+        return cache[key][0]
+
+    def jac(x):
+        key = x.tobytes()
+        if key not in cache:
+            cache.clear()
+            cache[key] = resid_and_jac(x)
+        return cache[key][1]
+
+    x0 = np.concatenate([theta0, [0.0]]) if fit_b else theta0
+    m_res = int(use_l.sum() + use_r.sum() + use_a.sum())
+    if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
+        cov = np.full((6, 6), np.nan)
+        return FitResult(
+            motion=initial,
+            covariance=cov,
+            chi2_red=math.nan,
+            residual_rms_px=math.nan,
+            n_iterations=0,
+            status=-10,
+            message=f"too few usable edge lines ({n_edge_lines} < {settings.min_edge_lines})",
+            converged=False,
+            undetermined=PARAM_NAMES,
+            n_edges=int(use_l.sum() + use_r.sum()),
+            n_area_lines=int(use_a.sum()),
+            run_time_s=time.perf_counter() - t0,
+            flags=("degenerate",),
+        )
+    res = least_squares(
+        fun,
+        x0,
+        jac=jac,
+        x_scale=x_scale,
+        loss=settings.loss,
+        f_scale=settings.f_scale,
+        method="trf",
+        max_nfev=settings.max_nfev,
+        xtol=1e-8,
+        ftol=1e-8,
+        gtol=1e-8,
+    )
+    th, b = unpack(res.x)
+    r, J = resid_and_jac(res.x)
+    # loss-weighted Jacobian (as scipy's res.jac) so that outliers do not
+    # shrink the covariance: weight sqrt(rho'(z)) with z = r^2 / f^2
+    z = (r / settings.f_scale) ** 2
+    wrob = np.sqrt(1.0 / np.sqrt(1.0 + z)) if settings.loss == "soft_l1" else np.ones_like(r)
+    if settings.loss not in ("soft_l1", "linear"):
+        wrob = np.ones_like(r)
+    Jw = J * wrob[:, None]
+    dof = r.size - n_par
+    chi2_red = float(2.0 * res.cost / dof) if dof > 0 else math.nan
+    # Column-equilibrated normal matrix: the parameters' sizes differ by 1e8,
+    # so the rank test and the inverse are done on unit-norm columns.
+    cn = np.linalg.norm(Jw, axis=0)
+    cn = np.where(cn > 0, cn, 1.0)
+    N = (Jw / cn).T @ (Jw / cn)
+    evals, evecs = np.linalg.eigh(N)
+    undetermined: list[str] = []
+    tiny = evals < 1e-10 * max(evals.max(), 1e-300)
+    if np.any(tiny):
+        weight = (evecs[:, tiny] ** 2).sum(axis=1)
+        undetermined = [PARAM_NAMES[k] for k in range(6) if weight[k] > 1e-3]
+    inv_evals = np.where(tiny, 0.0, 1.0 / np.where(tiny, 1.0, evals))
+    cov_s = (evecs * inv_evals) @ evecs.T
+    cov_full = cov_s / np.outer(cn, cn) * max(1.0, chi2_red if np.isfinite(chi2_red) else 1.0)
+    cov = cov_full[:6, :6].copy()
+    for name in undetermined:
+        k = PARAM_NAMES.index(name)
+        cov[k, :] = np.nan
+        cov[:, k] = np.nan
+    n_l, n_r = int(use_l.sum()), int(use_r.sum())
+    edge_res = np.concatenate([r[:n_l] * sl, r[n_l : n_l + n_r] * sr])
+    rms = float(np.sqrt(np.mean(edge_res**2))) if edge_res.size else math.nan
+    # report V.x >= 0 unless the crossing is known (the image cannot tell; geometry.md)
+    th = th.copy()
+    sign = camera.crossing_sign if camera.crossing is not None else 1.0
+    if np.sign(th[3]) != sign and not np.any(acc):
+        th[3] = -th[3]
+        cov[3, :] *= -1
+        cov[:, 3] *= -1
+    motion = BallMotion.from_params(th, R, acc)
+    converged = bool(res.status > 0)
+    flags = []
+    if not converged:
+        flags.append("not_converged")
+    if undetermined:
+        flags.append("degenerate")
+    return FitResult(
+        motion=motion,
+        covariance=cov,
+        chi2_red=chi2_red,
+        residual_rms_px=rms,
+        n_iterations=int(res.nfev),
+        status=int(res.status),
+        message=str(res.message),
+        converged=converged,
+        undetermined=tuple(undetermined),
+        edge_bias_px=float(b),
+        edge_bias_sigma_px=float(math.sqrt(cov_full[6, 6])) if fit_b else 0.0,
+        n_edges=n_l + n_r,
+        n_area_lines=int(use_a.sum()),
+        run_time_s=time.perf_counter() - t0,
+        flags=tuple(flags),
+    )
+
+
+# ------------------------------------------------------------- propagation
+
+
+@dataclass(frozen=True)
+class MotionUncertainty:
+    """Derived quantities and their 1-sigma from a 6x6 covariance.
+
+    Attributes
+    ----------
+    speed_mps, speed_sigma_mps : float
+        ``|V|`` and its linearised 1-sigma, m/s.
+    speed_bias_mps : float
+        Expected upward bias of ``|V|`` of a noisy vector,
+        ``(tr(C_v) - g^T C_v g) / (2 |V|)`` with ``g = V / |V|``, m/s (not
+        subtracted from ``speed_mps``).
+    position_m, position_sigma_m : ndarray (3,)
+        Centre at ``t_c`` and 1-sigma (x is 0 by definition, sigma 0).
+    velocity_mps, velocity_sigma_mps : ndarray (3,)
+    direction_deg, direction_sigma_deg : ndarray (2,)
+        ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, degrees.
+    world_position_m, world_position_sigma_m, world_velocity_mps, world_velocity_sigma_mps : ndarray or None
+        The same in the world frame (``camera.camera_to_world`` /
+        ``vectors_to_world``) when the camera has a pose.
+    """
+
+    speed_mps: float
+    speed_sigma_mps: float
+    speed_bias_mps: float
+    position_m: np.ndarray
+    position_sigma_m: np.ndarray
+    velocity_mps: np.ndarray
+    velocity_sigma_mps: np.ndarray
+    direction_deg: np.ndarray
+    direction_sigma_deg: np.ndarray
+    world_position_m: np.ndarray | None = None
+    world_position_sigma_m: np.ndarray | None = None
+    world_velocity_mps: np.ndarray | None = None
+    world_velocity_sigma_mps: np.ndarray | None = None
+
+
+def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray) -> MotionUncertainty:
+    """Propagate the parameter covariance to speed, direction and world frame.
+
+    Linear (first-order) propagation ``J C J^T``; NaN entries of ``covariance``
+    propagate to NaN.
+    """
+    C = np.asarray(covariance, dtype=float)
+    if C.shape != (6, 6):
+        raise ValueError(f"covariance: expected (6, 6), got {C.shape}")
+    V = np.asarray(motion.velocity_mps)
+    Cv = C[3:, 3:]
+    speed = float(np.linalg.norm(V))
+    g = V / speed if speed > 0 else np.zeros(3)
+    var_s = float(g @ Cv @ g)
+    bias = float((np.trace(Cv) - var_s) / (2.0 * speed)) if speed > 0 else math.nan
+    # position (0, y0, z0): x is exact by definition of t_c
+    Cp = np.zeros((3, 3))
+    Cp[1:, 1:] = C[1:3, 1:3]
+    vx, vy, vz = V
+    q = vx * vx
+    Jd = np.zeros((2, 3))
+    for row, comp in ((0, 1), (1, 2)):
+        den = vx * vx + V[comp] ** 2
+        Jd[row, 0] = -V[comp] / den
+        Jd[row, comp] = vx / den
+    del q, vy, vz
+    Cd = Jd @ Cv @ Jd.T
+    out = dict(
+        speed_mps=speed,
+        speed_sigma_mps=math.sqrt(var_s) if var_s >= 0 else math.nan,
+        speed_bias_mps=bias,
+        position_m=np.asarray(motion.position_m),
+        position_sigma_m=np.sqrt(np.diag(Cp)),
+        velocity_mps=V,
+        velocity_sigma_mps=np.sqrt(np.diag(Cv)),
+        direction_deg=np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])]),
+        direction_sigma_deg=np.degrees(np.sqrt(np.diag(Cd))),
+    )
+    if camera.has_pose:
+        Rm = camera.rotation_matrix
+        out["world_position_m"] = camera.camera_to_world(np.asarray(motion.position_m))
+        out["world_position_sigma_m"] = np.sqrt(np.diag(Rm.T @ Cp @ Rm))
+        out["world_velocity_mps"] = camera.vectors_to_world(V)
+        out["world_velocity_sigma_mps"] = np.sqrt(np.diag(Rm.T @ Cv @ Rm))
+    return MotionUncertainty(**out)
+
+
+# ------------------------------------------------------------ synthetic data
+
+
+def synthetic_edges(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    n_lines: int,
+    edge_sigma_px: float = 0.0,
+    seed: int | None = 0,
+    area_sigma_px: float = 0.3,
+    max_spread_px: float = 0.3,
+) -> EdgeMeasurements:
+    """Edge measurements generated from the averaged model plus Gaussian noise.
+
+    Lines with presence 1 and edge spread below ``max_spread_px`` get edges
+    (sigma ``edge_sigma_px``); the others get only the model area with noise
+    ``area_sigma_px`` (pixels).  For tests and precision studies.
+    """
+    rng = np.random.default_rng(seed)
+    t = np.arange(n_lines) / camera.line_rate_hz
+    me = averaged_model(camera, motion.to_params()[None], motion.radius_m, t, motion.acceleration_mps2, 8)
+    left, right, pres, area, spread = me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0]
+    ok = (pres > 0.999) & (spread <= max_spread_px) & me.valid[0]
+    # keep the ball's lines plus two on each side
+    idx = np.flatnonzero(pres > 0)
+    if idx.size == 0:
+        raise ValueError("synthetic_edges: the ball is not seen on any line")
+    keep = slice(max(idx[0] - 2, 0), min(idx[-1] + 3, n_lines))
+    t, left, right, pres, area, spread, ok = (a[keep] for a in (t, left, right, pres, area, spread, ok))
+    lines = np.arange(n_lines)[keep]
+    n = t.size
+    el = left + edge_sigma_px * rng.standard_normal(n)
+    er = right + edge_sigma_px * rng.standard_normal(n)
+    ar = area + area_sigma_px * rng.standard_normal(n)
+    sig = np.full(n, float(edge_sigma_px))
+    end = (pres > 0) & ~ok
+    return EdgeMeasurements(
+        lines=lines,
+        t_s=t,
+        left_px=np.where(ok, el, np.nan),
+        right_px=np.where(ok, er, np.nan),
+        left_sigma_px=np.where(ok, sig, np.nan),
+        right_sigma_px=np.where(ok, sig, np.nan),
+        left_ok=ok.copy(),
+        right_ok=ok.copy(),
+        area_px=ar,
+        area_sigma_px=np.full(n, float(area_sigma_px)),
+        centroid_px=np.where(pres > 0, 0.5 * (left + right), np.nan),
+        level=np.where(ok, 1.0, np.nan),
+        peak=np.where(pres > 0, 1.0, 0.0),
+        end_line=end,
+    )
