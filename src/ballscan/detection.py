@@ -1,0 +1,653 @@
+"""Finding balls in a line-scan image: background model, threshold, regions, flags.
+
+Background model
+----------------
+A stationary line-scan camera sees the same scene line after line, so the
+background of pixel ``(i, j)`` is modelled as
+
+    B[i, j] = line_gain[i] * background_dn[j] + line_offset_dn[i]
+
+* ``background_dn[j]`` is a per-column level: the *mode* of the column,
+  found by mode seeking (a median restricted to a window of +-4.5 noise
+  sigmas, iterated) started from the level of the neighbouring columns (a
+  wide running median of the column medians). This stays on the background
+  even where a ball covers most of a column's lines (a plain median fails
+  there once the ball covers more than half of them), and, because the
+  window is re-centred on the column's own values, follows hot/cold columns,
+  PRNU and vignetting. Where a column has almost no values near its
+  neighbours' level (a strongly defective column) its own median is used.
+* Slow illumination drift along time is one factor per line, estimated as a
+  median over the background pixels of the line (pixels of a first-pass
+  ball mask excluded), so a ball never biases it. The drift is a gain
+  (``line_gain``, multiplicative: illumination) when the background is well
+  above zero, and an offset (``line_offset_dn``) when the background is near
+  zero, where a ratio would be unstable. The other one is then 1 / 0.
+* ``noise_dn[j]`` is a per-column noise sigma (DN): the interquartile range
+  of the column's background values / 1.349, floored at
+  ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
+  at a fraction of the image's median noise.
+
+Regions
+-------
+Pixels whose residual ``|X - B|`` exceeds ``k_sigma * noise_dn[j]`` are
+labelled (8-connected); pieces closer than ``merge_gap_px`` are grouped (a
+textured ball's seam or shaded limb can match the background and cut its
+silhouette into pieces); a group smaller than ``min_area_px`` is rejected
+(noise and hot pixels give single pixels at this threshold). A region's mask
+is the group's pixels with holes filled along each line and each column
+(between the first and last ball pixel of a line, or of a column, is ball).
+A group whose lines or columns contain two separate runs of ball pixels is
+two merged balls: it is split at the gap when the two parts are cleanly
+apart along one axis, and flagged ``"overlap"`` either way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage as ndi
+
+from .images import LineImage
+
+__all__ = [
+    "BallRegion",
+    "Detection",
+    "detect",
+    "background_at",
+    "region_background",
+    "FLAG_WORDS",
+]
+
+#: Flags a region can carry (geometry.md vocabulary).
+FLAG_WORDS = ("cut_first_line", "cut_last_line", "cut_sensor_end", "overlap", "saturated")
+
+_BIG = 1e300  # stand-in for "excluded" in masked medians (finite: no inf-inf NaNs)
+_MAD_TO_SIGMA = 1.482602218505602
+_IQR_TO_SIGMA = 1.0 / 1.3489795003921634
+
+
+@dataclass(frozen=True)
+class BallRegion:
+    """One ball's image region.
+
+    Attributes
+    ----------
+    index : int
+        Position in :attr:`Detection.regions` (0-based).
+    line_start, line_stop : int
+        Scan lines ``[line_start, line_stop)`` holding ball pixels.
+    col_start, col_stop : int
+        Sensor pixels ``[col_start, col_stop)`` holding ball pixels.
+    mask : numpy.ndarray
+        bool, shape ``(line_stop - line_start, col_stop - col_start)``: ball
+        pixels of the box, holes filled along lines and columns. Partially
+        covered limb pixels below the threshold are not in it: the edge
+        extractor should look one or two pixels beyond the mask.
+    polarity : int
+        +1 if the ball is brighter than the background, -1 if darker.
+    contrast_dn : float
+        Robust (median) ball-minus-background level over the mask, DN,
+        signed (same sign as ``polarity``).
+    flags : tuple of str
+        Words from :data:`FLAG_WORDS` (geometry.md).
+    n_pixels : int
+        Number of pixels above threshold (before hole filling).
+    """
+
+    index: int
+    line_start: int
+    line_stop: int
+    col_start: int
+    col_stop: int
+    mask: np.ndarray
+    polarity: int
+    contrast_dn: float
+    flags: tuple[str, ...]
+    n_pixels: int = 0
+
+    @property
+    def lines(self) -> slice:
+        """Slice of the box along the scan lines (rows)."""
+        return slice(self.line_start, self.line_stop)
+
+    @property
+    def cols(self) -> slice:
+        """Slice of the box along the sensor (columns)."""
+        return slice(self.col_start, self.col_stop)
+
+
+@dataclass(frozen=True)
+class Detection:
+    """Background model and ball regions of one image.
+
+    Attributes
+    ----------
+    background_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column background level (DN) at a line
+        gain of 1. The background of line ``i`` is
+        ``line_gain[i] * background_dn + line_offset_dn[i]``; use
+        :func:`background_at` for the 2-D value.
+    noise_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column noise sigma (DN), floored.
+    regions : tuple of BallRegion
+        Ordered by first line, then by mid line (~ t_c), then first column.
+    saturation_dn : float
+        Level (DN) at or above which pixels are clipped.
+    line_gain : numpy.ndarray
+        float64, shape ``(n_lines,)``: multiplicative drift per line.
+    line_offset_dn : numpy.ndarray
+        float64, shape ``(n_lines,)``: additive drift per line (DN).
+    drift_model : str
+        ``"gain"`` or ``"offset"``: which of the two is estimated.
+    threshold_sigma : float
+        The ``k_sigma`` used.
+    """
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+    regions: tuple[BallRegion, ...]
+    saturation_dn: float
+    line_gain: np.ndarray
+    line_offset_dn: np.ndarray
+    drift_model: str = "gain"
+    threshold_sigma: float = 4.0
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """``(n_lines, W)`` of the image."""
+        return (int(self.line_gain.shape[0]), int(self.background_dn.shape[0]))
+
+
+def background_at(detection: Detection, lines, cols) -> np.ndarray:
+    """Background level (DN) on the grid ``lines x cols``.
+
+    Parameters
+    ----------
+    detection : Detection
+    lines, cols : slice, int array or int
+        Scan lines and sensor pixels (anything that indexes a 1-D array).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(len(lines), len(cols))``.
+    """
+    g = np.atleast_1d(detection.line_gain[lines])
+    o = np.atleast_1d(detection.line_offset_dn[lines])
+    b = np.atleast_1d(detection.background_dn[cols])
+    return g[:, None] * b[None, :] + o[:, None]
+
+
+def region_background(
+    detection: Detection, region: BallRegion, margin: int = 0
+) -> tuple[np.ndarray, np.ndarray, tuple[slice, slice]]:
+    """Background and noise around one region, for the edge extractor.
+
+    Parameters
+    ----------
+    detection : Detection
+    region : BallRegion
+    margin : int, optional
+        Pixels added on every side of the region's box (clipped to the image).
+
+    Returns
+    -------
+    background : numpy.ndarray
+        float64, shape of the (padded) box: background level (DN).
+    noise : numpy.ndarray
+        float64, one value per column of the box: noise sigma (DN).
+    box : tuple of slice
+        ``(lines, cols)`` of the padded box in image coordinates.
+    """
+    n, w = detection.shape
+    m = max(int(margin), 0)
+    ls = slice(max(region.line_start - m, 0), min(region.line_stop + m, n))
+    cs = slice(max(region.col_start - m, 0), min(region.col_stop + m, w))
+    return background_at(detection, ls, cs), detection.noise_dn[cs].copy(), (ls, cs)
+
+
+# --------------------------------------------------------------------------
+# Robust statistics helpers (vectorised)
+# --------------------------------------------------------------------------
+def _masked_median(a: np.ndarray, excluded: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
+    """Median of the non-excluded values along ``axis`` and their count.
+
+    Excluded values are replaced by alternately -BIG and +BIG (in the order
+    they occur along the axis), so that they cancel in pairs and an ordinary
+    (partition-based, fast) median returns the median of the kept values
+    (to half a rank when the number excluded is odd). Rows with no kept
+    value give 0; check the count.
+    """
+    parity = np.cumsum(excluded, axis=axis) & 1
+    filled = np.where(excluded, np.where(parity == 1, _BIG, -_BIG), a)
+    med = np.median(filled, axis=axis)
+    count = a.shape[axis] - excluded.sum(axis=axis)
+    med = np.where(count > 0, med, 0.0)
+    return med, count
+
+
+def _mode_seek(
+    s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Mode and noise of each row of the row-sorted ``s`` by mode seeking.
+
+    Each iteration takes the values within +-4.5 sigma of the current centre
+    and moves the centre to their median (the final level is their mean). After two iterations sigma becomes
+    the standard deviation of the window's values (a +-4.5 sigma window keeps
+    99.9993 % of Gaussian noise, so that is the noise sigma; an IQR would be
+    coarse on integer data), and two more iterations follow with it. Ball
+    values far from the background never enter the window.
+
+    Because the rows are sorted, a window is an index range: one
+    ``searchsorted`` on all rows at once (rows shifted apart so that the whole
+    array is sorted) finds it in O(W log n).
+
+    Returns
+    -------
+    centre, sigma, count : numpy.ndarray
+        Per row: the mode, the noise sigma and the number of values in the
+        final window.
+    """
+    w, n = s.shape
+    rows = np.arange(w)
+    base = s[:, 0].astype(np.float64)
+    rng = s[:, -1].astype(np.float64) - base
+    span = float(rng.max()) + 1.0
+    shift = base - rows * span
+    keys = (s.astype(np.float64) - shift[:, None]).ravel()
+    first = rows * n
+
+    def window(m: np.ndarray, half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        lo = np.clip(m - half - base, -0.25, rng + 0.25) + rows * span
+        hi = np.clip(m + half - base, -0.25, rng + 0.25) + rows * span
+        return (np.searchsorted(keys, lo, side="left") - first,
+                np.searchsorted(keys, hi, side="right") - first)
+
+    buf = np.empty(s.shape, dtype=s.dtype)
+    inside = np.empty(s.shape, dtype=bool)
+
+    def spread(m: np.ndarray, half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        # In place on preallocated buffers: this is the costly part.
+        np.subtract(s, m.astype(s.dtype)[:, None], out=buf)
+        np.less_equal(np.abs(buf), half.astype(s.dtype)[:, None], out=inside)
+        np.multiply(buf, inside, out=buf)
+        k = np.count_nonzero(inside, axis=1)
+        kk = np.maximum(k, 1)
+        mean = buf.sum(axis=1, dtype=np.float64) / kk
+        var = np.einsum("ij,ij->i", buf, buf, dtype=np.float64) / kk - mean * mean
+        return np.sqrt(np.maximum(var, 0.0) * kk / np.maximum(kk - 1, 1)), k, mean
+
+    m = start.astype(np.float64).copy()
+    sg = np.maximum(sigma.astype(np.float64), floor)
+    cnt = np.zeros(w, dtype=np.intp)
+    for it in range(4):
+        if it == 2:
+            sig, k, _ = spread(m, 4.5 * sg)
+            # The spread of a window holding fewer than ~8 values is meaningless.
+            sg = np.where(k >= 8, np.maximum(sig, floor), sg)
+        half = 4.5 * sg
+        a, b = window(m, half)
+        cnt = b - a
+        i0 = np.clip(a + (cnt - 1) // 2, 0, n - 1)
+        i1 = np.clip(a + cnt // 2, 0, n - 1)
+        med = 0.5 * (s[rows, i0].astype(np.float64) + s[rows, i1])
+        m = np.where(cnt >= 1, med, m)
+    sig, k, mean = spread(m, 4.5 * sg)
+    sg = np.where(k >= 8, np.maximum(sig, floor), sg)
+    # Final level: the window's mean, not its median. A median of integer
+    # data is itself an integer (off by up to 0.5 DN where few background
+    # values remain); the mean of a symmetric +-4.5 sigma window is unbiased.
+    m = np.where(k >= 1, m + mean, m)
+    return m, sg, cnt
+
+
+def _global_noise(x: np.ndarray) -> float:
+    """Noise sigma (DN) from differences of consecutive lines (balls are rare outliers)."""
+    if x.shape[0] < 2:
+        return 0.0
+    d = np.diff(x, axis=0).ravel()
+    # ~100k differences pin sigma to well under 1 %: no need for more.
+    d = d[:: max(1, d.size // 100_000)]
+    if d.size == 0:
+        return 0.0
+    mad = np.median(np.abs(d - np.median(d)))
+    return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
+
+
+# --------------------------------------------------------------------------
+# Background model
+# --------------------------------------------------------------------------
+def _background(
+    x: np.ndarray, noise_floor_dn: float, first_pass_k: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+    n, w = x.shape
+    # Column subsample for per-line statistics: a few hundred columns give a
+    # per-line level to a small fraction of the noise, at a fraction of the cost.
+    step = max(1, w // 512)
+    xs = x[:, ::step]
+    sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
+
+    # Per-line level from the line medians: balls cover a minority of a line.
+    level = np.median(xs, axis=1)
+    ref = float(np.median(level))
+    use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
+    if use_gain:
+        gain0 = level / ref
+        offset0 = np.zeros(n)
+        y = x / gain0[:, None].astype(x.dtype)
+    else:
+        gain0 = np.ones(n)
+        offset0 = level - ref
+        y = x - offset0[:, None].astype(x.dtype)
+
+    # Per-column mode, started from the neighbours' level.
+    s = np.sort(y.T, axis=1)  # (W, n), each column sorted
+    col_med = (s[:, n // 2] if n % 2 else 0.5 * (s[:, n // 2 - 1] + s[:, n // 2])).astype(np.float64)
+    # Wide enough to out-vote a run of up to ~127 ball-dominated columns (a
+    # median filter leaves monotone profiles such as vignetting unchanged).
+    win = max(w // 4, 255) | 1
+    neighbours = ndi.median_filter(col_med, size=min(win, 2 * w - 1), mode="nearest")
+    sig_start = np.full(w, sigma0)
+    b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
+    min_support = max(3, int(np.ceil(0.03 * n)))
+    weak = cnt < min_support
+    if np.any(weak):
+        # A column whose values are nowhere near its neighbours' level is a
+        # defective (hot/cold) column, not a ball: use its own mode.
+        b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
+        b[weak] = b2
+        sig[weak] = sig2
+
+    # First-pass ball mask on the subsampled columns, then per-line drift from
+    # background pixels only.
+    bs = b[::step]
+    thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
+    if use_gain:
+        resid = xs - gain0[:, None] * bs[None, :]
+        excluded = np.abs(resid) > thr[None, :]
+        safe = np.where(bs > 0, bs, 1.0)
+        excluded |= (bs <= 0)[None, :]
+        g, c = _masked_median(xs / safe[None, :], excluded, axis=1)
+        good = c >= max(3, xs.shape[1] // 10)
+        gain = _fill_bad(g, good, gain0)
+        offset = np.zeros(n)
+    else:
+        resid = xs - bs[None, :] - offset0[:, None]
+        excluded = np.abs(resid) > thr[None, :]
+        o, c = _masked_median(xs - bs[None, :], excluded, axis=1)
+        good = c >= max(3, xs.shape[1] // 10)
+        offset = _fill_bad(o, good, offset0)
+        gain = np.ones(n)
+
+    # Noise floor: the quantisation floor, and not less than a quarter of the
+    # typical column noise (a column with too few background values to
+    # measure must not get a tiny sigma and flood the mask).
+    typical = float(np.median(sig)) if sig.size else noise_floor_dn
+    noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
+    return b, noise, gain, offset, ("gain" if use_gain else "offset")
+
+
+def _fill_bad(values: np.ndarray, good: np.ndarray, fallback: np.ndarray) -> np.ndarray:
+    """Replace values of lines without enough background by interpolation (or the fallback)."""
+    if np.all(good):
+        return values
+    if not np.any(good):
+        return fallback.astype(np.float64)
+    idx = np.arange(values.size)
+    return np.interp(idx, idx[good], values[good])
+
+
+# --------------------------------------------------------------------------
+# Regions
+# --------------------------------------------------------------------------
+def _fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
+    """Union of the per-line and per-column hole fills of a small bool mask."""
+    h, w = m.shape
+    out = np.zeros_like(m)
+    for axis, length in ((1, w), (0, h)):
+        anyv = m.any(axis=axis)
+        first = np.argmax(m, axis=axis)
+        last = length - 1 - np.argmax(np.flip(m, axis=axis), axis=axis)
+        idx = np.arange(length)
+        if axis == 1:
+            f = (idx[None, :] >= first[:, None]) & (idx[None, :] <= last[:, None]) & anyv[:, None]
+        else:
+            f = (idx[:, None] >= first[None, :]) & (idx[:, None] <= last[None, :]) & anyv[None, :]
+        out |= f
+    return out
+
+
+def _runs(m: np.ndarray, axis: int) -> np.ndarray:
+    """Number of separate runs of True along ``axis``."""
+    starts = np.diff(m.astype(np.int8), axis=axis, prepend=0) == 1
+    return starts.sum(axis=axis)
+
+
+def _close(m: np.ndarray, r: int) -> np.ndarray:
+    """Binary closing by a (2r+1)^2 square, on a padded copy (no edge effects)."""
+    if r <= 0:
+        return m
+    p = np.pad(m, r + 1)
+    st = np.ones((2 * r + 1, 2 * r + 1), dtype=bool)
+    c = ndi.binary_erosion(ndi.binary_dilation(p, st), st)
+    return c[r + 1 : -(r + 1), r + 1 : -(r + 1)]
+
+
+def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndarray]] | None:
+    """Try to split a merged mask into two parts cleanly apart along one axis.
+
+    Returns ``[(dl, dc, mask), ...]`` (offsets in the box) or None.
+    """
+    closed = _close(m, r)
+    for axis in (1, 0):  # first apart along the sensor (same time), then in time
+        multi = _runs(closed, axis=axis) >= 2
+        if not np.any(multi):
+            continue
+        # Gap centres along the other axis, on the lines (or columns) with two runs.
+        sub = closed[multi, :] if axis == 1 else closed[:, multi].T
+        centres = []
+        for row in sub:
+            idx = np.flatnonzero(row)
+            gaps = np.flatnonzero(np.diff(idx) > 1)
+            if gaps.size:
+                g = gaps[0]
+                centres.append(0.5 * (idx[g] + idx[g + 1]))
+        if not centres:
+            continue
+        cut = int(np.floor(np.median(centres))) + 1
+        if axis == 1:
+            a, b = m[:, :cut], m[:, cut:]
+            offs = ((0, 0), (0, cut))
+        else:
+            a, b = m[:cut, :], m[cut:, :]
+            offs = ((0, 0), (cut, 0))
+        if a.sum() < min_area or b.sum() < min_area:
+            continue
+        parts = []
+        for (dl, dc), part in zip(offs, (a, b)):
+            rows = np.flatnonzero(part.any(axis=1))
+            cols = np.flatnonzero(part.any(axis=0))
+            crop = part[rows[0] : rows[-1] + 1, cols[0] : cols[-1] + 1]
+            cc = _close(crop, r)
+            if np.any(_runs(cc, 1) >= 2) or np.any(_runs(cc, 0) >= 2):
+                parts = None
+                break
+            parts.append((dl + rows[0], dc + cols[0], crop))
+        if parts:
+            return parts
+    return None
+
+
+def _group_components(
+    lab: np.ndarray, objs: list, sizes: np.ndarray, gap: int, min_piece: int
+) -> list[list[int]]:
+    """Group labelled pieces closer than ``gap`` pixels (union-find on boxes, checked on pixels)."""
+    ids = [k for k in range(len(objs)) if objs[k] is not None and sizes[k] >= min_piece]
+    if not ids:
+        return []
+    box = np.array([[objs[k][0].start, objs[k][0].stop, objs[k][1].start, objs[k][1].stop] for k in ids])
+    parent = list(range(len(ids)))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    if len(ids) > 1:
+        l0, l1, c0, c1 = (box[:, q] for q in range(4))
+        near = (
+            (l0[:, None] - gap < l1[None, :])
+            & (l0[None, :] - gap < l1[:, None])
+            & (c0[:, None] - gap < c1[None, :])
+            & (c0[None, :] - gap < c1[:, None])
+        )
+        ii, jj = np.nonzero(np.triu(near, 1))
+        st = np.ones((2 * gap + 1, 2 * gap + 1), dtype=bool)
+        for i, j in zip(ii.tolist(), jj.tolist()):
+            if find(i) == find(j):
+                continue
+            # Pixel-level check in the joint box.
+            ls = slice(min(l0[i], l0[j]), max(l1[i], l1[j]))
+            cs = slice(min(c0[i], c0[j]), max(c1[i], c1[j]))
+            sub = lab[ls, cs]
+            mi = ndi.binary_dilation(sub == ids[i] + 1, st)
+            if np.any(mi & (sub == ids[j] + 1)):
+                parent[find(i)] = find(j)
+    groups: dict[int, list[int]] = {}
+    for i in range(len(ids)):
+        groups.setdefault(find(i), []).append(ids[i])
+    return list(groups.values())
+
+
+def detect(
+    image: LineImage,
+    *,
+    k_sigma: float = 4.0,
+    min_area_px: int = 12,
+    merge_gap_px: int = 6,
+    noise_floor_dn: float = 0.5,
+) -> Detection:
+    """Find the balls in a line-scan image.
+
+    Parameters
+    ----------
+    image : LineImage
+        The image (rows = scan lines).
+    k_sigma : float, optional
+        Threshold on ``|X - background|`` in units of the column's noise sigma.
+    min_area_px : int, optional
+        Smallest region (pixels above threshold) kept as a ball; smaller blobs
+        are noise, hot pixels or debris.
+    merge_gap_px : int, optional
+        Pieces closer than this (pixels) are one ball (seams or shaded limbs
+        at background level cut a textured ball into pieces).
+    noise_floor_dn : float, optional
+        Smallest noise sigma (DN) used for thresholds: keeps a noise-free or
+        flat image from dividing by zero.
+
+    Returns
+    -------
+    Detection
+        Background model and regions; no regions for an empty, flat or fully
+        saturated image.
+    """
+    if not (np.isfinite(k_sigma) and k_sigma > 0):
+        raise ValueError(f"k_sigma must be a positive number, got {k_sigma}")
+    x = np.asarray(image.data, dtype=np.float64)
+    if x.ndim != 2 or x.shape[0] < 2 or x.shape[1] < 2:
+        raise ValueError(f"image must be 2-D with at least 2 lines and 2 columns, got shape {x.shape}")
+    n, w = x.shape
+    sat = float(image.saturation_dn)
+    floor = max(float(noise_floor_dn), 1e-12)
+
+    # float32 for the whole-image passes: exact for 16-bit integers, and the
+    # statistics are accumulated in float64.
+    x32 = x.astype(np.float32)
+    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
+    bg32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
+    if model == "offset":
+        bg32 += offset.astype(np.float32)[:, None]
+    resid32 = x32 - bg32
+    hit = np.abs(resid32) > (k_sigma * noise).astype(np.float32)[None, :]
+
+    lab, nlab = ndi.label(hit, structure=np.ones((3, 3), dtype=bool))
+    regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
+    if nlab:
+        sizes = np.bincount(lab.ravel(), minlength=nlab + 1)[1:]
+        objs = ndi.find_objects(lab)
+        gap = max(int(merge_gap_px), 0)
+        for grp in _group_components(lab, objs, sizes, gap, min_piece=2):
+            area = int(sizes[grp].sum())
+            if area < min_area_px:
+                continue
+            l0 = min(objs[k][0].start for k in grp)
+            l1 = max(objs[k][0].stop for k in grp)
+            c0 = min(objs[k][1].start for k in grp)
+            c1 = max(objs[k][1].stop for k in grp)
+            if l1 - l0 < 2 or c1 - c0 < 2:
+                continue  # a hot pixel run along one line or one column
+            sub = lab[l0:l1, c0:c1]
+            m = np.isin(sub, np.asarray(grp) + 1)
+            closed = _close(m, gap)
+            merged = bool(np.any(_runs(closed, 1) >= 2) or np.any(_runs(closed, 0) >= 2))
+            if merged:
+                parts = _split(m, gap, min_area_px)
+                if parts:
+                    for dl, dc, pm in parts:
+                        regions_raw.append((l0 + dl, c0 + dc, pm, True))
+                    continue
+            regions_raw.append((l0, c0, m, merged))
+
+    built = []
+    for l0, c0, m, merged in regions_raw:
+        filled = _fill_lines_and_cols(m)
+        h, wd = filled.shape
+        box = (slice(l0, l0 + h), slice(c0, c0 + wd))
+        vals = (x[box] - (gain[box[0], None] * b[None, box[1]] + offset[box[0], None]))[filled]
+        contrast = float(np.median(vals)) if vals.size else 0.0
+        polarity = 1 if contrast >= 0 else -1
+        flags = []
+        if l0 == 0:
+            flags.append("cut_first_line")
+        if l0 + h >= n:
+            flags.append("cut_last_line")
+        if c0 == 0 or c0 + wd >= w:
+            flags.append("cut_sensor_end")
+        if merged:
+            flags.append("overlap")
+        if np.any(x[box][filled] >= sat):
+            flags.append("saturated")
+        rows = np.flatnonzero(filled.any(axis=1))
+        mid_line = l0 + 0.5 * (rows[0] + rows[-1])
+        filled.setflags(write=False)
+        built.append((l0, mid_line, c0, filled, polarity, contrast, tuple(flags), int(m.sum())))
+    built.sort(key=lambda t: (t[0], t[1], t[2]))
+    regions = tuple(
+        BallRegion(
+            index=i,
+            line_start=int(l0),
+            line_stop=int(l0 + f.shape[0]),
+            col_start=int(c0),
+            col_stop=int(c0 + f.shape[1]),
+            mask=f,
+            polarity=pol,
+            contrast_dn=con,
+            flags=fl,
+            n_pixels=npx,
+        )
+        for i, (l0, _, c0, f, pol, con, fl, npx) in enumerate(built)
+    )
+    for arr in (b, noise, gain, offset):
+        arr.setflags(write=False)
+    return Detection(
+        background_dn=b,
+        noise_dn=noise,
+        regions=regions,
+        saturation_dn=sat,
+        line_gain=gain,
+        line_offset_dn=offset,
+        drift_model=model,
+        threshold_sigma=float(k_sigma),
+    )

@@ -1,0 +1,258 @@
+"""Tests of ballscan.detection: background model, regions and flags."""
+
+from __future__ import annotations
+
+import json
+import time
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscan.detection import background_at, detect, region_background
+from ballscan.images import LineImage, load_image
+
+SCENES = Path(__file__).parent / "data" / "scenes"
+SCENE_NAMES = [
+    "pub_tennis_serve",
+    "pub_pingpong",
+    "pub_tennis_bright_bg",
+    "pub_lab_rail_6deg",
+    "pub_cut_first_line",
+    "pub_two_close",
+]
+CUT_FLAGS = {"cut_first_line", "cut_last_line", "cut_sensor_end"}
+
+
+def _scene(name):
+    image = load_image(SCENES / f"{name}.png")
+    truth = json.loads((SCENES / f"{name}.truth.json").read_text())
+    cam = tomllib.loads((SCENES / f"{name}.camera.toml").read_text())
+    return image, truth.get("balls", [truth]), cam
+
+
+def _image(data, sat=255.0) -> LineImage:
+    return LineImage(data=np.asarray(data, dtype=float), saturation_dn=sat, bits=8, source="synthetic")
+
+
+def _disc(shape, centre, radii, level, background=20.0):
+    """Flat ellipse of ``level`` DN on a ``background`` DN image (numpy only)."""
+    i, j = np.mgrid[: shape[0], : shape[1]]
+    inside = ((i - centre[0]) / radii[0]) ** 2 + ((j - centre[1]) / radii[1]) ** 2 <= 1.0
+    img = np.full(shape, float(background))
+    img[inside] = level
+    return img, inside
+
+
+def _noisy(img, sigma, seed):
+    rng = np.random.default_rng(seed)
+    return np.clip(np.round(img + rng.normal(0.0, sigma, img.shape)), 0, 255)
+
+
+# ---------------------------------------------------------------- reference scenes
+@pytest.mark.parametrize("name", SCENE_NAMES)
+def test_reference_scene_regions(name):
+    image, balls, cam = _scene(name)
+    det = detect(image)
+    assert len(det.regions) == len(balls)
+    truth_lines = sorted(b["t_c_s"] * cam["line_rate_hz"] for b in balls)
+    for region, tc_line in zip(det.regions, truth_lines):
+        assert region.line_start <= tc_line < region.line_stop
+        assert region.mask.shape == (region.line_stop - region.line_start, region.col_stop - region.col_start)
+        assert region.mask.dtype == bool and region.mask.any()
+        if name != "pub_cut_first_line":
+            assert not CUT_FLAGS & set(region.flags)
+        assert "overlap" not in region.flags
+        assert "saturated" not in region.flags
+    if name == "pub_cut_first_line":
+        assert "cut_first_line" in det.regions[0].flags
+        assert det.regions[0].line_start == 0
+    expected_polarity = -1 if name == "pub_tennis_bright_bg" else 1
+    assert all(r.polarity == expected_polarity for r in det.regions)
+    assert all(np.sign(r.contrast_dn) == r.polarity for r in det.regions)
+
+
+@pytest.mark.parametrize("name", ["pub_lab_rail_6deg", "pub_two_close", "pub_tennis_bright_bg"])
+def test_reference_scene_mask_matches_coverage(name):
+    """Every pixel at least 3/4 covered by a ball is in a mask; no mask pixel is uncovered."""
+    image, _, _ = _scene(name)
+    cov = load_image(SCENES / "clean" / f"{name}.coverage.png").data / 65535.0
+    det = detect(image)
+    full = np.zeros(image.data.shape, dtype=bool)
+    for r in det.regions:
+        full[r.line_start : r.line_stop, r.col_start : r.col_stop] |= r.mask
+    assert not np.any((cov >= 0.75) & ~full)
+    assert not np.any(full & (cov == 0.0))
+
+
+def test_two_close_regions_are_separate_and_ordered():
+    image, balls, cam = _scene("pub_two_close")
+    det = detect(image)
+    a, b = det.regions
+    assert a.index == 0 and b.index == 1
+    assert a.line_start <= b.line_start
+    # Apart along the sensor, overlapping in time.
+    assert a.col_stop < b.col_start or b.col_stop < a.col_start
+    assert a.line_stop > b.line_start
+
+
+def test_background_and_noise_on_scene():
+    image, _, _ = _scene("pub_lab_rail_6deg")  # ball covers 135 of 200 lines in some columns
+    cov = load_image(SCENES / "clean" / "pub_lab_rail_6deg.coverage.png").data
+    det = detect(image)
+    ball_cols = np.flatnonzero((cov > 0).sum(axis=0) > 100)
+    assert ball_cols.size > 20
+    bg = np.median(image.data[cov == 0])
+    assert np.all(np.abs(det.background_dn[ball_cols] - bg) < 1.5)
+    assert 1.2 < np.median(det.noise_dn) < 2.2
+    region = det.regions[0]
+    back, noise, (ls, cs) = region_background(det, region, margin=2)
+    assert back.shape == (ls.stop - ls.start, cs.stop - cs.start)
+    assert noise.shape == (cs.stop - cs.start,)
+    np.testing.assert_allclose(background_at(det, ls, cs), back)
+
+
+def test_detection_is_fast():
+    image, _, _ = _scene("pub_two_close")  # 300 x 2048
+    detect(image)
+    best = min(_timed(detect, image) for _ in range(3))
+    assert best < 0.2  # seconds; typically ~30 ms, generous for loaded CI machines
+
+
+def _timed(f, *args):
+    t0 = time.perf_counter()
+    f(*args)
+    return time.perf_counter() - t0
+
+
+# ---------------------------------------------------------------- synthetic images
+def test_flat_and_empty_images_give_no_regions():
+    assert detect(_image(np.zeros((50, 80)))).regions == ()
+    assert detect(_image(np.full((50, 80), 37.0))).regions == ()
+
+
+def test_all_saturated_image_gives_no_regions():
+    det = detect(_image(np.full((60, 90), 255.0)))
+    assert det.regions == ()
+    assert np.all(np.isfinite(det.noise_dn)) and np.all(det.noise_dn > 0)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_noise_only_gives_no_regions(seed):
+    img = _noisy(np.full((300, 1024), 20.0), 2.0, seed)
+    assert detect(_image(img)).regions == ()
+
+
+def test_noise_with_column_pattern_and_hot_pixels_gives_no_regions():
+    rng = np.random.default_rng(11)
+    base = 40.0 + 5.0 * rng.normal(size=512)  # strong fixed-pattern per column
+    img = base[None, :] + rng.normal(0, 1.5, (200, 512))
+    img[50, 100] = 250.0  # hot pixels
+    img[120, 300] = 0.0
+    img[:, 200] += 60.0  # hot column
+    assert detect(_image(np.clip(img, 0, 255))).regions == ()
+
+
+def test_single_disc_bright_and_dark():
+    img, inside = _disc((200, 400), (100, 200), (40, 25), 150.0)
+    det = detect(_image(_noisy(img, 1.5, 1)))
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    assert r.polarity == 1 and abs(r.contrast_dn - 130.0) < 3
+    assert r.flags == ()
+    rows = np.flatnonzero(inside.any(axis=1))
+    assert abs(r.line_start - rows[0]) <= 1 and abs(r.line_stop - 1 - rows[-1]) <= 1
+
+    img, _ = _disc((200, 400), (100, 200), (40, 25), 60.0, background=200.0)
+    det = detect(_image(_noisy(img, 2.5, 2)))
+    assert len(det.regions) == 1 and det.regions[0].polarity == -1
+
+
+def test_ball_covering_most_of_its_columns():
+    # 200 lines, the ball spans 160 of them on its central columns: a plain
+    # per-column median would call the ball the background.
+    img, inside = _disc((200, 300), (100, 150), (80, 30), 120.0)
+    det = detect(_image(_noisy(img, 1.5, 3)))
+    assert len(det.regions) == 1
+    assert np.all(np.abs(det.background_dn - 20.0) < 1.0)
+    r = det.regions[0]
+    assert r.line_stop - r.line_start >= 159
+
+
+def test_ball_touching_column_zero_is_cut_sensor_end():
+    img, _ = _disc((120, 300), (60, 10), (30, 25), 150.0)
+    det = detect(_image(_noisy(img, 1.5, 4)))
+    assert len(det.regions) == 1
+    assert det.regions[0].col_start == 0
+    assert "cut_sensor_end" in det.regions[0].flags
+
+
+def test_cut_first_and_last_line():
+    img, _ = _disc((100, 300), (5, 100), (30, 20), 150.0)
+    img2, _ = _disc((100, 300), (95, 220), (30, 20), 150.0)
+    det = detect(_image(_noisy(np.maximum(img, img2), 1.5, 5)))
+    assert len(det.regions) == 2
+    first, last = det.regions
+    assert "cut_first_line" in first.flags and "cut_last_line" not in first.flags
+    assert "cut_last_line" in last.flags and "cut_first_line" not in last.flags
+
+
+def test_saturated_ball_flagged():
+    img, _ = _disc((150, 300), (75, 150), (30, 20), 255.0)
+    det = detect(_image(_noisy(img, 1.5, 6)))
+    assert len(det.regions) == 1 and "saturated" in det.regions[0].flags
+
+
+def test_slow_illumination_ramp():
+    n, w = 400, 800
+    ramp = np.linspace(1.0, 1.3, n)[:, None]  # background rises 30 % over the image
+    img, _ = _disc((n, w), (200, 400), (40, 25), 150.0)
+    img = np.where(img > 20.0, img, 20.0 * ramp)
+    rng = np.random.default_rng(7)
+    img = np.clip(np.round(img + rng.normal(0, 1.0, img.shape)), 0, 255)
+    det = detect(_image(img))
+    assert len(det.regions) == 1
+    bg = background_at(det, slice(0, n), slice(0, w))
+    assert np.abs(bg[[0, -1], :] - 20.0 * ramp[[0, -1]]).max() < 0.6
+
+
+def test_two_touching_balls_flagged_overlap():
+    # Two discs side by side along the sensor, merged where they touch.
+    a, _ = _disc((200, 400), (100, 160), (40, 30), 150.0)
+    b, _ = _disc((200, 400), (110, 215), (40, 30), 150.0)
+    det = detect(_image(_noisy(np.maximum(a, b), 1.5, 8)))
+    assert len(det.regions) >= 1
+    assert all("overlap" in r.flags for r in det.regions)
+    # They are apart along the sensor: the merged region is split in two.
+    assert len(det.regions) == 2
+
+
+def test_balls_touching_in_time_flagged_overlap():
+    # Same columns, the second ball starts where the first ends.
+    a, _ = _disc((300, 300), (90, 150), (40, 30), 150.0)
+    b, _ = _disc((300, 300), (165, 150), (40, 30), 150.0)
+    det = detect(_image(_noisy(np.maximum(a, b), 1.5, 9)))
+    assert len(det.regions) >= 1
+    assert all("overlap" in r.flags for r in det.regions)
+
+
+def test_textured_ball_with_background_level_seam_is_one_region():
+    img, inside = _disc((200, 300), (100, 150), (50, 35), 150.0)
+    i, j = np.mgrid[:200, :300]
+    seam = inside & (np.abs((i - 100) - 0.6 * (j - 150)) < 2.5)  # a band at background level
+    img[seam] = 20.0
+    holes = inside & (((i - 90) ** 2 + (j - 140) ** 2) < 36)
+    img[holes] = 20.0
+    det = detect(_image(_noisy(img, 1.5, 10)))
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    assert "overlap" not in r.flags
+    full = np.zeros(img.shape, dtype=bool)
+    full[r.line_start : r.line_stop, r.col_start : r.col_stop] = r.mask
+    assert np.all(full[holes])  # holes filled per line
+
+
+def test_k_sigma_validated():
+    with pytest.raises(ValueError):
+        detect(_image(np.zeros((10, 10))), k_sigma=0.0)
