@@ -60,6 +60,7 @@ __all__ = [
     "fit_motion",
     "propagate",
     "synthetic_edges",
+    "whitened_jacobian",
 ]
 
 _DILATION = "edge_bias_px"
@@ -280,6 +281,8 @@ class FitSettings:
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area (its brightness is
         not the ball's mean brightness), added in quadrature.
+    area_floor_px : float
+        Added in quadrature to each area sigma, pixels.
     loss, f_scale : str, float
         Robust loss of :func:`scipy.optimize.least_squares` and its scale in
         sigmas.
@@ -288,17 +291,25 @@ class FitSettings:
     n_nodes : int
         Quadrature nodes per piece of the averaged model.
     max_nfev : int
+        Model evaluations allowed.
+    solver : {"gn", "scipy"}
+        ``"gn"``: the built-in Levenberg-Marquardt (fast, see
+        :func:`_levenberg_marquardt`); ``"scipy"``:
+        :func:`scipy.optimize.least_squares` (``trf``, tight tolerances), kept
+        as a cross-check.
     """
 
     fit_edge_bias: bool = True
     max_spread_px: float = 0.3
     edge_floor_px: float = 0.01
     area_rel_sigma: float = 0.15
+    area_floor_px: float = 0.1
     loss: str = "soft_l1"
     f_scale: float = 3.0
     min_edge_lines: int = 5
     n_nodes: int = 4
-    max_nfev: int = 50
+    max_nfev: int = 60
+    solver: str = "gn"
 
 
 @dataclass(frozen=True)
@@ -376,6 +387,111 @@ def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
     return use_l, use_r, use_a
 
 
+def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
+    """Robust loss ``rho(z)`` and ``rho'(z)`` of squared whitened residuals (scipy's conventions)."""
+    if loss == "linear":
+        return z, np.ones_like(z)
+    if loss == "soft_l1":
+        q = np.sqrt(1.0 + z)
+        return 2.0 * (q - 1.0), 1.0 / q
+    if loss == "huber":
+        big = z > 1.0
+        sq = np.sqrt(np.where(big, z, 1.0))
+        return np.where(big, 2.0 * sq - 1.0, z), np.where(big, 1.0 / sq, 1.0)
+    raise ValueError(f"loss: expected 'linear', 'soft_l1' or 'huber', got {loss!r}")
+
+
+def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings"):
+    """Levenberg-Marquardt with iteratively reweighted robust loss.
+
+    Steps are solved on the column-equilibrated normal equations (the
+    parameters' sizes differ by ~1e8).  It stops when the Gauss-Newton step
+    would lower the cost by less than ``1e-8`` (in chi-square units: far
+    below a 1e-3 sigma move of any parameter), which, unlike a relative
+    ``ftol``, does not stop early along the weak ``vz`` direction.  A trial
+    step costs one model evaluation; the forward-difference Jacobian is
+    recomputed only at accepted points.
+    """
+    f2 = settings.f_scale**2
+
+    def cost_of(r):
+        return 0.5 * f2 * float(_rho((r * r) / f2, settings.loss)[0].sum())
+
+    x = np.asarray(x0, dtype=float).copy()
+    r, J = resid_and_jac(x)
+    cost = cost_of(r)
+    lam = 1e-3
+    n_eval = 1
+    for _ in range(settings.max_nfev):
+        w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
+        Jw, rw = J * w[:, None], r * w
+        cn = np.linalg.norm(Jw, axis=0)
+        cn = np.where(cn > 0, cn, 1.0)
+        Jn = Jw / cn
+        A = Jn.T @ Jn
+        g = Jn.T @ rw
+        while True:
+            try:
+                step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
+            except np.linalg.LinAlgError:
+                step = -np.linalg.lstsq(A + lam * np.eye(A.shape[0]), g, rcond=None)[0]
+            predicted = -(g @ step)  # first-order decrease of 0.5 * chi2
+            if predicted < 1e-8:
+                return x, n_eval, 1, "converged: predicted cost decrease below 1e-8", cost
+            x_new = x + step / cn
+            r_new = resid_only(x_new)
+            n_eval += 1
+            cost_new = cost_of(r_new) if np.all(np.isfinite(r_new)) else math.inf
+            if cost_new <= cost:
+                lam = max(lam / 10.0, 1e-9)
+                x, cost = x_new, cost_new
+                r, J = resid_and_jac(x)
+                n_eval += 1
+                break
+            lam *= 10.0
+            if lam > 1e10 or n_eval >= settings.max_nfev:
+                return x, n_eval, 0, "stopped: no step lowers the cost", cost
+        if n_eval >= settings.max_nfev:
+            break
+    return x, n_eval, 0, f"stopped: {settings.max_nfev} evaluations", cost
+
+
+def _weights(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
+    """Residual selection and 1-sigma of every residual (pixels)."""
+    use_l, use_r, use_a = _select(edges, me, settings)
+    floor2 = settings.edge_floor_px**2
+    sl = np.sqrt(np.nan_to_num(edges.left_sigma_px[use_l]) ** 2 + floor2)
+    sr = np.sqrt(np.nan_to_num(edges.right_sigma_px[use_r]) ** 2 + floor2)
+    ma = edges.area_px[use_a]
+    sa = np.sqrt(
+        edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2
+    )
+    return use_l, use_r, use_a, sl, sr, sa
+
+
+def whitened_jacobian(
+    camera: LineScanCamera, edges: EdgeMeasurements, motion: BallMotion, settings: FitSettings = FitSettings()
+) -> tuple[np.ndarray, tuple[str, ...]]:
+    """Jacobian of the fit's whitened residuals at ``motion``.
+
+    Same residual selection and weights as :func:`fit_motion`; one column per
+    parameter of :data:`PARAM_NAMES` plus ``edge_bias_px`` when
+    ``settings.fit_edge_bias``.  ``J^T J`` is the Fisher information of the
+    edge measurements (Gaussian noise), used by :mod:`ballscan.precision`.
+    """
+    theta = motion.to_params()
+    scale = param_scale(camera, motion)
+    me, dl, dr, da = model_jacobian(camera, theta, motion.radius_m, edges.t_s, scale, motion.acceleration_mps2, n_nodes=settings.n_nodes)
+    use_l, use_r, use_a, sl, sr, sa = _weights(edges, me, settings)
+    J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
+    names = PARAM_NAMES
+    if settings.fit_edge_bias:
+        jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(int(use_a.sum()))])
+        J = np.hstack([J, jb[:, None]])
+        names = names + (_DILATION,)
+    return J, names
+
+
 def fit_motion(
     camera: LineScanCamera,
     edges: EdgeMeasurements,
@@ -410,14 +526,10 @@ def fit_motion(
     scale = param_scale(camera, initial)
     me0 = averaged_model(camera, theta0[None], R, t, acc, nn)
     me0 = ModelEdges(*(getattr(me0, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
-    use_l, use_r, use_a = _select(edges, me0, settings)
+    use_l, use_r, use_a, sl, sr, sa = _weights(edges, me0, settings)
     n_edge_lines = int((use_l & use_r).sum())
-    floor2 = settings.edge_floor_px**2
-    sl = np.sqrt(np.nan_to_num(edges.left_sigma_px[use_l]) ** 2 + floor2)
-    sr = np.sqrt(np.nan_to_num(edges.right_sigma_px[use_r]) ** 2 + floor2)
     ml, mr = edges.left_px[use_l], edges.right_px[use_r]
     ma = edges.area_px[use_a]
-    sa = np.sqrt(edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + 0.01)
     fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
     n_par = 6 + int(fit_b)
     x_scale = np.concatenate([scale, [0.05]]) if fit_b else scale
@@ -472,30 +584,42 @@ def fit_motion(
             run_time_s=time.perf_counter() - t0,
             flags=("degenerate",),
         )
-    res = least_squares(
-        fun,
-        x0,
-        jac=jac,
-        x_scale=x_scale,
-        loss=settings.loss,
-        f_scale=settings.f_scale,
-        method="trf",
-        max_nfev=settings.max_nfev,
-        xtol=1e-8,
-        ftol=1e-8,
-        gtol=1e-8,
-    )
-    th, b = unpack(res.x)
-    r, J = resid_and_jac(res.x)
+    if settings.solver == "scipy":
+        res = least_squares(
+            fun,
+            x0,
+            jac=jac,
+            x_scale=x_scale,
+            loss=settings.loss,
+            f_scale=settings.f_scale,
+            method="trf",
+            max_nfev=settings.max_nfev,
+            xtol=1e-12,
+            ftol=1e-12,
+            gtol=1e-12,
+        )
+        x_sol, n_iter, status, message, cost = res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost)
+    elif settings.solver == "gn":
+
+        def resid_only(x):
+            th_, b_ = unpack(x)
+            me = averaged_model(camera, th_[None], R, t, acc, nn)
+            return np.concatenate(
+                [(me.left_px[0, use_l] - b_ - ml) / sl, (me.right_px[0, use_r] + b_ - mr) / sr, (me.area_px[0, use_a] - ma) / sa]
+            )
+
+        x_sol, n_iter, status, message, cost = _levenberg_marquardt(resid_only, resid_and_jac, x0, settings)
+    else:
+        raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
+    th, b = unpack(x_sol)
+    r, J = resid_and_jac(x_sol)
     # loss-weighted Jacobian (as scipy's res.jac) so that outliers do not
     # shrink the covariance: weight sqrt(rho'(z)) with z = r^2 / f^2
     z = (r / settings.f_scale) ** 2
-    wrob = np.sqrt(1.0 / np.sqrt(1.0 + z)) if settings.loss == "soft_l1" else np.ones_like(r)
-    if settings.loss not in ("soft_l1", "linear"):
-        wrob = np.ones_like(r)
+    wrob = np.sqrt(_rho(z, settings.loss)[1])
     Jw = J * wrob[:, None]
     dof = r.size - n_par
-    chi2_red = float(2.0 * res.cost / dof) if dof > 0 else math.nan
+    chi2_red = float(2.0 * cost / dof) if dof > 0 else math.nan
     # Column-equilibrated normal matrix: the parameters' sizes differ by 1e8,
     # so the rank test and the inverse are done on unit-norm columns.
     cn = np.linalg.norm(Jw, axis=0)
@@ -526,7 +650,7 @@ def fit_motion(
         cov[3, :] *= -1
         cov[:, 3] *= -1
     motion = BallMotion.from_params(th, R, acc)
-    converged = bool(res.status > 0)
+    converged = bool(status > 0)
     flags = []
     if not converged:
         flags.append("not_converged")
@@ -537,9 +661,9 @@ def fit_motion(
         covariance=cov,
         chi2_red=chi2_red,
         residual_rms_px=rms,
-        n_iterations=int(res.nfev),
-        status=int(res.status),
-        message=str(res.message),
+        n_iterations=n_iter,
+        status=status,
+        message=message,
         converged=converged,
         undetermined=tuple(undetermined),
         edge_bias_px=float(b),
@@ -649,6 +773,7 @@ def synthetic_edges(
     seed: int | None = 0,
     area_sigma_px: float = 0.3,
     max_spread_px: float = 0.3,
+    add_noise: bool = True,
 ) -> EdgeMeasurements:
     """Edge measurements generated from the averaged model plus Gaussian noise.
 
@@ -657,6 +782,7 @@ def synthetic_edges(
     ``area_sigma_px`` (pixels).  For tests and precision studies.
     """
     rng = np.random.default_rng(seed)
+    k_noise = 1.0 if add_noise else 0.0
     t = np.arange(n_lines) / camera.line_rate_hz
     me = averaged_model(camera, motion.to_params()[None], motion.radius_m, t, motion.acceleration_mps2, 8)
     left, right, pres, area, spread = me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0]
@@ -669,9 +795,9 @@ def synthetic_edges(
     t, left, right, pres, area, spread, ok = (a[keep] for a in (t, left, right, pres, area, spread, ok))
     lines = np.arange(n_lines)[keep]
     n = t.size
-    el = left + edge_sigma_px * rng.standard_normal(n)
-    er = right + edge_sigma_px * rng.standard_normal(n)
-    ar = area + area_sigma_px * rng.standard_normal(n)
+    el = left + k_noise * edge_sigma_px * rng.standard_normal(n)
+    er = right + k_noise * edge_sigma_px * rng.standard_normal(n)
+    ar = area + k_noise * area_sigma_px * rng.standard_normal(n)
     sig = np.full(n, float(edge_sigma_px))
     end = (pres > 0) & ~ok
     return EdgeMeasurements(
