@@ -1,0 +1,145 @@
+"""Model fit: model and Jacobian checks, recovery of truth, honest sigmas, degeneracy, propagation."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from ballscan.camera import LineScanCamera
+from ballscan.fit import (
+    FitSettings,
+    averaged_model,
+    fit_motion,
+    model_jacobian,
+    param_scale,
+    propagate,
+    synthetic_edges,
+)
+from ballscan.motion import PARAM_NAMES, BallMotion
+from ballscan.silhouette import silhouette
+
+
+def _serve():
+    cam = LineScanCamera(2048, 4200.0, 1023.5, 70000.0, 1.2e-5, k1=-0.05)
+    m = BallMotion(0.0335, 0.0017, (0, -0.08, 4.2), (44.5, 3.9, -5.5))
+    return cam, m
+
+
+def test_vectorised_model_equals_silhouette():
+    cam, m = _serve()
+    t = np.arange(240) / cam.line_rate_hz
+    ref = silhouette(cam, m, t, "averaged", n_nodes=16)
+    me = averaged_model(cam, m.to_params()[None], m.radius_m, t)
+    ok = ref.present
+    assert ok.sum() > 100
+    assert np.max(np.abs(me.left_px[0, ok] - ref.left_px[ok])) < 1e-5
+    assert np.max(np.abs(me.right_px[0, ok] - ref.right_px[ok])) < 1e-5
+    assert np.max(np.abs(me.area_px[0] - ref.area_px)) < 1e-5
+    assert np.max(np.abs(me.presence[0] - ref.presence)) < 1e-9
+
+
+def test_jacobian_against_central_differences_of_silhouette():
+    cam, m = _serve()
+    t = np.arange(240) / cam.line_rate_hz
+    th = m.to_params()
+    scale = param_scale(cam, m)
+    _, dl, dr, da = model_jacobian(cam, th, m.radius_m, t, scale, n_nodes=8)
+    ref = silhouette(cam, m, t)
+    # interior lines only: at the first/last line presence switches on (kink)
+    ok = ref.present & (ref.presence > 0.999)
+    for k in range(6):
+        h = 1e-2 * scale[k]
+        sp = silhouette(cam, BallMotion.from_params(th + h * np.eye(6)[k], m.radius_m), t)
+        sm = silhouette(cam, BallMotion.from_params(th - h * np.eye(6)[k], m.radius_m), t)
+        for d_fd, d_an in (((sp.left_px - sm.left_px) / (2 * h), dl[:, k]), ((sp.right_px - sm.right_px) / (2 * h), dr[:, k]), ((sp.area_px - sm.area_px) / (2 * h), da[:, k])):
+            both = ok & np.isfinite(d_fd)
+            err = np.abs(d_fd[both] - d_an[both]) * scale[k]  # pixels per natural step
+            assert np.max(err) < 2e-3 * max(1.0, np.max(np.abs(d_an[both]) * scale[k])), PARAM_NAMES[k]
+
+
+def test_fit_recovers_truth_from_noise_free_edges():
+    cam, m = _serve()
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False)
+    init = BallMotion(0.0335, 0.00172, (0, -0.079, 4.3), (43.0, 3.5, -3.0))
+    r = fit_motion(cam, e, init)
+    assert r.converged and not r.undetermined
+    assert abs(r.motion.speed_mps - m.speed_mps) / m.speed_mps < 1e-5
+    assert np.allclose(r.motion.to_params(), m.to_params(), rtol=0, atol=[1e-9, 1e-6, 1e-5, 1e-4, 1e-4, 5e-3])
+    assert abs(r.edge_bias_px) < 1e-4
+    assert r.run_time_s < 0.2
+
+
+def test_fit_with_noise_is_honest_and_solvers_agree():
+    cam, m = _serve()
+    init = BallMotion(0.0335, 0.00172, (0, -0.079, 4.3), (43.0, 3.5, -3.0))
+    z = []
+    for seed in range(40):
+        e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=seed, area_sigma_px=1e9)
+        r = fit_motion(cam, e, init, FitSettings(fit_edge_bias=False, edge_floor_px=0.0))
+        assert r.converged
+        z.append((r.motion.to_params() - m.to_params()) / r.sigmas)
+    z = np.array(z)
+    assert np.all(np.abs(z.mean(axis=0)) < 0.6)
+    assert np.all((z.std(axis=0) > 0.6) & (z.std(axis=0) < 1.4))
+    assert 0.5 < r.chi2_red < 1.6
+    r2 = fit_motion(cam, e, init, FitSettings(fit_edge_bias=False, edge_floor_px=0.0, solver="scipy"))
+    assert np.all(np.abs(r2.motion.to_params() - r.motion.to_params()) < 0.02 * r.sigmas)
+
+
+def test_edge_bias_nuisance_absorbs_a_dilation():
+    cam, m = _serve()
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False)
+    from dataclasses import replace
+
+    e_b = replace(e, left_px=e.left_px + 0.1, right_px=e.right_px - 0.1)  # shaded limbs: both edges move inwards
+    r = fit_motion(cam, e_b, m)
+    assert r.edge_bias_px == pytest.approx(-0.1, abs=0.01)
+    assert abs(r.motion.speed_mps - m.speed_mps) / m.speed_mps < 1e-4
+    r0 = fit_motion(cam, e_b, m, FitSettings(fit_edge_bias=False))
+    assert abs(r0.motion.position_m[2] - m.position_m[2]) > 5 * abs(r.motion.position_m[2] - m.position_m[2])
+
+
+def test_too_few_lines_is_degenerate_not_a_guess():
+    cam, m = _serve()
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=0)
+    from dataclasses import replace
+
+    keep = np.zeros(e.lines.size, bool)
+    keep[e.left_ok.nonzero()[0][:3]] = True
+    e3 = replace(e, left_ok=e.left_ok & keep, right_ok=e.right_ok & keep, end_line=np.zeros_like(keep))
+    r = fit_motion(cam, e3, m)
+    assert r.undetermined == PARAM_NAMES
+    assert not r.converged and "degenerate" in r.flags
+    assert np.all(np.isnan(r.covariance))
+
+
+def test_vx_sign_follows_crossing():
+    cam, m = _serve()
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=1)
+    mneg = BallMotion(m.radius_m, m.t_c_s, m.position_m, (-44.0, 3.9, -5.0))
+    assert fit_motion(cam, e, mneg).motion.velocity_mps[0] > 0
+    from dataclasses import replace
+
+    cam_m = replace(cam, crossing="-x")
+    assert fit_motion(cam_m, e, m).motion.velocity_mps[0] < 0
+
+
+def test_propagate_speed_direction_world():
+    cam, m = _serve()
+    rng = np.random.default_rng(0)
+    A = rng.normal(size=(6, 6)) * np.array([1e-7, 1e-4, 1e-3, 0.05, 0.05, 0.5])
+    C = A @ A.T
+    u = propagate(cam, m, C)
+    V = np.asarray(m.velocity_mps)
+    samples = rng.multivariate_normal(m.to_params(), C, size=20000)
+    sp = np.linalg.norm(samples[:, 3:], axis=1)
+    assert u.speed_sigma_mps == pytest.approx(sp.std(), rel=0.05)
+    assert u.speed_bias_mps == pytest.approx(sp.mean() - m.speed_mps, rel=0.3, abs=2e-3)
+    psi = np.degrees(np.arctan2(samples[:, 4], samples[:, 3]))
+    assert u.direction_sigma_deg[0] == pytest.approx(psi.std(), rel=0.05)
+    assert u.world_velocity_mps is None
+    rot = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    camw = cam.with_pose(rot, [0.1, 0.2, 0.3])
+    uw = propagate(camw, m, C)
+    assert np.allclose(uw.world_velocity_mps, rot.T @ V)
+    assert np.allclose(np.sort(uw.world_velocity_sigma_mps), np.sort(u.velocity_sigma_mps))
