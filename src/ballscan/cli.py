@@ -1,0 +1,152 @@
+"""The ``ballscan`` command: a thin layer over the library (geometry.md "Command line contract").
+
+Every error the library raises as :class:`~ballscan.errors.BallscanError`
+(or a ``ValueError`` from argument checking) is printed as one line on
+stderr with exit status 2; nothing prints a traceback.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from .errors import BallscanError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, help="Ball position and velocity from line-scan images.")
+
+
+def _vec(text: str, name: str) -> tuple[float, float, float]:
+    try:
+        vals = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise typer.BadParameter(f"expected three comma-separated numbers, got {text!r}", param_hint=name) from None
+    if len(vals) != 3:
+        raise typer.BadParameter(f"expected three comma-separated numbers, got {text!r}", param_hint=name)
+    return (vals[0], vals[1], vals[2])
+
+
+# ---------------------------------------------------------------- simulate
+@app.command()
+def simulate(
+    out: Path = typer.Option(..., "--out", help="Output name: writes OUT.png, OUT.camera.toml, OUT.truth.json."),
+    camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
+    preset: Optional[str] = typer.Option(None, "--preset", help="Named scene: tennis-serve, table-tennis, golf-drive, baseball-pitch, paper-rail."),
+    radius: Optional[float] = typer.Option(None, "--radius", help="Ball radius R, metres."),
+    position: Optional[str] = typer.Option(None, "--position", help="Centre at t_c: X,Y,Z in metres (X = 0)."),
+    velocity: Optional[str] = typer.Option(None, "--velocity", help="Velocity VX,VY,VZ in m/s."),
+    t_c: Optional[float] = typer.Option(None, "--t-c", help="Crossing time t_c, seconds."),
+    lines: Optional[int] = typer.Option(None, "--lines", help="Number of scan lines."),
+    noise: str = typer.Option("default", "--noise", help="'default' (8-bit sensor noise) or 'none' (clean 16-bit render)."),
+    seed: int = typer.Option(0, "--seed", help="Seed of the sensor noise."),
+    bits: Optional[int] = typer.Option(None, "--bits", help="Output bit depth 8, 12 or 16 (default: 8 with noise, 16 without)."),
+    texture: str = typer.Option("none", "--texture", help="'none' or 'tennis' (seam band)."),
+    ball_level: Optional[float] = typer.Option(None, "--ball-level", help="Ball albedo, linear 0..1."),
+    background: float = typer.Option(0.1, "--background", help="Background level, linear 0..1 (above the ball's for a dark ball)."),
+    flat: bool = typer.Option(False, "--flat", help="No shading (uniform ball)."),
+    extra_ball: list[str] = typer.Option([], "--add-ball", help="Another ball: 'R;X,Y,Z;VX,VY,VZ;T_C' (repeatable)."),
+) -> None:
+    """Render a synthetic line-scan image with its camera file and ground truth."""
+    from .simulate import SimulationRequest, run_simulation
+
+    req = SimulationRequest(
+        out=out,
+        camera_path=camera,
+        preset=preset,
+        radius_m=radius,
+        position_m=_vec(position, "--position") if position else None,
+        velocity_mps=_vec(velocity, "--velocity") if velocity else None,
+        t_c_s=t_c,
+        n_lines=lines,
+        noise=noise,
+        seed=seed,
+        bits=bits,
+        texture=texture,
+        ball_level=ball_level,
+        background_level=background,
+        shading=not flat,
+        extra_balls=tuple(extra_ball),
+    )
+    written = run_simulation(req)
+    for p in written:
+        typer.echo(str(p))
+
+
+# ---------------------------------------------------------------- estimate
+@app.command()
+def estimate(
+    image: Path = typer.Argument(..., help="Line-scan image (PNG or TIFF, rows = scan lines)."),
+    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
+    method: str = typer.Option("fit", "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
+    as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess red, estimate green)."),
+    timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
+    lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
+    saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
+) -> None:
+    """Measure every ball in a line-scan image."""
+    from .camera import line_times, load_camera
+    from .estimate import estimate_image
+    from .images import load_image, load_timestamps
+    from .report import format_table
+
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    cam = load_camera(camera)
+    img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
+    ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
+    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts)
+    if as_json:
+        typer.echo(report.to_json(cam))
+    else:
+        typer.echo(format_table(report))
+    if plot is not None:
+        from .plot import save_overlay
+
+        save_overlay(plot, img.data, cam, report, line_times(cam, img.data.shape[0], ts))
+
+
+# ---------------------------------------------------------------- demo
+@app.command()
+def demo(
+    out: Path = typer.Option(Path("demo_out"), "--out", help="Folder for the example files."),
+    preset: str = typer.Option("tennis-serve", "--preset", help="Scene to render."),
+) -> None:
+    """Render an example, estimate it with both methods and plot the result."""
+    from .demo import run_demo
+
+    for line in run_demo(out, preset):
+        typer.echo(line)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: run the CLI, turning library errors into one-line messages."""
+    try:
+        app(args=argv, prog_name="ballscan", standalone_mode=False)
+    except BallscanError as exc:
+        print(f"ballscan: error: {exc}", file=sys.stderr)
+        return 2
+    except (ValueError, OSError) as exc:
+        print(f"ballscan: error: {exc}", file=sys.stderr)
+        return 2
+    except typer.Exit as exc:
+        return exc.exit_code
+    except typer.Abort:
+        print("ballscan: aborted", file=sys.stderr)
+        return 1
+    except Exception as exc:  # click usage errors
+        import click
+
+        if isinstance(exc, click.ClickException):
+            exc.show()
+            return exc.exit_code
+        raise
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,296 @@
+"""The estimation pipeline: detection -> key points -> initial guess -> refinement.
+
+``estimate_image`` runs the whole chain on one line-scan image and returns
+an :class:`~ballscan.results.EstimateReport` with one
+:class:`~ballscan.results.BallEstimate` per detected ball, in the order of
+``t_c``.  Two refinements are available:
+
+``"paper"``
+    the gradient-image matching of the paper with Powell's method
+    (:mod:`ballscan.paper`);
+``"fit"``
+    sub-pixel edges fitted by weighted nonlinear least squares with
+    uncertainties (:mod:`ballscan.edges`, :mod:`ballscan.fit`).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from .camera import LineScanCamera, line_times
+from .detection import BallRegion, Detection, detect, region_background
+from .images import LineImage
+from .initial import InitialGuess, find_keypoints, initial_guess
+from .motion import BallMotion
+from .results import BallEstimate, EstimateReport
+
+__all__ = ["METHODS", "NormalisedBox", "normalised_box", "estimate_image", "estimate_region"]
+
+METHODS = ("fit", "paper")
+
+#: keys of an estimate that each motion parameter determines
+_PARAM_KEYS = {
+    "t_c_s": ("t_c_s",),
+    "y0_m": ("position_m",),
+    "z0_m": ("position_m",),
+    "vx_mps": ("velocity_mps", "speed_mps"),
+    "vy_mps": ("velocity_mps", "speed_mps"),
+    "vz_mps": ("velocity_mps", "speed_mps"),
+}
+
+
+@dataclass(frozen=True)
+class NormalisedBox:
+    """A ball's neighbourhood mapped to background 0, ball 1.
+
+    Attributes
+    ----------
+    data : ndarray (n_lines, n_cols)
+        ``polarity * (I - background) / |contrast|``.
+    sigma : ndarray (n_cols,)
+        Pixel noise in the same units.
+    mask : ndarray of bool
+        The detector's ball pixels within the box.
+    line_offset, col_offset : int
+        Image line and pixel of ``data[0, 0]``.
+    """
+
+    data: np.ndarray
+    sigma: np.ndarray
+    mask: np.ndarray
+    line_offset: int
+    col_offset: int
+
+
+def normalised_box(image: LineImage, detection: Detection, region: BallRegion, margin: int = 3) -> NormalisedBox:
+    """The region's box plus ``margin`` pixels, normalised by the measured contrast."""
+    bg, noise, (ls, cs) = region_background(detection, region, margin=margin)
+    contrast = abs(region.contrast_dn)
+    if not contrast > 0:
+        raise ValueError(f"region {region.index}: zero ball/background contrast")
+    data = region.polarity * (image.data[ls, cs] - bg) / contrast
+    mask = np.zeros(data.shape, dtype=bool)
+    r0, c0 = region.line_start - ls.start, region.col_start - cs.start
+    mask[r0 : r0 + region.mask.shape[0], c0 : c0 + region.mask.shape[1]] = region.mask
+    return NormalisedBox(data=data, sigma=noise / contrast, mask=mask, line_offset=ls.start, col_offset=cs.start)
+
+
+def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
+    if t.size < 3:
+        return False
+    period = float(np.median(np.diff(t)))
+    seg = np.diff(t[max(first - 1, 0) : last + 2])
+    return bool(np.any(seg > 1.5 * period))
+
+
+def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, radius_m: float, t: np.ndarray) -> InitialGuess:
+    kp = find_keypoints(
+        box.data,
+        box.sigma,
+        box.mask,
+        box.line_offset,
+        box.col_offset,
+        t,
+        cut_first="cut_first_line" in region.flags,
+        cut_last="cut_last_line" in region.flags,
+    )
+    return initial_guess(kp, camera, radius_m)
+
+
+def _undetermined_estimate(method: str, radius_m: float, region: BallRegion, flags: list[str], why: str, t0: float) -> BallEstimate:
+    return BallEstimate(
+        method=method,
+        radius_m=radius_m,
+        t_c_s=None,
+        position_m=None,
+        velocity_mps=None,
+        speed_mps=None,
+        flags=tuple(flags) + ("degenerate",),
+        undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
+        first_line=region.line_start,
+        last_line=region.line_stop - 1,
+        run_time_s=time.perf_counter() - t0,
+        extra={"reason": why},
+    )
+
+
+def estimate_region(
+    image: LineImage,
+    detection: Detection,
+    region: BallRegion,
+    camera: LineScanCamera,
+    radius_m: float,
+    t_lines_s: np.ndarray,
+    method: str = "fit",
+) -> BallEstimate:
+    """Estimate one detected ball's motion (see the module docstring)."""
+    if method not in METHODS:
+        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
+    t0 = time.perf_counter()
+    flags = list(region.flags)
+    if _dropped_lines(t_lines_s, region.line_start, region.line_stop - 1):
+        flags.append("dropped_lines")
+    box = normalised_box(image, detection, region)
+    try:
+        ig = _initial(box, region, camera, radius_m, t_lines_s)
+    except ValueError as exc:
+        return _undetermined_estimate(method, radius_m, region, flags, f"initial guess impossible: {exc}", t0)
+    if ig.degenerate:
+        flags.append("initial_degenerate")
+    initial_est = BallEstimate.from_motion(ig.motion, "initial", flags=("initial_degenerate",) if ig.degenerate else ())
+    t_init = time.perf_counter() - t0
+
+    if method == "paper":
+        from .paper import refine_paper
+
+        res = refine_paper(camera, ig.motion, box.data, box.line_offset, box.col_offset, t_lines_s)
+        if not res.converged:
+            flags.append("not_converged")
+        return BallEstimate.from_motion(
+            _vx_convention(res.motion, camera),
+            "paper",
+            initial=initial_est,
+            flags=tuple(flags),
+            first_line=region.line_start,
+            last_line=region.line_stop - 1,
+            run_time_s=time.perf_counter() - t0,
+            extra={
+                "energy": res.energy,
+                "initial_energy": res.initial_energy,
+                "evaluations": res.n_evaluations,
+                "iterations": res.n_iterations,
+                "time_initial_s": t_init,
+                "time_refine_s": res.run_time_s,
+            },
+        )
+
+    from .edges import measure_edges
+    from .fit import fit_motion, propagate
+
+    t_e = time.perf_counter()
+    bg, noise, (ls, cs) = region_background(detection, region, margin=0)
+    others = [r for r in detection.regions if r.index != region.index]
+    edges = measure_edges(
+        image.data,
+        region,
+        _full_background(detection),
+        detection.noise_dn,
+        t_lines_s,
+        saturation_dn=detection.saturation_dn,
+        others=others,
+    )
+    t_edges = time.perf_counter() - t_e
+    fit = fit_motion(camera, edges, ig.motion)
+    flags.extend(fit.flags)
+    if not fit.converged:
+        flags.append("not_converged")
+    unc = propagate(camera, fit.motion, fit.covariance)
+    undetermined = sorted({k for p in fit.undetermined for k in _PARAM_KEYS.get(p, (p,))})
+    if undetermined:
+        flags.append("degenerate")
+
+    def keep(key: str, value):
+        return None if key in undetermined else value
+
+    cov = fit.covariance
+    return BallEstimate(
+        method="fit",
+        radius_m=radius_m,
+        t_c_s=keep("t_c_s", fit.motion.t_c_s),
+        position_m=keep("position_m", fit.motion.position_m),
+        velocity_mps=keep("velocity_mps", fit.motion.velocity_mps),
+        speed_mps=keep("speed_mps", unc.speed_mps),
+        t_c_sigma_s=keep("t_c_s", float(np.sqrt(cov[0, 0]))),
+        position_sigma_m=keep("position_m", unc.position_sigma_m),
+        velocity_sigma_mps=keep("velocity_mps", unc.velocity_sigma_mps),
+        speed_sigma_mps=keep("speed_mps", unc.speed_sigma_mps),
+        initial=initial_est,
+        flags=tuple(flags),
+        undetermined=tuple(undetermined),
+        first_line=region.line_start,
+        last_line=region.line_stop - 1,
+        run_time_s=time.perf_counter() - t0,
+        extra={
+            "chi2_red": fit.chi2_red,
+            "residual_rms_px": fit.residual_rms_px,
+            "iterations": fit.n_iterations,
+            "edge_bias_px": fit.edge_bias_px,
+            "n_edges": fit.n_edges,
+            "speed_bias_mps": unc.speed_bias_mps,
+            "direction_deg": unc.direction_deg,
+            "direction_sigma_deg": unc.direction_sigma_deg,
+            "position_cov_m2": _cov_block(cov, [None, 1, 2]),
+            "velocity_cov_m2ps2": cov[3:6, 3:6],
+            "time_initial_s": t_init,
+            "time_edges_s": t_edges,
+            "time_fit_s": fit.run_time_s,
+        },
+    )
+
+
+def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
+    """3x3 covariance of (x, y0, z0): x is 0 by definition (row/column of zeros)."""
+    out = np.zeros((3, 3))
+    for a, i in enumerate(idx):
+        for b, j in enumerate(idx):
+            if i is not None and j is not None:
+                out[a, b] = cov[i, j]
+    return out
+
+
+def _full_background(detection: Detection) -> np.ndarray:
+    n, w = detection.shape
+    from .detection import background_at
+
+    return background_at(detection, slice(0, n), slice(0, w))
+
+
+def _vx_convention(motion: BallMotion, camera: LineScanCamera) -> BallMotion:
+    """geometry.md: report V.x >= 0 unless the camera states the crossing direction."""
+    vx = abs(motion.velocity_mps[0]) * camera.crossing_sign
+    return BallMotion(motion.radius_m, motion.t_c_s, motion.position_m, (vx, *motion.velocity_mps[1:]), motion.acceleration_mps2)
+
+
+def estimate_image(
+    image: LineImage,
+    camera: LineScanCamera,
+    radius_m: float,
+    *,
+    method: str = "fit",
+    timestamps_s: np.ndarray | None = None,
+) -> EstimateReport:
+    """Detect and measure every ball of one line-scan image.
+
+    Parameters
+    ----------
+    image : LineImage
+    camera : LineScanCamera
+        Its width must match the image's.
+    radius_m : float
+        Known ball radius, metres.
+    method : {"fit", "paper"}
+    timestamps_s : ndarray, optional
+        Per-line timestamps (seconds) replacing ``i / line_rate``.
+    """
+    if method not in METHODS:
+        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
+    if not (np.isfinite(radius_m) and radius_m > 0):
+        raise ValueError(f"radius: must be positive, got {radius_m!r}")
+    n_lines, width = image.data.shape
+    if width != camera.width:
+        from .errors import ImageFileError
+
+        raise ImageFileError(image.source, f"has {width} pixels per line but the camera file says width = {camera.width}")
+    if timestamps_s is not None and camera.exposure_s is None:
+        # geometry.md: with per-line timestamps the exposure defaults to the median line period
+        from dataclasses import replace
+
+        camera = replace(camera, exposure_s=float(np.median(np.diff(timestamps_s))))
+    t = line_times(camera, n_lines, timestamps_s)
+    det = detect(image)
+    balls = [estimate_region(image, det, r, camera, radius_m, t, method) for r in det.regions]
+    balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
+    return EstimateReport(image=image.source, balls=tuple(balls))
