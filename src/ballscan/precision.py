@@ -22,13 +22,13 @@ centre at ``t_c``, the velocity, the speed and the direction.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
 from .camera import LineScanCamera
 from .fit import FitSettings, averaged_model, param_scale, propagate, synthetic_edges, whitened_jacobian
-from .motion import PARAM_NAMES, BallMotion
+from .motion import BallMotion
 from .silhouette import visible_line_count
 
 __all__ = ["PrecisionBound", "edge_crlb", "pixel_crlb"]
