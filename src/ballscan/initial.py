@@ -191,7 +191,7 @@ def find_keypoints(
             peak = float(np.clip(peak, -3, 3))
         else:
             peak = 0.0
-        r_o = r_a + k + peak
+        r_o = float(np.clip(r_a + k + peak, r_a, r_b))
         if cut_first:
             cut = "first"
             r_a_virtual = 2 * r_o - r_b

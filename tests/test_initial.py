@@ -1,0 +1,92 @@
+"""Key points and the closed-form initial guess, Eq. (3)-(7)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscan.camera import LineScanCamera
+from ballscan.initial import KeyPoints, half_contrast_edges, initial_guess
+from ballscan.motion import BallMotion
+from ballscan.silhouette import silhouette
+
+
+def exact_keypoints(cam: LineScanCamera, m: BallMotion, u_sigma: float = 0.05) -> KeyPoints:
+    """Key points of the ideal chord model: A and B are the sphere's front and back points."""
+    R, vx = m.radius_m, m.velocity_mps[0]
+    t_a, t_b = m.t_c_s - R / vx, m.t_c_s + R / vx
+    ca, cb = m.centre(np.array([t_a, t_b]))
+    u_a, u_b = cam.project(np.array([ca[1], cb[1]]), np.array([ca[2], cb[2]]))
+    sil = silhouette(cam, m, np.array([m.t_c_s]), model="chord")
+    return KeyPoints(
+        line_a=t_a * cam.line_rate_hz, line_b=t_b * cam.line_rate_hz, u_a=float(u_a), u_b=float(u_b),
+        u_a_sigma_px=u_sigma, u_b_sigma_px=u_sigma, line_o=m.t_c_s * cam.line_rate_hz,
+        u_c=float(sil.right_px[0]), u_d=float(sil.left_px[0]), t_a_s=t_a, t_b_s=t_b,
+    )
+
+
+@pytest.mark.parametrize(
+    "pos,vel",
+    [((0, 0.02, 3.0), (30.0, 0.0, 0.0)), ((0, -0.3, 2.5), (20.0, 6.0, 0.0)), ((0, 0.4, 4.0), (25.0, -8.0, 4.0))],
+)
+def test_exact_keypoints_give_exact_motion(pos, vel):
+    cam = LineScanCamera(4096, 4000.0, 2047.5, 50000.0)
+    m = BallMotion(0.0335, 0.002, pos, vel)
+    ig = initial_guess(exact_keypoints(cam, m, u_sigma=1e-4), cam, m.radius_m, tip_sigma_px=1e-4)
+    np.testing.assert_allclose(ig.motion.position_m, m.position_m, atol=1e-9)
+    assert ig.motion.t_c_s == pytest.approx(m.t_c_s, abs=1e-12)
+    if vel[1] == 0 and vel[2] == 0:
+        assert ig.degenerate  # u_a == u_b: Eq. (5)-(6) singular
+        np.testing.assert_allclose(ig.motion.velocity_mps, vel, atol=1e-9)
+    else:
+        assert not ig.degenerate
+        np.testing.assert_allclose(ig.motion.velocity_mps, vel, rtol=1e-7, atol=1e-6)
+
+
+def test_paper_sign_convention_phi_positive():
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
+    m = BallMotion(0.0335, 0.002, (0, 0.1, 3.0), (30.0, 0.0, 0.0))
+    kp = exact_keypoints(cam, m)
+    assert kp.u_c > kp.u_d
+    ig = initial_guess(kp, cam, m.radius_m)
+    assert ig.phi_rad > 0
+    # gamma = arctan(y'_c / f) with y' = -f n: the tip c lies at positive y here, so gamma < 0
+    assert ig.gamma_rad == pytest.approx(math.atan(-cam.backproject(np.array([kp.u_c]))[0]))
+
+
+def test_ill_conditioned_depth_motion_is_flagged_not_divided():
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
+    m = BallMotion(0.0335, 0.002, (0, 0.02, 3.0), (30.0, 1.0, 0.0))  # u_a, u_b only ~2 px apart
+    kp = exact_keypoints(cam, m)
+    # a 0.3 px error on one tip would make Eq. (5)-(6) invent metres per second of V.z
+    from dataclasses import replace
+
+    ig = initial_guess(replace(kp, u_c=kp.u_c + 0.3), cam, m.radius_m)
+    assert ig.degenerate
+    assert ig.motion.velocity_mps[2] == 0.0
+    assert ig.motion.velocity_mps[1] == pytest.approx(1.0, abs=0.2)  # V.y still from a and b
+
+
+def test_duration_counts_first_to_last_line():
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 1000.0)
+    kp = KeyPoints(10.0, 30.0, 1000.0, 1000.0, 0.05, 0.05, 20.0, 1040.0, 960.0, 0.010, 0.030)
+    ig = initial_guess(kp, cam, 0.05)
+    assert ig.duration_s == pytest.approx(0.020)
+    assert ig.motion.velocity_mps[0] == pytest.approx(2 * 0.05 / 0.020)
+    assert ig.motion.t_c_s == pytest.approx(0.020)
+
+
+def test_crossing_direction_sets_vx_sign():
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 1000.0, crossing="-x")
+    kp = KeyPoints(10.0, 30.0, 1000.0, 1000.0, 0.05, 0.05, 20.0, 1040.0, 960.0, 0.010, 0.030)
+    assert initial_guess(kp, cam, 0.05).motion.velocity_mps[0] < 0
+
+
+def test_half_contrast_edges_linear_interpolation():
+    p = np.array([0.0, 0.0, 0.25, 0.75, 1.0, 1.0, 0.6, 0.2, 0.0])
+    left, right = half_contrast_edges(p)
+    assert left == pytest.approx(2.5)
+    assert right == pytest.approx(6.25)
+    assert all(math.isnan(v) for v in half_contrast_edges(np.zeros(5)))
