@@ -1,0 +1,112 @@
+"""The command line: contract of geometry.md, one-line errors, demo."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from ballscan.cli import main
+
+from .conftest import DATA
+
+
+def run(capsys, *args):
+    code = main([str(a) for a in args])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_simulate_then_estimate_json(tmp_path, capsys):
+    name = tmp_path / "serve"
+    code, out, err = run(capsys, "simulate", "--preset", "tennis-serve", "--out", name, "--seed", "4")
+    assert code == 0, err
+    for suffix in (".png", ".camera.toml", ".truth.json"):
+        assert (tmp_path / f"serve{suffix}").exists()
+    truth = json.loads((tmp_path / "serve.truth.json").read_text())
+    code, out, err = run(capsys, "estimate", f"{name}.png", "--camera", f"{name}.camera.toml", "--radius", truth["radius_m"], "--json", "--method", "paper", "--plot", tmp_path / "o.png")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["image"].endswith("serve.png") and len(doc["balls"]) == 1
+    ball = doc["balls"][0]
+    for key in ("t_c_s", "position_m", "velocity_mps", "speed_mps", "method", "initial", "flags", "run_time_s", "undetermined"):
+        assert key in ball
+    assert ball["method"] == "paper"
+    # the contract, not accuracy (the preset is a textured, shaded, noisy ball;
+    # accuracy is tested in test_paper.py and test_estimate.py)
+    assert abs(ball["velocity_mps"][0] - truth["velocity_mps"][0]) / truth["velocity_mps"][0] < 0.05
+    assert (tmp_path / "o.png").stat().st_size > 1000
+
+
+def test_simulate_contract_flags_clean(tmp_path, capsys):
+    cam = DATA / "scenes" / "pub_tennis_serve.camera.toml"
+    code, _, err = run(capsys, "simulate", "--camera", cam, "--radius", "0.0335", "--position", "0,0.01,3.0",
+                       "--velocity", "30,1,-0.5", "--t-c", "0.0012", "--lines", "170", "--out", tmp_path / "s", "--noise", "none")
+    assert code == 0, err
+    truth = json.loads((tmp_path / "s.truth.json").read_text())
+    assert truth["position_m"] == [0.0, 0.01, 3.0] and truth["t_c_s"] == 0.0012
+    assert math.isclose(truth["speed_mps"], math.sqrt(30**2 + 1 + 0.25))
+    code, out, err = run(capsys, "estimate", tmp_path / "s.png", "--camera", tmp_path / "s.camera.toml", "--radius", "0.0335")
+    assert code == 0 and "ball 0" in out and "speed" in out
+
+
+def test_estimate_no_ball_is_empty_list_exit_0(tmp_path, capsys):
+    import numpy as np
+    import imageio.v3 as iio
+
+    iio.imwrite(tmp_path / "empty.png", np.full((50, 2048), 30, np.uint8))
+    code, out, _ = run(capsys, "estimate", tmp_path / "empty.png", "--camera", DATA / "scenes" / "pub_tennis_serve.camera.toml", "--radius", "0.0335", "--json")
+    assert code == 0 and json.loads(out)["balls"] == []
+
+
+@pytest.mark.parametrize(
+    "camera_text,needle",
+    [
+        ("width = 2048\nfocal_px = -1.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "focal_px"),
+        ("width = 2048\nfocal_px = nan\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "focal_px"),
+        ("width = 2048\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "focal_px"),
+        ("width = 2048\nfocal_px = 3000.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n[pose]\nrotation = [[2,0,0],[0,1,0],[0,0,1]]\ntranslation = [0,0,0]\n", "pose.rotation"),
+        ("width = \"x\"\nfocal_px = 3000.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "width"),
+    ],
+)
+def test_bad_camera_file_one_line_error(tmp_path, capsys, camera_text, needle):
+    cam = tmp_path / "bad.camera.toml"
+    cam.write_text(camera_text)
+    code, out, err = run(capsys, "estimate", DATA / "scenes" / "pub_tennis_serve.png", "--camera", cam, "--radius", "0.0335")
+    assert code != 0 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "bad.camera.toml" in lines[0] and needle in lines[0]
+    assert "Traceback" not in err
+
+
+def test_bad_image_one_line_error(tmp_path, capsys):
+    bad = tmp_path / "broken.png"
+    bad.write_bytes(b"\x89PNG\r\n\x1a\n" + b"garbage" * 10)
+    code, out, err = run(capsys, "estimate", bad, "--camera", DATA / "scenes" / "pub_tennis_serve.camera.toml", "--radius", "0.0335")
+    assert code != 0 and len(err.strip().splitlines()) == 1 and "broken.png" in err
+    code, out, err = run(capsys, "estimate", tmp_path / "missing.png", "--camera", DATA / "scenes" / "pub_tennis_serve.camera.toml", "--radius", "0.0335")
+    assert code != 0 and "missing.png" in err and len(err.strip().splitlines()) == 1
+
+
+def test_width_mismatch_and_bad_radius(tmp_path, capsys):
+    cam = DATA / "scenes" / "pub_pingpong.camera.toml"  # 1024 px
+    code, _, err = run(capsys, "estimate", DATA / "scenes" / "pub_tennis_serve.png", "--camera", cam, "--radius", "0.0335")
+    assert code != 0 and "width" in err and len(err.strip().splitlines()) == 1
+    code, _, err = run(capsys, "estimate", DATA / "scenes" / "pub_tennis_serve.png", "--camera", DATA / "scenes" / "pub_tennis_serve.camera.toml", "--radius", "-1")
+    assert code != 0 and "radius" in err
+
+
+def test_simulate_needs_camera_or_preset(tmp_path, capsys):
+    code, _, err = run(capsys, "simulate", "--out", tmp_path / "x")
+    assert code != 0 and "--camera" in err and len(err.strip().splitlines()) == 1
+    code, _, err = run(capsys, "simulate", "--preset", "cricket", "--out", tmp_path / "x")
+    assert code != 0 and "tennis-serve" in err
+
+
+@pytest.mark.slow
+def test_demo_runs(tmp_path, capsys):
+    code, out, err = run(capsys, "demo", "--out", tmp_path)
+    assert code == 0, err
+    assert "paper" in out and "fit" in out and "error" in out
+    assert (tmp_path / "tennis-serve.paper.png").exists() and (tmp_path / "tennis-serve.fit.png").exists()

@@ -1,0 +1,100 @@
+"""The estimation pipeline on hard cases and on the independent reference scenes."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from ballscan.camera import LineScanCamera, load_camera
+from ballscan.estimate import estimate_image
+from ballscan.images import LineImage, load_image
+from ballscan.motion import BallMotion
+from ballscan.render import Appearance, SensorNoise, render
+
+from .conftest import DATA
+
+SCENES = DATA / "scenes"
+CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
+
+
+def _img(data: np.ndarray, sat: float = 255.0) -> LineImage:
+    return LineImage(np.asarray(data, dtype=float), sat, 8, "synthetic.png")
+
+
+@pytest.mark.parametrize("method", ["fit", "paper"])
+def test_empty_and_saturated_images_give_no_ball(method):
+    flat = _img(np.full((120, 2048), 20.0))
+    assert estimate_image(flat, CAM, 0.0335, method=method).balls == ()
+    sat = _img(np.full((120, 2048), 255.0))
+    assert estimate_image(sat, CAM, 0.0335, method=method).balls == ()
+    noise = _img(np.random.default_rng(0).normal(20, 2, (120, 2048)).round())
+    assert estimate_image(noise, CAM, 0.0335, method=method).balls == ()
+
+
+@pytest.mark.parametrize("method", ["fit", "paper"])
+def test_two_balls_give_two_estimates_in_tc_order(method):
+    a = BallMotion(0.0335, 0.0016, (0, 0.25, 3.0), (30.0, 0, 0))
+    b = BallMotion(0.0335, 0.0014, (0, -0.3, 3.2), (25.0, 1.0, 0))
+    r = render(CAM, [(a, Appearance.flat(0.8)), (b, Appearance.flat(0.8))], 160, noise=SensorNoise(), seed=2)
+    balls = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    assert len(balls) == 2
+    assert balls[0].t_c_s < balls[1].t_c_s
+    assert abs(balls[0].position_m[1] - b.position_m[1]) < 0.01 and abs(balls[1].position_m[1] - a.position_m[1]) < 0.01
+
+
+@pytest.mark.parametrize("method", ["fit", "paper"])
+def test_ball_cut_by_first_line_is_flagged(method):
+    m = BallMotion(0.0335, 0.0004, (0, 0.02, 3.0), (30.0, 0, 0))
+    r = render(CAM, (m, Appearance.flat(0.8)), 120, noise=SensorNoise(), seed=1)
+    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    assert "cut_first_line" in ball.flags
+    assert ball.first_line == 0
+
+
+def test_ball_cut_by_sensor_end_is_flagged():
+    # centre 6.5 px beyond pixel 0; the image is long enough that the edge
+    # columns see background on most lines (the per-column background model
+    # needs that: see the detection module's limits)
+    m = BallMotion(0.0335, 0.003, (0, -1.03, 3.0), (30.0, 0, 0))
+    r = render(CAM, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=1)
+    balls = estimate_image(_img(r.image), CAM, 0.0335, method="fit").balls
+    assert len(balls) == 1 and "cut_sensor_end" in balls[0].flags
+
+
+def test_width_mismatch_is_a_clear_error():
+    from ballscan.errors import ImageFileError
+
+    with pytest.raises(ImageFileError, match="2048"):
+        estimate_image(_img(np.zeros((10, 1000))), CAM, 0.0335)
+
+
+def _truth(name: str) -> list[dict]:
+    t = json.loads((SCENES / f"{name}.truth.json").read_text())
+    return t["balls"] if "balls" in t else [t]
+
+
+SCENE_NAMES = ["pub_tennis_serve", "pub_pingpong", "pub_tennis_bright_bg", "pub_lab_rail_6deg", "pub_cut_first_line", "pub_two_close"]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", SCENE_NAMES)
+def test_reference_scenes_paper_method(name):
+    """Independent POV-Ray scenes: every ball found, flagged right, V.x within 2 %."""
+    truth = _truth(name)
+    img = load_image(SCENES / f"{name}.png")
+    cam = load_camera(SCENES / f"{name}.camera.toml")
+    rep = estimate_image(img, cam, truth[0]["radius_m"], method="paper")
+    assert len(rep.balls) == len(truth)
+    for est, tb in zip(rep.balls, sorted(truth, key=lambda b: b["t_c_s"])):
+        assert ("cut_first_line" in est.flags) == (name == "pub_cut_first_line")
+        if name != "pub_cut_first_line":
+            # (a ball cut by the first line has no key point a; the paper's
+            # method then measures V.x 8.5 % off on this scene: flagged, see the docs)
+            assert abs(est.t_c_s - tb["t_c_s"]) * cam.line_rate_hz < 1.0
+            assert abs(est.velocity_mps[0] - tb["velocity_mps"][0]) / tb["velocity_mps"][0] < 0.02
+        assert abs(est.position_m[1] - tb["position_m"][1]) < 0.005
+        d = est.to_dict(cam)
+        for key in ("t_c_s", "position_m", "velocity_mps", "speed_mps", "method", "initial", "flags", "run_time_s"):
+            assert key in d
