@@ -110,3 +110,19 @@ def test_demo_runs(tmp_path, capsys):
     assert code == 0, err
     assert "paper" in out and "fit" in out and "error" in out
     assert (tmp_path / "tennis-serve.paper.png").exists() and (tmp_path / "tennis-serve.fit.png").exists()
+
+
+def test_precision_prints_bounds(capsys):
+    cam = DATA / "scenes" / "pub_tennis_serve.camera.toml"
+    args = ("precision", "--camera", cam, "--radius", "0.0335", "--velocity", "44.5,3.9,-5.5", "--position", "0,-0.08,4.2")
+    code, out, err = run(capsys, *args, "--edge-noise", "0.05")
+    assert code == 0, err
+    rows = {line.split()[0]: line.split() for line in out.splitlines()[2:]}
+    sig = {k: float(v[3]) for k, v in rows.items()}
+    # the weak axis: depth velocity far less certain than the crossing velocity
+    assert sig["vz"] > 20 * sig["vx"] > 0
+    code2, out2, _ = run(capsys, *args, "--edge-noise", "0.1")
+    sig2 = {line.split()[0]: float(line.split()[3]) for line in out2.splitlines()[2:]}
+    assert sig2["vx"] == pytest.approx(2 * sig["vx"], rel=1e-6)  # a bound scales with the noise
+    code, _, err = run(capsys, *args)
+    assert code != 0 and "--edge-noise" in err

@@ -110,6 +110,48 @@ def estimate(
         save_overlay(plot, img.data, cam, report, line_times(cam, img.data.shape[0], ts))
 
 
+# ---------------------------------------------------------------- precision
+@app.command()
+def precision(
+    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
+    velocity: str = typer.Option(..., "--velocity", help="Velocity VX,VY,VZ in m/s (camera frame)."),
+    position: str = typer.Option(..., "--position", help="Centre at the crossing, X,Y,Z in metres (X = 0)."),
+    edge_noise: Optional[float] = typer.Option(None, "--edge-noise", help="1-sigma of one edge measurement, pixels."),
+    pixel_noise: Optional[float] = typer.Option(None, "--pixel-noise", help="Pixel noise 1-sigma in DN (with --contrast): bound for any estimator on the image."),
+    contrast: Optional[float] = typer.Option(None, "--contrast", help="Ball/background contrast in DN (with --pixel-noise)."),
+) -> None:
+    """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a rig."""
+    from .camera import load_camera
+    from .motion import BallMotion
+    from .precision import edge_crlb, pixel_crlb
+
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    cam = load_camera(camera)
+    pos = _vec(position, "--position")
+    vel = _vec(velocity, "--velocity")
+    if vel[0] == 0:
+        raise typer.BadParameter("VX must be non-zero (the ball must cross the viewing plane)", param_hint="--velocity")
+    # the bound assumes an image starting at line 0 that holds the whole ball:
+    # put the crossing after half the ball's visible duration plus a margin
+    from .silhouette import visible_line_count
+
+    probe = BallMotion(radius, 0.0, pos, vel)
+    t_c = (0.6 * visible_line_count(cam, probe) + 5.0) / cam.line_rate_hz
+    motion = BallMotion(radius, t_c, pos, vel)
+    if edge_noise is None and pixel_noise is None:
+        raise ValueError("precision: give --edge-noise PX, or --pixel-noise DN with --contrast DN")
+    if edge_noise is not None:
+        if not edge_noise > 0:
+            raise typer.BadParameter(f"must be positive, got {edge_noise}", param_hint="--edge-noise")
+        typer.echo(edge_crlb(cam, motion, edge_noise).to_text())
+    if pixel_noise is not None:
+        if contrast is None or not contrast != 0 or not pixel_noise > 0:
+            raise ValueError("precision: --pixel-noise needs a positive noise and a non-zero --contrast")
+        typer.echo(pixel_crlb(cam, motion, pixel_noise, abs(contrast)).to_text())
+
+
 # ---------------------------------------------------------------- demo
 @app.command()
 def demo(
