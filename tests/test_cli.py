@@ -123,6 +123,6 @@ def test_precision_prints_bounds(capsys):
     assert sig["vz"] > 20 * sig["vx"] > 0
     code2, out2, _ = run(capsys, *args, "--edge-noise", "0.1")
     sig2 = {line.split()[0]: float(line.split()[3]) for line in out2.splitlines()[2:]}
-    assert sig2["vx"] == pytest.approx(2 * sig["vx"], rel=1e-6)  # a bound scales with the noise
+    assert sig2["vx"] == pytest.approx(2 * sig["vx"], rel=2e-3)  # scales with the noise (4 printed digits)
     code, _, err = run(capsys, *args)
     assert code != 0 and "--edge-noise" in err
