@@ -86,7 +86,16 @@ def test_crossing_direction_sets_vx_sign():
 
 def test_half_contrast_edges_linear_interpolation():
     p = np.array([0.0, 0.0, 0.25, 0.75, 1.0, 1.0, 0.6, 0.2, 0.0])
-    left, right = half_contrast_edges(p)
-    assert left == pytest.approx(2.5)
-    assert right == pytest.approx(6.25)
+    left, right = half_contrast_edges(p, inner_px=3)
+    assert left == pytest.approx(2.5)  # local level 1.0
+    assert right == pytest.approx(6.25)  # local level 1.0: 0.5 between 0.6 (px 6) and 0.2 (px 7)
     assert all(math.isnan(v) for v in half_contrast_edges(np.zeros(5)))
+
+
+def test_half_contrast_edges_follow_a_shaded_limb():
+    # bright left side, a limb at 30 % of the contrast on the right: the right
+    # edge must sit at half of 0.3, not at half of the global contrast
+    p = np.array([0.0, 0.0, 0.5, 1.0, 0.9, 0.7, 0.5, 0.35, 0.3, 0.3, 0.15, 0.0, 0.0])
+    left, right = half_contrast_edges(p)
+    assert left == pytest.approx(2.0)
+    assert right == pytest.approx(10 - 0.025 / 0.15)  # 0.15 between 0.3 (px 9) and 0.15 (px 10)

@@ -84,37 +84,58 @@ class InitialGuess:
     degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty
 
 
-def half_contrast_edges(profile: np.ndarray, level: float = 0.5) -> tuple[float, float]:
-    """Outermost crossings of ``level`` of a normalised profile, linearly interpolated.
+def _crossing(profile: np.ndarray, level: float, j: int, step: int) -> float:
+    """Sub-pixel position where ``profile`` crosses ``level`` between ``j - step`` and ``j``."""
+    k = j - step
+    if k < 0 or k >= profile.size:
+        return float(j)
+    p0, p1 = profile[k], profile[j]
+    if p1 == p0:
+        return float(j)
+    return float(k + step * (level - p0) / (p1 - p0))
+
+
+def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float = 0.25, inner_px: int = 3) -> tuple[float, float]:
+    """Outer edges of a ball's segment at half the *local* contrast.
+
+    Each edge is the crossing of ``level`` times the ball's level just
+    inside that edge (the largest of the ``inner_px`` pixels inside the
+    outermost pixel above ``detect``), linearly interpolated.  The local
+    level matters: a shaded limb can be at a third of the ball's contrast,
+    and a crossing of half the global contrast then sits pixels inside the
+    true edge.
 
     Parameters
     ----------
     profile : ndarray, shape (n,)
-        Background 0, ball 1 (pixels ``0 .. n-1``).
+        Background 0, ball about 1 (pixels ``0 .. n-1``).
     level : float
-        The crossing level.
+        Fraction of the local ball level at which the edge is taken.
+    detect : float
+        Level that marks the outermost ball pixels.
+    inner_px : int
+        Pixels inside the outermost ball pixel used for the local level.
 
     Returns
     -------
     (left, right) : float
-        Sub-pixel positions in the profile's pixel coordinates; NaN when the
-        profile never reaches ``level``.
+        Sub-pixel positions in the profile's pixel coordinates; NaN when no
+        pixel reaches ``detect``.
     """
-    above = np.flatnonzero(profile >= level)
+    above = np.flatnonzero(profile >= detect)
     if above.size == 0:
         return math.nan, math.nan
     j0, j1 = int(above[0]), int(above[-1])
-    if j0 > 0:
-        p0, p1 = profile[j0 - 1], profile[j0]
-        left = j0 - 1 + (level - p0) / (p1 - p0) if p1 != p0 else float(j0)
-    else:
-        left = float(j0)
-    if j1 < profile.size - 1:
-        p0, p1 = profile[j1], profile[j1 + 1]
-        right = j1 + (p0 - level) / (p0 - p1) if p1 != p0 else float(j1)
-    else:
-        right = float(j1)
-    return float(left), float(right)
+    lvl_left = level * float(np.max(profile[j0 : min(j0 + inner_px, j1 + 1)]))
+    lvl_right = level * float(np.max(profile[max(j1 - inner_px + 1, j0) : j1 + 1]))
+    # walk inwards from the outermost detected pixel to the local half level
+    jl = j0
+    while jl < j1 and profile[jl] < lvl_left:
+        jl += 1
+    jr = j1
+    while jr > j0 and profile[jr] < lvl_right:
+        jr -= 1
+    return _crossing(profile, lvl_left, jl, 1), _crossing(profile, lvl_right, jr, -1)
 
 
 def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
