@@ -98,3 +98,18 @@ def test_reference_scenes_paper_method(name):
         d = est.to_dict(cam)
         for key in ("t_c_s", "position_m", "velocity_mps", "speed_mps", "method", "initial", "flags", "run_time_s"):
             assert key in d
+
+
+def test_world_frame_values_with_a_pose():
+    """A camera with a pose reports the estimate in the world frame too."""
+    R = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])  # world X -> camera y, Y -> z, Z -> x
+    cam = CAM.with_pose(R, [0.1, -0.2, 0.5])
+    m = BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 2.0, 0.0))
+    r = render(cam, (m, Appearance.flat(0.8)), 150, noise=SensorNoise(), seed=5)
+    (ball,) = estimate_image(_img(r.image), cam, 0.0335, method="fit").balls
+    w = ball.to_dict(cam)["world"]
+    np.testing.assert_allclose(w["position_m"], cam.camera_to_world(np.array(ball.position_m)), atol=1e-12)
+    np.testing.assert_allclose(w["velocity_mps"], cam.vectors_to_world(np.array(ball.velocity_mps)), atol=1e-12)
+    # camera x (the crossing direction) is world Z here
+    assert w["velocity_mps"][2] == pytest.approx(ball.velocity_mps[0])
+    assert len(w["velocity_sigma_mps"]) == 3
