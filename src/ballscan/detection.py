@@ -347,7 +347,9 @@ def _background(
     # Wide enough to out-vote a run of up to ~127 ball-dominated columns (a
     # median filter leaves monotone profiles such as vignetting unchanged).
     win = max(w // 4, 255) | 1
-    neighbours = ndi.median_filter(col_med, size=min(win, 2 * w - 1), mode="nearest")
+    # "reflect", not "nearest": at a sensor end "nearest" repeats the end column
+    # half a window long, and a ball covering that end would out-vote the background.
+    neighbours = ndi.median_filter(col_med, size=min(win, 2 * w - 1), mode="reflect")
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
     min_support = max(3, int(np.ceil(0.03 * n)))
