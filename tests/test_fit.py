@@ -92,7 +92,7 @@ def test_edge_bias_nuisance_absorbs_a_dilation():
     from dataclasses import replace
 
     e_b = replace(e, left_px=e.left_px + 0.1, right_px=e.right_px - 0.1)  # shaded limbs: both edges move inwards
-    r = fit_motion(cam, e_b, m)
+    r = fit_motion(cam, e_b, m, FitSettings(fit_edge_bias=True))
     assert r.edge_bias_px == pytest.approx(-0.1, abs=0.01)
     assert abs(r.motion.speed_mps - m.speed_mps) / m.speed_mps < 1e-4
     r0 = fit_motion(cam, e_b, m, FitSettings(fit_edge_bias=False))

@@ -66,6 +66,24 @@ class EdgeSettings:
         Columns added on both sides of the region's box.
     min_snr : float
         A line's peak must exceed this many noise sigmas to carry edges.
+    n_out_wide, n_in_wide : int
+        ``n_out`` and ``n_in`` of the wide window (spread edges).
+    level_slope : float
+        Extrapolation of the inner level towards the limb.  Limb shading
+        makes the ball darker at its edge than one or two pixels inside,
+        which biases the edge inwards; the level is extrapolated linearly
+        from the gradient across the level run to the covered part of the
+        edge pixel, ``L = L_run (1 - level_slope * d * g / L_run)``, ``g`` the
+        gradient per pixel (inwards) and ``d`` the distance from the run's
+        centre to the edge pixel's covered part (``n_in + 0.75 + (n_level -
+        1) / 2`` pixels).  The relative correction is median-filtered over
+        ``slope_lines`` lines (shading is smooth from line to line, felt
+        texture and noise are not).  0 uses the level run as it is.
+    slope_lines : int
+        Lines of the running median of the level gradient.
+    max_walk_px : int
+        Pixels the rough edge may move outwards from the peak-fraction
+        crossing towards a darker (shaded) limb.
     """
 
     n_out: int = 1
@@ -75,6 +93,11 @@ class EdgeSettings:
     margin_lines: int = 2
     pad_px: int = 5
     min_snr: float = 6.0
+    n_out_wide: int = 3
+    n_in_wide: int = 1
+    level_slope: float = 1.0
+    max_walk_px: int = 12
+    slope_lines: int = 9
 
 
 @dataclass(frozen=True)
@@ -120,6 +143,20 @@ class EdgeMeasurements:
     flags : tuple of str
         geometry.md flag words that apply (``cut_sensor_end``,
         ``saturated``, ``overlap``).
+    left_texture_px, right_texture_px : ndarray or None
+        Texture/shading indicator of each edge, pixels: the window's covered
+        length ``S / L`` times the relative change of the inner level between
+        the level run and the next ``n_level`` pixels inward (less its noise).
+        A uniform limb gives about 0; a seam or a steep shading gradient next
+        to the edge gives the size of the edge's possible bias.  ``None`` when
+        not measured (synthetic edges).
+    left_wide_px, right_wide_px, left_wide_sigma_px, right_wide_sigma_px : ndarray or None
+        The same edges from a wider window (``n_out_wide`` pixels outside,
+        ``n_in_wide`` inside the rough edge pixel), which contains the whole
+        transition when the edge is spread over the exposure and the pixel's
+        height (near the ball's ends); noisier, used only there.
+    left_wide_ok, right_wide_ok : ndarray of bool or None
+        Usability of the wide-window edges (same rules).
     """
 
     lines: np.ndarray
@@ -139,6 +176,14 @@ class EdgeMeasurements:
     polarity: int = 1
     contrast_dn: float = 1.0
     flags: tuple[str, ...] = ()
+    left_texture_px: np.ndarray | None = None
+    right_texture_px: np.ndarray | None = None
+    left_wide_px: np.ndarray | None = None
+    right_wide_px: np.ndarray | None = None
+    left_wide_sigma_px: np.ndarray | None = None
+    right_wide_sigma_px: np.ndarray | None = None
+    left_wide_ok: np.ndarray | None = None
+    right_wide_ok: np.ndarray | None = None
 
     @property
     def n_edges(self) -> int:
@@ -169,6 +214,20 @@ def _region_pixels(region: Any, n_lines: int, width: int) -> np.ndarray:
     else:
         m = np.asarray(mask, dtype=bool)
         out[l0 : l0 + m.shape[0], c0 : c0 + m.shape[1]] = m
+    return out
+
+
+def _running_median(x: np.ndarray, n: int) -> np.ndarray:
+    """Median of ``x`` over a centred window of ``n`` entries, ignoring NaN (NaN where all are)."""
+    if n <= 1 or x.size == 0:
+        return x.copy()
+    h = n // 2
+    pad = np.concatenate([np.full(h, np.nan), x, np.full(h, np.nan)])
+    win = np.lib.stride_tricks.sliding_window_view(pad, 2 * h + 1)
+    out = np.full(x.size, np.nan)
+    ok = np.isfinite(win).any(axis=1)
+    if ok.any():
+        out[ok] = np.nanmedian(win[ok], axis=1)
     return out
 
 
@@ -252,11 +311,32 @@ def measure_edges(
     above = p >= s.find_fraction * peak[:, None]
     k_left = np.argmax(above, axis=1)
     k_right = w - 1 - np.argmax(above[:, ::-1], axis=1)
+    # A shaded limb can be darker than a fraction of a bright seam's peak:
+    # walk outwards while the next pixel still holds find_fraction of its
+    # inner neighbour (and is significant), so that the window sits on the
+    # ball's real edge.
+    floor_p = s.min_snr / 2.0 * noise_row
+    for _ in range(s.max_walk_px):
+        cand = k_left - 1
+        inner = p[rows[:, 0], np.clip(k_left + 1, 0, w - 1)]
+        pc = p[rows[:, 0], np.clip(cand, 0, w - 1)]
+        step = has_signal & (cand >= 0) & (pc >= s.find_fraction * inner) & (pc >= floor_p)
+        if not step.any():
+            break
+        k_left = np.where(step, cand, k_left)
+    for _ in range(s.max_walk_px):
+        cand = k_right + 1
+        inner = p[rows[:, 0], np.clip(k_right - 1, 0, w - 1)]
+        pc = p[rows[:, 0], np.clip(cand, 0, w - 1)]
+        step = has_signal & (cand <= w - 1) & (pc >= s.find_fraction * inner) & (pc >= floor_p)
+        if not step.any():
+            break
+        k_right = np.where(step, cand, k_right)
 
-    def one_side(k: np.ndarray, sign: int):
+    def one_side(k: np.ndarray, sign: int, n_out: int = s.n_out, n_in: int = s.n_in):
         # window and level pixel offsets relative to k, pointing inwards with `sign`
-        win_off = np.arange(-(s.n_out + 1), s.n_in + 1) * sign
-        lev_off = (s.n_in + 1 + np.arange(s.n_level)) * sign
+        win_off = np.arange(-(n_out + 1), n_in + 1) * sign
+        lev_off = (n_in + 1 + np.arange(s.n_level)) * sign
         win = k[:, None] + win_off[None, :]
         lev = k[:, None] + lev_off[None, :]
         inside_box = (win.min(1) >= 0) & (win.max(1) < w) & (lev.min(1) >= 0) & (lev.max(1) < w)
@@ -264,14 +344,34 @@ def measure_edges(
         levc = np.clip(lev, 0, w - 1)
         pw, pl = p[rows, winc], p[rows, levc]
         sw, sl = sp[rows, winc], sp[rows, levc]
-        L = pl.mean(axis=1)
+        # the level run and the n_level pixels just inside it (texture /
+        # shading indicator, and the level's extrapolation towards the limb)
+        deep_off = (n_in + 1 + s.n_level + np.arange(s.n_level)) * sign
+        deep = np.clip(k[:, None] + deep_off[None, :], 0, w - 1)
+        pd = p[rows, deep].mean(axis=1)
+        sd2 = (sp[rows, deep] ** 2).sum(axis=1) / s.n_level**2
+        L_run = pl.mean(axis=1)
+        sl2 = (sl**2).sum(axis=1) / s.n_level**2
+        kap = s.level_slope
+        # relative level gradient, median-filtered along the lines (shading is
+        # smooth from line to line, felt texture and noise are not)
+        # gradient per pixel across the level run (inwards positive), towards
+        # the covered part of the edge pixel (about `dist` pixels outwards)
+        if s.n_level >= 2:
+            grad = (pl[:, -1] - pl[:, 0]) / (s.n_level - 1)
+        else:
+            grad = (pd - L_run) / s.n_level
+        dist = n_in + 1 + (s.n_level - 1) / 2.0 - 0.25
+        Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
+        rel = _running_median(np.where(has_signal, -dist * grad / Lsafe, np.nan), s.slope_lines)
+        L = L_run * (1.0 + kap * np.nan_to_num(rel))
         S = pw.sum(axis=1)
         Ls = np.where(L > 0, L, 1.0)
         n_win = win_off.size
         uncovered = n_win - S / Ls
         # left: the window starts at its outermost pixel a; right: ends at b
         e = np.where(sign > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
-        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * (sl**2).sum(axis=1) / s.n_level**2
+        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * np.nan_to_num(rel)) ** 2
         sig = np.sqrt(var)
         lo = np.minimum(win.min(1), lev.min(1))
         hi = np.maximum(win.max(1), lev.max(1))
@@ -280,17 +380,25 @@ def measure_edges(
         allidx = np.concatenate([winc, levc], axis=1)
         saturated = sat[rows, allidx].any(axis=1)
         overlapping = other[rows, allidx].any(axis=1)
-        plausible = (L > 3.0 * np.sqrt((sl**2).sum(axis=1)) / s.n_level) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
+        dlev = np.abs(L_run - pd) - np.sqrt(sd2 + sl2)
+        tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
+        plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
         ok = has_signal & plausible & ~at_sensor_end & ~saturated & ~overlapping
-        return e + c0, sig, ok, L, at_sensor_end & has_signal, saturated & has_signal, overlapping & has_signal
+        return e + c0, sig, ok, L, at_sensor_end & has_signal, saturated & has_signal, overlapping & has_signal, tex
 
-    eL, sL, okL, LL, endL, satL, ovL = one_side(k_left, +1)
-    eR, sR, okR, LR, endR, satR, ovR = one_side(k_right, -1)
+    eL, sL, okL, LL, endL, satL, ovL, tL = one_side(k_left, +1)
+    eR, sR, okR, LR, endR, satR, ovR, tR = one_side(k_right, -1)
     # both windows and level runs must fit in the segment without crossing
     span_needed = 2 * (s.n_in + s.n_level) + 1
     long_enough = (k_right - k_left) >= span_needed
     okL &= long_enough
     okR &= long_enough
+    # wide windows for lines whose edge is spread over the exposure / pixel height
+    eLw, sLw, okLw, *_ = one_side(k_left, +1, s.n_out_wide, s.n_in_wide)
+    eRw, sRw, okRw, *_ = one_side(k_right, -1, s.n_out_wide, s.n_in_wide)
+    long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
+    okLw &= long_wide
+    okRw &= long_wide
 
     # summed coverage: over the segment +- 3 px where the ball is seen, else the whole box
     jj = np.arange(w)[None, :]
@@ -334,6 +442,14 @@ def measure_edges(
         polarity=pol,
         contrast_dn=contrast,
         flags=tuple(flags),
+        left_texture_px=np.where(has_signal, tL, np.nan),
+        right_texture_px=np.where(has_signal, tR, np.nan),
+        left_wide_px=np.where(has_signal, eLw, np.nan),
+        right_wide_px=np.where(has_signal, eRw, np.nan),
+        left_wide_sigma_px=np.where(has_signal, sLw, np.nan),
+        right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
+        left_wide_ok=okLw,
+        right_wide_ok=okRw,
     )
 
 

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -276,8 +276,39 @@ class FitSettings:
         Edges are used only where the model's edge spread over the exposure
         and pixel height is below this (pixels); wider transitions escape the
         local area window and those lines contribute their area instead.
+    max_spread_wide_px : float
+        Lines whose model edge spread lies between ``max_spread_px`` and this
+        (pixels) use the wide-window edges
+        (:attr:`ballscan.edges.EdgeMeasurements.left_wide_px`) instead.
     edge_floor_px : float
-        Added in quadrature to each edge sigma (texture, model), pixels.
+        Systematic 1-sigma added in quadrature to each edge sigma, pixels
+        (limb shading and felt texture that the local level cannot follow;
+        calibrated on the clean reference scenes, where edges from the
+        renderer's exact coverage differ from the measured ones by 0.05 px
+        (MAD) on uniform limbs).
+    texture_gain : float
+        Multiplies the edges' texture indicator
+        (:attr:`ballscan.edges.EdgeMeasurements.left_texture_px`), added in
+        quadrature to each edge sigma: edges next to a seam or a steep
+        shading gradient get a larger sigma.
+    level_areas : bool
+        Divide the end lines' areas by the ball's local brightness next to
+        them (:func:`_area_levelled`).
+    level_lines : int
+        Nearest lines with a measured inner level used for it.
+    reject_sigma : float
+        After each fit, edges whose whitened residual exceeds this many
+        robust standard deviations (``max(1, 1.4826 MAD)``) are rejected and
+        the fit is repeated (texture outliers; never the area residuals).
+    max_reject_rounds : int
+        Rounds of rejection and refitting at most.
+    correlation_inflation : bool
+        Multiply the covariance by ``(1 + rho) / (1 - rho)`` (at most 10),
+        ``rho`` the larger lag-one autocorrelation of the whitened edge
+        residuals along each side, less ``2 / sqrt(n)`` (what white noise
+        reaches by chance): shading and seam biases are correlated over many
+        lines and a fit that treats them as independent would report too
+        small a sigma (chiefly on ``vz``).
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area (its brightness is
         not the ball's mean brightness), added in quadrature.
@@ -299,9 +330,16 @@ class FitSettings:
         as a cross-check.
     """
 
-    fit_edge_bias: bool = True
+    fit_edge_bias: bool = False
     max_spread_px: float = 0.3
-    edge_floor_px: float = 0.01
+    max_spread_wide_px: float = 0.8
+    level_areas: bool = False
+    edge_floor_px: float = 0.05
+    texture_gain: float = 1.0
+    level_lines: int = 3
+    reject_sigma: float = 3.5
+    max_reject_rounds: int = 3
+    correlation_inflation: bool = True
     area_rel_sigma: float = 0.15
     area_floor_px: float = 0.1
     loss: str = "soft_l1"
@@ -344,6 +382,13 @@ class FitResult:
         Residuals used.
     run_time_s : float
         Wall time of the fit.
+    flags : tuple of str
+        geometry.md flag words (``not_converged``, ``degenerate``).
+    n_rejected : int
+        Edges rejected as outliers (``FitSettings.reject_sigma``).
+    inflation : float
+        Factor applied to the covariance for correlated residuals
+        (``FitSettings.correlation_inflation``).
     """
 
     motion: BallMotion
@@ -361,6 +406,8 @@ class FitResult:
     n_area_lines: int = 0
     run_time_s: float = 0.0
     flags: tuple[str, ...] = field(default=())
+    n_rejected: int = 0
+    inflation: float = 1.0
 
     @property
     def sigmas(self) -> np.ndarray:
@@ -376,15 +423,24 @@ class FitResult:
 
 
 def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
-    """Which lines give edge residuals and which give area residuals."""
-    narrow = (me.spread_px <= settings.max_spread_px) & (me.presence > 0.999) & me.valid
+    """Which lines give edge residuals (narrow or wide window) and which give area residuals."""
+    full = (me.presence > 0.999) & me.valid
+    narrow = full & (me.spread_px <= settings.max_spread_px)
     use_l = edges.left_ok & narrow & np.isfinite(edges.left_px)
     use_r = edges.right_ok & narrow & np.isfinite(edges.right_px)
-    # area lines: no usable edge pair, and the line's area is not spoiled
+    wide_l = np.zeros_like(use_l)
+    wide_r = np.zeros_like(use_r)
+    if edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px:
+        spread = full & (me.spread_px > settings.max_spread_px) & (me.spread_px <= settings.max_spread_wide_px)
+        wide_l = edges.left_wide_ok & spread & np.isfinite(edges.left_wide_px)
+        wide_r = edges.right_wide_ok & spread & np.isfinite(edges.right_wide_px)
+        use_l = use_l | wide_l
+        use_r = use_r | wide_r
+    # area lines: no usable edge, and the line's area is not spoiled
     # (edges.end_line), or no signal at all (lines around the ball)
     no_signal = ~edges.signal & ~(edges.left_ok | edges.right_ok)
-    use_a = ~(use_l & use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
-    return use_l, use_r, use_a
+    use_a = ~(use_l | use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
+    return use_l, use_r, use_a, wide_l, wide_r
 
 
 def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
@@ -458,15 +514,8 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
 
 def _weights(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
     """Residual selection and 1-sigma of every residual (pixels)."""
-    use_l, use_r, use_a = _select(edges, me, settings)
-    floor2 = settings.edge_floor_px**2
-    sl = np.sqrt(np.nan_to_num(edges.left_sigma_px[use_l]) ** 2 + floor2)
-    sr = np.sqrt(np.nan_to_num(edges.right_sigma_px[use_r]) ** 2 + floor2)
-    ma = edges.area_px[use_a]
-    sa = np.sqrt(
-        edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2
-    )
-    return use_l, use_r, use_a, sl, sr, sa
+    use_l, use_r, use_a, wide_l, wide_r = _select(edges, me, settings)
+    return _weights_masked(edges, use_l, use_r, use_a, settings, wide_l, wide_r)
 
 
 def whitened_jacobian(
@@ -482,7 +531,7 @@ def whitened_jacobian(
     theta = motion.to_params()
     scale = param_scale(camera, motion)
     me, dl, dr, da = model_jacobian(camera, theta, motion.radius_m, edges.t_s, scale, motion.acceleration_mps2, n_nodes=settings.n_nodes)
-    use_l, use_r, use_a, sl, sr, sa = _weights(edges, me, settings)
+    use_l, use_r, use_a, sl, sr, sa, _, _, _ = _weights(edges, me, settings)
     J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
     names = PARAM_NAMES
     if settings.fit_edge_bias:
@@ -524,82 +573,36 @@ def fit_motion(
     t = edges.t_s
     theta0 = initial.to_params()
     scale = param_scale(camera, initial)
-    me0 = averaged_model(camera, theta0[None], R, t, acc, nn)
-    me0 = ModelEdges(*(getattr(me0, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
-    use_l, use_r, use_a, sl, sr, sa = _weights(edges, me0, settings)
-    n_edge_lines = int((use_l & use_r).sum())
-    ml, mr = edges.left_px[use_l], edges.right_px[use_r]
-    ma = edges.area_px[use_a]
-    fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
-    n_par = 6 + int(fit_b)
-    x_scale = np.concatenate([scale, [0.05]]) if fit_b else scale
+    n_lines = t.size
+    rejected_l = np.zeros(n_lines, dtype=bool)
+    rejected_r = np.zeros(n_lines, dtype=bool)
 
-    def unpack(x):
-        return x[:6], (x[6] if fit_b else 0.0)
+    def problem(theta):
+        """Residual selection and weights at ``theta``, less the rejected edges."""
+        me = averaged_model(camera, np.asarray(theta)[None], R, t, acc, nn)
+        me = ModelEdges(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
+        ul, ur, ua, wl, wr = _select(edges, me, settings)
+        ul, ur = ul & ~rejected_l, ur & ~rejected_r
+        return _weights_masked(edges, ul, ur, ua, settings, wl, wr)
 
-    def resid_and_jac(x):
-        th, b = unpack(x)
-        me, dl, dr, da = model_jacobian(camera, th, R, t, scale, acc, n_nodes=nn)
-        r = np.concatenate(
-            [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa]
-        )
-        J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
-        if fit_b:
-            jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size)])
-            J = np.hstack([J, jb[:, None]])
-        return r, J
+    def solve(x_start, sel, loss):
+        use_l, use_r, use_a, sl, sr, sa, ml, mr, ma = sel
+        fit_b = len(x_start) == 7
 
-    cache: dict = {}
+        def unpack(x):
+            return x[:6], (x[6] if fit_b else 0.0)
 
-    def fun(x):
-        key = x.tobytes()
-        if key not in cache:
-            cache.clear()
-            cache[key] = resid_and_jac(x)
-        return cache[key][0]
-
-    def jac(x):
-        key = x.tobytes()
-        if key not in cache:
-            cache.clear()
-            cache[key] = resid_and_jac(x)
-        return cache[key][1]
-
-    x0 = np.concatenate([theta0, [0.0]]) if fit_b else theta0
-    m_res = int(use_l.sum() + use_r.sum() + use_a.sum())
-    if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
-        cov = np.full((6, 6), np.nan)
-        return FitResult(
-            motion=initial,
-            covariance=cov,
-            chi2_red=math.nan,
-            residual_rms_px=math.nan,
-            n_iterations=0,
-            status=-10,
-            message=f"too few usable edge lines ({n_edge_lines} < {settings.min_edge_lines})",
-            converged=False,
-            undetermined=PARAM_NAMES,
-            n_edges=int(use_l.sum() + use_r.sum()),
-            n_area_lines=int(use_a.sum()),
-            run_time_s=time.perf_counter() - t0,
-            flags=("degenerate",),
-        )
-    if settings.solver == "scipy":
-        res = least_squares(
-            fun,
-            x0,
-            jac=jac,
-            x_scale=x_scale,
-            loss=settings.loss,
-            f_scale=settings.f_scale,
-            method="trf",
-            max_nfev=settings.max_nfev,
-            xtol=1e-12,
-            ftol=1e-12,
-            gtol=1e-12,
-        )
-        x_sol, n_iter, status, message, cost = res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost)
-    elif settings.solver == "gn":
+        def resid_and_jac(x):
+            th, b = unpack(x)
+            me, dl, dr, da = model_jacobian(camera, th, R, t, scale, acc, n_nodes=nn)
+            r = np.concatenate(
+                [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa]
+            )
+            J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
+            if fit_b:
+                jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size)])
+                J = np.hstack([J, jb[:, None]])
+            return r, J
 
         def resid_only(x):
             th_, b_ = unpack(x)
@@ -608,20 +611,91 @@ def fit_motion(
                 [(me.left_px[0, use_l] - b_ - ml) / sl, (me.right_px[0, use_r] + b_ - mr) / sr, (me.area_px[0, use_a] - ma) / sa]
             )
 
-        x_sol, n_iter, status, message, cost = _levenberg_marquardt(resid_only, resid_and_jac, x0, settings)
-    else:
-        raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
-    th, b = unpack(x_sol)
-    r, J = resid_and_jac(x_sol)
-    # loss-weighted Jacobian (as scipy's res.jac) so that outliers do not
-    # shrink the covariance: weight sqrt(rho'(z)) with z = r^2 / f^2
-    z = (r / settings.f_scale) ** 2
-    wrob = np.sqrt(_rho(z, settings.loss)[1])
-    Jw = J * wrob[:, None]
+        st = replace(settings, loss=loss)
+        if settings.solver == "scipy":
+            cache: dict = {}
+
+            def both(x):
+                key = x.tobytes()
+                if key not in cache:
+                    cache.clear()
+                    cache[key] = resid_and_jac(x)
+                return cache[key]
+
+            x_scale = np.concatenate([scale, [0.05]]) if fit_b else scale
+            res = least_squares(
+                lambda x: both(x)[0],
+                x_start,
+                jac=lambda x: both(x)[1],
+                x_scale=x_scale,
+                loss=loss,
+                f_scale=settings.f_scale,
+                method="trf",
+                max_nfev=settings.max_nfev,
+                xtol=1e-12,
+                ftol=1e-12,
+                gtol=1e-12,
+            )
+            out = (res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost))
+        elif settings.solver == "gn":
+            out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, st)
+        else:
+            raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
+        return out, resid_and_jac
+
+    sel = problem(theta0)
+    use_l, use_r, use_a = sel[:3]
+    n_edge_lines = int((use_l & use_r).sum())
+    fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
+    n_par = 6 + int(fit_b)
+    m_res = int(use_l.sum() + use_r.sum() + use_a.sum())
+    if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
+        return _degenerate_result(initial, n_edge_lines, settings, use_l, use_r, use_a, t0)
+    x = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
+    # 1) robust fit from the initial guess; 2) re-select at the solution and
+    # reject outlying edges, refit (least squares) until nothing changes
+    (x, n_iter, status, message, cost), rj = solve(x, sel, settings.loss)
+    n_total = n_iter
+    n_rejected = 0
+    for _round in range(max(settings.max_reject_rounds, 0) + 1):
+        sel = problem(x[:6])
+        use_l, use_r, use_a, sl, sr, sa = sel[:6]
+        if int((use_l & use_r).sum()) < settings.min_edge_lines:
+            break
+        (x_new, n_iter, status, message, cost), rj = solve(x, sel, "linear")
+        n_total += n_iter
+        x = x_new
+        if _round == settings.max_reject_rounds or settings.reject_sigma <= 0:
+            break
+        r, _ = rj(x)
+        nl, nr = int(use_l.sum()), int(use_r.sum())
+        re = r[: nl + nr]
+        robust = max(1.0, 1.4826 * float(np.median(np.abs(re - np.median(re)))))
+        bad = np.abs(re) > settings.reject_sigma * robust
+        if not bad.any():
+            break
+        idx_l, idx_r = np.flatnonzero(use_l), np.flatnonzero(use_r)
+        rejected_l[idx_l[bad[:nl]]] = True
+        rejected_r[idx_r[bad[nl:]]] = True
+        n_rejected += int(bad.sum())
+    n_iter = n_total
+    use_l, use_r, use_a, sl, sr, sa = sel[:6]
+    fit_b = len(x) == 7
+    n_par = 6 + int(fit_b)
+    x_sol = x
+    th, b = x_sol[:6], (x_sol[6] if fit_b else 0.0)
+    r, J = rj(x_sol)
     dof = r.size - n_par
-    chi2_red = float(2.0 * cost / dof) if dof > 0 else math.nan
+    chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
+    nl, nr = int(use_l.sum()), int(use_r.sum())
+    inflation = 1.0
+    if settings.correlation_inflation:
+        # only a significant correlation (2 sigma of white noise's rho) counts
+        rho = max(_lag_one(r[:nl]) - 2.0 / math.sqrt(max(nl, 1)), _lag_one(r[nl : nl + nr]) - 2.0 / math.sqrt(max(nr, 1)), 0.0)
+        inflation = min((1.0 + rho) / (1.0 - rho), 10.0) if rho > 0 else 1.0
     # Column-equilibrated normal matrix: the parameters' sizes differ by 1e8,
     # so the rank test and the inverse are done on unit-norm columns.
+    Jw = J
     cn = np.linalg.norm(Jw, axis=0)
     cn = np.where(cn > 0, cn, 1.0)
     N = (Jw / cn).T @ (Jw / cn)
@@ -633,14 +707,13 @@ def fit_motion(
         undetermined = [PARAM_NAMES[k] for k in range(6) if weight[k] > 1e-3]
     inv_evals = np.where(tiny, 0.0, 1.0 / np.where(tiny, 1.0, evals))
     cov_s = (evecs * inv_evals) @ evecs.T
-    cov_full = cov_s / np.outer(cn, cn) * max(1.0, chi2_red if np.isfinite(chi2_red) else 1.0)
+    cov_full = cov_s / np.outer(cn, cn) * max(1.0, chi2_red if np.isfinite(chi2_red) else 1.0) * inflation
     cov = cov_full[:6, :6].copy()
     for name in undetermined:
         k = PARAM_NAMES.index(name)
         cov[k, :] = np.nan
         cov[:, k] = np.nan
-    n_l, n_r = int(use_l.sum()), int(use_r.sum())
-    edge_res = np.concatenate([r[:n_l] * sl, r[n_l : n_l + n_r] * sr])
+    edge_res = np.concatenate([r[:nl] * sl, r[nl : nl + nr] * sr])
     rms = float(np.sqrt(np.mean(edge_res**2))) if edge_res.size else math.nan
     # report V.x >= 0 unless the crossing is known (the image cannot tell; geometry.md)
     th = th.copy()
@@ -668,10 +741,98 @@ def fit_motion(
         undetermined=tuple(undetermined),
         edge_bias_px=float(b),
         edge_bias_sigma_px=float(math.sqrt(cov_full[6, 6])) if fit_b else 0.0,
-        n_edges=n_l + n_r,
+        n_edges=nl + nr,
         n_area_lines=int(use_a.sum()),
         run_time_s=time.perf_counter() - t0,
         flags=tuple(flags),
+        n_rejected=n_rejected,
+        inflation=inflation,
+    )
+
+
+def _lag_one(r: np.ndarray) -> float:
+    """Lag-one autocorrelation of a residual sequence (0 for fewer than 3)."""
+    if r.size < 3:
+        return 0.0
+    d = r - r.mean()
+    den = float(d @ d)
+    return float(d[:-1] @ d[1:]) / den if den > 0 else 0.0
+
+
+def _weights_masked(edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitSettings, wide_l=None, wide_r=None):
+    """Measured values and 1-sigma (pixels) of the selected residuals.
+
+    Returns ``(use_l, use_r, use_a, sl, sr, sa, ml, mr, ma)``: the masks, the
+    sigmas and the measurements of the left edges, right edges and areas;
+    edges in ``wide_l`` / ``wide_r`` come from the wide window.
+    """
+    n = edges.lines.size
+    wide_l = np.zeros(n, dtype=bool) if wide_l is None else wide_l
+    wide_r = np.zeros(n, dtype=bool) if wide_r is None else wide_r
+    floor2 = settings.edge_floor_px**2
+    g = settings.texture_gain
+    tl = edges.left_texture_px if edges.left_texture_px is not None else np.zeros(n)
+    tr = edges.right_texture_px if edges.right_texture_px is not None else np.zeros(n)
+    if edges.left_wide_px is not None:
+        el = np.where(wide_l, edges.left_wide_px, edges.left_px)
+        er = np.where(wide_r, edges.right_wide_px, edges.right_px)
+        esl = np.where(wide_l, edges.left_wide_sigma_px, edges.left_sigma_px)
+        esr = np.where(wide_r, edges.right_wide_sigma_px, edges.right_sigma_px)
+    else:
+        el, er, esl, esr = edges.left_px, edges.right_px, edges.left_sigma_px, edges.right_sigma_px
+    sl = np.sqrt(np.nan_to_num(esl[use_l]) ** 2 + floor2 + (g * np.nan_to_num(tl[use_l])) ** 2)
+    sr = np.sqrt(np.nan_to_num(esr[use_r]) ** 2 + floor2 + (g * np.nan_to_num(tr[use_r])) ** 2)
+    ma = _area_levelled(edges, settings)[use_a]
+    sa = np.sqrt(
+        edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2
+    )
+    return use_l, use_r, use_a, sl, sr, sa, el[use_l], er[use_r], ma
+
+
+def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray:
+    """Summed coverage of each line, optionally divided by the local brightness (pixels).
+
+    ``area_px`` is normalised by the ball's global contrast, but an end line
+    shows the ball's cap, whose brightness follows the lighting of that side
+    of the ball.  With ``settings.level_areas`` every line with signal is
+    divided by the median local inner level
+    (:attr:`ballscan.edges.EdgeMeasurements.level`) of the
+    ``settings.level_lines`` nearest lines that have one.  Off by default:
+    on the reference scenes the inner level next to the limb is itself
+    shaded and blurred at the ball's ends, and dividing by it over-corrects.
+    """
+    area = np.asarray(edges.area_px, dtype=float)
+    if not settings.level_areas:
+        return area
+    lev = np.asarray(edges.level, dtype=float)
+    have = np.flatnonzero(np.isfinite(lev) & (lev > 0))
+    if have.size == 0:
+        return area
+    out = area.copy()
+    k = max(int(settings.level_lines), 1)
+    for i in np.flatnonzero(edges.signal):
+        near = have[np.argsort(np.abs(have - i), kind="stable")[:k]]
+        L = float(np.median(lev[near]))
+        if 0.2 < L < 5.0:
+            out[i] = area[i] / L
+    return out
+
+
+def _degenerate_result(initial, n_edge_lines, settings, use_l, use_r, use_a, t0) -> "FitResult":
+    return FitResult(
+        motion=initial,
+        covariance=np.full((6, 6), np.nan),
+        chi2_red=math.nan,
+        residual_rms_px=math.nan,
+        n_iterations=0,
+        status=-10,
+        message=f"too few usable edge lines ({n_edge_lines} < {settings.min_edge_lines})",
+        converged=False,
+        undetermined=PARAM_NAMES,
+        n_edges=int(use_l.sum() + use_r.sum()),
+        n_area_lines=int(use_a.sum()),
+        run_time_s=time.perf_counter() - t0,
+        flags=("degenerate",),
     )
 
 
