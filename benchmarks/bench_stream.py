@@ -1,0 +1,133 @@
+"""Benchmark of the stream engine (run on demand: ``python benchmarks/bench_stream.py``).
+
+2048-pixel 8-bit lines fed in chunks of 1024 lines on one core:
+
+* lines per second with no ball present, and with a ball every 10 000 lines
+  (the estimates included);
+* latency from the arrival of the chunk holding a ball's last line to its
+  result (the wait for the ``margin_lines`` clean lines after the ball is
+  included when they fall into the next chunk: that chunk is pushed at once);
+* a baseline in the same run: :func:`ballscan.detection.detect` on each
+  chunk as a whole image (what a naive stream would do).
+
+Targets: >= 140 000 lines/s, latency <= 10 ms.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS"):
+    os.environ[_v] = "1"
+
+import sys  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from ballscan.camera import LineScanCamera  # noqa: E402
+from ballscan.detection import detect  # noqa: E402
+from ballscan.images import LineImage  # noqa: E402
+from ballscan.motion import BallMotion  # noqa: E402
+from ballscan.render import Appearance, SensorNoise, apply_sensor, render  # noqa: E402
+from ballscan.stream import StreamConfig, StreamEngine  # noqa: E402
+
+W = 2048
+CHUNK = 1024
+RATE = 70000.0
+CAMERA = LineScanCamera(width=W, focal_px=4000.0, principal_px=1023.5, line_rate_hz=RATE)
+
+
+def background_chunks(n_chunks: int, seed: int = 0) -> list[np.ndarray]:
+    """A few distinct noisy background chunks (reused cyclically: generating noise is not the point)."""
+    rng = np.random.default_rng(seed)
+    clean = np.full((CHUNK, W), 0.12)
+    return [apply_sensor(clean, SensorNoise(), rng)[0] for _ in range(n_chunks)]
+
+
+def ball_chunk(line_in_chunk: float, seed: int) -> tuple[np.ndarray, int]:
+    """A chunk with one ball crossing at ``line_in_chunk``; returns it and the ball's last line in it."""
+    rng = np.random.default_rng(seed)
+    m = BallMotion(0.0335, line_in_chunk / RATE, (0.0, rng.uniform(-0.3, 0.3), 4.0), (40.0, 2.0, -3.0))
+    r = render(CAMERA, [(m, Appearance.flat(0.8))], CHUNK, background_level=0.12, noise=SensorNoise(), seed=seed)
+    last = int(np.flatnonzero(r.coverage.any(axis=1))[-1])
+    return r.image, last
+
+
+def run(n_chunks: int, ball_every_lines: int | None) -> dict:
+    bgs = background_chunks(8)
+    balls: dict[int, tuple[np.ndarray, int]] = {}
+    if ball_every_lines:
+        every = max(ball_every_lines // CHUNK, 1)
+        for k in range(every // 2, n_chunks, every):
+            balls[k] = ball_chunk(400.0 + 37 * (k % 7), seed=k)
+    eng = StreamEngine(CAMERA, 0.0335, StreamConfig(), source="bench")
+    latencies = []
+    pending: list[float] = []  # arrival times of chunks holding a ball's last line
+    t0 = time.perf_counter()
+    for k in range(n_chunks):
+        chunk = balls[k][0] if k in balls else bgs[k % len(bgs)]
+        arrival = time.perf_counter()
+        if k in balls:
+            pending.append(arrival)
+        res = eng.push(chunk)
+        done = time.perf_counter()
+        for _ in res:
+            if pending:
+                latencies.append(done - pending.pop(0))
+    res = eng.finish()
+    total = time.perf_counter() - t0
+    st = eng.stats()
+    return {
+        "lines_per_s": n_chunks * CHUNK / total,
+        "balls": st.balls,
+        "expected": len(balls),
+        "latency_ms": (np.median(latencies) * 1e3, np.max(latencies) * 1e3) if latencies else (float("nan"), float("nan")),
+        "estimate_ms": None,
+    }
+
+
+def baseline(n_chunks: int) -> float:
+    bgs = background_chunks(4)
+    t0 = time.perf_counter()
+    for k in range(n_chunks):
+        detect(LineImage(bgs[k % len(bgs)].astype(np.float64), 255.0, 8, "chunk"))
+    return n_chunks * CHUNK / (time.perf_counter() - t0)
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = sys.argv[1:] if argv is None else argv
+    n = int(args[0]) if args else 400
+    # Warm-up (imports, first model).
+    run(8, None)
+    empty = run(n, None)
+    with_balls = run(n, 10_000)
+    base = baseline(max(n // 20, 5))
+    rows = [
+        ("lines/s, no ball", f"{empty['lines_per_s']:,.0f}", ">= 140,000", "yes" if empty["lines_per_s"] >= 140_000 else "NO"),
+        (
+            "lines/s, a ball every 10 000 lines",
+            f"{with_balls['lines_per_s']:,.0f}",
+            ">= 140,000",
+            "yes" if with_balls["lines_per_s"] >= 140_000 else "NO",
+        ),
+        (
+            "latency median / max (ms)",
+            f"{with_balls['latency_ms'][0]:.1f} / {with_balls['latency_ms'][1]:.1f}",
+            "<= 10",
+            "yes" if with_balls["latency_ms"][1] <= 10 else "NO",
+        ),
+        ("balls found / rendered", f"{with_balls['balls']} / {with_balls['expected']}", "all", "yes" if with_balls["balls"] == with_balls["expected"] else "NO"),
+        ("baseline: detect() per chunk, lines/s", f"{base:,.0f}", "", ""),
+        ("speed-up over baseline (no ball)", f"{empty['lines_per_s'] / base:.0f} x", "", ""),
+    ]
+    print(f"stream engine: {W}-px 8-bit lines, chunks of {CHUNK}, {n * CHUNK:,d} lines, one core")
+    w0 = max(len(r[0]) for r in rows)
+    print(f"{'quantity':<{w0}}  {'measured':>14}  {'target':>11}  met")
+    for r in rows:
+        print(f"{r[0]:<{w0}}  {r[1]:>14}  {r[2]:>11}  {r[3]}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,270 @@
+"""Command functions for line streams: ``ballscan watch``, ``ballscan batch``, ``ballscan simulate --stream``.
+
+The functions take typer ``Annotated`` parameters with real defaults, so
+they are both typer commands (``app.command()(watch)``) and plain Python
+functions. They hold no logic: :mod:`ballscan.stream`,
+:mod:`ballscan.sources` and :mod:`ballscan.batch` do the work. Faults are
+raised as :class:`~ballscan.errors.BallscanError` (one-line messages) after
+every result measured before them has been printed.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from .camera import LineScanCamera, load_camera
+from .errors import BallscanError
+from .stream import StreamConfig, StreamResult, crop_camera, process_stream
+
+__all__ = ["watch", "batch", "simulate_stream", "open_source", "save_event"]
+
+
+def open_source(
+    source: str,
+    camera: LineScanCamera,
+    *,
+    width: int | None = None,
+    dtype: str = "uint8",
+    chunk_lines: int = 1024,
+    timestamps: Path | None = None,
+    timeout_s: float | None = None,
+):
+    """The line source named by ``source``.
+
+    ``-`` is standard input (raw lines), a folder is a folder of image
+    chunks, ``pylon`` or ``pylon:SERIAL`` a Basler camera, anything else a
+    raw file or named pipe.
+    """
+    from .sources import ImageFolderSource, PylonSource, RawLineSource
+
+    w = int(width) if width is not None else camera.width
+    if source.startswith("pylon"):
+        serial = source.split(":", 1)[1] if ":" in source else None
+        return PylonSource(serial, timeout_s=timeout_s or 5.0, line_period_s=1.0 / camera.line_rate_hz)
+    if source != "-" and Path(source).is_dir():
+        return ImageFolderSource(source, w, timestamps=timestamps)
+    return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps)
+
+
+def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_in_event: int) -> list[Path]:
+    """Write an event's crop (PNG, once per event) and a ball's overlay (PNG) and JSON.
+
+    Parameters
+    ----------
+    folder : Path
+    result : StreamResult
+        Made with ``keep_crops=True``.
+    camera : LineScanCamera
+        The full camera (the crop's is derived from it).
+    ball_in_event : int
+        Index of the ball within its event (names the overlay).
+
+    Returns
+    -------
+    list of Path
+        Files written.
+    """
+    from .plot import save_overlay
+    from .render import write_image
+    from .results import EstimateReport
+
+    folder.mkdir(parents=True, exist_ok=True)
+    stem = f"event_{result.event_index:05d}_lines_{result.crop_lines[0]}-{result.crop_lines[1]}"
+    written = []
+    if result.crop is not None:
+        png = folder / f"{stem}.png"
+        if not png.exists():
+            write_image(png, result.crop)
+            written.append(png)
+        cam = crop_camera(camera, *result.crop_cols)
+        overlay = folder / f"{stem}_ball{ball_in_event}.overlay.png"
+        est = result.estimate
+        save_overlay(overlay, result.crop.astype(float), cam, EstimateReport(png.name, (est,)), result.crop_times_s)
+        written.append(overlay)
+    js = folder / f"{stem}_ball{ball_in_event}.json"
+    js.write_text(json.dumps(result.to_dict(camera), indent=2, allow_nan=False))
+    written.append(js)
+    return written
+
+
+class _Status:
+    """A live status line on stderr (only when it is a terminal)."""
+
+    def __init__(self, enabled: bool) -> None:
+        self.enabled = enabled
+        self.t0 = time.perf_counter()
+        self.last = 0.0
+
+    def update(self, lines: int, balls: int, stream_time_s: float) -> None:
+        if not self.enabled:
+            return
+        now = time.perf_counter()
+        if now - self.last < 0.25:
+            return
+        self.last = now
+        wall = now - self.t0
+        # Lag: how far the stream time read so far is behind the wall clock
+        # (meaningful for a real-time source; negative = faster than real time).
+        lag = wall - stream_time_s
+        rate = lines / wall if wall > 0 else 0.0
+        sys.stderr.write(f"\r{lines:>12,d} lines | {rate / 1e3:8.1f} k lines/s | {balls:5d} balls | lag {lag * 1e3:9.1f} ms ")
+        sys.stderr.flush()
+
+    def close(self) -> None:
+        if self.enabled:
+            sys.stderr.write("\n")
+            sys.stderr.flush()
+
+
+class _Watched:
+    """Chunk iterator that feeds the status line."""
+
+    def __init__(self, src, status: _Status, line_rate_hz: float) -> None:
+        self._it = iter(src)
+        self.status = status
+        self.rate = line_rate_hz
+        self.lines = 0
+        self.balls = 0
+        self._t_first: float | None = None
+
+    def __iter__(self):
+        return self
+
+    def __next__(self):
+        ch = next(self._it)
+        self.lines += int(ch.lines.shape[0])
+        if ch.timestamps_s is not None and ch.timestamps_s.size:
+            if self._t_first is None:
+                self._t_first = float(ch.timestamps_s[0])
+            span = float(ch.timestamps_s[-1]) - self._t_first
+        else:
+            span = self.lines / self.rate
+        self.status.update(self.lines, self.balls, span)
+        return ch
+
+
+def watch(
+    source: Annotated[str, typer.Argument(help="Raw lines: a file, a named pipe or '-' (stdin); a folder of PNG/TIFF chunks; or 'pylon[:SERIAL]'.")],
+    camera: Annotated[Path, typer.Option("--camera", help="Camera TOML (geometry.md).")],
+    radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
+    width: Annotated[Optional[int], typer.Option("--width", help="Pixels per raw line (default: the camera's width).")] = None,
+    dtype: Annotated[str, typer.Option("--dtype", help="Raw sample type: uint8 or uint16 (little-endian).")] = "uint8",
+    chunk_lines: Annotated[int, typer.Option("--chunk-lines", help="Lines read at a time from a raw source.")] = 1024,
+    timestamps: Annotated[Optional[Path], typer.Option("--timestamps", help="Per-line timestamps (text or .npy), seconds.")] = None,
+    timeout: Annotated[Optional[float], typer.Option("--timeout", help="Give up when a pipe sends nothing for this many seconds.")] = None,
+    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
+    k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
+    margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
+    buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
+    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs.")] = None,
+    status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
+    out=None,
+) -> int:
+    """Measure balls in a continuous line stream; print one JSON line per ball as it is measured.
+
+    Each line holds geometry.md's estimate keys plus ``source``,
+    ``first_line`` and ``last_line`` (stream line numbers). Returns the
+    number of balls printed. ``out`` (a text stream, default stdout) is for
+    library use.
+    """
+    cam = load_camera(camera)
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
+    if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
+        raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, keep_crops=save_events is not None)
+    stream = out if out is not None else sys.stdout
+    show = sys.stderr.isatty() if status is None else status
+    st = _Status(bool(show))
+    name = getattr(src, "name", source)
+    n = 0
+    per_event: dict[int, int] = {}
+    gen = _Watched(src, st, cam.line_rate_hz)
+    try:
+        for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None):
+            try:
+                stream.write(json.dumps(res.to_dict(cam), allow_nan=False) + "\n")
+                stream.flush()
+            except BrokenPipeError:
+                # The reader went away (e.g. `| head`): stop quietly.
+                return n
+            n += 1
+            if save_events is not None:
+                k = per_event.get(res.event_index, 0)
+                per_event[res.event_index] = k + 1
+                save_event(save_events, res, cam, k)
+            gen.balls = n
+    finally:
+        st.close()
+    return n
+
+
+def batch(
+    inputs: Annotated[list[Path], typer.Argument(help="Images (PNG/TIFF), raw streams (.raw/.bin) or folders of them.")],
+    out_csv: Annotated[Path, typer.Option("--out", help="CSV file: one row per ball; inputs already in it are skipped.")],
+    radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
+    camera: Annotated[Optional[Path], typer.Option("--camera", help="Camera TOML for all inputs (default: NAME.camera.toml beside each).")] = None,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Parallel processes on this machine (-1: all cores).")] = 1,
+    scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Dask distributed scheduler address (tcp://HOST:PORT).")] = None,
+    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
+    dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
+    progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar (default: when stderr is a terminal).")] = None,
+) -> int:
+    """Measure every ball of many recorded images or raw streams into one CSV (restartable).
+
+    Returns the number of inputs that failed (0 = all measured); each
+    failure is printed as one line on stderr.
+    """
+    from .batch import run_batch
+
+    summary = run_batch(
+        inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
+        progress=sys.stderr.isatty() if progress is None else progress,
+    )
+    for src, msg in summary.errors:
+        print(f"ballscan: error: {msg}", file=sys.stderr)
+    print(
+        f"{summary.n_done} inputs measured ({summary.n_balls} balls), {summary.n_skipped} skipped (already in {out_csv}), {len(summary.errors)} failed",
+        file=sys.stderr,
+    )
+    return len(summary.errors)
+
+
+def simulate_stream(
+    out: Path,
+    camera: Path | LineScanCamera,
+    n_lines: int,
+    n_balls: int,
+    seed: int = 0,
+    *,
+    radius_m: float = 0.0335,
+    close_pairs: int = 0,
+    ramp: float = 0.0,
+    dropped: tuple[int, int] | None = None,
+    noise=None,
+    block_lines: int = 4096,
+):
+    """``ballscan simulate --stream``: render a raw line stream with balls and its truth.
+
+    Writes ``OUT`` (raw lines), ``OUT.camera.toml``, ``OUT.truth.jsonl`` and,
+    with ``dropped``, ``OUT.timestamps.npy``; see
+    :func:`ballscan.sources.simulate_stream`. ``camera`` is a camera TOML
+    path or a camera.
+
+    Returns
+    -------
+    ballscan.sources.SimulatedStream
+    """
+    from .sources import simulate_stream as _simulate
+
+    cam = camera if isinstance(camera, LineScanCamera) else load_camera(camera)
+    return _simulate(
+        out, cam, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, ramp=ramp, dropped=dropped, noise=noise, block_lines=block_lines
+    )
