@@ -366,92 +366,130 @@ class ArraySource:
 # --------------------------------------------------------------------------
 # Basler cameras through pypylon (optional extra)
 # --------------------------------------------------------------------------
+def _import_pylon():
+    """``(genicam, pylon)`` from pypylon, or a one-line SourceError when it is missing."""
+    import warnings
+
+    try:
+        with warnings.catch_warnings():
+            # pypylon's SWIG modules emit DeprecationWarnings on import
+            # ("builtin type SwigPyPacked has no __module__"); as errors
+            # (pytest -W error) they abort the import half-way and crash.
+            warnings.simplefilter("ignore", DeprecationWarning)
+            from pypylon import genicam, pylon
+    except ImportError:
+        raise SourceError("pylon source: pypylon is not installed (pip install pypylon, the Basler pylon SDK for Python)") from None
+    return genicam, pylon
+
+
 class PylonSource:
-    """Lines grabbed from a Basler camera with pypylon (optional: ``pip install ballscan[basler]``).
+    """Lines grabbed from a Basler camera with pypylon (optional extra: ``pip install pypylon``).
 
     Each grabbed frame of a line-scan camera is ``Height`` lines of
-    ``Width`` pixels; it becomes one chunk. Frame timestamps (camera ticks,
-    ns on most Basler models) are spread over the frame's lines at the
-    camera's line period.
+    ``Width`` pixels; it becomes one chunk (``Mono8`` -> ``uint8``,
+    ``Mono12``/``Mono16`` -> ``uint16``).
 
     Parameters
     ----------
     serial : str or None
         Serial number of the camera (default: the first found). With the
-        environment variable ``PYLON_CAMEMU=1`` pylon offers emulated cameras.
+        environment variable ``PYLON_CAMEMU=1`` (set before pypylon is
+        imported) pylon offers emulated cameras.
     frames : int or None
         Stop after this many frames (default: run until interrupted).
     timeout_s : float
-        Grab timeout; a camera that sends nothing for this long raises
+        Grab timeout (s); a camera that sends nothing for this long raises
         :class:`SourceStalled`.
+    width, height : int or None
+        Set the camera's ``Width`` (pixels per line) and ``Height`` (lines
+        per frame) before grabbing.
     image_folder : str or None
-        For an emulated camera: a folder of images it plays back
-        (``ImageFilename`` feature, ``TestImageSelector = Off``).
+        For an emulated camera: play back the images of this folder
+        (``ImageFilename``, ``ImageFileMode = On``, ``TestImageSelector =
+        Off``; pylon plays them in name order and loops).
+    camera_timestamps : bool
+        Give each line the frame's timestamp (camera ticks, taken as ns) plus
+        its index times ``line_period_s``. Off by default: lines then get
+        ``line / line_rate`` from the engine.
     line_period_s : float or None
-        Spacing of the timestamps of a frame's lines (default: none, lines
-        get ``line / line_rate`` from the engine).
+        Line period for ``camera_timestamps``.
     """
 
-    def __init__(self, serial: str | None = None, *, frames: int | None = None, timeout_s: float = 5.0, image_folder: str | None = None, line_period_s: float | None = None) -> None:
-        try:
-            from pypylon import pylon  # noqa: F401
-        except ImportError:
-            raise SourceError("pypylon is not installed: pip install pypylon (Basler pylon SDK for Python) to grab from a Basler camera") from None
+    def __init__(
+        self,
+        serial: str | None = None,
+        *,
+        frames: int | None = None,
+        timeout_s: float = 5.0,
+        width: int | None = None,
+        height: int | None = None,
+        image_folder: str | os.PathLike[str] | None = None,
+        camera_timestamps: bool = False,
+        line_period_s: float | None = None,
+    ) -> None:
+        _import_pylon()
+        if camera_timestamps and not (line_period_s and line_period_s > 0):
+            raise ValueError("line_period_s: needed (positive) with camera_timestamps")
         self.serial = serial
         self.frames = frames
-        self.timeout_s = timeout_s
-        self.image_folder = image_folder
+        self.timeout_s = float(timeout_s)
+        self.set_width = width
+        self.set_height = height
+        self.image_folder = None if image_folder is None else os.fspath(image_folder)
+        self.camera_timestamps = camera_timestamps
         self.line_period_s = line_period_s
         self.name = f"pylon:{serial or 'first'}"
-        self.dtype: np.dtype | None = None
-        self.width: int | None = None
+        self.width: int | None = width
+        self.lines_read = 0
 
     def __iter__(self) -> Iterator[Chunk]:
-        from pypylon import genicam, pylon
+        genicam, pylon = _import_pylon()
 
         factory = pylon.TlFactory.GetInstance()
-        devices = factory.EnumerateDevices()
         dev = None
-        for d in devices:
+        for d in factory.EnumerateDevices():
             if self.serial is None or d.GetSerialNumber() == self.serial:
                 dev = d
                 break
         if dev is None:
-            raise SourceError(f"{self.name}: no Basler camera found (set PYLON_CAMEMU=1 for an emulated one)")
-        cam = pylon.InstantCamera(factory.CreateDevice(dev))
+            raise SourceError(f"{self.name}: no Basler camera found (PYLON_CAMEMU=1 offers emulated ones)")
         try:
+            cam = pylon.InstantCamera(factory.CreateDevice(dev))
             cam.Open()
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.name}: cannot open the camera ({' '.join(str(exc).split())[:160]})") from None
+        try:
+            if self.set_width is not None:
+                cam.Width.SetValue(int(self.set_width))
+            if self.set_height is not None:
+                cam.Height.SetValue(int(self.set_height))
             if self.image_folder is not None:
-                cam.ImageFilename.SetValue(str(self.image_folder))
+                cam.ImageFilename.SetValue(self.image_folder)
                 cam.ImageFileMode.SetValue("On")
                 cam.TestImageSelector.SetValue("Off")
             self.width = int(cam.Width.GetValue())
             cam.StartGrabbing(pylon.GrabStrategy_OneByOne)
             n = 0
-            t_first = None
             while cam.IsGrabbing() and (self.frames is None or n < self.frames):
                 try:
                     res = cam.RetrieveResult(int(self.timeout_s * 1000), pylon.TimeoutHandling_ThrowException)
                 except genicam.TimeoutException:
-                    raise SourceStalled(f"{self.name}: no frame for {self.timeout_s:g} s after frame {n} (camera stalled)") from None
+                    raise SourceStalled(f"{self.name}: no frame for {self.timeout_s:g} s after line {self.lines_read} (camera stalled)") from None
                 try:
                     if not res.GrabSucceeded():
-                        raise SourceError(f"{self.name}: grab failed at frame {n}: {res.GetErrorDescription()}")
+                        raise SourceError(f"{self.name}: grab failed after line {self.lines_read}: {res.GetErrorDescription()}")
                     arr = np.array(res.GetArray())
-                    ts = None
-                    if self.line_period_s is not None:
-                        tick = res.GetTimeStamp() * 1e-9
-                        t_first = tick if t_first is None else t_first
-                        ts = (tick - t_first) + np.arange(arr.shape[0]) * self.line_period_s
+                    tick_s = res.GetTimeStamp() * 1e-9
                 finally:
                     res.Release()
                 if arr.ndim != 2:
-                    raise SourceError(f"{self.name}: frame {n} is not a grey image (shape {arr.shape})")
-                self.dtype = arr.dtype
+                    raise SourceError(f"{self.name}: frame {n} is not a grey image (shape {arr.shape}; use a Mono pixel format)")
+                ts = tick_s + np.arange(arr.shape[0]) * self.line_period_s if self.camera_timestamps else None
                 n += 1
+                self.lines_read += arr.shape[0]
                 yield Chunk(arr, ts)
         except genicam.GenericException as exc:
-            raise SourceError(f"{self.name}: pylon error: {' '.join(str(exc).split())[:200]}") from None
+            raise SourceError(f"{self.name}: pylon error after line {self.lines_read}: {' '.join(str(exc).split())[:200]}") from None
         finally:
             if cam.IsGrabbing():
                 cam.StopGrabbing()

@@ -46,7 +46,7 @@ def open_source(
     w = int(width) if width is not None else camera.width
     if source.startswith("pylon"):
         serial = source.split(":", 1)[1] if ":" in source else None
-        return PylonSource(serial, timeout_s=timeout_s or 5.0, line_period_s=1.0 / camera.line_rate_hz)
+        return PylonSource(serial, timeout_s=timeout_s or 5.0)
     if source != "-" and Path(source).is_dir():
         return ImageFolderSource(source, w, timestamps=timestamps)
     return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps)

@@ -1,0 +1,440 @@
+"""Tests of the stream engine, the line sources and ``watch`` (ballscan.stream, .sources, .stream_cli)."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import threading
+import time
+import tracemalloc
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscan.camera import LineScanCamera, save_camera
+from ballscan.estimate import estimate_image
+from ballscan.images import LineImage
+from ballscan.motion import BallMotion
+from ballscan.render import Appearance, SensorNoise, apply_sensor, render, write_image
+from ballscan.sources import (
+    ArraySource,
+    ImageFolderSource,
+    RawLineSource,
+    SourceError,
+    SourceStalled,
+    TruncatedStream,
+    load_truth_lines,
+    simulate_stream,
+    stream_balls,
+)
+from ballscan.stream import Chunk, StreamConfig, StreamEngine, StreamError, estimate_crop, crop_camera, process_stream
+from ballscan.stream_cli import watch
+
+RADIUS = 0.0335
+CAM = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+N_LINES = 64_000
+N_BALLS = 32
+SEED = 7
+CHUNKS = (7, 64, 1024)
+
+
+# ---------------------------------------------------------------- helpers
+def small_stream(n_lines: int = 3000, balls=((900.0, 0.0), (2000.0, 0.2)), seed: int = 1, level: float = 0.12) -> np.ndarray:
+    """A short 8-bit stream of CAM with balls crossing at the given (line, y0) pairs."""
+    motions = [(BallMotion(RADIUS, ln / CAM.line_rate_hz, (0.0, y0, 4.0), (35.0, 1.0, -2.0)), Appearance.flat(0.8)) for ln, y0 in balls]
+    return render(CAM, motions, n_lines, background_level=level, noise=SensorNoise(), seed=seed).image
+
+
+def write_raw(path: Path, data: np.ndarray, extra: bytes = b"") -> Path:
+    path.write_bytes(np.ascontiguousarray(data).tobytes() + extra)
+    return path
+
+
+def match(results, truths, line_rate):
+    """Pair each truth with the results whose t_c is within one line and first line within 3."""
+    pairs = []
+    for tr in truths:
+        hits = [
+            r
+            for r in results
+            if r.estimate.t_c_s is not None
+            and abs(r.estimate.t_c_s - tr["t_c_s"]) * line_rate < 1.0
+            and abs(r.estimate.first_line - tr["first_line"]) <= 3
+        ]
+        pairs.append((tr, hits))
+    return pairs
+
+
+# ---------------------------------------------------------------- the long stream
+@pytest.fixture(scope="module")
+def long_stream(tmp_path_factory):
+    """64 000 lines x 512 px, 32 balls (two close pairs), a 30 % illumination ramp, 4 lines dropped inside a ball."""
+    plan = stream_balls(CAM, N_LINES, N_BALLS, SEED, close_pairs=2)
+    ball_lines = [int(round(m.t_c_s * CAM.line_rate_hz)) for m in plan]
+    # Ball positions in lines do not depend on the timestamps: drop lines inside ball 15.
+    dropped = (ball_lines[15] + 3, 4)
+    out = tmp_path_factory.mktemp("stream") / "s.raw"
+    sim = simulate_stream(out, CAM, N_LINES, N_BALLS, SEED, close_pairs=2, ramp=0.3, dropped=dropped)
+    return sim, dropped
+
+
+@pytest.fixture(scope="module")
+def runs(long_stream):
+    sim, _ = long_stream
+    out = {}
+    for ch in CHUNKS:
+        src = RawLineSource(sim.raw, CAM.width, chunk_lines=ch, timestamps=sim.timestamps_path)
+        out[ch] = list(process_stream(src, CAM, RADIUS, source="s.raw"))
+    return out
+
+
+@pytest.mark.slow
+def test_simulated_stream_files(long_stream):
+    sim, dropped = long_stream
+    assert sim.raw.stat().st_size == N_LINES * CAM.width
+    truths = load_truth_lines(sim.truth_path)
+    assert len(truths) == N_BALLS
+    for tr in truths:
+        assert {"radius_m", "t_c_s", "position_m", "velocity_mps", "speed_mps", "first_line", "last_line"} <= set(tr)
+    t = np.load(sim.timestamps_path)
+    steps = np.diff(t) * CAM.line_rate_hz
+    assert np.flatnonzero(steps > 1.5).tolist() == [dropped[0]]
+    assert steps[dropped[0]] == pytest.approx(1 + dropped[1])
+
+
+@pytest.mark.slow
+def test_every_ball_found_once_none_invented(long_stream, runs):
+    sim, _ = long_stream
+    truths = load_truth_lines(sim.truth_path)
+    res = runs[64]
+    pairs = match(res, truths, CAM.line_rate_hz)
+    missing = [tr["first_line"] for tr, hits in pairs if len(hits) != 1]
+    assert missing == []
+    assert len(res) == len(truths)
+    # the stream really exercises chunk boundaries and close pairs
+    straddling = [tr for tr in truths if tr["first_line"] // 64 != tr["last_line"] // 64]
+    assert len(straddling) >= N_BALLS // 2
+    events = [r.event_index for r in res]
+    assert len(events) - len(set(events)) == 2  # each close pair shares one crop
+
+
+@pytest.mark.slow
+def test_same_results_for_any_chunk_size(runs):
+    ref = runs[64]
+    for ch in CHUNKS:
+        got = runs[ch]
+        assert [(r.estimate.first_line, r.estimate.last_line) for r in got] == [(r.estimate.first_line, r.estimate.last_line) for r in ref]
+        for a, b in zip(got, ref):
+            assert a.estimate.t_c_s == b.estimate.t_c_s
+            assert a.estimate.position_m == b.estimate.position_m
+            assert a.estimate.velocity_mps == b.estimate.velocity_mps
+            assert a.crop_lines == b.crop_lines and a.crop_cols == b.crop_cols
+
+
+@pytest.mark.slow
+def test_accuracy_as_single_image_fit(long_stream, runs):
+    """Each ball is measured as the precise fit measures the same lines as one image."""
+    sim, _ = long_stream
+    data = np.memmap(sim.raw, dtype=np.uint8, mode="r", shape=(N_LINES, CAM.width))
+    ts = np.load(sim.timestamps_path)
+    truths = load_truth_lines(sim.truth_path)
+    worst = 0.0
+    for r in runs[64]:
+        e = r.estimate
+        l0, l1 = r.crop_lines
+        c0, c1 = r.crop_cols
+        # 1. the very same numbers as estimate_image on the event's crop
+        same = estimate_crop(np.asarray(data[l0:l1, c0:c1]), ts[l0:l1], crop_camera(CAM, c0, c1), RADIUS, "fit", 255.0, 8, "crop")
+        k = int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in same]))
+        assert same[k].t_c_s == e.t_c_s and same[k].position_m == e.position_m and same[k].velocity_mps == e.velocity_mps
+        # 2. the whole sensor width over the same lines: equal within a fraction of the fit's 1-sigma
+        ref = estimate_image(LineImage(np.asarray(data[l0:l1], dtype=float), 255.0, 8, "lines"), CAM, RADIUS, timestamps_s=ts[l0:l1]).balls
+        rb = ref[int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in ref]))]
+        assert abs(e.t_c_s - rb.t_c_s) <= 0.75 * e.t_c_sigma_s + 1e-3 / CAM.line_rate_hz
+        for v, w, s in ((e.position_m, rb.position_m, e.position_sigma_m), (e.velocity_mps, rb.velocity_mps, e.velocity_sigma_mps)):
+            d = np.abs(np.subtract(v, w))[1:] / np.maximum(np.asarray(s)[1:], 1e-12)
+            worst = max(worst, float(d.max()))
+        dvx = abs(e.velocity_mps[0] - rb.velocity_mps[0])
+        assert dvx <= 0.75 * e.velocity_sigma_mps[0] + 0.02
+        # 3. and the truth within the fit's uncertainty
+        tr = min(truths, key=lambda t: abs(t["t_c_s"] - e.t_c_s))
+        assert abs(e.t_c_s - tr["t_c_s"]) <= 5 * e.t_c_sigma_s + 0.02 / CAM.line_rate_hz
+        for v, w, s in ((e.position_m, tr["position_m"], e.position_sigma_m), (e.velocity_mps, tr["velocity_mps"], e.velocity_sigma_mps)):
+            assert np.all(np.abs(np.subtract(v, w))[1:] <= 5 * np.asarray(s)[1:] + 1e-4)
+    assert worst <= 0.75
+
+
+@pytest.mark.slow
+def test_dropped_lines_flagged_only_there(long_stream, runs):
+    _, (line, _count) = long_stream
+    flagged = [r for r in runs[64] if "dropped_lines" in r.estimate.flags]
+    assert len(flagged) == 1
+    assert flagged[0].estimate.first_line <= line <= flagged[0].estimate.last_line
+
+
+@pytest.mark.slow
+def test_ramp_followed_by_background(long_stream):
+    sim, _ = long_stream
+    eng = StreamEngine(CAM, RADIUS, source="s.raw")
+    data = np.memmap(sim.raw, dtype=np.uint8, mode="r", shape=(N_LINES, CAM.width))
+    ts = np.load(sim.timestamps_path)
+    eng.push(np.asarray(data[:2048]), ts[:2048])
+    early = float(np.median(eng.background_dn))
+    for a in range(2048, N_LINES, 4096):
+        eng.push(np.asarray(data[a : a + 4096]), ts[a : a + 4096])
+    late = float(np.median(eng.background_dn))
+    # 30 % brighter at the end (black level 6 DN is not scaled)
+    assert (late - 6.0) / (early - 6.0) == pytest.approx(1.3, rel=0.03)
+    eng.finish()
+
+
+# ---------------------------------------------------------------- memory
+def _background_pool(n: int, lines: int = 256) -> list[np.ndarray]:
+    rng = np.random.default_rng(3)
+    return [apply_sensor(np.full((lines, CAM.width), 0.12), SensorNoise(), rng)[0] for _ in range(n)]
+
+
+def test_memory_does_not_grow_with_stream_length():
+    pool = _background_pool(4)
+    peaks = []
+    for n_chunks in (100, 200):
+        eng = StreamEngine(CAM, RADIUS, StreamConfig(buffer_lines=4096))
+        ring = eng._ring.nbytes
+        tracemalloc.start()
+        for k in range(n_chunks):
+            eng.push(pool[k % len(pool)])
+        eng.finish()
+        peaks.append(tracemalloc.get_traced_memory()[1])
+        tracemalloc.stop()
+        assert eng._ring.nbytes == ring
+        assert eng.lines_received == n_chunks * 256
+    assert peaks[1] <= 1.03 * peaks[0]
+
+
+def test_event_longer_than_buffer_is_reported_cut_and_stream_recovers():
+    pool = _background_pool(2)
+    cfg = StreamConfig(buffer_lines=1024, block_lines=128, margin_lines=12)
+    eng = StreamEngine(CAM, RADIUS, cfg)
+    out = []
+    for k in range(8):
+        out += eng.push(pool[k % 2])
+    # a step in illumination: looks like a never-ending "ball"
+    for k in range(12):
+        out += eng.push(np.clip(pool[k % 2].astype(int) + 40, 0, 255).astype(np.uint8))
+    out += eng.finish()
+    assert len(out) == 1
+    e = out[0].estimate
+    assert e.t_c_s is None and "cut_first_line" in e.flags and "cut_last_line" in e.flags
+    assert "buffer" in e.extra["reason"]
+    assert float(np.median(eng.background_dn)) > float(np.median(pool[0])) + 30
+
+
+# ---------------------------------------------------------------- engine contract
+def test_no_false_balls_in_pure_noise():
+    pool = _background_pool(4, lines=1024)
+    eng = StreamEngine(CAM, RADIUS)
+    out = []
+    for k in range(40):
+        out += eng.push(pool[k % 4])
+    out += eng.finish()
+    assert out == []
+    assert eng.stats().lines == 40 * 1024
+
+
+def test_ball_at_stream_end_is_measured_and_flagged_cut():
+    data = small_stream(3000, balls=((900.0, 0.0), (2990.0, 0.1)))
+    res = list(process_stream(ArraySource(data, 100), CAM, RADIUS))
+    assert len(res) == 2
+    assert "cut_last_line" in res[1].estimate.flags
+    assert "cut_last_line" not in res[0].estimate.flags
+
+
+def test_non_monotonic_timestamps_keep_earlier_results():
+    data = small_stream(3000, balls=((900.0, 0.0),))
+    t = np.arange(3000) / CAM.line_rate_hz
+    t[2500] = t[2499]
+    eng = StreamEngine(CAM, RADIUS, source="cam")
+    out = eng.push(data[:2000], t[:2000])
+    with pytest.raises(StreamError, match=r"cam: timestamp of line 2500 .*strictly increasing; the 2500 lines before it were processed") as ei:
+        eng.push(data[2000:], t[2000:])
+    assert len(out) + len(ei.value.results) == 1
+    assert eng.lines_received == 2500
+
+
+def test_engine_rejects_wrong_width_and_dtype():
+    eng = StreamEngine(CAM, RADIUS, source="cam")
+    with pytest.raises(StreamError, match="lines of 500 pixels after line 0, but the camera has width = 512"):
+        eng.push(np.zeros((10, 500), np.uint8))
+    with pytest.raises(StreamError, match="uint16"):
+        eng.push(np.zeros((10, 512), np.uint16))
+
+
+def test_executor_gives_the_same_results_in_order():
+    from concurrent.futures import ThreadPoolExecutor
+
+    data = small_stream(3000)
+    sync = list(process_stream(ArraySource(data, 256), CAM, RADIUS))
+    with ThreadPoolExecutor(1) as ex:
+        eng = StreamEngine(CAM, RADIUS, executor=ex)
+        got = []
+        for a in range(0, 3000, 256):
+            got += eng.push(data[a : a + 256])
+        got += eng.finish()
+    assert [r.estimate.t_c_s for r in got] == [r.estimate.t_c_s for r in sync]
+    assert len(got) == 2
+
+
+# ---------------------------------------------------------------- sources and faults
+def test_truncated_raw_stream_keeps_results(tmp_path):
+    data = small_stream(3000)
+    raw = write_raw(tmp_path / "t.raw", data, extra=b"\x10" * 100)
+    out = io.StringIO()
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    with pytest.raises(TruncatedStream, match=r"t.raw: ends with a partial line of 100 bytes .*the 3000 complete lines before it were processed"):
+        watch(str(raw), cam_path, RADIUS, out=out, status=False)
+    lines = [json.loads(s) for s in out.getvalue().splitlines()]
+    assert len(lines) == 2
+    for d in lines:
+        assert d["source"] == str(raw)
+        assert {"t_c_s", "position_m", "velocity_mps", "speed_mps", "flags", "first_line", "last_line"} <= set(d)
+
+
+def test_wrong_raw_width_is_a_truncated_line(tmp_path):
+    raw = write_raw(tmp_path / "w.raw", small_stream(3000))
+    with pytest.raises(TruncatedStream, match="--width 511"):
+        list(process_stream(RawLineSource(raw, 511), LineScanCamera(width=511, focal_px=1100.0, principal_px=255.0, line_rate_hz=20000.0), RADIUS))
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    with pytest.raises(Exception, match="--width 511 differs from the camera's width = 512"):
+        watch(str(raw), cam_path, RADIUS, width=511, out=io.StringIO(), status=False)
+
+
+def test_image_folder_source_and_wrong_width(tmp_path):
+    data = small_stream(3000)
+    folder = tmp_path / "chunks"
+    folder.mkdir()
+    for k, a in enumerate(range(0, 3000, 500)):
+        write_image(folder / f"chunk_{k}.png", data[a : a + 500])
+    res = list(process_stream(ImageFolderSource(folder), CAM, RADIUS))
+    ref = list(process_stream(ArraySource(data, 500), CAM, RADIUS))
+    assert [r.estimate.t_c_s for r in res] == [r.estimate.t_c_s for r in ref]
+    assert len(res) == 2
+    write_image(folder / "chunk_10.png", np.full((100, 500), 30, np.uint8))
+    got = []
+    with pytest.raises(SourceError, match=r"chunk_10.png: 500 pixels per line, expected 512; the 3000 lines before it were processed"):
+        for r in process_stream(ImageFolderSource(folder), CAM, RADIUS):
+            got.append(r)
+    assert len(got) == 2
+
+
+def test_raw_timestamps_file_non_monotonic(tmp_path):
+    data = small_stream(3000, balls=((900.0, 0.0),))
+    raw = write_raw(tmp_path / "s.raw", data)
+    t = np.arange(3000) / CAM.line_rate_hz
+    t[2000] = 0.0
+    np.save(tmp_path / "s.npy", t)
+    got = []
+    with pytest.raises(StreamError, match="timestamp of line 2000"):
+        for r in process_stream(RawLineSource(raw, 512, chunk_lines=512, timestamps=tmp_path / "s.npy"), CAM, RADIUS):
+            got.append(r)
+    assert len(got) == 1
+
+
+def _writer(fd: int, payload: bytes, pause_s: float, close: bool) -> threading.Thread:
+    def run():
+        os.write(fd, payload)
+        time.sleep(pause_s)
+        if close:
+            os.close(fd)
+
+    th = threading.Thread(target=run, daemon=True)
+    th.start()
+    return th
+
+
+def test_stalled_pipe_times_out_and_keeps_results():
+    data = small_stream(3000, balls=((900.0, 0.0),))
+    r, w = os.pipe()
+    th = _writer(w, data[:2000].tobytes(), 1.5, close=True)
+    got = []
+    t0 = time.perf_counter()
+    with os.fdopen(r, "rb", buffering=0) as fh:
+        with pytest.raises(SourceStalled, match=r"no data for 0.3 s after line 2000 \(source stalled; --timeout\)"):
+            for res in process_stream(RawLineSource(fh, 512, timeout_s=0.3, name="pipe"), CAM, RADIUS):
+                got.append(res)
+    assert time.perf_counter() - t0 < 1.4
+    assert len(got) == 1
+    th.join()
+
+
+def test_pipe_closed_mid_line_and_at_line_end():
+    data = small_stream(3000, balls=((900.0, 0.0), (2990.0, 0.1)))
+    for extra, expect_error in ((b"\x01\x02\x03", True), (b"", False)):
+        r, w = os.pipe()
+        th = _writer(w, data.tobytes() + extra, 0.0, close=True)
+        got = []
+        with os.fdopen(r, "rb", buffering=0) as fh:
+            src = RawLineSource(fh, 512, timeout_s=5.0, name="pipe")
+            if expect_error:
+                with pytest.raises(TruncatedStream, match="pipe: ends with a partial line of 3 bytes"):
+                    for res in process_stream(src, CAM, RADIUS):
+                        got.append(res)
+            else:
+                got = list(process_stream(src, CAM, RADIUS))
+        th.join()
+        # nothing lost: the ball cut by the end of the stream is measured too
+        assert len(got) == 2
+        assert "cut_last_line" in got[1].estimate.flags
+
+
+def test_watch_saves_events_and_runs_as_typer_command(tmp_path):
+    import typer
+    from typer.testing import CliRunner
+
+    raw = write_raw(tmp_path / "s.raw", small_stream(3000))
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    out = io.StringIO()
+    n = watch(str(raw), cam_path, RADIUS, save_events=tmp_path / "ev", out=out, status=False)
+    assert n == 2
+    pngs = sorted(p.name for p in (tmp_path / "ev").glob("*.png"))
+    assert sum(p.endswith(".overlay.png") for p in pngs) == 2 and len(pngs) == 4
+    app = typer.Typer()
+    app.command()(watch)
+    app.command("other")(lambda: None)
+    res = CliRunner().invoke(app, ["watch", str(raw), "--camera", str(cam_path), "--radius", str(RADIUS), "--chunk-lines", "100", "--no-status"])
+    assert res.exit_code == 0, res.output
+    rows = [json.loads(s) for s in res.stdout.splitlines() if s.startswith("{")]
+    assert [d["first_line"] for d in rows] == [json.loads(s)["first_line"] for s in out.getvalue().splitlines()]
+
+
+def test_pylon_emulated_camera_plays_rendered_chunks(tmp_path, monkeypatch):
+    import importlib.util
+
+    if importlib.util.find_spec("pypylon") is None:
+        pytest.skip("pypylon not installed (optional extra)")
+    monkeypatch.setenv("PYLON_CAMEMU", "1")
+    from ballscan.sources import PylonSource
+
+    data = small_stream(3072)
+    folder = tmp_path / "frames"
+    folder.mkdir()
+    for k, a in enumerate(range(0, 3072, 512)):
+        write_image(folder / f"f{k:03d}.png", data[a : a + 512])
+    try:
+        src = PylonSource(frames=6, width=512, height=512, image_folder=folder, timeout_s=5.0)
+        res = list(process_stream(src, CAM, RADIUS, source=src.name))
+    except SourceError as exc:  # pragma: no cover - depends on the pylon runtime
+        pytest.skip(f"pylon emulation unavailable: {exc}")
+    ref = list(process_stream(ArraySource(data, 512), CAM, RADIUS))
+    assert [r.estimate.t_c_s for r in res] == [r.estimate.t_c_s for r in ref]
+    assert len(res) == 2
+
+
+def test_chunk_dataclass_is_frozen():
+    c = Chunk(np.zeros((2, 4), np.uint8))
+    with pytest.raises(AttributeError):
+        c.lines = None  # type: ignore[misc]
