@@ -274,7 +274,7 @@ def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dty
             raise BallscanError(f"--scheduler {scheduler}: cannot connect ({' '.join(str(exc).split())[:160]})") from None
         try:
             futures = [client.submit(measure_input, p, cam, radius_m, method, dtype, pure=False) for p in todo]
-            for fut in as_completed(futures):
+            for fut in as_completed(futures, loop=client.loop):
                 yield fut.result()
         finally:
             client.close()
