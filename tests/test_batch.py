@@ -87,11 +87,16 @@ def test_batch_one_camera_for_all_and_missing_camera(recordings, tmp_path):
 
 
 def test_batch_command_function(recordings, tmp_path, capsys):
-    failed = batch([recordings / "one.png", recordings / "bad.png"], tmp_path / "c.csv", RADIUS, progress=True)
+    import typer
+
+    assert batch([recordings / "one.png"], tmp_path / "c.csv", RADIUS, progress=True) == 1
+    with pytest.raises(typer.Exit) as ei:
+        batch([recordings / "bad.png"], tmp_path / "c.csv", RADIUS, progress=False)
+    assert ei.value.exit_code == 1
     err = capsys.readouterr().err
-    assert failed == 1
     assert "ballscan: error:" in err and "bad.png" in err
     assert "1 inputs measured (1 balls), 0 skipped" in err
+    assert "0 inputs measured (0 balls), 0 skipped" in err
 
 
 def test_scheduler_needs_distributed(recordings, tmp_path, monkeypatch):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import io
 import json
 import os
 import threading
@@ -287,15 +286,14 @@ def test_executor_gives_the_same_results_in_order():
 
 
 # ---------------------------------------------------------------- sources and faults
-def test_truncated_raw_stream_keeps_results(tmp_path):
+def test_truncated_raw_stream_keeps_results(tmp_path, capsys):
     data = small_stream(3000)
     raw = write_raw(tmp_path / "t.raw", data, extra=b"\x10" * 100)
-    out = io.StringIO()
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     with pytest.raises(TruncatedStream, match=r"t.raw: ends with a partial line of 100 bytes .*the 3000 complete lines before it were processed"):
-        watch(str(raw), cam_path, RADIUS, out=out, status=False)
-    lines = [json.loads(s) for s in out.getvalue().splitlines()]
+        watch(str(raw), cam_path, RADIUS, status=False)
+    lines = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
     assert len(lines) == 2
     for d in lines:
         assert d["source"] == str(raw)
@@ -309,7 +307,7 @@ def test_wrong_raw_width_is_a_truncated_line(tmp_path):
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     with pytest.raises(Exception, match="--width 511 differs from the camera's width = 512"):
-        watch(str(raw), cam_path, RADIUS, width=511, out=io.StringIO(), status=False)
+        watch(str(raw), cam_path, RADIUS, width=511, status=False)
 
 
 def test_image_folder_source_and_wrong_width(tmp_path):
@@ -390,16 +388,16 @@ def test_pipe_closed_mid_line_and_at_line_end():
         assert "cut_last_line" in got[1].estimate.flags
 
 
-def test_watch_saves_events_and_runs_as_typer_command(tmp_path):
+def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     import typer
     from typer.testing import CliRunner
 
     raw = write_raw(tmp_path / "s.raw", small_stream(3000))
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
-    out = io.StringIO()
-    n = watch(str(raw), cam_path, RADIUS, save_events=tmp_path / "ev", out=out, status=False)
+    n = watch(str(raw), cam_path, RADIUS, save_events=tmp_path / "ev", status=False)
     assert n == 2
+    printed = capsys.readouterr().out
     pngs = sorted(p.name for p in (tmp_path / "ev").glob("*.png"))
     assert sum(p.endswith(".overlay.png") for p in pngs) == 2 and len(pngs) == 4
     app = typer.Typer()
@@ -408,7 +406,8 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path):
     res = CliRunner().invoke(app, ["watch", str(raw), "--camera", str(cam_path), "--radius", str(RADIUS), "--chunk-lines", "100", "--no-status"])
     assert res.exit_code == 0, res.output
     rows = [json.loads(s) for s in res.stdout.splitlines() if s.startswith("{")]
-    assert [d["first_line"] for d in rows] == [json.loads(s)["first_line"] for s in out.getvalue().splitlines()]
+    assert [d["first_line"] for d in rows] == [json.loads(s)["first_line"] for s in printed.splitlines()]
+    assert "--out" not in CliRunner().invoke(app, ["watch", "--help"]).stdout
 
 
 def test_pylon_emulated_camera_plays_rendered_chunks(tmp_path, monkeypatch):
@@ -438,3 +437,18 @@ def test_chunk_dataclass_is_frozen():
     c = Chunk(np.zeros((2, 4), np.uint8))
     with pytest.raises(AttributeError):
         c.lines = None  # type: ignore[misc]
+
+
+def test_a_failing_estimate_is_a_value_not_a_crash(monkeypatch):
+    import ballscan.estimate as est_mod
+
+    def boom(*args, **kwargs):
+        raise ValueError("synthetic failure")
+
+    monkeypatch.setattr(est_mod, "estimate_image", boom)
+    res = list(process_stream(ArraySource(small_stream(3000), 256), CAM, RADIUS))
+    assert len(res) == 2
+    for r in res:
+        assert r.estimate.t_c_s is None and "degenerate" in r.estimate.flags
+        assert "synthetic failure" in r.estimate.extra["reason"]
+        assert r.estimate.first_line is not None and r.estimate.last_line > r.estimate.first_line

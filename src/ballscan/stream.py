@@ -326,7 +326,6 @@ class StreamEngine:
         self._hit = np.zeros(cap, dtype=bool)  # per-line hit flags of the ring
         self._cap = cap
         self._n = 0  # lines received
-        self._tested = 0  # lines tested (== _n once the model exists)
         self._has_timestamps: bool | None = None
         self._last_t: float | None = None
         self._first_t: float | None = None
@@ -638,7 +637,6 @@ class StreamEngine:
         if ev is not None and (start + n) - ev.last_hit - 1 >= m:
             self._event = None
             self._close(ev, out)
-        self._tested = start + n
 
     def _emit_cut(self, ev: _Event, out: list[StreamResult], why: str) -> None:
         est = BallEstimate(
@@ -652,8 +650,8 @@ class StreamEngine:
             undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
             extra={"reason": why},
         )
-        job = _Job(self._n_events, ev.start, ev.last_hit + 1, ev.col_min, ev.col_max + 1, None, None, self._chunk_arrival, 0.0)
-        job.balls = (replace(est, first_line=0, last_line=ev.last_hit - ev.start),)
+        job = _Job(self._n_events, ev.start, ev.last_hit + 1, ev.col_min, ev.col_max + 1, None, None, self._chunk_arrival, 0.0, ev.start, ev.last_hit)
+        job.balls = (est,)
         self._n_events += 1
         self._pending.append(job)
         self._collect(out, wait=False)
@@ -685,7 +683,7 @@ class StreamEngine:
             camera = replace(camera, exposure_s=1.0 / camera.line_rate_hz)
         args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]")
         handoff = time.perf_counter() - self._chunk_arrival
-        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff)
+        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit)
         self._n_events += 1
         if self._executor is None:
             job.balls = estimate_crop(*args)
@@ -706,10 +704,12 @@ class StreamEngine:
             self._pending.popleft()
             done = time.perf_counter()
             for b in job.balls:
+                # Crop lines -> stream lines; an estimate without lines (it
+                # failed) gets the event's first and last ball line.
                 est = replace(
                     b,
-                    first_line=None if b.first_line is None else int(b.first_line) + job.l0,
-                    last_line=None if b.last_line is None else int(b.last_line) + job.l0,
+                    first_line=job.first_hit if b.first_line is None else int(b.first_line) + job.l0,
+                    last_line=job.last_hit if b.last_line is None else int(b.last_line) + job.l0,
                 )
                 self._n_balls += 1
                 out.append(
@@ -738,6 +738,8 @@ class _Job:
     times: np.ndarray | None
     arrival: float
     handoff: float
+    first_hit: int
+    last_hit: int
     balls: tuple = ()
     future: Any = None
 
@@ -771,12 +773,30 @@ def estimate_crop(
     Returns
     -------
     tuple of BallEstimate
-        Lines relative to the crop, in the order of ``t_c``.
+        Lines relative to the crop, in the order of ``t_c``. If the
+        estimator fails on the crop, one undetermined estimate (flag
+        ``"degenerate"``, ``extra["reason"]``) without lines: a stream must
+        not stop on one bad ball.
     """
     from .estimate import estimate_image
 
     image = LineImage(crop.astype(np.float64), saturation_dn, bits, name)
-    return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s).balls
+    try:
+        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s).balls
+    except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
+        return (
+            BallEstimate(
+                method=method,
+                radius_m=radius_m,
+                t_c_s=None,
+                position_m=None,
+                velocity_mps=None,
+                speed_mps=None,
+                flags=("degenerate",),
+                undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
+                extra={"reason": f"estimate failed: {' '.join(str(exc).split())[:200]}"},
+            ),
+        )
 
 
 def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int) -> LineScanCamera:

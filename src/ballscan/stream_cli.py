@@ -164,14 +164,13 @@ def watch(
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
     save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs.")] = None,
     status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
-    out=None,
 ) -> int:
     """Measure balls in a continuous line stream; print one JSON line per ball as it is measured.
 
     Each line holds geometry.md's estimate keys plus ``source``,
     ``first_line`` and ``last_line`` (stream line numbers). Returns the
-    number of balls printed. ``out`` (a text stream, default stdout) is for
-    library use.
+    number of balls printed (a reader that goes away, e.g. ``| head``,
+    ends the watch quietly).
     """
     cam = load_camera(camera)
     if not radius > 0:
@@ -180,7 +179,7 @@ def watch(
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
     cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, keep_crops=save_events is not None)
-    stream = out if out is not None else sys.stdout
+    stream = sys.stdout
     show = sys.stderr.isatty() if status is None else status
     st = _Status(bool(show))
     name = getattr(src, "name", source)
@@ -219,8 +218,9 @@ def batch(
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
-    Returns the number of inputs that failed (0 = all measured); each
-    failure is printed as one line on stderr.
+    Each input that fails is printed as one line on stderr and the command
+    then exits with status 1 (``typer.Exit``); the others are in the CSV.
+    Returns the number of balls written.
     """
     from .batch import run_batch
 
@@ -234,7 +234,9 @@ def batch(
         f"{summary.n_done} inputs measured ({summary.n_balls} balls), {summary.n_skipped} skipped (already in {out_csv}), {len(summary.errors)} failed",
         file=sys.stderr,
     )
-    return len(summary.errors)
+    if summary.errors:
+        raise typer.Exit(code=1)
+    return summary.n_balls
 
 
 def simulate_stream(
