@@ -1256,6 +1256,7 @@ def plot_sweeps(res: ExperimentResult, path: str | Path | None = None, axes=None
 
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
+    import matplotlib.ticker as mticker
 
     cfg = res.config
     nr, nc = len(cfg.textures), len(cfg.sweeps)
@@ -1287,6 +1288,10 @@ def plot_sweeps(res: ExperimentResult, path: str | Path | None = None, axes=None
             ax.set_yscale("log")
             if FACTORS[sw.factor].log_axis:
                 ax.set_xscale("log")
+                # plain numbers at 1-2-5 steps read better than powers of ten
+                ax.xaxis.set_major_locator(mticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+                ax.xaxis.set_major_formatter(mticker.FuncFormatter(lambda x, _: f"{x:g}"))
+                ax.xaxis.set_minor_formatter(mticker.NullFormatter())
             ax.grid(True, which="both", alpha=0.25)
             ax.set_xlabel(FACTORS[sw.factor].label)
             base = cfg.scene.factor_value(sw.factor)
