@@ -39,6 +39,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Sequence
 
+import math
+
 import numpy as np
 
 __all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "measure_detection"]
@@ -77,10 +79,25 @@ class EdgeSettings:
         gradient per pixel (inwards) and ``d`` the distance from the run's
         centre to the edge pixel's covered part (``n_in + 0.75 + (n_level -
         1) / 2`` pixels).  The relative correction is median-filtered over
-        ``slope_lines`` lines (shading is smooth from line to line, felt
+        lines (``slope_degree``; shading is smooth from line to line, felt
         texture and noise are not).  0 uses the level run as it is.
     slope_lines : int
-        Lines of the running median of the level gradient.
+        Lines of the running median of the level gradient (fallback of the
+        polynomial smoothing for short balls).
+    slope_degree : int
+        Degree of a robust polynomial (in the line index) that smooths the
+        relative level gradient along each side instead of the running
+        median; -1 (default) keeps the running median (a low-order polynomial
+        cannot follow the blur at the ball's ends and biases the middle).
+    slope_threshold : float
+        The correction is applied on a side only when the smoothed relative
+        gradient exceeds this many of its own sigmas on average over the
+        side's lines.
+    ball_noise : bool
+        Estimate the ball's own pixel noise (shot noise grows with the
+        signal) from second differences inside the segments and use
+        ``sigma^2 = sigma_bg^2 + (sigma_ball^2 - sigma_bg^2) p / p_ball`` per
+        pixel instead of the background's noise alone.
     max_walk_px : int
         Pixels the rough edge may move outwards from the peak-fraction
         crossing towards a darker (shaded) limb.
@@ -98,6 +115,9 @@ class EdgeSettings:
     level_slope: float = 1.0
     max_walk_px: int = 12
     slope_lines: int = 9
+    slope_degree: int = -1
+    slope_threshold: float = 2.0
+    ball_noise: bool = True
 
 
 @dataclass(frozen=True)
@@ -146,7 +166,9 @@ class EdgeMeasurements:
     left_texture_px, right_texture_px : ndarray or None
         Texture/shading indicator of each edge, pixels: the window's covered
         length ``S / L`` times the relative change of the inner level between
-        the level run and the next ``n_level`` pixels inward (less its noise).
+        the two runs of ``n_level`` pixels inside the level run (less its
+        noise; pixels the edge estimate does not use, so that the weight's
+        noise is independent of the edge's).
         A uniform limb gives about 0; a seam or a steep shading gradient next
         to the edge gives the size of the edge's possible bias.  ``None`` when
         not measured (synthetic edges).
@@ -214,6 +236,35 @@ def _region_pixels(region: Any, n_lines: int, width: int) -> np.ndarray:
     else:
         m = np.asarray(mask, dtype=bool)
         out[l0 : l0 + m.shape[0], c0 : c0 + m.shape[1]] = m
+    return out
+
+
+def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
+    """Smooth a per-line quantity: a robust polynomial in the line index.
+
+    A polynomial of ``degree`` is fitted to the finite entries, entries more
+    than 3 robust sigmas off are dropped and it is fitted again (twice); with
+    fewer than ``3 (degree + 1)`` finite entries, a running median over ``n``
+    lines is used instead.  NaN stays NaN.
+    """
+    ok = np.isfinite(x)
+    idx = np.flatnonzero(ok)
+    if degree < 0 or idx.size < 3 * (degree + 1):
+        return _running_median(x, n)
+    u = (idx - idx.mean()) / max(float(np.ptp(idx)), 1.0)
+    y = x[idx]
+    keep = np.ones(idx.size, dtype=bool)
+    coef = np.zeros(degree + 1)
+    for _ in range(3):
+        coef = np.polynomial.polynomial.polyfit(u[keep], y[keep], degree)
+        res = y - np.polynomial.polynomial.polyval(u, coef)
+        mad = 1.4826 * float(np.median(np.abs(res[keep])))
+        new = np.abs(res) <= 3.0 * max(mad, 1e-6)
+        if new.sum() < 3 * (degree + 1) or np.array_equal(new, keep):
+            break
+        keep = new
+    out = np.full(x.size, np.nan)
+    out[idx] = np.polynomial.polynomial.polyval(u, coef)
     return out
 
 
@@ -315,7 +366,7 @@ def measure_edges(
     # walk outwards while the next pixel still holds find_fraction of its
     # inner neighbour (and is significant), so that the window sits on the
     # ball's real edge.
-    floor_p = s.min_snr / 2.0 * noise_row
+    floor_p = s.min_snr * noise_row
     for _ in range(s.max_walk_px):
         cand = k_left - 1
         inner = p[rows[:, 0], np.clip(k_left + 1, 0, w - 1)]
@@ -332,6 +383,24 @@ def measure_edges(
         if not step.any():
             break
         k_right = np.where(step, cand, k_right)
+
+    # Signal-dependent noise (shot noise): the background's noise understates
+    # the ball's.  Estimate the ball's pixel noise from second differences
+    # inside the segments and let it grow linearly with the signal.
+    if s.ball_noise:
+        jj0 = np.arange(w)[None, :]
+        inner_px = has_signal[:, None] & (jj0 >= k_left[:, None] + 3) & (jj0 <= k_right[:, None] - 3)
+        inner_px[:, [0, -1]] = False
+        d2 = np.zeros_like(p)
+        d2[:, 1:-1] = p[:, :-2] - 2.0 * p[:, 1:-1] + p[:, 2:]
+        both = inner_px & np.roll(inner_px, 1, axis=1) & np.roll(inner_px, -1, axis=1)
+        if both.sum() >= 50:
+            vals = d2[both]
+            sig_in = 1.4826 * float(np.median(np.abs(vals - np.median(vals)))) / math.sqrt(6.0)
+            p_in = float(np.median(p[both]))
+            sig_bg = float(np.median(sp[both]))
+            if p_in > 0 and sig_in > sig_bg:
+                sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(p / p_in, 0.0, 2.0))
 
     def one_side(k: np.ndarray, sign: int, n_out: int = s.n_out, n_in: int = s.n_in):
         # window and level pixel offsets relative to k, pointing inwards with `sign`
@@ -354,7 +423,7 @@ def measure_edges(
         sl2 = (sl**2).sum(axis=1) / s.n_level**2
         kap = s.level_slope
         # relative level gradient, median-filtered along the lines (shading is
-        # smooth from line to line, felt texture and noise are not)
+        # smooth from line to line, felt texture and noise are not):
         # gradient per pixel across the level run (inwards positive), towards
         # the covered part of the edge pixel (about `dist` pixels outwards)
         if s.n_level >= 2:
@@ -363,15 +432,33 @@ def measure_edges(
             grad = (pd - L_run) / s.n_level
         dist = n_in + 1 + (s.n_level - 1) / 2.0 - 0.25
         Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
-        rel = _running_median(np.where(has_signal, -dist * grad / Lsafe, np.nan), s.slope_lines)
-        L = L_run * (1.0 + kap * np.nan_to_num(rel))
+        rel = _smooth_lines(np.where(has_signal, -dist * grad / Lsafe, np.nan), s.slope_lines, s.slope_degree)
+        # noise of the smoothed gradient (median of slope_lines lines)
+        if s.n_level >= 2:
+            g_var = (sl[:, -1] ** 2 + sl[:, 0] ** 2) / (s.n_level - 1) ** 2
+        else:
+            g_var = (sd2 + sl2) / s.n_level**2
+        rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(s.slope_lines, 1)
+        # Only a side whose gradient stands out of its noise is corrected (an
+        # unshaded ball keeps the plain level and its noise).  The decision
+        # is taken once per side, not per line: shrinking each line's
+        # correction by its noise would bias noisy edges inwards.
+        rel_sig = np.sqrt(rel_var)
+        rel = np.nan_to_num(rel)
+        use = has_signal & (rel_sig > 0)
+        shaded = bool(use.any()) and float(np.mean(np.abs(rel[use]) / rel_sig[use])) > s.slope_threshold
+        if not shaded:
+            rel = np.zeros_like(rel)
+        applied = rel != 0
+        L = L_run * (1.0 + kap * rel)
         S = pw.sum(axis=1)
         Ls = np.where(L > 0, L, 1.0)
         n_win = win_off.size
         uncovered = n_win - S / Ls
         # left: the window starts at its outermost pixel a; right: ends at b
         e = np.where(sign > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
-        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * np.nan_to_num(rel)) ** 2
+        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
+        var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
         sig = np.sqrt(var)
         lo = np.minimum(win.min(1), lev.min(1))
         hi = np.maximum(win.max(1), lev.max(1))
@@ -380,7 +467,13 @@ def measure_edges(
         allidx = np.concatenate([winc, levc], axis=1)
         saturated = sat[rows, allidx].any(axis=1)
         overlapping = other[rows, allidx].any(axis=1)
-        dlev = np.abs(L_run - pd) - np.sqrt(sd2 + sl2)
+        # texture indicator from pixels the edge does not use (the deep run and
+        # the run inside it), so that its noise is independent of the edge's:
+        # a weight correlated with the edge's own error would bias the fit
+        deeper = np.clip(k[:, None] + (deep_off + s.n_level * sign)[None, :], 0, w - 1)
+        pdd = p[rows, deeper].mean(axis=1)
+        sdd2 = (sp[rows, deeper] ** 2).sum(axis=1) / s.n_level**2
+        dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
         tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
         plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
         ok = has_signal & plausible & ~at_sensor_end & ~saturated & ~overlapping

@@ -282,15 +282,26 @@ class FitSettings:
         (:attr:`ballscan.edges.EdgeMeasurements.left_wide_px`) instead.
     edge_floor_px : float
         Systematic 1-sigma added in quadrature to each edge sigma, pixels
-        (limb shading and felt texture that the local level cannot follow;
-        calibrated on the clean reference scenes, where edges from the
-        renderer's exact coverage differ from the measured ones by 0.05 px
-        (MAD) on uniform limbs).
+        (limb shading and felt texture that the local level cannot follow).
+        On the clean reference scenes the measured edges differ from the
+        renderer's exact coverage edges by 0.049 px RMS on uniform limbs
+        (texture indicator < 0.01 px) and 0.08-0.14 px next to seams; the
+        part above 0.02 px is carried by ``texture_gain``, by the reduced
+        chi-square scaling and by ``correlation_inflation`` (which see the
+        actual scatter), so that a plain noisy ball keeps its pixel-noise
+        sigma.
     texture_gain : float
         Multiplies the edges' texture indicator
         (:attr:`ballscan.edges.EdgeMeasurements.left_texture_px`), added in
         quadrature to each edge sigma: edges next to a seam or a steep
         shading gradient get a larger sigma.
+    end_line_areas : bool
+        Fit the summed coverage of lines with signal but no usable edge (the
+        ball's faint ends).  Off by default: the sum is weighted by the
+        brightness of the ball's cap, which a shaded ball's lighting changes
+        between its leading and trailing ends by tens of per cent, hence the
+        large ``area_rel_sigma``.  Lines without signal (the ball is absent)
+        always give area residuals.
     level_areas : bool
         Divide the end lines' areas by the ball's local brightness next to
         them (:func:`_area_levelled`).
@@ -311,7 +322,10 @@ class FitSettings:
         small a sigma (chiefly on ``vz``).
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area (its brightness is
-        not the ball's mean brightness), added in quadrature.
+        the lit or shaded cap's, not the ball's mean brightness), added in
+        quadrature.  The default 3 leaves the end lines little say on size
+        and timing (with 0.15 they biased ``vz`` by 4 sigma on noisy shaded
+        renders) but keeps them as a weak anchor of where the ball is seen.
     area_floor_px : float
         Added in quadrature to each area sigma, pixels.
     loss, f_scale : str, float
@@ -333,14 +347,15 @@ class FitSettings:
     fit_edge_bias: bool = False
     max_spread_px: float = 0.3
     max_spread_wide_px: float = 0.8
+    end_line_areas: bool = True
     level_areas: bool = False
-    edge_floor_px: float = 0.05
+    edge_floor_px: float = 0.02
     texture_gain: float = 1.0
     level_lines: int = 3
     reject_sigma: float = 3.5
     max_reject_rounds: int = 3
     correlation_inflation: bool = True
-    area_rel_sigma: float = 0.15
+    area_rel_sigma: float = 3.0
     area_floor_px: float = 0.1
     loss: str = "soft_l1"
     f_scale: float = 3.0
@@ -439,7 +454,10 @@ def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
     # area lines: no usable edge, and the line's area is not spoiled
     # (edges.end_line), or no signal at all (lines around the ball)
     no_signal = ~edges.signal & ~(edges.left_ok | edges.right_ok)
-    use_a = ~(use_l | use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
+    if settings.end_line_areas:
+        use_a = ~(use_l | use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
+    else:
+        use_a = ~(use_l | use_r) & no_signal
     return use_l, use_r, use_a, wide_l, wide_r
 
 
@@ -846,7 +864,10 @@ class MotionUncertainty:
     Attributes
     ----------
     speed_mps, speed_sigma_mps : float
-        ``|V|`` and its linearised 1-sigma, m/s.
+        ``|V|`` and the RMS of its error, m/s: the linearised variance
+        ``g^T C_v g`` plus the variance and the square of the mean of the
+        second-order term ``d^T P d / (2 |V|)`` (``P = I - g g^T``), which
+        dominate when ``vz`` is poorly determined.
     speed_bias_mps : float
         Expected upward bias of ``|V|`` of a noisy vector,
         ``(tr(C_v) - g^T C_v g) / (2 |V|)`` with ``g = V / |V|``, m/s (not
@@ -889,8 +910,17 @@ def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray
     Cv = C[3:, 3:]
     speed = float(np.linalg.norm(V))
     g = V / speed if speed > 0 else np.zeros(3)
-    var_s = float(g @ Cv @ g)
-    bias = float((np.trace(Cv) - var_s) / (2.0 * speed)) if speed > 0 else math.nan
+    var_lin = float(g @ Cv @ g)
+    bias = float((np.trace(Cv) - var_lin) / (2.0 * speed)) if speed > 0 else math.nan
+    # second order: |V + d| - |V| ~ g.d + d^T P d / (2 |V|), P = I - g g^T; the
+    # quadratic term matters when a component across V (chiefly vz) is poorly
+    # determined, and its mean (the bias) is part of the error
+    if speed > 0 and np.all(np.isfinite(Cv)):
+        P = np.eye(3) - np.outer(g, g)
+        PC = P @ Cv
+        var_s = var_lin + float(np.trace(PC @ PC)) / (2.0 * speed**2) + bias**2
+    else:
+        var_s = var_lin
     # position (0, y0, z0): x is exact by definition of t_c
     Cp = np.zeros((3, 3))
     Cp[1:, 1:] = C[1:3, 1:3]
