@@ -452,3 +452,28 @@ def test_a_failing_estimate_is_a_value_not_a_crash(monkeypatch):
         assert r.estimate.t_c_s is None and "degenerate" in r.estimate.flags
         assert "synthetic failure" in r.estimate.extra["reason"]
         assert r.estimate.first_line is not None and r.estimate.last_line > r.estimate.first_line
+
+
+def test_watch_reads_stdin_and_shows_status(tmp_path):
+    import subprocess
+    import sys
+
+    raw = write_raw(tmp_path / "s.raw", small_stream(3000))
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    code = (
+        "import typer; from ballscan.stream_cli import watch; app = typer.Typer(); app.command()(watch); "
+        "app.command('other')(lambda: None); app()"
+    )
+    with open(raw, "rb") as fh:
+        proc = subprocess.run(
+            [sys.executable, "-c", code, "watch", "-", "--camera", str(cam_path), "--radius", str(RADIUS), "--status", "--timeout", "10"],
+            stdin=fh,
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
+    assert proc.returncode == 0, proc.stderr
+    rows = [json.loads(s) for s in proc.stdout.splitlines()]
+    assert len(rows) == 2 and all(r["source"] == "<stdin>" for r in rows)
+    assert "3,000 lines" in proc.stderr and "k lines/s" in proc.stderr and "2 balls" in proc.stderr

@@ -343,6 +343,10 @@ class StreamEngine:
         self._chunk_arrival = 0.0
         self._executor = executor
         self._pending: deque[_Job] = deque()
+        if executor is None:
+            # Import the estimator now, not when the first ball leaves: that
+            # first result would otherwise carry the import time (~0.3 s).
+            from . import edges, estimate, fit  # noqa: F401
 
     # ------------------------------------------------------------------ public
     @property

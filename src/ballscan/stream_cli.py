@@ -100,12 +100,14 @@ class _Status:
         self.enabled = enabled
         self.t0 = time.perf_counter()
         self.last = 0.0
+        self.state = (0, 0, 0.0)
 
-    def update(self, lines: int, balls: int, stream_time_s: float) -> None:
+    def update(self, lines: int, balls: int, stream_time_s: float, force: bool = False) -> None:
+        self.state = (lines, balls, stream_time_s)
         if not self.enabled:
             return
         now = time.perf_counter()
-        if now - self.last < 0.25:
+        if not force and now - self.last < 0.25:
             return
         self.last = now
         wall = now - self.t0
@@ -116,8 +118,9 @@ class _Status:
         sys.stderr.write(f"\r{lines:>12,d} lines | {rate / 1e3:8.1f} k lines/s | {balls:5d} balls | lag {lag * 1e3:9.1f} ms ")
         sys.stderr.flush()
 
-    def close(self) -> None:
+    def close(self, balls: int) -> None:
         if self.enabled:
+            self.update(self.state[0], balls, self.state[2], force=True)
             sys.stderr.write("\n")
             sys.stderr.flush()
 
@@ -201,7 +204,7 @@ def watch(
                 save_event(save_events, res, cam, k)
             gen.balls = n
     finally:
-        st.close()
+        st.close(n)
     return n
 
 
