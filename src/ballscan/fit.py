@@ -317,9 +317,10 @@ class FitSettings:
         Multiply the covariance by ``(1 + rho) / (1 - rho)`` (at most 10),
         ``rho`` the larger lag-one autocorrelation of the whitened edge
         residuals along each side, less ``2 / sqrt(n)`` (what white noise
-        reaches by chance): shading and seam biases are correlated over many
-        lines and a fit that treats them as independent would report too
-        small a sigma (chiefly on ``vz``).
+        reaches by chance), and scale it at least by the variance ratio of
+        block means of the residuals (:func:`_block_scale`): shading and
+        seam biases are correlated over many lines and a fit that treats
+        them as independent would report too small a sigma.
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area (its brightness is
         the lit or shaded cap's, not the ball's mean brightness), added in
@@ -711,6 +712,10 @@ def fit_motion(
         # only a significant correlation (2 sigma of white noise's rho) counts
         rho = max(_lag_one(r[:nl]) - 2.0 / math.sqrt(max(nl, 1)), _lag_one(r[nl : nl + nr]) - 2.0 / math.sqrt(max(nr, 1)), 0.0)
         inflation = min((1.0 + rho) / (1.0 - rho), 10.0) if rho > 0 else 1.0
+    block = _block_scale(r[:nl], r[nl : nl + nr]) if settings.correlation_inflation else 1.0
+    chi_scale = max(1.0, chi2_red if np.isfinite(chi2_red) else 1.0)
+    total_scale = max(chi_scale * inflation, block)
+    inflation = total_scale / chi_scale
     # Column-equilibrated normal matrix: the parameters' sizes differ by 1e8,
     # so the rank test and the inverse are done on unit-norm columns.
     Jw = J
@@ -725,7 +730,7 @@ def fit_motion(
         undetermined = [PARAM_NAMES[k] for k in range(6) if weight[k] > 1e-3]
     inv_evals = np.where(tiny, 0.0, 1.0 / np.where(tiny, 1.0, evals))
     cov_s = (evecs * inv_evals) @ evecs.T
-    cov_full = cov_s / np.outer(cn, cn) * max(1.0, chi2_red if np.isfinite(chi2_red) else 1.0) * inflation
+    cov_full = cov_s / np.outer(cn, cn) * total_scale
     cov = cov_full[:6, :6].copy()
     for name in undetermined:
         k = PARAM_NAMES.index(name)
@@ -766,6 +771,28 @@ def fit_motion(
         n_rejected=n_rejected,
         inflation=inflation,
     )
+
+
+def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:
+    """Variance ratio of block means of whitened residuals (1 for white noise).
+
+    For each side (residuals in line order) and block size ``B``, the mean of
+    ``B * mean_block^2`` is what a slowly varying bias inflates (a seam or a
+    shading error over a few lines); ratios within the 3-sigma spread of
+    white noise (``1 + 3 sqrt(2 / n_blocks)``) count as 1.  Returns the
+    largest ratio, at most 100.
+    """
+    best = 1.0
+    for r in sides:
+        for B in sizes:
+            nb = r.size // B
+            if nb < 4:
+                continue
+            m = r[: nb * B].reshape(nb, B).mean(axis=1)
+            ratio = B * float(np.mean(m * m))
+            if ratio > 1.0 + 3.0 * math.sqrt(2.0 / nb):
+                best = max(best, ratio)
+    return min(best, 100.0)
 
 
 def _lag_one(r: np.ndarray) -> float:
