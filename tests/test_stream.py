@@ -477,3 +477,23 @@ def test_watch_reads_stdin_and_shows_status(tmp_path):
     rows = [json.loads(s) for s in proc.stdout.splitlines()]
     assert len(rows) == 2 and all(r["source"] == "<stdin>" for r in rows)
     assert "3,000 lines" in proc.stderr and "k lines/s" in proc.stderr and "2 balls" in proc.stderr
+
+
+def test_per_line_offset_follows_lamp_flicker():
+    """30 % flicker over 200 lines: the per-line offset keeps the band on the background."""
+    balls = [(BallMotion(RADIUS, ln / CAM.line_rate_hz, (0.0, y0, 4.0), (35.0, 1.0, -2.0)), Appearance.flat(0.8)) for ln, y0 in ((1500, 0.0), (3500, 0.2), (5200, -0.2))]
+    clean = render(CAM, balls, 6000, background_level=0.12, noise=None).clean
+    flicker = 1 + 0.3 * np.sin(2 * np.pi * np.arange(6000) / 200)
+    img, _ = apply_sensor(clean * flicker[:, None], SensorNoise(), 3)
+    stats = {}
+    for on in (True, False):
+        eng = StreamEngine(CAM, RADIUS, StreamConfig(line_offset=on))
+        res = []
+        for a in range(0, 6000, 256):
+            res += eng.push(img[a : a + 256])
+        res += eng.finish()
+        assert [round(r.estimate.t_c_s * CAM.line_rate_hz) for r in res] == [1500, 3500, 5200]
+        stats[on] = eng.stats()
+    assert stats[True].events == 3 and stats[True].rejected == 0
+    # without it, flicker peaks leave the band: spurious events (rejected or empty crops)
+    assert stats[False].events + stats[False].rejected > 3

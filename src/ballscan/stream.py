@@ -16,6 +16,10 @@ Pipeline per chunk
    A line holds ball pixels when it has a run of at least ``min_run_px``
    adjacent outside pixels (a single 4-sigma pixel occurs on ~13 % of
    2048-pixel lines by chance; two adjacent ones on ~1e-5 of them).
+   Each line's band is first shifted by the line's own offset from the
+   background (whole DN, the median of ``x - b`` over 64 columns spread
+   over the sensor, clipped to 3 noise sigmas): lamp flicker and other
+   illumination changes faster than the block updates stay in the band.
 3. **Events.** Hit lines closer than ``margin_lines`` clean lines belong to
    one event (so two balls close in time share one crop and each keeps a
    clean margin). An event ends when ``margin_lines`` clean lines follow its
@@ -36,9 +40,10 @@ Pipeline per chunk
 
 The model is initialised by :func:`ballscan.detection.detect` on the first
 block (robust per-column mode and noise; balls in it do not bias it).
-Slow illumination drift is followed by the per-block EMA; the per-line gain
-and offset used by the precise estimate are those :func:`detect` estimates
-on the crop.
+Slow illumination drift is followed by the per-block EMA (the mean of the
+per-line offsets goes into the level, their spread is kept out of the
+noise); the per-line gain and offset used by the precise estimate are those
+:func:`detect` estimates on the crop.
 """
 
 from __future__ import annotations
@@ -143,6 +148,17 @@ class StreamConfig:
         Clipping level (DN); default the dtype's maximum.
     keep_crops : bool
         Attach each event's crop to its results (for ``--save-events``).
+    line_offset : bool
+        Shift each line's band by the line's own offset from the background
+        (whole DN): the median of ``x - b`` over ``offset_columns`` columns
+        spread over the sensor. Follows illumination changes faster than the
+        block updates (lamp flicker) at about 1.5 ms per 1024 x 2048 chunk.
+    offset_columns : int
+        Columns sampled for the per-line offset.
+    max_line_offset_sigma : float
+        The per-line offset is clipped to this many typical noise sigmas, so
+        that a ball covering most of the sampled columns cannot move the
+        band onto itself.
     """
 
     k_sigma: float = 4.0
@@ -159,6 +175,9 @@ class StreamConfig:
     method: str = "fit"
     saturation_dn: float | None = None
     keep_crops: bool = False
+    line_offset: bool = True
+    offset_columns: int = 64
+    max_line_offset_sigma: float = 3.0
 
     def __post_init__(self) -> None:
         def need(ok: bool, name: str, why: str) -> None:
@@ -179,6 +198,8 @@ class StreamConfig:
         )
         need(self.noise_floor_dn > 0, "noise_floor_dn", "must be positive")
         need(self.method in ("fit", "paper"), "method", "must be 'fit' or 'paper'")
+        need(isinstance(self.offset_columns, (int, np.integer)) and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
+        need(self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
 
 
 @dataclass(frozen=True)
@@ -324,6 +345,9 @@ class StreamEngine:
         self._ring = np.zeros((cap, self.width), dtype=dt)
         self._times = np.zeros(cap, dtype=np.float64)
         self._hit = np.zeros(cap, dtype=bool)  # per-line hit flags of the ring
+        self._off = np.zeros(cap, dtype=np.int32)  # per-line offsets (DN) of the ring
+        m = min(int(self.config.offset_columns), self.width)
+        self._ocols = np.unique(np.linspace(0, self.width - 1, m).round().astype(np.intp))
         self._cap = cap
         self._n = 0  # lines received
         self._has_timestamps: bool | None = None
@@ -557,6 +581,8 @@ class StreamEngine:
         hi = np.clip(np.ceil(self._bg + k * sig), 0, self._max_dn)
         self._lo = lo.astype(self.dtype)
         self._span = (hi - lo).astype(self.dtype)
+        self._bg_ocols = np.rint(self._bg[self._ocols]).astype(np.int32)
+        self._max_off = int(np.ceil(self.config.max_line_offset_sigma * float(np.median(sig))))
 
     def _update_model(self, lo: int, hi: int) -> None:
         cfg = self.config
@@ -574,21 +600,28 @@ class StreamEngine:
         if rows.size < 2:
             return
         # float32 sums of 8-bit values and their squares are exact integers
-        # below 2**24 (n <= 258 lines); 16-bit data need float64.
-        ft = np.float32 if self.dtype.itemsize == 1 and rows.size <= 256 else np.float64
-        s = self._ring[(lo + rows) % self._cap].astype(ft)
+        # below 2**24 (n <= 240 lines, |values| <= 255 + offset); 16-bit data need float64.
+        ft = np.float32 if self.dtype.itemsize == 1 and rows.size <= 240 else np.float64
+        idx = (lo + rows) % self._cap
+        s = self._ring[idx].astype(ft)
+        off = self._off[idx].astype(np.float64)
+        if np.any(off):
+            # fast per-line offsets (flicker) are not noise: remove them
+            # before the variance, keep their mean in the level (slow drift)
+            s -= off.astype(ft)[:, None]
         n = rows.size
         total = s.sum(axis=0, dtype=ft).astype(np.float64)
         total2 = np.einsum("ij,ij->j", s, s).astype(np.float64)
         mean = total / n
         var = np.maximum(total2 - n * mean * mean, 0.0) / (n - 1)
+        mean += off.mean()
         a = cfg.ema_alpha
         self._bg += a * (mean - self._bg)
         self._var += a * (var - self._var)
         self._set_band()
 
     def _test_piece(self, piece: np.ndarray, start: int, out: list[StreamResult]) -> None:
-        hit_lines, counts, cmin, cmax = self._line_test(piece)
+        hit_lines, counts, cmin, cmax = self._line_test(piece, start)
         self._record(start, piece.shape[0], hit_lines, counts, cmin, cmax, out)
 
     def _test(self, lo: int, hi: int, out: list[StreamResult]) -> None:
@@ -597,13 +630,30 @@ class StreamEngine:
         for a in range(lo, hi, step):
             b = min(a + step, hi)
             data = self._read(a, b)
-            hit_lines, counts, cmin, cmax = self._line_test(data)
+            hit_lines, counts, cmin, cmax = self._line_test(data, a)
             self._record(a, b - a, hit_lines, counts, cmin, cmax, out)
 
-    def _line_test(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Lines of ``x`` holding ball pixels: indices, outside-pixel counts, first and last column."""
+    def _line_offsets(self, x: np.ndarray) -> np.ndarray:
+        """Per-line offset (whole DN) of ``x`` from the background, clipped."""
+        sub = x[:, self._ocols].astype(np.int32)
+        sub -= self._bg_ocols
+        sub.sort(axis=1)
+        m = sub.shape[1]
+        # median: the mean of the middle one or two values (sorting 64 values
+        # per line is 2x faster than numpy.median's partition here)
+        med = 0.5 * (sub[:, (m - 1) // 2] + sub[:, m // 2])
+        return np.clip(np.rint(med), -self._max_off, self._max_off).astype(np.int32)
+
+    def _line_test(self, x: np.ndarray, start: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Lines of ``x`` (stream lines from ``start``) holding ball pixels: indices, counts, first and last column."""
         # (x - lo) wraps modulo 2**bits: x < lo gives a value > hi - lo.
         d = np.subtract(x, self._lo)
+        if self.config.line_offset:
+            off = self._line_offsets(x)
+            self._off[np.arange(start, start + x.shape[0]) % self._cap] = off
+            if np.any(off):
+                # the band of line i is [lo + o_i, hi + o_i]: same modular test
+                d -= (off % (self._max_dn + 1)).astype(self.dtype)[:, None]
         h = np.greater(d, self._span)
         r = h
         for _ in range(self.config.min_run_px - 1):
