@@ -408,6 +408,11 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     rows = [json.loads(s) for s in res.stdout.splitlines() if s.startswith("{")]
     assert [d["first_line"] for d in rows] == [json.loads(s)["first_line"] for s in printed.splitlines()]
     assert "--out" not in CliRunner().invoke(app, ["watch", "--help"]).stdout
+    # estimates in a worker process: the same lines out
+    capsys.readouterr()
+    assert watch(str(raw), cam_path, RADIUS, status=False, workers=1) == 2
+    pooled = [json.loads(s)["t_c_s"] for s in capsys.readouterr().out.splitlines()]
+    assert pooled == [json.loads(s)["t_c_s"] for s in printed.splitlines()]
 
 
 def test_pylon_emulated_camera_plays_rendered_chunks(tmp_path, monkeypatch):

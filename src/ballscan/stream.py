@@ -874,6 +874,7 @@ def process_stream(
     *,
     source: str = "<stream>",
     dtype: Any = None,
+    executor: Any = None,
 ) -> Iterator[StreamResult]:
     """Run a :class:`StreamEngine` over chunks; yield results as they are measured.
 
@@ -885,6 +886,8 @@ def process_stream(
         As for :class:`StreamEngine`.
     dtype : numpy dtype, optional
         Stored type; default that of the first chunk.
+    executor : concurrent.futures.Executor, optional
+        Where to run the estimates (see :class:`StreamEngine`).
 
     Yields
     ------
@@ -912,7 +915,7 @@ def process_stream(
         if not isinstance(ch, Chunk):
             ch = Chunk(np.asarray(ch))
         if engine is None:
-            engine = StreamEngine(camera, radius_m, config, source=source, dtype=dtype or ch.lines.dtype)
+            engine = StreamEngine(camera, radius_m, config, source=source, dtype=dtype or ch.lines.dtype, executor=executor)
         try:
             res = engine.push(ch.lines, ch.timestamps_s)
         except StreamError as exc:

@@ -167,6 +167,7 @@ def watch(
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
     save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs.")] = None,
     status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
+    workers: Annotated[int, typer.Option("--workers", help="Processes that run the estimates (0: in the reading process).")] = 0,
 ) -> int:
     """Measure balls in a continuous line stream; print one JSON line per ball as it is measured.
 
@@ -189,8 +190,17 @@ def watch(
     n = 0
     per_event: dict[int, int] = {}
     gen = _Watched(src, st, cam.line_rate_hz)
+    executor = None
+    if workers < 0:
+        raise typer.BadParameter(f"must be >= 0, got {workers}", param_hint="--workers")
+    if workers:
+        # Estimates (tens of ms each) in other processes: reading and the
+        # per-line test keep up with the camera while balls are measured.
+        from concurrent.futures import ProcessPoolExecutor
+
+        executor = ProcessPoolExecutor(workers)
     try:
-        for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None):
+        for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None, executor=executor):
             try:
                 stream.write(json.dumps(res.to_dict(cam), allow_nan=False) + "\n")
                 stream.flush()
@@ -205,6 +215,8 @@ def watch(
             gen.balls = n
     finally:
         st.close(n)
+        if executor is not None:
+            executor.shutdown(wait=False, cancel_futures=True)
     return n
 
 
