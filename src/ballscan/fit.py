@@ -338,6 +338,18 @@ class FitSettings:
         Quadrature nodes per piece of the averaged model.
     max_nfev : int
         Model evaluations allowed.
+    cost_tol : float
+        The built-in solver stops when the next step would lower half the
+        chi-square by less than this.
+    broyden : bool
+        Update the Jacobian by Broyden's rank-one formula between exact
+        (finite-difference) Jacobians (see :func:`_levenberg_marquardt`).
+        Off by default: on the serve it took more steps (15 against 9 model
+        evaluations) and stopped 0.005 m/s off in ``vz`` on noise-free edges.
+    robust_first : bool
+        Start with a fit under the robust ``loss`` before the least-squares
+        rounds with outlier rejection (slower; the rejection rounds alone
+        handle the texture outliers of the reference scenes).
     solver : {"gn", "scipy"}
         ``"gn"``: the built-in Levenberg-Marquardt (fast, see
         :func:`_levenberg_marquardt`); ``"scipy"``:
@@ -364,6 +376,9 @@ class FitSettings:
     n_nodes: int = 4
     max_nfev: int = 60
     solver: str = "gn"
+    cost_tol: float = 1e-6
+    broyden: bool = False
+    robust_first: bool = False
 
 
 @dataclass(frozen=True)
@@ -476,28 +491,39 @@ def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
     raise ValueError(f"loss: expected 'linear', 'soft_l1' or 'huber', got {loss!r}")
 
 
-def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings"):
+def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings", start=None):
     """Levenberg-Marquardt with iteratively reweighted robust loss.
 
     Steps are solved on the column-equilibrated normal equations (the
     parameters' sizes differ by ~1e8).  It stops when the Gauss-Newton step
-    would lower the cost by less than ``1e-8`` (in chi-square units: far
-    below a 1e-3 sigma move of any parameter), which, unlike a relative
-    ``ftol``, does not stop early along the weak ``vz`` direction.  A trial
-    step costs one model evaluation; the forward-difference Jacobian is
-    recomputed only at accepted points.
+    would lower the cost by less than ``settings.cost_tol`` (in units of
+    half the chi-square: 1e-6 is a move of about 0.001 sigma), which, unlike a
+    relative ``ftol``, does not stop early along the weak ``vz`` direction.
+    The Jacobian (forward differences, one vectorised model call) is computed
+    at the start only (or taken from ``start = (r, J)``); after every trial
+    step it is corrected by Broyden's rank-one update, so that a step costs
+    one model evaluation.  Returns ``(x, n_eval, status, message, cost, r,
+    J)`` with the (updated) Jacobian at ``x``.
     """
     f2 = settings.f_scale**2
+    tol = settings.cost_tol
 
     def cost_of(r):
         return 0.5 * f2 * float(_rho((r * r) / f2, settings.loss)[0].sum())
 
     x = np.asarray(x0, dtype=float).copy()
-    r, J = resid_and_jac(x)
+    if start is None:
+        r, J = resid_and_jac(x)
+        n_eval = 1
+    else:
+        r, J = start
+        J = J.copy()
+        n_eval = 0
     cost = cost_of(r)
     lam = 1e-3
-    n_eval = 1
-    for _ in range(settings.max_nfev):
+    broyden = settings.broyden
+    n_fresh = 0
+    while n_eval < settings.max_nfev:
         w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
         Jw, rw = J * w[:, None], r * w
         cn = np.linalg.norm(Jw, axis=0)
@@ -505,30 +531,39 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
         Jn = Jw / cn
         A = Jn.T @ Jn
         g = Jn.T @ rw
-        while True:
-            try:
-                step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
-            except np.linalg.LinAlgError:
-                step = -np.linalg.lstsq(A + lam * np.eye(A.shape[0]), g, rcond=None)[0]
-            predicted = -(g @ step)  # first-order decrease of 0.5 * chi2
-            if predicted < 1e-8:
-                return x, n_eval, 1, "converged: predicted cost decrease below 1e-8", cost
-            x_new = x + step / cn
-            r_new = resid_only(x_new)
-            n_eval += 1
-            cost_new = cost_of(r_new) if np.all(np.isfinite(r_new)) else math.inf
-            if cost_new <= cost:
-                lam = max(lam / 10.0, 1e-9)
-                x, cost = x_new, cost_new
+        try:
+            step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
+        except np.linalg.LinAlgError:
+            step = -np.linalg.lstsq(A + lam * np.eye(A.shape[0]), g, rcond=None)[0]
+        predicted = -(g @ step)  # first-order decrease of 0.5 * chi2
+        if predicted < tol:
+            if broyden and n_fresh == 0 and n_eval > 1:
+                # confirm with an exact Jacobian before declaring convergence
                 r, J = resid_and_jac(x)
                 n_eval += 1
-                break
+                n_fresh = 1
+                continue
+            return x, n_eval, 1, f"converged: predicted cost decrease below {tol:g}", cost, r, J
+        dx = step / cn
+        x_new = x + dx
+        r_new = resid_only(x_new)
+        n_eval += 1
+        ok = bool(np.all(np.isfinite(r_new)))
+        if broyden and ok:
+            J = J + np.outer(r_new - r - J @ dx, dx) / float(dx @ dx)
+        cost_new = cost_of(r_new) if ok else math.inf
+        if cost_new <= cost:
+            lam = max(lam / 10.0, 1e-9)
+            x, cost, r = x_new, cost_new, r_new
+            n_fresh = 0
+            if not broyden:
+                r, J = resid_and_jac(x)
+                n_eval += 1
+        else:
             lam *= 10.0
-            if lam > 1e10 or n_eval >= settings.max_nfev:
-                return x, n_eval, 0, "stopped: no step lowers the cost", cost
-        if n_eval >= settings.max_nfev:
-            break
-    return x, n_eval, 0, f"stopped: {settings.max_nfev} evaluations", cost
+            if lam > 1e10:
+                return x, n_eval, 0, "stopped: no step lowers the cost", cost, r, J
+    return x, n_eval, 0, f"stopped: {settings.max_nfev} evaluations", cost, r, J
 
 
 def _weights(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
@@ -655,7 +690,8 @@ def fit_motion(
                 ftol=1e-12,
                 gtol=1e-12,
             )
-            out = (res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost))
+            r_end, J_end = resid_and_jac(res.x)
+            out = (res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost), r_end, J_end)
         elif settings.solver == "gn":
             out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, st)
         else:
@@ -671,22 +707,30 @@ def fit_motion(
     if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
         return _degenerate_result(initial, n_edge_lines, settings, use_l, use_r, use_a, t0)
     x = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
-    # 1) robust fit from the initial guess; 2) re-select at the solution and
-    # reject outlying edges, refit (least squares) until nothing changes
-    (x, n_iter, status, message, cost), rj = solve(x, sel, settings.loss)
-    n_total = n_iter
+    # (optionally a robust fit first, then) least squares at the current
+    # selection, rejection of outlying edges, re-selection and refit until
+    # nothing changes
+    n_total = 0
     n_rejected = 0
-    for _round in range(max(settings.max_reject_rounds, 0) + 1):
+    r = J = None
+    rj = None
+    sel_solved = None
+    if settings.robust_first:
+        (x, n_iter, status, message, cost, r, J), rj = solve(x, sel, settings.loss)
+        sel_solved = sel
+        n_total += n_iter
         sel = problem(x[:6])
+    for _round in range(max(settings.max_reject_rounds, 0) + 1):
+        if _round > 0:
+            sel = problem(x[:6])
         use_l, use_r, use_a, sl, sr, sa = sel[:6]
         if int((use_l & use_r).sum()) < settings.min_edge_lines:
             break
-        (x_new, n_iter, status, message, cost), rj = solve(x, sel, "linear")
+        (x, n_iter, status, message, cost, r, J), rj = solve(x, sel, "linear")
+        sel_solved = sel
         n_total += n_iter
-        x = x_new
         if _round == settings.max_reject_rounds or settings.reject_sigma <= 0:
             break
-        r, _ = rj(x)
         nl, nr = int(use_l.sum()), int(use_r.sum())
         re = r[: nl + nr]
         robust = max(1.0, 1.4826 * float(np.median(np.abs(re - np.median(re)))))
@@ -703,7 +747,12 @@ def fit_motion(
     n_par = 6 + int(fit_b)
     x_sol = x
     th, b = x_sol[:6], (x_sol[6] if fit_b else 0.0)
-    r, J = rj(x_sol)
+    if sel_solved is None:
+        return _degenerate_result(initial, int((use_l & use_r).sum()), settings, use_l, use_r, use_a, t0)
+    # r and J belong to the last solved selection (a later re-selection that
+    # left too few edges is not used)
+    sel = sel_solved
+    use_l, use_r, use_a, sl, sr, sa = sel[:6]
     dof = r.size - n_par
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
     nl, nr = int(use_l.sum()), int(use_r.sum())
