@@ -72,6 +72,7 @@ __all__ = [
     "process_stream",
     "crop_camera",
     "estimate_crop",
+    "preload_estimator",
 ]
 
 
@@ -368,9 +369,8 @@ class StreamEngine:
         self._executor = executor
         self._pending: deque[_Job] = deque()
         if executor is None:
-            # Import the estimator now, not when the first ball leaves: that
-            # first result would otherwise carry the import time (~0.3 s).
-            from . import edges, estimate, fit  # noqa: F401
+            # Import the estimator now, not when the first ball leaves.
+            preload_estimator()
 
     # ------------------------------------------------------------------ public
     @property
@@ -851,6 +851,14 @@ def estimate_crop(
                 extra={"reason": f"estimate failed: {' '.join(str(exc).split())[:200]}"},
             ),
         )
+
+
+def preload_estimator() -> None:
+    """Import the estimator's modules (an ``initializer`` for worker processes).
+
+    The first estimate in a fresh process otherwise carries ~0.3 s of imports.
+    """
+    from . import edges, estimate, fit  # noqa: F401
 
 
 def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int) -> LineScanCamera:

@@ -198,7 +198,9 @@ def watch(
         # per-line test keep up with the camera while balls are measured.
         from concurrent.futures import ProcessPoolExecutor
 
-        executor = ProcessPoolExecutor(workers)
+        from .stream import preload_estimator
+
+        executor = ProcessPoolExecutor(workers, initializer=preload_estimator)
     try:
         for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None, executor=executor):
             try:
