@@ -502,3 +502,26 @@ def test_per_line_offset_follows_lamp_flicker():
     assert stats[True].events == 3 and stats[True].rejected == 0
     # without it, flicker peaks leave the band: spurious events (rejected or empty crops)
     assert stats[False].events + stats[False].rejected > 3
+
+
+def test_watch_ctrl_c_ends_the_stream_and_measures_the_ball_in_view(tmp_path, monkeypatch, capsys):
+    import ballscan.stream_cli as sc
+
+    data = small_stream(3000, balls=((900.0, 0.0), (2990.0, 0.1)))
+
+    class Interrupted:
+        name = "cam"
+        width = CAM.width
+
+        def __iter__(self):
+            yield Chunk(data[:1500])
+            yield Chunk(data[1500:])
+            raise KeyboardInterrupt
+
+    monkeypatch.setattr(sc, "open_source", lambda *a, **k: Interrupted())
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    assert watch("whatever", cam_path, RADIUS, status=False) == 2
+    cap = capsys.readouterr()
+    assert "interrupted after 3000 lines, 2 balls" in cap.err
+    assert "cut_last_line" in json.loads(cap.out.splitlines()[-1])["flags"]

@@ -134,13 +134,20 @@ class _Watched:
         self.rate = line_rate_hz
         self.lines = 0
         self.balls = 0
+        self.interrupted = False
         self._t_first: float | None = None
 
     def __iter__(self):
         return self
 
     def __next__(self):
-        ch = next(self._it)
+        try:
+            ch = next(self._it)
+        except KeyboardInterrupt:
+            # Ctrl-C while waiting for lines (where a watch spends its time):
+            # end the stream normally so the ball in view is still measured.
+            self.interrupted = True
+            raise StopIteration from None
         self.lines += int(ch.lines.shape[0])
         if ch.timestamps_s is not None and ch.timestamps_s.size:
             if self._t_first is None:
@@ -215,10 +222,14 @@ def watch(
                 per_event[res.event_index] = k + 1
                 save_event(save_events, res, cam, k)
             gen.balls = n
+    except KeyboardInterrupt:
+        gen.interrupted = True
     finally:
         st.close(n)
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
+    if gen.interrupted:
+        print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
     return n
 
 
