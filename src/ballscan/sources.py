@@ -547,6 +547,7 @@ def stream_balls(
     depth_m: tuple[float, float] = (3.0, 5.0),
     close_pairs: int = 0,
     pair_gap_lines: float = 6.0,
+    side_by_side: int = 0,
     start_lines: int = 600,
     t_lines_s: np.ndarray | None = None,
 ) -> list[BallMotion]:
@@ -555,7 +556,9 @@ def stream_balls(
     Balls are spread over ``[start_lines, n_lines - 100)`` in slots, one ball
     per slot at a random place in it; the first ``close_pairs`` slots hold two
     balls, the second starting ``pair_gap_lines`` clean lines after the first
-    ends. Every ball is wholly on the sensor with a margin.
+    ends; the next ``side_by_side`` slots hold two balls crossing at nearly
+    the same time (within 3 lines) in opposite halves of the sensor. Every
+    ball is wholly on the sensor with a margin.
 
     Parameters
     ----------
@@ -566,6 +569,7 @@ def stream_balls(
         Ranges of ``|V|`` (m/s) and of ``z0`` (m).
     close_pairs : int
     pair_gap_lines : float
+    side_by_side : int
     start_lines : int
         No ball before this line (room for the engine's first model).
     t_lines_s : numpy.ndarray or None
@@ -573,14 +577,15 @@ def stream_balls(
     """
     rng = np.random.default_rng(seed)
     t = np.arange(n_lines) / camera.line_rate_hz if t_lines_s is None else np.asarray(t_lines_s)
-    n_slots = n_balls - close_pairs
-    if n_slots < 1:
-        raise ValueError(f"n_balls: need more balls than close pairs, got {n_balls} and {close_pairs}")
+    n_slots = n_balls - close_pairs - side_by_side
+    if n_slots < 1 or n_slots < close_pairs + side_by_side:
+        raise ValueError(f"n_balls: {n_balls} balls cannot hold {close_pairs} close pairs and {side_by_side} side-by-side pairs")
     slot = (n_lines - 100 - start_lines) / n_slots
     out: list[BallMotion] = []
     W = camera.width
     for k in range(n_slots):
         pair = k < close_pairs
+        twin = close_pairs <= k < close_pairs + side_by_side
         for _ in range(200):
             z0 = rng.uniform(*depth_m)
             speed = rng.uniform(*speed_mps)
@@ -592,6 +597,10 @@ def stream_balls(
             lo_u, hi_u = half_span + 4, W - 1 - half_span - 4
             if lo_u >= hi_u:
                 continue
+            if twin:
+                hi_u = min(hi_u, W / 2 - half_span - 8)  # left half; the twin goes right
+                if lo_u >= hi_u:
+                    continue
             u = rng.uniform(lo_u, hi_u)
             y0 = (u - camera.principal_px) / camera.focal_px * z0
             m0 = BallMotion(radius_m, 0.0, (0.0, y0, z0), (vx, vy, vz))
@@ -612,6 +621,12 @@ def stream_balls(
             m1 = BallMotion(radius_m, 0.0, (0.0, (u1 - camera.principal_px) / camera.focal_px * z1, z1), (vx, -vy, vz))
             c1 = centre + span / 2 + pair_gap_lines + _visible_lines(camera, m1) / 2 + 1
             out.append(BallMotion(radius_m, float(np.interp(c1, np.arange(n_lines), t)), m1.position_m, m1.velocity_mps))
+        if twin:
+            # Same moment, right half of the sensor, same depth and speed.
+            u1 = rng.uniform(W / 2 + half_span + 8, W - 1 - half_span - 8)
+            c1 = centre + rng.uniform(-3.0, 3.0)
+            y1 = (u1 - camera.principal_px) / camera.focal_px * z0
+            out.append(BallMotion(radius_m, float(np.interp(c1, np.arange(n_lines), t)), (0.0, y1, z0), (vx, -vy, vz)))
     out.sort(key=lambda m: m.t_c_s)
     return out
 
@@ -625,6 +640,7 @@ def simulate_stream(
     *,
     radius_m: float = 0.0335,
     close_pairs: int = 0,
+    side_by_side: int = 0,
     ramp: float = 0.0,
     dropped: tuple[int, int] | None = None,
     noise: Any = None,
@@ -653,6 +669,9 @@ def simulate_stream(
     radius_m : float
     close_pairs : int
         Pairs of balls close in time (a few clean lines apart).
+    side_by_side : int
+        Pairs of balls crossing at the same time in opposite halves of the
+        sensor (they overlap in time, not on the sensor).
     ramp : float
         Slow illumination ramp: the scene's brightness goes linearly from 1
         to ``1 + ramp`` over the stream.
@@ -688,7 +707,7 @@ def simulate_stream(
             raise ValueError(f"dropped: expected (line, count) inside the stream, got {dropped!r}")
         idx[line + 1 :] += count
     t = idx / camera.line_rate_hz
-    balls = stream_balls(camera, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, t_lines_s=t, speed_mps=speed_mps, depth_m=depth_m)
+    balls = stream_balls(camera, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, side_by_side=side_by_side, t_lines_s=t, speed_mps=speed_mps, depth_m=depth_m)
     rng = np.random.default_rng([seed, 1])
     # Fixed-pattern column gain drawn once for the whole stream.
     gain = 1.0 + noise.prnu_sigma * rng.standard_normal(camera.width) if noise.prnu_sigma > 0 else np.ones(camera.width)
@@ -729,7 +748,7 @@ def simulate_stream(
     if dropped is not None:
         ts_path = out.with_name(out.name + ".timestamps.npy")
         np.save(ts_path, t)
-    meta = {"ramp": ramp, "dropped": dropped, "close_pairs": close_pairs, "seed": seed, "noise": noise.to_dict()}
+    meta = {"ramp": ramp, "dropped": dropped, "close_pairs": close_pairs, "side_by_side": side_by_side, "seed": seed, "noise": noise.to_dict()}
     return SimulatedStream(out, out.with_name(out.name + ".camera.toml"), truth_path, ts_path, tuple(truths), int(n_lines), int(camera.width), np.dtype(dtype).name, meta)
 
 

@@ -276,6 +276,7 @@ def simulate_stream(
     *,
     radius_m: float = 0.0335,
     close_pairs: int = 0,
+    side_by_side: int = 0,
     ramp: float = 0.0,
     dropped: tuple[int, int] | None = None,
     noise=None,
@@ -296,5 +297,5 @@ def simulate_stream(
 
     cam = camera if isinstance(camera, LineScanCamera) else load_camera(camera)
     return _simulate(
-        out, cam, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, ramp=ramp, dropped=dropped, noise=noise, block_lines=block_lines
+        out, cam, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, side_by_side=side_by_side, ramp=ramp, dropped=dropped, noise=noise, block_lines=block_lines
     )
