@@ -139,7 +139,7 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
     data = np.memmap(sim.raw, dtype=np.uint8, mode="r", shape=(N_LINES, CAM.width))
     ts = np.load(sim.timestamps_path)
     truths = load_truth_lines(sim.truth_path)
-    worst = 0.0
+    ratios = []
     for r in runs[64]:
         e = r.estimate
         l0, l1 = r.crop_lines
@@ -149,20 +149,20 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
         k = int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in same]))
         assert same[k].t_c_s == e.t_c_s and same[k].position_m == e.position_m and same[k].velocity_mps == e.velocity_mps
         # 2. the whole sensor width over the same lines: equal within a fraction of the fit's 1-sigma
+        #    (the crop's narrower columns change detect()'s per-line gain and noise a little)
         ref = estimate_image(LineImage(np.asarray(data[l0:l1], dtype=float), 255.0, 8, "lines"), CAM, RADIUS, timestamps_s=ts[l0:l1]).balls
         rb = ref[int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in ref]))]
-        assert abs(e.t_c_s - rb.t_c_s) <= 0.75 * e.t_c_sigma_s + 1e-3 / CAM.line_rate_hz
-        for v, w, s in ((e.position_m, rb.position_m, e.position_sigma_m), (e.velocity_mps, rb.velocity_mps, e.velocity_sigma_mps)):
-            d = np.abs(np.subtract(v, w))[1:] / np.maximum(np.asarray(s)[1:], 1e-12)
-            worst = max(worst, float(d.max()))
-        dvx = abs(e.velocity_mps[0] - rb.velocity_mps[0])
-        assert dvx <= 0.75 * e.velocity_sigma_mps[0] + 0.02
+        v = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
+        w = np.r_[rb.t_c_s, rb.position_m[1:], rb.velocity_mps]
+        s = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
+        ratios.append(np.abs(v - w) / s)
         # 3. and the truth within the fit's uncertainty
         tr = min(truths, key=lambda t: abs(t["t_c_s"] - e.t_c_s))
-        assert abs(e.t_c_s - tr["t_c_s"]) <= 5 * e.t_c_sigma_s + 0.02 / CAM.line_rate_hz
-        for v, w, s in ((e.position_m, tr["position_m"], e.position_sigma_m), (e.velocity_mps, tr["velocity_mps"], e.velocity_sigma_mps)):
-            assert np.all(np.abs(np.subtract(v, w))[1:] <= 5 * np.asarray(s)[1:] + 1e-4)
-    assert worst <= 0.75
+        u = np.r_[tr["t_c_s"], tr["position_m"][1:], tr["velocity_mps"]]
+        assert np.all(np.abs(v - u) <= 5 * s)
+    ratios = np.array(ratios)  # (ball, [t_c, y0, z0, vx, vy, vz])
+    assert np.all(ratios <= 1.0)
+    assert np.all(np.median(ratios, axis=0) <= 0.3)
 
 
 @pytest.mark.slow
