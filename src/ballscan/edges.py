@@ -179,6 +179,13 @@ class EdgeMeasurements:
         height (near the ball's ends); noisier, used only there.
     left_wide_ok, right_wide_ok : ndarray of bool or None
         Usability of the wide-window edges (same rules).
+    profile, profile_sigma : ndarray (n_lines, n_cols) or None
+        The normalised profile ``p`` of every measured line over the
+        region's columns and its 1-sigma (normalised units), for fits of the
+        pixels themselves (the ball's faint ends); NaN where a pixel is
+        saturated or belongs to another ball.
+    profile_col0 : int
+        Sensor pixel of ``profile[:, 0]``.
     """
 
     lines: np.ndarray
@@ -206,6 +213,9 @@ class EdgeMeasurements:
     right_wide_sigma_px: np.ndarray | None = None
     left_wide_ok: np.ndarray | None = None
     right_wide_ok: np.ndarray | None = None
+    profile: np.ndarray | None = None
+    profile_sigma: np.ndarray | None = None
+    profile_col0: int = 0
 
     @property
     def n_edges(self) -> int:
@@ -543,6 +553,9 @@ def measure_edges(
         right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
         left_wide_ok=okLw,
         right_wide_ok=okRw,
+        profile=np.where(sat | other, np.nan, p),
+        profile_sigma=sp,
+        profile_col0=int(c0),
     )
 
 

@@ -305,6 +305,19 @@ class FitSettings:
         between its leading and trailing ends by tens of per cent, hence the
         large ``area_rel_sigma``.  Lines without signal (the ball is absent)
         always give area residuals.
+    end_line_pixels : bool
+        Fit the pixels of the end lines (lines with signal but no usable
+        edge) instead of their summed area: the model's averaged coverage of
+        each pixel times a free brightness per end (:func:`_pixel_residuals`).
+        Experimental, off: on 8-bit renders of a flat ball at 30 degrees it
+        halves the ``vz`` RMSE (0.53 against 0.96 m/s; bound 0.15) but
+        biases ``vx`` by 4 sigma (the renderer's coverage of the faint end
+        lines differs from the exact average by up to 0.013), and on shaded
+        balls ``vy`` by 4 sigma.
+    pixel_floor : float
+        Systematic 1-sigma of an end-line pixel's normalised value, added in
+        quadrature (the coverage of the faint ends is what renderers sample
+        worst: 0.013 between the model and the renderer's own coverage).
     level_areas : bool
         Divide the end lines' areas by the ball's local brightness next to
         them (:func:`_area_levelled`).
@@ -374,6 +387,8 @@ class FitSettings:
     max_spread_px: float = 0.3
     max_spread_wide_px: float = 0.8
     end_line_areas: bool = True
+    end_line_pixels: bool = False
+    pixel_floor: float = 0.01
     level_areas: bool = False
     edge_floor_px: float = 0.02
     texture_gain: float = 1.0
@@ -646,6 +661,7 @@ def fit_motion(
     theta0 = initial.to_params()
     scale = param_scale(camera, initial)
     n_lines = t.size
+    settings_rel_step = 1e-3  # model_jacobian's default step (fraction of `scale`)
     rejected_l = np.zeros(n_lines, dtype=bool)
     rejected_r = np.zeros(n_lines, dtype=bool)
 
@@ -655,10 +671,22 @@ def fit_motion(
         me = ModelEdges(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
         ul, ur, ua, wl, wr = _select(edges, me, settings)
         ul, ur = ul & ~rejected_l, ur & ~rejected_r
-        return _weights_masked(edges, ul, ur, ua, settings, wl, wr)
+        pix = None
+        if settings.end_line_pixels and edges.profile is not None:
+            up = ua & edges.signal & me.valid
+            if up.any():
+                ua = ua & ~up
+                pix = _pixel_spec(edges, me, up, float(theta[0]), settings.pixel_floor)
+        return _weights_masked(edges, ul, ur, ua, settings, wl, wr) + (pix,)
 
     def solve(x_start, sel, loss, start=None):
-        use_l, use_r, use_a, sl, sr, sa, ml, mr, ma = sel
+        use_l, use_r, use_a, sl, sr, sa, ml, mr, ma, pix = sel
+        n_pix = 0 if pix is None else int(pix["n"])
+
+        def pixel_res(thetas):
+            if pix is None:
+                return np.zeros((thetas.shape[0], 0))
+            return _pixel_residuals(camera, thetas, R, pix, acc, nn)
         fit_b = len(x_start) == 7
 
         def unpack(x):
@@ -670,12 +698,16 @@ def fit_motion(
             if settings.jacobian_nodes != nn:
                 me = averaged_model(camera, th[None], R, t, acc, nn)
                 me = ModelEdges(me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0])
+            h = settings_rel_step * scale
+            pr = pixel_res(np.vstack([th, th + np.diag(h)]))
             r = np.concatenate(
-                [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa]
+                [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa, pr[0]]
             )
-            J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
+            J = np.vstack(
+                [dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], ((pr[1:] - pr[0]) / h[:, None]).T]
+            )
             if fit_b:
-                jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size)])
+                jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size + n_pix)])
                 J = np.hstack([J, jb[:, None]])
             return r, J
 
@@ -683,7 +715,12 @@ def fit_motion(
             th_, b_ = unpack(x)
             me = averaged_model(camera, th_[None], R, t, acc, nn)
             return np.concatenate(
-                [(me.left_px[0, use_l] - b_ - ml) / sl, (me.right_px[0, use_r] + b_ - mr) / sr, (me.area_px[0, use_a] - ma) / sa]
+                [
+                    (me.left_px[0, use_l] - b_ - ml) / sl,
+                    (me.right_px[0, use_r] + b_ - mr) / sr,
+                    (me.area_px[0, use_a] - ma) / sa,
+                    pixel_res(th_[None])[0],
+                ]
             )
 
         st = replace(settings, loss=loss)
@@ -844,13 +881,72 @@ def fit_motion(
     )
 
 
+def _pixel_spec(edges: EdgeMeasurements, me: ModelEdges, use_p: np.ndarray, t_c: float, floor: float = 0.0) -> dict:
+    """Pixels of the ball's end lines to fit: lines, columns, values, sigmas, groups.
+
+    Columns span the model's segment and the measured signal, 4 pixels more
+    on each side; the lines are grouped into the leading and the trailing
+    end (before / after ``t_c``), each with its own free brightness.
+    """
+    idx = np.flatnonzero(use_p)
+    prof = edges.profile[idx]
+    psig = edges.profile_sigma[idx]
+    C = prof.shape[1]
+    cols = edges.profile_col0 + np.arange(C, dtype=float)
+    sig_px = np.nan_to_num(prof) > 3.0 * psig
+    lo = np.minimum(me.left_px[idx], np.where(sig_px.any(1), cols[np.argmax(sig_px, axis=1)], np.inf)) - 4.0
+    hi = np.maximum(me.right_px[idx], np.where(sig_px.any(1), cols[C - 1 - np.argmax(sig_px[:, ::-1], axis=1)], -np.inf)) + 4.0
+    mask = (cols[None, :] >= lo[:, None]) & (cols[None, :] <= hi[:, None]) & np.isfinite(prof) & (psig > 0)
+    group = (edges.t_s[idx] > t_c).astype(int)
+    return dict(
+        t=edges.t_s[idx],
+        cols=cols,
+        mask=mask,
+        p=np.where(mask, np.nan_to_num(prof), 0.0),
+        w=np.where(mask, 1.0 / np.sqrt(np.where(psig > 0, psig, 1.0) ** 2 + floor**2), 0.0),
+        group=group,
+        n=int(mask.sum()),
+    )
+
+
+def _pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Averaged pixel coverage (P, N, C): sum over samples of overlap([lo, hi], pixel)."""
+    a = cols - 0.5
+    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
+    return (wgt[..., None] * ov).sum(axis=(-3, -2))
+
+
+def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
+    """Whitened residuals ``(B_g cov - p) / sigma`` of the end lines' pixels, (P, M).
+
+    ``B_g``, the ball's brightness at each end (the lit or shaded cap), is
+    the least-squares value for each parameter set (variable projection), so
+    that only the shape of the coverage across the pixels counts.
+    """
+    me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, 3), True)
+    u_lo, u_hi, wgt = me.samples
+    cov = _pixel_coverage(u_lo, u_hi, wgt, pix["cols"])  # (P, Np, C)
+    w2 = pix["w"] ** 2
+    out = np.empty_like(cov)
+    for g in (0, 1):
+        sel = pix["group"] == g
+        if not sel.any():
+            continue
+        c = cov[:, sel]
+        num = (c * pix["p"][sel] * w2[sel]).sum(axis=(1, 2))
+        den = (c * c * w2[sel]).sum(axis=(1, 2))
+        B = np.where(den > 0, num / np.where(den > 0, den, 1.0), 0.0)
+        out[:, sel] = (B[:, None, None] * c - pix["p"][sel]) * pix["w"][sel]
+    return out[:, pix["mask"]]
+
+
 def _rows_of(old_sel, new_sel, r, J):
     """Residuals and Jacobian of ``new_sel`` taken from those of ``old_sel`` at the same point.
 
     Possible when the new selection is the old one less some residuals
     (rejected edges); returns ``(r, J)`` or None.
     """
-    if r is None or J is None:
+    if r is None or J is None or old_sel[9] is not None or new_sel[9] is not None:
         return None
     keep = []
     offset = 0
