@@ -539,3 +539,13 @@ def test_balls_side_by_side_in_time_and_16_bit_raw(tmp_path):
     assert [len(h) for _, h in pairs] == [1] * 6 and len(res) == 6
     events = [r.event_index for r in res]
     assert len(events) - len(set(events)) == 2  # each side-by-side pair in one crop
+
+
+def test_ball_longer_than_buffer_is_cut_and_later_balls_are_found():
+    slow = (BallMotion(RADIUS, 3000 / CAM.line_rate_hz, (0.0, 0.0, 4.0), (1.0, 0.05, 0.0)), Appearance.flat(0.8))
+    fast = [(BallMotion(RADIUS, ln / CAM.line_rate_hz, (0.0, y0, 4.0), (35.0, 1.0, -2.0)), Appearance.flat(0.8)) for ln, y0 in ((5000, 0.1), (5600, -0.1))]
+    img = render(CAM, [slow, *fast], 6000, background_level=0.12, noise=SensorNoise(), seed=2).image
+    res = list(process_stream(ArraySource(img, 100), CAM, RADIUS, StreamConfig(buffer_lines=1024, block_lines=128)))
+    assert len(res) == 3
+    assert res[0].estimate.t_c_s is None and "buffer" in res[0].estimate.extra["reason"]
+    assert [round(r.estimate.t_c_s * CAM.line_rate_hz) for r in res[1:]] == [5000, 5600]

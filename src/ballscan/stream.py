@@ -291,6 +291,7 @@ class _Event:
     col_max: int
     n_px: int
     overflowed: bool = False
+    relearned_at: int = 0
 
 
 class StreamEngine:
@@ -533,18 +534,25 @@ class StreamEngine:
 
     def _check_overflow(self, new_n: int, out: list[StreamResult]) -> None:
         ev = self._event
-        if ev is None or ev.overflowed:
+        if ev is None:
             return
-        first_needed = max(ev.start - self.config.margin_lines, 0)
-        if new_n - first_needed <= self._cap:
+        if not ev.overflowed:
+            first_needed = max(ev.start - self.config.margin_lines, 0)
+            if new_n - first_needed <= self._cap:
+                return
+            # The event no longer fits the ring: report it cut and relearn the
+            # background (a long "event" is usually a step in illumination).
+            self._emit_cut(ev, out, f"event longer than the {self._cap}-line buffer")
+            ev.overflowed = True
+        elif new_n - ev.relearned_at <= 4 * self.config.block_lines:
             return
-        # The event no longer fits the ring: report it cut and relearn the
-        # background (a long "event" is usually a step in illumination).
-        self._emit_cut(ev, out, f"event longer than the {self._cap}-line buffer")
-        ev.overflowed = True
+        # Relearn from the last block, and again every 4 blocks while the
+        # event lasts: a model learnt while a (very slow) ball was still in
+        # view must not keep the event open after it has gone.
         hi = self._n
         lo = max(hi - self.config.block_lines, 0)
-        self._init_model_from(self._read(lo, hi), robust=True)
+        self._init_model_from(self._read(lo, hi))
+        ev.relearned_at = hi
 
     def _read(self, lo: int, hi: int) -> np.ndarray:
         """Lines ``[lo, hi)`` of the stream from the ring (a copy)."""
@@ -555,9 +563,9 @@ class StreamEngine:
         return self._times[np.arange(lo, hi) % self._cap]
 
     def _init_model(self, n_lines: int) -> None:
-        self._init_model_from(self._read(0, n_lines), robust=True)
+        self._init_model_from(self._read(0, n_lines))
 
-    def _init_model_from(self, data: np.ndarray, robust: bool) -> None:
+    def _init_model_from(self, data: np.ndarray) -> None:
         from .detection import detect
 
         if data.shape[0] >= 2:
