@@ -176,12 +176,13 @@ def watch(
     status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
     workers: Annotated[int, typer.Option("--workers", help="Processes that run the estimates (0: in the reading process).")] = 0,
 ) -> int:
-    """Measure balls in a continuous line stream; print one JSON line per ball as it is measured.
+    """Measure balls in a continuous line stream, one JSON line per ball as it is measured.
 
-    Each line holds geometry.md's estimate keys plus ``source``,
-    ``first_line`` and ``last_line`` (stream line numbers). Returns the
-    number of balls printed (a reader that goes away, e.g. ``| head``,
-    ends the watch quietly).
+    Each line holds geometry.md's estimate keys plus source, first_line and
+    last_line (stream line numbers). The end of the stream or Ctrl-C
+    measures the ball in view and stops; a reader that goes away (| head)
+    ends the watch quietly. Called from Python it returns the number of
+    balls printed.
     """
     cam = load_camera(camera)
     if not radius > 0:
@@ -246,9 +247,10 @@ def batch(
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
-    Each input that fails is printed as one line on stderr and the command
-    then exits with status 1 (``typer.Exit``); the others are in the CSV.
-    Returns the number of balls written.
+    Inputs already in the CSV are skipped. Each input that fails is printed
+    as one line on stderr and the command exits with status 1; the others
+    are in the CSV. Called from Python it returns the number of balls
+    written (and raises typer.Exit(1) after failures).
     """
     from .batch import run_batch
 
