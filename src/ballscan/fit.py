@@ -4,35 +4,48 @@ The model is the averaged silhouette of :mod:`ballscan.silhouette` (the
 paper's dynamic sphere, first Eq. (8), projected by Eq. (2), averaged over the
 pixel's height and the exposure).  It is fitted over the six parameters
 ``theta = (t_c, y0, z0, vx, vy, vz)`` (:data:`ballscan.motion.PARAM_NAMES`)
-and, optionally, a symmetric edge bias ``b`` (pixels, a "dilation": left
-edges move by ``-b``, right edges by ``+b``) that absorbs the inward bias of
-edges on shaded limbs.
+and, optionally (off by default: it trades against ``z0``), a symmetric edge
+bias ``b`` (pixels, a "dilation": left edges move by ``-b``, right edges by
+``+b``).
 
 Residuals (all whitened by their 1-sigma):
 
 * edge lines: ``left_model - b - left_meas`` and ``right_model + b -
-  right_meas`` where the edge is usable and the model's edge spread over the
-  exposure/pixel height is small enough for the local area estimate
-  (:mod:`ballscan.edges`) to capture it;
-* area lines (short, faint end lines and the lines just outside the ball):
-  ``area_model - area_meas``, so that lines where the model says "absent"
-  but the data shows ball (and vice versa) produce residuals.
+  right_meas`` where the edge is usable; the narrow local-area edges of
+  :mod:`ballscan.edges` where the model's edge spread over the exposure and
+  pixel height is below ``max_spread_px``, the wide-window edges up to
+  ``max_spread_wide_px``.  Each edge's sigma is its pixel noise (signal-
+  dependent), a systematic floor and its texture indicator in quadrature;
+* area lines: the lines just outside the ball (``area_model - area_meas``,
+  so that lines where the model says "absent" but the data shows ball, and
+  vice versa, produce residuals) and, with a large relative sigma, the
+  faint end lines (their summed coverage is weighted by the brightness of
+  the lit or shaded cap).
 
-The fit uses :func:`scipy.optimize.least_squares` (trust-region reflective)
-with a ``soft_l1`` loss of scale 3 sigma (texture outliers), ``x_scale`` set
-to the parameters' natural sizes, and a Jacobian by forward differences of a
-vectorised copy of the averaged model (all perturbed parameter sets are
-evaluated in one numpy call; :func:`model_jacobian` is tested against
-central differences of :func:`ballscan.silhouette.silhouette`).
+The built-in Levenberg-Marquardt solver (:func:`_levenberg_marquardt`; a
+:func:`scipy.optimize.least_squares` path is kept as a cross-check) fits by
+least squares, then rejects edges whose residual exceeds
+``reject_sigma`` robust sigmas (a seam crossing the limb), re-selects the
+residuals at the solution and fits again, at most ``max_reject_rounds``
+times.  The Jacobian is a forward difference of a vectorised copy of the
+averaged model (all perturbed parameter sets in one numpy call;
+:func:`model_jacobian` is tested against central differences of
+:func:`ballscan.silhouette.silhouette`).
 
 Covariance
 ----------
-``cov = (J^T J)^-1 * max(1, chi2_red)`` with ``J`` the Jacobian of the
-whitened residuals at the solution (scipy's loss-modified Jacobian).  Scaling
-by the reduced chi-square only when it exceeds 1 means that the reported
-sigmas are never smaller than what the stated pixel noise implies, and grow
-when the residuals show unmodelled errors (texture, shading): a metrology
-user gets an honest (if sometimes conservative) number.
+``cov = (J^T J)^-1 * s`` with ``J`` the Jacobian of the whitened residuals at
+the solution and ``s = max(max(1, chi2_red) * (1 + rho) / (1 - rho), block)``:
+the reduced chi-square when it exceeds 1, the lag-one autocorrelation
+``rho`` of the edge residuals along each side when it is significant, and
+the variance ratio of block means of the residuals (:func:`_block_scale`).
+Texture and shading errors are correlated over many lines; a fit that
+treated them as independent would report too small a sigma.  The sigmas are
+therefore never smaller than what the pixel noise implies and grow with
+the residuals' visible structure.  :func:`propagate` carries the second-
+order term of ``|V|`` into the speed's sigma (``vz`` of a ball crossing the
+viewing plane is its weakest parameter, and its uncertainty biases ``|V|``
+upwards).
 """
 
 from __future__ import annotations
