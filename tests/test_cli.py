@@ -126,3 +126,21 @@ def test_precision_prints_bounds(capsys):
     assert sig2["vx"] == pytest.approx(2 * sig["vx"], rel=2e-3)  # scales with the noise (4 printed digits)
     code, _, err = run(capsys, *args)
     assert code != 0 and "--edge-noise" in err
+
+
+def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):
+    raw = tmp_path / "s.raw"
+    code, _, err = run(capsys, "simulate", "--stream", raw, "--preset", "table-tennis", "--lines", "6000", "--balls", "2", "--seed", "2")
+    assert code == 0, err
+    truth = [json.loads(line) for line in (tmp_path / "s.raw.truth.jsonl").read_text().splitlines()]
+    code, out, err = run(capsys, "watch", raw, "--camera", f"{raw}.camera.toml", "--radius", truth[0]["radius_m"])
+    assert code == 0, err
+    found = [json.loads(line) for line in out.splitlines()]
+    assert len(found) == len(truth) == 2
+    for f, t in zip(found, truth):
+        assert abs(f["t_c_s"] - t["t_c_s"]) < 1e-4 and f["source"]
+
+
+def test_experiment_commands_are_registered(capsys):
+    code, out, _ = run(capsys, "experiment", "--help")
+    assert code == 0 and "fig5" in out and "fig8" in out and "custom" in out

@@ -32,7 +32,7 @@ def _vec(text: str, name: str) -> tuple[float, float, float]:
 # ---------------------------------------------------------------- simulate
 @app.command()
 def simulate(
-    out: Path = typer.Option(..., "--out", help="Output name: writes OUT.png, OUT.camera.toml, OUT.truth.json."),
+    out: Optional[Path] = typer.Option(None, "--out", help="Output name: writes OUT.png, OUT.camera.toml, OUT.truth.json."),
     camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
     preset: Optional[str] = typer.Option(None, "--preset", help="Named scene: tennis-serve, table-tennis, golf-drive, baseball-pitch, paper-rail."),
     radius: Optional[float] = typer.Option(None, "--radius", help="Ball radius R, metres."),
@@ -48,10 +48,32 @@ def simulate(
     background: float = typer.Option(0.1, "--background", help="Background level, linear 0..1 (above the ball's for a dark ball)."),
     flat: bool = typer.Option(False, "--flat", help="No shading (uniform ball)."),
     extra_ball: list[str] = typer.Option([], "--add-ball", help="Another ball: 'R;X,Y,Z;VX,VY,VZ;T_C' (repeatable)."),
+    stream: Optional[Path] = typer.Option(None, "--stream", help="Render a raw line stream instead: writes STREAM, STREAM.camera.toml, STREAM.truth.jsonl (needs --lines and --balls)."),
+    balls: int = typer.Option(10, "--balls", help="With --stream: number of balls at random times and positions."),
 ) -> None:
-    """Render a synthetic line-scan image with its camera file and ground truth."""
+    """Render a synthetic line-scan image (or, with --stream, a raw line stream) with its camera file and ground truth."""
     from .simulate import SimulationRequest, run_simulation
 
+    if stream is not None:
+        from .stream_cli import simulate_stream
+
+        if camera is None and preset is None:
+            raise ValueError("simulate --stream: give --camera CAMERA.toml or --preset NAME")
+        if lines is None or lines < 1:
+            raise ValueError("simulate --stream: give --lines N (lines in the stream)")
+        from .presets import get_preset
+
+        chosen = get_preset(preset) if preset is not None else None
+        cam = camera if camera is not None else chosen.camera
+        r_m = radius if radius is not None else (chosen.motion.radius_m if chosen is not None else None)
+        if r_m is None:
+            raise ValueError("simulate --stream: give --radius R (or a --preset)")
+        simulate_stream(stream, cam, lines, balls, seed, radius_m=r_m)
+        for p in (stream, Path(f"{stream}.camera.toml"), Path(f"{stream}.truth.jsonl")):
+            typer.echo(str(p))
+        return
+    if out is None:
+        raise ValueError("simulate: give --out NAME (or --stream FILE)")
     req = SimulationRequest(
         out=out,
         camera_path=camera,
@@ -163,6 +185,19 @@ def demo(
 
     for line in run_demo(out, preset):
         typer.echo(line)
+
+
+def _register_subcommands() -> None:
+    """Experiments and line streams live in their own modules; the commands are theirs."""
+    from .experiment_cli import experiment_app
+    from .stream_cli import batch, watch
+
+    app.add_typer(experiment_app, name="experiment")
+    app.command()(watch)
+    app.command()(batch)
+
+
+_register_subcommands()
 
 
 def main(argv: list[str] | None = None) -> int:
