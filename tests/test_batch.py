@@ -112,3 +112,12 @@ def test_batch_on_dask_local_cluster(recordings, tmp_path):
         s = run_batch([recordings], tmp_path / "e.csv", RADIUS, scheduler=cluster.scheduler_address)
     assert (s.n_done, s.n_balls, len(s.errors)) == (4, 5, 1)
     assert len(_rows(tmp_path / "e.csv")) == 5
+
+
+def test_truncated_raw_stream_keeps_its_balls(recordings, tmp_path):
+    raw = tmp_path / "cut.raw"
+    raw.write_bytes((recordings / "stream.raw").read_bytes() + b"\x00" * 7)
+    s = run_batch([raw], tmp_path / "f.csv", RADIUS, camera=recordings / "one.camera.toml")
+    assert s.n_balls == 2 and len(s.errors) == 1 and "partial line of 7 bytes" in s.errors[0][1]
+    assert len(_rows(tmp_path / "f.csv")) == 2
+    assert run_batch([raw], tmp_path / "f.csv", RADIUS, camera=recordings / "one.camera.toml").n_skipped == 1

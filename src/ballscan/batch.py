@@ -45,7 +45,11 @@ COLUMNS = (
 
 @dataclass(frozen=True)
 class InputResult:
-    """What one input gave: its CSV rows or the reason it failed."""
+    """What one input gave: its CSV rows and, if it failed, why.
+
+    A raw stream with a fault (e.g. a truncated last line) has both: the
+    balls measured before the fault and the message.
+    """
 
     source: str
     rows: tuple[dict, ...]
@@ -61,8 +65,9 @@ class BatchSummary:
     n_inputs, n_skipped, n_done, n_balls : int
         Inputs found, skipped (already done), measured now, balls written now.
     errors : tuple of (str, str)
-        ``(source, one-line message)`` of each input that failed (not marked
-        done: a rerun tries them again).
+        ``(source, one-line message)`` of each input that failed. An input
+        that failed without any ball is not marked done (a rerun tries it
+        again); a raw stream with a fault after some balls keeps them.
     """
 
     n_inputs: int
@@ -158,8 +163,18 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             from .sources import RawLineSource
             from .stream import StreamConfig, process_stream
 
+            from .stream import StreamError
+
             source = RawLineSource(p, camera.width, dtype, timestamps=ts_path, name=src)
-            ests = [r.estimate for r in process_stream(source, camera, radius_m, StreamConfig(method=method), source=src)]
+            ests = []
+            try:
+                for r in process_stream(source, camera, radius_m, StreamConfig(method=method), source=src):
+                    ests.append(r.estimate)
+            except StreamError as exc:
+                # A damaged stream (e.g. a truncated last line): keep the balls
+                # measured before the fault, and report it.
+                rows = tuple(_row(src, k, e) for k, e in enumerate(ests))
+                return InputResult(src, rows, " ".join(str(exc).split()))
         else:
             from .estimate import estimate_image
             from .images import load_image, load_timestamps
@@ -246,7 +261,9 @@ def run_batch(
             for res in _results(todo, cam, radius_m, method, dtype, jobs, scheduler):
                 if res.error is not None:
                     errors.append((res.source, res.error))
-                else:
+                if res.error is None or res.rows:
+                    # Rows measured before a fault are kept; the input then
+                    # counts as done (rerunning a damaged file changes nothing).
                     writer.writerows(res.rows)
                     fh.flush()
                     side.write(res.source + "\n")
