@@ -252,3 +252,18 @@ def test_textured_ball_with_background_level_seam_is_one_region():
 def test_k_sigma_validated():
     with pytest.raises(ValueError):
         detect(_image(np.zeros((10, 10))), k_sigma=0.0)
+
+
+def test_separable_closing_equals_the_2d_structuring_element():
+    from scipy import ndimage as ndi
+
+    from ballscan.detection import _close
+
+    rng = np.random.default_rng(0)
+    for _ in range(100):
+        m = rng.random((int(rng.integers(1, 50)), int(rng.integers(1, 50)))) < rng.uniform(0.02, 0.5)
+        r = int(rng.integers(1, 6))
+        p = np.pad(m, r + 1)
+        st = np.ones((2 * r + 1, 2 * r + 1), bool)
+        ref = ndi.binary_erosion(ndi.binary_dilation(p, st), st)[r + 1 : -(r + 1), r + 1 : -(r + 1)]
+        assert np.array_equal(_close(m, r), ref)

@@ -427,13 +427,20 @@ def _runs(m: np.ndarray, axis: int) -> np.ndarray:
 
 
 def _close(m: np.ndarray, r: int) -> np.ndarray:
-    """Binary closing by a (2r+1)^2 square, on a padded copy (no edge effects)."""
+    """Binary closing by a (2r+1)^2 square, on a padded copy (no edge effects).
+
+    A square is the sum of a horizontal and a vertical segment, so the
+    dilation and the erosion are each two 1-D running max / min filters:
+    several times faster than a 2-D structuring element (this runs on every
+    stream event's crop).
+    """
     if r <= 0:
         return m
-    p = np.pad(m, r + 1)
-    st = np.ones((2 * r + 1, 2 * r + 1), dtype=bool)
-    c = ndi.binary_erosion(ndi.binary_dilation(p, st), st)
-    return c[r + 1 : -(r + 1), r + 1 : -(r + 1)]
+    k = 2 * r + 1
+    p = np.pad(m, r + 1).astype(np.uint8)
+    d = ndi.maximum_filter1d(ndi.maximum_filter1d(p, k, axis=0, mode="constant"), k, axis=1, mode="constant")
+    e = ndi.minimum_filter1d(ndi.minimum_filter1d(d, k, axis=0, mode="constant"), k, axis=1, mode="constant")
+    return e[r + 1 : -(r + 1), r + 1 : -(r + 1)].astype(bool)
 
 
 def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndarray]] | None:
