@@ -9,7 +9,9 @@ from ballscan.camera import LineScanCamera
 from ballscan.fit import (
     FitSettings,
     averaged_model,
+    chord_jacobian,
     fit_motion,
+    hybrid_jacobian,
     model_jacobian,
     param_scale,
     propagate,
@@ -55,6 +57,42 @@ def test_jacobian_against_central_differences_of_silhouette():
             both = ok & np.isfinite(d_fd)
             err = np.abs(d_fd[both] - d_an[both]) * scale[k]  # pixels per natural step
             assert np.max(err) < 2e-3 * max(1.0, np.max(np.abs(d_an[both]) * scale[k])), PARAM_NAMES[k]
+
+
+@pytest.mark.parametrize("acc", [(0.0, 0.0, 0.0), (1.0, -9.81, 2.0)])
+def test_chord_jacobian_against_central_differences(acc):
+    cam, m0 = _serve()
+    m = BallMotion(m0.radius_m, m0.t_c_s, m0.position_m, m0.velocity_mps, acc)
+    t = np.arange(240) / cam.line_rate_hz
+    th = m.to_params()
+    scale = param_scale(cam, m)
+    left, right, dl, dr = chord_jacobian(cam, th, m.radius_m, t, acc)
+    ch = silhouette(cam, m, t, "chord")
+    ok = ch.present
+    assert ok.sum() > 100 and np.array_equal(np.isfinite(left), ok)
+    assert np.max(np.abs(left[ok] - ch.left_px[ok])) < 1e-9 and np.max(np.abs(right[ok] - ch.right_px[ok])) < 1e-9
+    for k in range(6):
+        h = 1e-3 * scale[k] * np.eye(6)[k]
+        sp = silhouette(cam, BallMotion.from_params(th + h, m.radius_m, acc), t, "chord")
+        sm = silhouette(cam, BallMotion.from_params(th - h, m.radius_m, acc), t, "chord")
+        both = ok & sp.present & sm.present
+        for fd, an in (((sp.left_px - sm.left_px) / (2 * h[k]), dl[:, k]), ((sp.right_px - sm.right_px) / (2 * h[k]), dr[:, k])):
+            assert np.max(np.abs(fd[both] - an[both])) * scale[k] < 1e-5, PARAM_NAMES[k]
+
+
+def test_hybrid_jacobian_matches_finite_differences_of_averaged_model():
+    cam, m = _serve()
+    t = np.arange(240) / cam.line_rate_hz
+    th = m.to_params()
+    scale = param_scale(cam, m)
+    me, fl, fr, fa = model_jacobian(cam, th, m.radius_m, t, scale, n_nodes=8)
+    hl, hr, ha = hybrid_jacobian(cam, th, m.radius_m, t, scale, n_nodes=8)
+    full = me.presence > 0.999
+    big = np.max(np.abs(fl[full]) * scale)
+    # pixels per natural step (one line period, one pixel's footprint, 0.1 % of the speed)
+    assert np.max(np.abs(hl - fl)[full] * scale) < 1e-3 * big
+    assert np.max(np.abs(hr - fr)[full] * scale) < 1e-3 * big
+    assert np.max(np.abs(ha - fa) * scale) < 2e-3 * big
 
 
 def test_fit_recovers_truth_from_noise_free_edges():
