@@ -166,82 +166,146 @@ def averaged_model(
     return ModelEdges(**out)
 
 
-def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples) -> ModelEdges:
+def _edges_model(camera, th, R, t, acc, n_nodes) -> ModelEdges:
+    """:func:`averaged_model` without the edge spread and validity (``None``), for the fit's inner loop."""
+    if n_nodes <= 3:
+        return _model_core(camera, th, float(R), t, acc, n_nodes, False, False)
+    return averaged_model(camera, th, R, t, acc, n_nodes)
+
+
+def _project(camera: LineScanCamera, n: np.ndarray) -> np.ndarray:
+    """``camera.project_normalised(n)`` for float arrays, without its checks (pixels)."""
+    k1, k2 = camera.k1, camera.k2
+    if k1 == 0.0 and k2 == 0.0:
+        return camera.principal_px + camera.focal_px * n
+    n2 = n * n
+    return camera.principal_px + camera.focal_px * (n * (1.0 + n2 * (k1 + k2 * n2)))
+
+
+def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples, full: bool = True) -> ModelEdges:
+    """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,).
+
+    Written for few, large numpy operations (the fit calls it some ten
+    times per ball): per-line quantities are (P, N), per-sample ones
+    (P, N, S) with ``S = 3 n_nodes`` (three pieces of ``n_nodes``
+    Gauss-Legendre nodes).  ``full=False`` skips the edge spread and the
+    validity test (``spread_px`` and ``valid`` are then None).
+    """
     t = t_all.reshape(1, -1)
-    acc = np.asarray(acceleration_mps2, dtype=float)
-    has_acc = bool(np.any(acc))
-    tc = th[:, 0:1]
-    p0 = np.stack([np.zeros_like(th[:, 1]), th[:, 1], th[:, 2]], axis=-1)  # (P, 3)
-    vel = th[:, 3:6]  # (P, 3)
-
-    def centre(dt: np.ndarray, k: int) -> np.ndarray:
-        # component k of C(t) for dt of shape (P, ...) broadcast with (P,) params
-        extra = (1,) * (dt.ndim - 1)
-        c = p0[:, k].reshape(-1, *extra) + vel[:, k].reshape(-1, *extra) * dt
-        if has_acc:
-            c = c + 0.5 * acc[k] * dt * dt
-        return c
-
-    dt0 = t - tc  # (P, N)
-    x0 = centre(dt0, 0)
-    z_line = centre(dt0, 2)
-    a1 = vel[:, 0:1] + acc[0] * dt0
-    A = np.abs(a1) * camera.exposure / 2.0
-    B = np.where(z_line > 0, z_line / (2.0 * camera.focal_px), 0.0)
-    kinks = np.stack([x0 - A - B, x0 - np.abs(A - B), x0 + np.abs(A - B), x0 + A + B], axis=-1)
-    theta_e = np.arcsin(np.clip(kinks, -R, R) / R)  # (P, N, 4)
+    acc = tuple(float(a) for a in acceleration_mps2)
+    has_acc = any(a != 0.0 for a in acc)
+    y0, z0 = th[:, 1:2], th[:, 2:3]
+    vx, vy, vz = th[:, 3:4], th[:, 4:5], th[:, 5:6]
+    dt0 = t - th[:, 0:1]  # (P, N)
+    if has_acc:
+        h2 = 0.5 * dt0 * dt0
+        x0 = vx * dt0 + acc[0] * h2
+        z_line = z0 + vz * dt0 + acc[2] * h2
+        y_line = y0 + vy * dt0 + acc[1] * h2
+        a1 = vx + acc[0] * dt0
+    else:
+        x0 = vx * dt0
+        z_line = z0 + vz * dt0
+        y_line = y0 + vy * dt0
+        a1 = vx  # (P, 1): constant over the lines
+    A = np.abs(a1) * (camera.exposure / 2.0)
+    B = np.maximum(z_line, 0.0) / (2.0 * camera.focal_px)
+    AmB = np.abs(A - B)
+    ApB = A + B
+    kinks = np.empty(x0.shape + (4,))
+    np.subtract(x0, ApB, out=kinks[..., 0])
+    np.subtract(x0, AmB, out=kinks[..., 1])
+    np.add(x0, AmB, out=kinks[..., 2])
+    np.add(x0, ApB, out=kinks[..., 3])
+    np.maximum(kinks, -R, out=kinks)
+    np.minimum(kinks, R, out=kinks)
+    kinks /= R
+    theta_e = np.arcsin(kinks)  # (P, N, 4)
     g, gw = _gauss(n_nodes)
-    th_a = theta_e[..., :-1, None]
-    half = (theta_e[..., 1:, None] - th_a) / 2.0
-    ang = th_a + half * (1.0 + g)  # (P, N, 3, n)
+    S = 3 * n_nodes
+    half = (theta_e[..., 1:] - theta_e[..., :-1]) / 2.0  # (P, N, 3)
+    ang = (theta_e[..., :-1, None] + half[..., None] * (1.0 + g)).reshape(*half.shape[:-1], S)
     sin_a, cos_a = np.sin(ang), np.cos(ang)
     d = R * sin_a
-    jac = R * cos_a * half * gw
-    x0b, Ab, Bb = x0[..., None, None], A[..., None, None], B[..., None, None]
-    width_total = 2.0 * (Ab + Bb)
-    plateau = 1.0 / np.maximum(2.0 * np.maximum(Ab, Bb), 1e-300)
-    dist = np.abs(d - x0b)
-    ramp = np.maximum(width_total / 2.0 - dist, 0.0) / np.maximum(4.0 * Ab * Bb, 1e-300)
-    dens = np.where(dist > np.abs(Ab - Bb), ramp, plateau)
-    dens = np.where(width_total > 0, dens, 0.0)
-    wgt = dens * jac
-    u_mean = 0.5 * (np.maximum(-Ab, d - x0b - Bb) + np.minimum(Ab, d - x0b + Bb))
-    a1b = a1[..., None, None]
-    dts = np.where(a1b != 0, u_mean / np.where(a1b == 0, 1.0, a1b), 0.0) + dt0[..., None, None]
-    xc, yc, zc = centre(dts, 0), centre(dts, 1), centre(dts, 2)
-    s = (xc - d) / np.where(zc > 0, zc, 1.0)
-    w = zc + s * xc
     rho = R * cos_a
+    jac = rho * (half[..., None] * gw).reshape(ang.shape)
+    x0b, Ab, Bb = x0[..., None], A[..., None], B[..., None]
+    dd = d - x0b
+    dist = np.abs(dd)
+    plateau = 1.0 / np.maximum(2.0 * np.maximum(A, B), 1e-300)
+    inv4AB = 1.0 / np.maximum(4.0 * A * B, 1e-300)
+    ramp = np.maximum(ApB[..., None] - dist, 0.0) * inv4AB[..., None]
+    dens = np.where(dist > AmB[..., None], ramp, plateau[..., None])
+    if not (ApB > 0).all():
+        dens = np.where(ApB[..., None] > 0, dens, 0.0)
+    wgt = dens * jac
+    u_mean = 0.5 * (np.maximum(-Ab, dd - Bb) + np.minimum(Ab, dd + Bb))
+    inv_a1 = np.zeros(a1.shape)
+    np.divide(1.0, a1, out=inv_a1, where=a1 != 0)
+    dts = u_mean * inv_a1[..., None] + dt0[..., None]
+    vxb, vyb, vzb = vx[..., None], vy[..., None], vz[..., None]
+    xc = vxb * dts
+    yc = y0[..., None] + vyb * dts
+    zc = z0[..., None] + vzb * dts
+    if has_acc:
+        h2s = 0.5 * dts * dts
+        xc = xc + acc[0] * h2s
+        yc = yc + acc[1] * h2s
+        zc = zc + acc[2] * h2s
+    zpos = zc > 0
+    all_zpos = bool(zpos.all())
+    s = (xc - d) / (zc if all_zpos else np.where(zpos, zc, 1.0))
+    w = zc + s * xc
     den = w * w - rho * rho
     disc = yc * yc + den
     ok = (w > rho) & (disc > 0)
-    root = np.sqrt(np.where(ok, disc, 1.0))
-    den_s = np.where(ok, den, 1.0)
-    n_lo = np.where(ok, (yc * w - rho * root) / den_s, 0.0)
-    n_hi = np.where(ok, (yc * w + rho * root) / den_s, 0.0)
-    u_lo = camera.project_normalised(n_lo)
-    u_hi = camera.project_normalised(n_hi)
-    wgt_ok = np.where(ok, wgt, 0.0)
-    mass = wgt_ok.sum(axis=(-2, -1))
-    m = np.where(mass > 0, mass, 1.0)
-    left = (wgt_ok * u_lo).sum(axis=(-2, -1)) / m
-    right = (wgt_ok * u_hi).sum(axis=(-2, -1)) / m
-    area = (wgt_ok * (u_hi - u_lo)).sum(axis=(-2, -1))
-    var_l = (wgt_ok * (u_lo - left[..., None, None]) ** 2).sum(axis=(-2, -1)) / m
-    var_r = (wgt_ok * (u_hi - right[..., None, None]) ** 2).sum(axis=(-2, -1)) / m
-    # absent lines: both edges at the centre's projection (the limit of a vanishing cap)
-    zl = np.where(z_line > 0, z_line, 1.0)
-    u_c = camera.project_normalised(centre(dt0, 1) / zl)
+    all_ok = bool(ok.all())
+    if all_ok:
+        root = np.sqrt(disc)
+        inv_den = 1.0 / den
+    else:
+        root = np.sqrt(np.where(ok, disc, 1.0))
+        inv_den = np.where(ok, 1.0 / np.where(ok, den, 1.0), 0.0)
+    a_ = yc * w
+    b_ = rho * root
+    n_lo = (a_ - b_) * inv_den
+    n_hi = (a_ + b_) * inv_den
+    u_lo = _project(camera, n_lo)
+    u_hi = _project(camera, n_hi)
+    wgt_ok = wgt if all_ok else np.where(ok, wgt, 0.0)
+    mass = wgt_ok.sum(axis=-1)
     present = mass > 0
-    valid = ~np.any((~ok) & (wgt > 0), axis=(-2, -1)) & (z_line > 0)
+    inv_m = 1.0 / np.where(present, mass, 1.0)
+    s_lo = (wgt_ok * u_lo).sum(axis=-1)
+    s_hi = (wgt_ok * u_hi).sum(axis=-1)
+    left = s_lo * inv_m
+    right = s_hi * inv_m
+    area = s_hi - s_lo
+    spread = valid = None
+    if full:
+        var_l = (wgt_ok * (u_lo - left[..., None]) ** 2).sum(axis=-1) * inv_m
+        var_r = (wgt_ok * (u_hi - right[..., None]) ** 2).sum(axis=-1) * inv_m
+        spread = np.sqrt(np.maximum(var_l, var_r))
+        valid = z_line > 0
+        if not all_ok:
+            valid = valid & ~np.any((~ok) & (wgt > 0), axis=-1)
+    samples = None
+    if return_samples:
+        shp = ang.shape[:-1] + (3, n_nodes)
+        samples = (u_lo.reshape(shp), u_hi.reshape(shp), wgt_ok.reshape(shp))
+    if not present.all():
+        # absent lines: both edges at the centre's projection (the limit of a vanishing cap)
+        u_c = _project(camera, y_line / np.where(z_line > 0, z_line, 1.0))
+        left = np.where(present, left, u_c)
+        right = np.where(present, right, u_c)
     return ModelEdges(
-        left_px=np.where(present, left, u_c),
-        right_px=np.where(present, right, u_c),
-        presence=np.clip(mass, 0.0, 1.0),
+        left_px=left,
+        right_px=right,
+        presence=np.minimum(mass, 1.0),
         area_px=area,
-        spread_px=np.sqrt(np.maximum(var_l, var_r)),
+        spread_px=spread,
         valid=valid,
-        samples=(u_lo, u_hi, wgt_ok) if return_samples else None,
+        samples=samples,
     )
 
 
@@ -329,37 +393,49 @@ def chord_jacobian(
     t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
     tau = t - tc
-    x = vx * tau + 0.5 * ax * tau * tau
-    y = y0 + vy * tau + 0.5 * ay * tau * tau
-    w = z0 + vz * tau + 0.5 * az * tau * tau
+    if ax or ay or az:
+        h2 = 0.5 * tau * tau
+        x = vx * tau + ax * h2
+        y = y0 + vy * tau + ay * h2
+        w = z0 + vz * tau + az * h2
+    else:
+        x = vx * tau
+        y = y0 + vy * tau
+        w = z0 + vz * tau
     r2 = R * R - x * x
     D = w * w - r2
     disc = y * y + D
     ok = (r2 > 0) & (w > 0) & (D > 0) & (disc > 0)
-    rho = np.sqrt(np.where(ok, r2, 1.0))
-    s = np.sqrt(np.where(ok, disc, 1.0))
-    inv_D = 1.0 / np.where(ok, D, 1.0)
-    # derivatives of x, y, w with respect to theta, (N, 6)
-    n_l = t.size
-    dX = np.zeros((n_l, 6))
-    dY = np.zeros((n_l, 6))
-    dW = np.zeros((n_l, 6))
-    dX[:, 0], dX[:, 3] = -(vx + ax * tau), tau
-    dY[:, 0], dY[:, 1], dY[:, 4] = -(vy + ay * tau), 1.0, tau
-    dW[:, 0], dW[:, 2], dW[:, 5] = -(vz + az * tau), 1.0, tau
-    rs = rho * s
-    out = []
-    for sg in (-1.0, 1.0):
-        n = (y * w + sg * rs) * inv_D
-        dn_dy = (w + sg * rho * y / s) * inv_D
-        dn_dw = (y + sg * rho * w / s - 2.0 * n * w) * inv_D
-        dn_dx = (sg * x * (rho / s - s / rho) - 2.0 * n * x) * inv_D
-        gain = camera.focal_px * camera.distort_derivative(n)
-        J = (dn_dx * gain)[:, None] * dX + (dn_dy * gain)[:, None] * dY + (dn_dw * gain)[:, None] * dW
-        u = camera.project_normalised(n)
-        out.append((np.where(ok, u, np.nan), np.where(ok[:, None], J, np.nan)))
-    (left, dl), (right, dr) = out
-    return left, right, dl, dr
+    all_ok = bool(ok.all())
+    if all_ok:
+        rho, s, inv_D = np.sqrt(r2), np.sqrt(disc), 1.0 / D
+    else:
+        rho = np.sqrt(np.where(ok, r2, 1.0))
+        s = np.sqrt(np.where(ok, disc, 1.0))
+        inv_D = 1.0 / np.where(ok, D, 1.0)
+    sg = np.array([[-1.0], [1.0]])  # (2, 1): left, right
+    n = (y * w + sg * (rho * s)) * inv_D  # (2, N)
+    rho_s = rho / s
+    dn_dy = (w + sg * (rho_s * y)) * inv_D
+    dn_dw = (y + sg * (rho_s * w) - 2.0 * n * w) * inv_D
+    dn_dx = (sg * (x * (rho_s - s / rho)) - 2.0 * n * x) * inv_D
+    k1, k2 = camera.k1, camera.k2
+    n2 = n * n
+    gain = camera.focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+    gx, gy, gw = dn_dx * gain, dn_dy * gain, dn_dw * gain
+    J = np.empty((2, t.size, 6))
+    # d(x, y, w)/d t_c = -(velocity at t); d/d(y0, z0) = 1; d/d(vx, vy, vz) = tau
+    J[..., 0] = -(gx * (vx + ax * tau) + gy * (vy + ay * tau) + gw * (vz + az * tau))
+    J[..., 1] = gy
+    J[..., 2] = gw
+    J[..., 3] = gx * tau
+    J[..., 4] = gy * tau
+    J[..., 5] = gw * tau
+    u = _project(camera, n)
+    if not all_ok:
+        u = np.where(ok, u, np.nan)
+        J = np.where(ok[:, None], J, np.nan)
+    return u[0], u[1], J[0], J[1]
 
 
 def hybrid_jacobian(
@@ -425,7 +501,7 @@ def hybrid_jacobian(
     if fd.any():
         h = rel_step * np.asarray(scale, dtype=float)
         thetas = np.vstack([theta, theta + np.diag(h)])
-        me = averaged_model(camera, thetas, R, t[fd], acceleration_mps2, n_nodes)
+        me = _edges_model(camera, thetas, R, t[fd], acceleration_mps2, n_nodes)
         dl[fd] = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
         dr[fd] = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
         da[fd] = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
@@ -529,7 +605,9 @@ class FitSettings:
         After an accepted step that lowered half the chi-square by more than
         this (predicted), the Jacobian is recomputed; after smaller steps the
         previous one is kept (chord steps near the minimum, where the model
-        is linear over the remaining move).
+        is linear over the remaining move).  0.1: with the mostly analytic
+        Jacobian a refresh costs about two model evaluations and saves the
+        slow chord steps that a stale one takes.
     jacobian_nodes : int
         Quadrature nodes per piece of the model inside the finite-difference
         Jacobian (the residuals use ``n_nodes``); the Jacobian only steers
@@ -580,7 +658,7 @@ class FitSettings:
     max_nfev: int = 60
     solver: str = "gn"
     cost_tol: float = 1e-6
-    jacobian_refresh: float = 1.0
+    jacobian_refresh: float = 0.1
     jacobian_nodes: int = 3
     broyden: bool = False
     robust_first: bool = False
@@ -714,7 +792,11 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     f2 = settings.f_scale**2
     tol = settings.cost_tol
 
+    linear = settings.loss == "linear"
+
     def cost_of(r):
+        if linear:
+            return 0.5 * float(r @ r)
         return 0.5 * f2 * float(_rho((r * r) / f2, settings.loss)[0].sum())
 
     x = np.asarray(x0, dtype=float).copy()
@@ -733,8 +815,11 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     broyden = settings.broyden
     n_fresh = 0
     while n_eval < settings.max_nfev:
-        w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
-        Jw, rw = J * w[:, None], r * w
+        if linear:
+            Jw, rw = J, r
+        else:
+            w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
+            Jw, rw = J * w[:, None], r * w
         cn = np.linalg.norm(Jw, axis=0)
         cn = np.where(cn > 0, cn, 1.0)
         Jn = Jw / cn
@@ -844,9 +929,23 @@ def fit_motion(
     rejected_l = np.zeros(n_lines, dtype=bool)
     rejected_r = np.zeros(n_lines, dtype=bool)
 
+    # the last model evaluation (one parameter set, all lines), shared by the
+    # residual selection and the solver: a round's selection and its first
+    # residuals are taken at the same point
+    model_cache: dict = {}
+
+    def model_at(theta, full: bool) -> ModelEdges:
+        key = np.asarray(theta, dtype=float)[:6].tobytes()
+        me = model_cache.get("me")
+        if me is None or model_cache["key"] != key or (full and me.spread_px is None):
+            th1 = np.asarray(theta, dtype=float)[None, :6]
+            me = averaged_model(camera, th1, R, t, acc, nn) if full else _edges_model(camera, th1, R, t, acc, nn)
+            model_cache["key"], model_cache["me"] = key, me
+        return me
+
     def problem(theta):
         """Residual selection and weights at ``theta``, less the rejected edges."""
-        me = averaged_model(camera, np.asarray(theta)[None], R, t, acc, nn)
+        me = model_at(theta, True)
         me = ModelEdges(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
         ul, ur, ua, wl, wr = _select(edges, me, settings)
         ul, ur = ul & ~rejected_l, ur & ~rejected_r
@@ -905,7 +1004,7 @@ def fit_motion(
 
         def resid_only(x):
             th_, b_ = unpack(x)
-            me = averaged_model(camera, th_[None], R, t, acc, nn)
+            me = model_at(th_, False)
             r = np.concatenate(
                 [
                     (me.left_px[0, use_l] - b_ - ml) / sl,
