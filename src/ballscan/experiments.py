@@ -780,8 +780,8 @@ def _execute(func: Callable[[Any], Any], items: Sequence[Any], jobs: int, schedu
     """
     if not items:
         return
-    bar = _progress(progress, label, len(items))
-    with bar as (advance):
+    bar = _Progress(progress, label, len(items))
+    with bar as advance:
         if scheduler is not None:
             yield from _execute_dask(func, items, scheduler, advance)
         elif jobs == 1:
@@ -822,7 +822,7 @@ def _execute_dask(func, items, scheduler: str, advance) -> Iterator[Any]:
         client.close()
 
 
-class _progress:
+class _Progress:
     """A rich progress bar (or nothing); ``with`` yields the advance callback."""
 
     def __init__(self, enabled: bool, label: str, total: int):
