@@ -284,12 +284,14 @@ def _running_median(x: np.ndarray, n: int) -> np.ndarray:
         return x.copy()
     h = n // 2
     pad = np.concatenate([np.full(h, np.nan), x, np.full(h, np.nan)])
-    win = np.lib.stride_tricks.sliding_window_view(pad, 2 * h + 1)
-    out = np.full(x.size, np.nan)
-    ok = np.isfinite(win).any(axis=1)
-    if ok.any():
-        out[ok] = np.nanmedian(win[ok], axis=1)
-    return out
+    win = np.sort(np.lib.stride_tricks.sliding_window_view(pad, 2 * h + 1), axis=1)  # NaN sort last
+    cnt = np.isfinite(win).sum(axis=1)
+    rows = np.arange(x.size)
+    lo = np.maximum(cnt - 1, 0) // 2
+    hi = cnt // 2
+    # the median of the finite entries (the mean of the middle two for an even count), as np.nanmedian
+    out = 0.5 * (win[rows, lo] + win[rows, np.minimum(hi, win.shape[1] - 1)])
+    return np.where(cnt > 0, out, np.nan)
 
 
 def measure_edges(
@@ -367,7 +369,11 @@ def measure_edges(
 
     rows = np.arange(n)[:, None]
     peak = p.max(axis=1)
-    noise_row = np.median(sp, axis=1)
+    if sd.strides[0] == 0:
+        # a scalar or per-column noise: every line has the same median
+        noise_row = np.full(n, float(np.median(sp[0])))
+    else:
+        noise_row = np.median(sp, axis=1)
     has_signal = peak > s.min_snr * noise_row
     above = p >= s.find_fraction * peak[:, None]
     k_left = np.argmax(above, axis=1)
