@@ -790,9 +790,14 @@ def _execute(func: Callable[[Any], Any], items: Sequence[Any], jobs: int, schedu
                 advance()
                 yield r
         else:
+            import joblib
             from joblib import Parallel, delayed
 
-            par = Parallel(n_jobs=jobs, return_as="generator_unordered", batch_size=1)
+            # completion order (joblib >= 1.4) lets finished trials reach the CSV at once;
+            # joblib 1.3 can only return them in submission order
+            major, minor = (int(x) for x in joblib.__version__.split(".")[:2])
+            mode = "generator_unordered" if (major, minor) >= (1, 4) else "generator"
+            par = Parallel(n_jobs=jobs, return_as=mode, batch_size=1)
             for r in par(delayed(func)(it) for it in items):
                 advance()
                 yield r
