@@ -450,6 +450,8 @@ def hybrid_jacobian(
     reach_limit: float = 0.8,
     rel_step: float = 1e-3,
     n_nodes: int = 3,
+    memo: dict | None = None,
+    reuse_px: float = 0.1,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Jacobian of the averaged model: analytic chord derivatives inside, finite differences at the ends.
 
@@ -475,6 +477,16 @@ def hybrid_jacobian(
         derivative (or NaN) without finite differences.
     reach_limit : float
         See above; 0 gives finite differences everywhere.
+    memo : dict, optional
+        Filled with the finite differences and their difference from the
+        chord derivatives; a later call that needs no new line and whose
+        ``theta`` moved the model's edges on those lines by at most
+        ``reuse_px`` (to first order) reuses them: the chord derivatives at
+        ``theta`` plus the stored correction (the whole stored row where the
+        chord has no edge).  The correction is 0.5 % of the derivative at
+        most and changes by a small fraction of that over such a move.
+    reuse_px : float
+        See ``memo`` (pixels).
 
     Returns
     -------
@@ -498,13 +510,39 @@ def hybrid_jacobian(
     if needed is not None:
         fd = fd & needed
     da = dr - dl
-    if fd.any():
-        h = rel_step * np.asarray(scale, dtype=float)
-        thetas = np.vstack([theta, theta + np.diag(h)])
-        me = _edges_model(camera, thetas, R, t[fd], acceleration_mps2, n_nodes)
-        dl[fd] = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
-        dr[fd] = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
-        da[fd] = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
+    if not fd.any():
+        return dl, dr, da
+    scale = np.asarray(scale, dtype=float)
+    chord_ok = np.isfinite(dl).all(axis=1) & np.isfinite(dr).all(axis=1)
+    if memo is not None and memo.get("theta") is not None and memo["t"].shape == t.shape:
+        near = False
+        if np.all(memo["have"][fd]):
+            # how far the model moved on those lines since (pixels, first order)
+            step = theta - memo["theta"]
+            moved = np.abs(np.concatenate([memo["fd_l"][fd] @ step, memo["fd_r"][fd] @ step]))
+            near = bool(np.all(moved[np.isfinite(moved)] <= reuse_px))
+        if near:
+            # finite differences taken nearby: keep their difference to the
+            # chord derivatives (a small, slowly varying correction), or the
+            # whole row where the chord has none (lines at or past the ends)
+            keep_row = fd & chord_ok & memo["chord_ok"]
+            whole = fd & ~keep_row
+            for cur, corr, old in ((dl, memo["corr_l"], memo["fd_l"]), (dr, memo["corr_r"], memo["fd_r"]), (da, memo["corr_a"], memo["fd_a"])):
+                cur[keep_row] += corr[keep_row]
+                cur[whole] = old[whole]
+            return dl, dr, da
+    h = rel_step * scale
+    thetas = np.vstack([theta, theta + np.diag(h)])
+    me = _edges_model(camera, thetas, R, t[fd], acceleration_mps2, n_nodes)
+    fl = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
+    fr = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
+    fa = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
+    if memo is not None:
+        full = {k: np.full((t.size, 6), np.nan) for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a")}
+        full["fd_l"][fd], full["fd_r"][fd], full["fd_a"][fd] = fl, fr, fa
+        full["corr_l"][fd], full["corr_r"][fd], full["corr_a"][fd] = fl - dl[fd], fr - dr[fd], fa - da[fd]
+        memo.update(full, theta=theta.copy(), t=t, have=fd.copy(), chord_ok=chord_ok)
+    dl[fd], dr[fd], da[fd] = fl, fr, fa
     return dl, dr, da
 
 
@@ -625,6 +663,12 @@ class FitSettings:
         largest term at 0.8); the ball's ends and the area lines get finite
         differences of the averaged model.  0 uses finite differences on
         every line (:func:`model_jacobian`).
+    jacobian_reuse_px : float
+        The finite-difference rows are recomputed only after the model's
+        edges on those lines moved by more than this (pixels) since they
+        were taken; nearer, their difference from the analytic chord
+        derivatives is kept (``memo`` of :func:`hybrid_jacobian`).  0
+        recomputes them every time.
     robust_first : bool
         Start with a fit under the robust ``loss`` before the least-squares
         rounds with outlier rejection (slower; the rejection rounds alone
@@ -663,6 +707,7 @@ class FitSettings:
     broyden: bool = False
     robust_first: bool = False
     jacobian_reach: float = 0.8
+    jacobian_reuse_px: float = 0.1
 
 
 @dataclass(frozen=True)
@@ -933,6 +978,7 @@ def fit_motion(
     # residual selection and the solver: a round's selection and its first
     # residuals are taken at the same point
     model_cache: dict = {}
+    fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
 
     def model_at(theta, full: bool) -> ModelEdges:
         key = np.asarray(theta, dtype=float)[:6].tobytes()
@@ -979,6 +1025,7 @@ def fit_motion(
                 dl, dr, da = hybrid_jacobian(
                     camera, th, R, t, scale, acc, fd_lines=use_a, needed=used,
                     reach_limit=settings.jacobian_reach, rel_step=settings_rel_step, n_nodes=settings.jacobian_nodes,
+                    memo=fd_memo, reuse_px=settings.jacobian_reuse_px,
                 )
                 key = x.tobytes()
                 r = last["r"] if last.get("key") == key else resid_only(x)
