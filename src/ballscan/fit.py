@@ -638,7 +638,9 @@ class FitSettings:
         Model evaluations allowed.
     cost_tol : float
         The built-in solver stops when the next step would lower half the
-        chi-square by less than this.
+        chi-square by less than this (1e-5: a remaining move of about
+        0.005 sigma; smaller values mostly add steps that only trade the
+        Jacobian's last digits).
     jacobian_refresh : float
         After an accepted step that lowered half the chi-square by more than
         this (predicted), the Jacobian is recomputed; after smaller steps the
@@ -701,7 +703,7 @@ class FitSettings:
     n_nodes: int = 3
     max_nfev: int = 60
     solver: str = "gn"
-    cost_tol: float = 1e-6
+    cost_tol: float = 1e-5
     jacobian_refresh: float = 0.1
     jacobian_nodes: int = 3
     broyden: bool = False
@@ -826,10 +828,12 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     Steps are solved on the column-equilibrated normal equations (the
     parameters' sizes differ by ~1e8).  It stops when the Gauss-Newton step
     would lower the cost by less than ``settings.cost_tol`` (in units of
-    half the chi-square: 1e-6 is a move of about 0.001 sigma), which, unlike a
+    half the chi-square: 1e-5 is a move of about 0.005 sigma), which, unlike a
     relative ``ftol``, does not stop early along the weak ``vz`` direction.
-    The Jacobian (forward differences, one vectorised model call) is computed
-    at the start only (or taken from ``start = (r, J)``); after every trial
+    The Jacobian (``resid_and_jac``) is computed at the start (or taken from
+    ``start = (r, J)``; ``r`` None is recomputed) and after accepted steps
+    that lowered the cost by more than ``settings.jacobian_refresh``; with
+    ``settings.broyden``, after every trial
     step it is corrected by Broyden's rank-one update, so that a step costs
     one model evaluation.  Returns ``(x, n_eval, status, message, cost, r,
     J)`` with the (updated) Jacobian at ``x``.
