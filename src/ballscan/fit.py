@@ -983,6 +983,7 @@ def fit_motion(
     # residuals are taken at the same point
     model_cache: dict = {}
     fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
+    jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
 
     def model_at(theta, full: bool) -> ModelEdges:
         key = np.asarray(theta, dtype=float)[:6].tobytes()
@@ -1045,13 +1046,27 @@ def fit_motion(
                 r = np.concatenate(
                     [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa, pr[0]]
                 )
-            J = np.vstack(
-                [dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], ((pr[1:] - pr[0]) / h[:, None]).T]
-            )
+            if pix is None:
+                jac_cache.update(dl=dl, dr=dr, da=da, used=used, use_a=use_a)
+            else:
+                jac_cache.clear()
+            return r, assemble(dl, dr, da, ((pr[1:] - pr[0]) / h[:, None]).T)
+
+        def assemble(dl, dr, da, jp):
+            """Whitened Jacobian of this selection from per-line derivatives."""
+            J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], jp])
             if fit_b:
                 jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size + n_pix)])
                 J = np.hstack([J, jb[:, None]])
-            return r, J
+            return J
+
+        if start is None and pix is None and settings.solver == "gn" and jac_cache:
+            # a later round (after rejecting edges) starts from the last
+            # Jacobian's per-line derivatives, taken at or next to x_start,
+            # when they cover this selection; its residuals are recomputed
+            c = jac_cache
+            if not np.any(used & ~c["used"]) and not np.any(use_a & ~c["use_a"]):
+                start = (None, assemble(c["dl"], c["dr"], c["da"], np.zeros((0, 6))))
 
         def resid_only(x):
             th_, b_ = unpack(x)
@@ -1128,8 +1143,7 @@ def fit_motion(
         use_l, use_r, use_a, sl, sr, sa = sel[:6]
         if int((use_l & use_r).sum()) < settings.min_edge_lines:
             break
-        start = _rows_of(sel_solved, sel, r, J) if (sel_solved is not None and settings.solver == "gn") else None
-        (x, n_iter, status, message, cost, r, J), rj = solve(x, sel, "linear", start)
+        (x, n_iter, status, message, cost, r, J), rj = solve(x, sel, "linear")
         sel_solved = sel
         n_total += n_iter
         if _round == settings.max_reject_rounds or settings.reject_sigma <= 0:
@@ -1282,34 +1296,6 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
         B = np.where(den > 0, num / np.where(den > 0, den, 1.0), 0.0)
         out[:, sel] = (B[:, None, None] * c - pix["p"][sel]) * pix["w"][sel]
     return out[:, pix["mask"]]
-
-
-def _rows_of(old_sel, new_sel, r, J):
-    """Residuals and Jacobian of ``new_sel`` taken from those of ``old_sel`` at the same point.
-
-    Possible when the new selection is the old one less some residuals
-    (rejected edges); returns ``(None, J)`` (the residuals must be
-    recomputed: an edge may have changed window) or None.
-    """
-    if r is None or J is None or old_sel[9] is not None or new_sel[9] is not None:
-        return None
-    keep = []
-    offset = 0
-    for k in range(3):
-        o, n = old_sel[k], new_sel[k]
-        if np.any(n & ~o):
-            return None
-        idx = np.flatnonzero(o)
-        keep.append(offset + np.flatnonzero(n[idx]))
-        offset += idx.size
-    if offset != r.size:
-        return None
-    rows = np.concatenate(keep)
-    # a kept edge may have switched between the narrow and the wide window
-    # (its measured value changed): the residuals are recomputed, only the
-    # Jacobian's rows are reused (the model's derivatives do not depend on
-    # the measurement)
-    return None, J[rows]
 
 
 def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:
