@@ -100,23 +100,6 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
     return initial_guess(kp, camera, radius_m)
 
 
-def _undetermined_estimate(method: str, radius_m: float, region: BallRegion, flags: list[str], why: str, t0: float) -> BallEstimate:
-    return BallEstimate(
-        method=method,
-        radius_m=radius_m,
-        t_c_s=None,
-        position_m=None,
-        velocity_mps=None,
-        speed_mps=None,
-        flags=tuple(flags) + ("degenerate",),
-        undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
-        first_line=region.line_start,
-        last_line=region.line_stop - 1,
-        run_time_s=time.perf_counter() - t0,
-        extra={"reason": why},
-    )
-
-
 def estimate_region(
     image: LineImage,
     detection: Detection,
@@ -125,8 +108,14 @@ def estimate_region(
     radius_m: float,
     t_lines_s: np.ndarray,
     method: str = "fit",
+    background_dn: np.ndarray | None = None,
 ) -> BallEstimate:
-    """Estimate one detected ball's motion (see the module docstring)."""
+    """Estimate one detected ball's motion (see the module docstring).
+
+    ``background_dn`` is the detector's background on the whole image
+    (``background_at`` over all lines and pixels); pass it when measuring
+    several regions of one image so it is built once.
+    """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
     t0 = time.perf_counter()
@@ -137,7 +126,15 @@ def estimate_region(
     try:
         ig = _initial(box, region, camera, radius_m, t_lines_s)
     except ValueError as exc:
-        return _undetermined_estimate(method, radius_m, region, flags, f"initial guess impossible: {exc}", t0)
+        return BallEstimate.undetermined_estimate(
+            method,
+            radius_m,
+            f"initial guess impossible: {exc}",
+            tuple(flags),
+            first_line=region.line_start,
+            last_line=region.line_stop - 1,
+            run_time_s=time.perf_counter() - t0,
+        )
     if ig.degenerate:
         flags.append("initial_degenerate")
     initial_est = BallEstimate.from_motion(ig.motion, "initial", flags=("initial_degenerate",) if ig.degenerate else ())
@@ -171,12 +168,11 @@ def estimate_region(
     from .fit import fit_motion, propagate
 
     t_e = time.perf_counter()
-    bg, noise, (ls, cs) = region_background(detection, region, margin=0)
     others = [r for r in detection.regions if r.index != region.index]
     edges = measure_edges(
         image.data,
         region,
-        _full_background(detection),
+        background_dn if background_dn is not None else _full_background(detection),
         detection.noise_dn,
         t_lines_s,
         saturation_dn=detection.saturation_dn,
@@ -291,6 +287,7 @@ def estimate_image(
         camera = replace(camera, exposure_s=float(np.median(np.diff(timestamps_s))))
     t = line_times(camera, n_lines, timestamps_s)
     det = detect(image)
-    balls = [estimate_region(image, det, r, camera, radius_m, t, method) for r in det.regions]
+    bg = _full_background(det) if method == "fit" and det.regions else None
+    balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls))

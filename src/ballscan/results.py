@@ -110,6 +110,25 @@ class BallEstimate:
             **kw,
         )
 
+    @classmethod
+    def undetermined_estimate(cls, method: str, radius_m: float, reason: str, flags: tuple[str, ...] = (), **kw: Any) -> "BallEstimate":
+        """An estimate the image cannot give: every motion key ``None``, flagged ``degenerate``.
+
+        ``reason`` (one line) is kept in ``extra["reason"]``.
+        """
+        return cls(
+            method=method,
+            radius_m=radius_m,
+            t_c_s=None,
+            position_m=None,
+            velocity_mps=None,
+            speed_mps=None,
+            flags=tuple(flags) + ("degenerate",),
+            undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
+            extra={"reason": " ".join(reason.split())},
+            **kw,
+        )
+
     def motion(self) -> BallMotion | None:
         """The estimate as a :class:`BallMotion` (None when undetermined)."""
         if self.t_c_s is None or self.position_m is None or self.velocity_mps is None:

@@ -864,19 +864,7 @@ def estimate_crop(
     try:
         return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s).balls
     except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
-        return (
-            BallEstimate(
-                method=method,
-                radius_m=radius_m,
-                t_c_s=None,
-                position_m=None,
-                velocity_mps=None,
-                speed_mps=None,
-                flags=("degenerate",),
-                undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
-                extra={"reason": f"estimate failed: {' '.join(str(exc).split())[:200]}"},
-            ),
-        )
+        return (BallEstimate.undetermined_estimate(method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 
 
 def preload_estimator() -> None:
