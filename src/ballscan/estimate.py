@@ -137,7 +137,16 @@ def estimate_region(
         )
     if ig.degenerate:
         flags.append("initial_degenerate")
-    initial_est = BallEstimate.from_motion(ig.motion, "initial", flags=("initial_degenerate",) if ig.degenerate else ())
+    initial_est = BallEstimate.from_motion(
+        ig.motion,
+        "initial",
+        flags=("initial_degenerate",) if ig.degenerate else (),
+        extra={
+            "duration_s": ig.duration_s,
+            "depth_fallback": ig.depth_fallback,
+            "depth_motion_sigma_m": ig.depth_motion_sigma_m,
+        },
+    )
     t_init = time.perf_counter() - t0
 
     if method == "paper":

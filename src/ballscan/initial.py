@@ -81,7 +81,9 @@ class InitialGuess:
     duration_s: float  #: T of Eq. (7)
     gamma_rad: float
     phi_rad: float
-    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty
+    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty (or a or b unseen)
+    depth_fallback: bool = False  #: Eq. (5)-(6) ill-conditioned for the depth motion: V.z held at 0
+    depth_motion_sigma_m: float = math.nan  #: propagated 1-sigma of z2 - z1 from Eq. (5)-(6)
 
 
 def _crossing(profile: np.ndarray, level: float, j: int, step: int) -> float:
@@ -341,7 +343,9 @@ def initial_guess(
       (tips floored at ``tip_sigma_px``) exceeds ``max_depth_ratio`` times
       the ball's diameter (the x-travel over T), ``z`` is held at ``z0``
       (``V.z = 0``), ``V.y`` is taken from ``a`` and ``b`` at that depth,
-      and the guess is flagged degenerate too.
+      and ``depth_fallback`` is set (the guess is then not flagged: the
+      depth motion of Eq. (5)-(6) is ill-conditioned for most real
+      crossings, and the refinement, not the guess, measures it).
     * Eq. (7): ``T`` is counted as in the paper, from line ``a`` to line
       ``b``: ``T = t_b - t_a`` (``(i_b - i_a) / line_rate`` for uniform
       lines), and ``t_c = (t_a + t_b) / 2``.  A real pixel sees the ball
@@ -364,18 +368,17 @@ def initial_guess(
     # tenths of a pixel).
     degenerate = kp.cut is not None or abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
     dz_sigma = _depth_motion_sigma(kp, camera, radius_m, tip_sigma_px)
-    depth_degenerate = degenerate or not dz_sigma < max_depth_ratio * 2.0 * radius_m
+    depth_fallback = not degenerate and not dz_sigma < max_depth_ratio * 2.0 * radius_m
     if degenerate:
         y1 = y2 = y0
         z1 = z2 = z0
-    elif depth_degenerate:
+    elif depth_fallback:
         # the depth change is not determined: keep z constant (vz = 0) and
         # take the sensor-direction motion from a and b at that depth
         z1 = z2 = z0
         y1, y2 = n_a * z0, n_b * z0
     else:
         z1, y1, y2, z2 = _eq5_6(n_a, n_b, y0, z0)
-    degenerate = degenerate or depth_degenerate
     T = kp.t_b_s - kp.t_a_s
     if not T > 0:
         raise ValueError("initial_guess: the ball spans no time (first and last line coincide)")
@@ -384,4 +387,13 @@ def initial_guess(
     vz = (z2 - z1) / T
     t_c = 0.5 * (kp.t_a_s + kp.t_b_s)
     motion = BallMotion(R, t_c, (0.0, y0, z0), (camera.crossing_sign * vx, vy, vz))
-    return InitialGuess(motion=motion, keypoints=kp, duration_s=T, gamma_rad=gamma, phi_rad=phi, degenerate=degenerate)
+    return InitialGuess(
+        motion=motion,
+        keypoints=kp,
+        duration_s=T,
+        gamma_rad=gamma,
+        phi_rad=phi,
+        degenerate=degenerate,
+        depth_fallback=depth_fallback,
+        depth_motion_sigma_m=dz_sigma,
+    )
