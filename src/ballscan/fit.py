@@ -167,8 +167,11 @@ def averaged_model(
 
 
 def _edges_model(camera, th, R, t, acc, n_nodes) -> ModelEdges:
-    """:func:`averaged_model` without the edge spread and validity (``None``), for the fit's inner loop."""
-    if n_nodes <= 3:
+    """:func:`averaged_model` without the edge spread and validity (``None``), for the fit's inner loop.
+
+    ``t`` of shape (P, N) gives every parameter set its own line times.
+    """
+    if n_nodes <= 3 or np.ndim(t) == 2:
         return _model_core(camera, th, float(R), t, acc, n_nodes, False, False)
     return averaged_model(camera, th, R, t, acc, n_nodes)
 
@@ -183,7 +186,7 @@ def _project(camera: LineScanCamera, n: np.ndarray) -> np.ndarray:
 
 
 def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples, full: bool = True) -> ModelEdges:
-    """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,).
+    """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,) or (P, N).
 
     Written for few, large numpy operations (the fit calls it some ten
     times per ball): per-line quantities are (P, N), per-sample ones
@@ -191,7 +194,8 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     Gauss-Legendre nodes).  ``full=False`` skips the edge spread and the
     validity test (``spread_px`` and ``valid`` are then None).
     """
-    t = t_all.reshape(1, -1)
+    # (N,) times for every parameter set, or (P, N) times of their own
+    t = t_all if t_all.ndim == 2 else t_all.reshape(1, -1)
     acc = tuple(float(a) for a in acceleration_mps2)
     has_acc = any(a != 0.0 for a in acc)
     y0, z0 = th[:, 1:2], th[:, 2:3]
@@ -438,6 +442,57 @@ def chord_jacobian(
     return u[0], u[1], J[0], J[1]
 
 
+def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes):
+    """Forward differences of the averaged model on the lines ``fd``, (n_fd, 6) each.
+
+    On lines ``inside`` (the section offsets stay inside the ball: presence
+    1) the averaged edge is the chord edge plus a correction that depends on
+    the offset ``x0 = vx (t - t_c)`` (and the exposure's ``A``, which scales
+    with ``vx``) and, to 1e-5 of the derivatives, on nothing else: only the
+    ``t_c`` and ``vx`` columns are differenced there, the others are the
+    chord's (``dl``, ``dr``).  The other lines get all six columns.  All
+    parameter sets and lines go through one model call (times per set).
+    """
+    idx = np.flatnonzero(fd)
+    ins = inside[idx]
+    cols_in = np.array([0, 3])
+    sets, times, tags = [], [], []
+    n_in, n_out = int(ins.sum()), int((~ins).sum())
+    t_in, t_out = t[idx[ins]], t[idx[~ins]]
+    # (rows: parameter sets; columns: lines), padded into one (P, n) call per group
+    if n_in:
+        th_in = np.vstack([theta, theta + np.diag(h)[cols_in]])  # (3, 6)
+        sets.append(np.repeat(th_in, n_in, axis=0))
+        times.append(np.tile(t_in, th_in.shape[0]))
+    if n_out:
+        th_out = np.vstack([theta, theta + np.diag(h)])  # (7, 6)
+        sets.append(np.repeat(th_out, n_out, axis=0))
+        times.append(np.tile(t_out, th_out.shape[0]))
+    th_all = np.vstack(sets)
+    me = _edges_model(camera, th_all, R, np.concatenate(times)[:, None], acc, n_nodes)
+    L, Rr, A = me.left_px[:, 0], me.right_px[:, 0], me.area_px[:, 0]
+    fl = np.empty((idx.size, 6))
+    fr = np.empty((idx.size, 6))
+    fa = np.empty((idx.size, 6))
+    k = 0
+    if n_in:
+        l3, r3, a3 = (v[: 3 * n_in].reshape(3, n_in) for v in (L, Rr, A))
+        hl = h[cols_in][:, None]
+        gl = np.array(dl[idx[ins]])
+        gr = np.array(dr[idx[ins]])
+        gl[:, cols_in] = ((l3[1:] - l3[0]) / hl).T
+        gr[:, cols_in] = ((r3[1:] - r3[0]) / hl).T
+        fl[ins], fr[ins] = gl, gr
+        fa[ins] = gr - gl
+        k = 3 * n_in
+    if n_out:
+        l7, r7, a7 = (v[k:].reshape(7, n_out) for v in (L, Rr, A))
+        fl[~ins] = ((l7[1:] - l7[0]) / h[:, None]).T
+        fr[~ins] = ((r7[1:] - r7[0]) / h[:, None]).T
+        fa[~ins] = ((a7[1:] - a7[0]) / h[:, None]).T
+    return fl, fr, fa
+
+
 def hybrid_jacobian(
     camera: LineScanCamera,
     theta: np.ndarray,
@@ -464,7 +519,11 @@ def hybrid_jacobian(
     chord (:func:`chord_jacobian`) to 0.1 % of the largest term.  The other
     lines (the ball's ends, where the correction grows, and ``fd_lines``)
     get the forward differences of :func:`model_jacobian` with the averaged
-    model, in one vectorised call over those lines only.
+    model, in one vectorised call over those lines only: on the lines whose
+    section offsets stay inside the ball only the ``t_c`` and ``vx`` columns
+    (the correction depends on the parameters through ``x0 = vx (t - t_c)``;
+    the other columns' part is below 1e-5 of the derivatives), all six on
+    the others (:func:`_fd_rows`).
 
     Parameters
     ----------
@@ -485,6 +544,8 @@ def hybrid_jacobian(
         ``theta`` plus the stored correction (the whole stored row where the
         chord has no edge).  The correction is 0.5 % of the derivative at
         most and changes by a small fraction of that over such a move.
+        ``memo["last_fd"]`` is set to the lines of this call's finite
+        differences.
     reuse_px : float
         See ``memo`` (pixels).
 
@@ -510,6 +571,8 @@ def hybrid_jacobian(
     if needed is not None:
         fd = fd & needed
     da = dr - dl
+    if memo is not None:
+        memo["last_fd"] = fd
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
@@ -532,11 +595,7 @@ def hybrid_jacobian(
                 cur[whole] = old[whole]
             return dl, dr, da
     h = rel_step * scale
-    thetas = np.vstack([theta, theta + np.diag(h)])
-    me = _edges_model(camera, thetas, R, t[fd], acceleration_mps2, n_nodes)
-    fl = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
-    fr = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
-    fa = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
+    fl, fr, fa = _fd_rows(camera, theta, R, t, fd, chord_ok & (reach < R), h, dl, dr, acceleration_mps2, n_nodes)
     if memo is not None:
         full = {k: np.full((t.size, 6), np.nan) for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a")}
         full["fd_l"][fd], full["fd_r"][fd], full["fd_a"][fd] = fl, fr, fa
@@ -1047,7 +1106,9 @@ def fit_motion(
                     [(me.left_px[use_l] - b - ml) / sl, (me.right_px[use_r] + b - mr) / sr, (me.area_px[use_a] - ma) / sa, pr[0]]
                 )
             if pix is None:
-                jac_cache.update(dl=dl, dr=dr, da=da, used=used, use_a=use_a)
+                # lines whose area derivative is the averaged model's (finite differences)
+                fd_rows = use_a | fd_memo["last_fd"] if settings.jacobian_reach > 0 else used
+                jac_cache.update(dl=dl, dr=dr, da=da, used=used, fd_rows=fd_rows)
             else:
                 jac_cache.clear()
             return r, assemble(dl, dr, da, ((pr[1:] - pr[0]) / h[:, None]).T)
@@ -1065,7 +1126,7 @@ def fit_motion(
             # Jacobian's per-line derivatives, taken at or next to x_start,
             # when they cover this selection; its residuals are recomputed
             c = jac_cache
-            if not np.any(used & ~c["used"]) and not np.any(use_a & ~c["use_a"]):
+            if not np.any(used & ~c["used"]) and not np.any(use_a & ~c["fd_rows"]):
                 start = (None, assemble(c["dl"], c["dr"], c["da"], np.zeros((0, 6))))
 
         def resid_only(x):
