@@ -392,9 +392,23 @@ def chord_jacobian(
     d_left, d_right : ndarray (N, 6)
         Their derivatives, pixels per parameter unit (NaN where the edges are).
     """
-    tc, y0, z0, vx, vy, vz = (float(v) for v in np.asarray(theta, dtype=float))
+    u, J, ok, _, _, _ = _chord_core(camera, theta, radius_m, np.asarray(t_lines_s, dtype=float).reshape(-1), acceleration_mps2)
+    if not ok.all():
+        u = np.where(ok, u, np.nan)
+        J = np.where(ok[:, None], J, np.nan)
+    return u[0], u[1], J[0], J[1]
+
+
+def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
+    """:func:`chord_jacobian`'s work: ``(u (2, N), J (2, N, 6), ok (N,), x, w, tau)``.
+
+    ``u`` and ``J`` hold the left (row 0) and right (row 1) edges and their
+    derivatives, finite garbage where ``ok`` is False; ``x, w`` are the
+    centre's offset from the viewing plane and its depth at each line, m,
+    ``tau = t - t_c``, s.
+    """
+    tc, y0, z0, vx, vy, vz = (float(v) for v in theta)
     ax, ay, az = (float(v) for v in acceleration_mps2)
-    t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
     tau = t - tc
     if ax or ay or az:
@@ -435,11 +449,7 @@ def chord_jacobian(
     J[..., 3] = gx * tau
     J[..., 4] = gy * tau
     J[..., 5] = gw * tau
-    u = _project(camera, n)
-    if not all_ok:
-        u = np.where(ok, u, np.nan)
-        J = np.where(ok[:, None], J, np.nan)
-    return u[0], u[1], J[0], J[1]
+    return _project(camera, n), J, ok, x, w, tau
 
 
 def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes):
@@ -455,38 +465,39 @@ def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes):
     """
     idx = np.flatnonzero(fd)
     ins = inside[idx]
-    cols_in = np.array([0, 3])
-    sets, times, tags = [], [], []
-    n_in, n_out = int(ins.sum()), int((~ins).sum())
-    t_in, t_out = t[idx[ins]], t[idx[~ins]]
-    # (rows: parameter sets; columns: lines), padded into one (P, n) call per group
-    if n_in:
-        th_in = np.vstack([theta, theta + np.diag(h)[cols_in]])  # (3, 6)
-        sets.append(np.repeat(th_in, n_in, axis=0))
-        times.append(np.tile(t_in, th_in.shape[0]))
-    if n_out:
-        th_out = np.vstack([theta, theta + np.diag(h)])  # (7, 6)
-        sets.append(np.repeat(th_out, n_out, axis=0))
-        times.append(np.tile(t_out, th_out.shape[0]))
-    th_all = np.vstack(sets)
-    me = _edges_model(camera, th_all, R, np.concatenate(times)[:, None], acc, n_nodes)
+    i_in, i_out = idx[ins], idx[~ins]
+    n_in, n_out = i_in.size, i_out.size
+    M = 3 * n_in + 7 * n_out
+    th_all = np.empty((M, 6))
+    th_all[:] = theta
+    t_all = np.empty(M)
+    # rows: the base set, t_c + h, vx + h on the inside lines; the base set
+    # and every parameter + h on the others
+    for k, col in enumerate((None, 0, 3)):
+        sl = slice(k * n_in, (k + 1) * n_in)
+        t_all[sl] = t[i_in]
+        if col is not None:
+            th_all[sl, col] += h[col]
+    o = 3 * n_in
+    for k in range(7):
+        sl = slice(o + k * n_out, o + (k + 1) * n_out)
+        t_all[sl] = t[i_out]
+        if k:
+            th_all[sl, k - 1] += h[k - 1]
+    me = _edges_model(camera, th_all, R, t_all[:, None], acc, n_nodes)
     L, Rr, A = me.left_px[:, 0], me.right_px[:, 0], me.area_px[:, 0]
     fl = np.empty((idx.size, 6))
     fr = np.empty((idx.size, 6))
     fa = np.empty((idx.size, 6))
-    k = 0
     if n_in:
-        l3, r3, a3 = (v[: 3 * n_in].reshape(3, n_in) for v in (L, Rr, A))
-        hl = h[cols_in][:, None]
-        gl = np.array(dl[idx[ins]])
-        gr = np.array(dr[idx[ins]])
-        gl[:, cols_in] = ((l3[1:] - l3[0]) / hl).T
-        gr[:, cols_in] = ((r3[1:] - r3[0]) / hl).T
-        fl[ins], fr[ins] = gl, gr
-        fa[ins] = gr - gl
-        k = 3 * n_in
+        l3, r3 = L[:o].reshape(3, n_in), Rr[:o].reshape(3, n_in)
+        gl, gr = dl[i_in], dr[i_in]  # copies (fancy indexing)
+        hc = h[[0, 3]][:, None]
+        gl[:, [0, 3]] = ((l3[1:] - l3[0]) / hc).T
+        gr[:, [0, 3]] = ((r3[1:] - r3[0]) / hc).T
+        fl[ins], fr[ins], fa[ins] = gl, gr, gr - gl
     if n_out:
-        l7, r7, a7 = (v[k:].reshape(7, n_out) for v in (L, Rr, A))
+        l7, r7, a7 = L[o:].reshape(7, n_out), Rr[o:].reshape(7, n_out), A[o:].reshape(7, n_out)
         fl[~ins] = ((l7[1:] - l7[0]) / h[:, None]).T
         fr[~ins] = ((r7[1:] - r7[0]) / h[:, None]).T
         fa[~ins] = ((a7[1:] - a7[0]) / h[:, None]).T
@@ -558,33 +569,26 @@ def hybrid_jacobian(
     theta = np.asarray(theta, dtype=float)
     t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
-    _, _, dl, dr = chord_jacobian(camera, theta, R, t, acceleration_mps2)
-    acc = np.asarray(acceleration_mps2, dtype=float)
-    tau = t - theta[0]
-    x0 = theta[3] * tau + 0.5 * acc[0] * tau * tau
-    z = theta[2] + theta[5] * tau + 0.5 * acc[2] * tau * tau
-    vxt = np.abs(theta[3] + acc[0] * tau)
-    reach = np.abs(x0) + vxt * camera.exposure / 2.0 + np.maximum(z, 0.0) / (2.0 * camera.focal_px)
-    fd = (reach > reach_limit * R) | ~np.isfinite(dl).all(axis=1) | ~np.isfinite(dr).all(axis=1)
+    u, J, chord_ok, x0, z, tau = _chord_core(camera, theta, R, t, acceleration_mps2)
+    dl, dr = J[0], J[1]
+    ax = float(acceleration_mps2[0])
+    vxt = np.abs(theta[3] + ax * tau) if ax else abs(float(theta[3]))
+    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) / (2.0 * camera.focal_px)
+    fd = ~chord_ok | (reach > reach_limit * R)
     if fd_lines is not None:
-        fd = fd | fd_lines
+        fd |= fd_lines
     if needed is not None:
-        fd = fd & needed
+        fd &= needed
     da = dr - dl
     if memo is not None:
         memo["last_fd"] = fd
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
-    chord_ok = np.isfinite(dl).all(axis=1) & np.isfinite(dr).all(axis=1)
-    if memo is not None and memo.get("theta") is not None and memo["t"].shape == t.shape:
-        near = False
-        if np.all(memo["have"][fd]):
-            # how far the model moved on those lines since (pixels, first order)
-            step = theta - memo["theta"]
-            moved = np.abs(np.concatenate([memo["fd_l"][fd] @ step, memo["fd_r"][fd] @ step]))
-            near = bool(np.all(moved[np.isfinite(moved)] <= reuse_px))
-        if near:
+    if memo is not None and memo.get("theta") is not None and memo["n"] == t.size and memo["have"][fd].all():
+        # how far the model moved on those lines since (pixels, first order)
+        step = theta - memo["theta"]
+        if np.abs(memo["fd_l"][fd] @ step).max() <= reuse_px and np.abs(memo["fd_r"][fd] @ step).max() <= reuse_px:
             # finite differences taken nearby: keep their difference to the
             # chord derivatives (a small, slowly varying correction), or the
             # whole row where the chord has none (lines at or past the ends)
@@ -597,10 +601,12 @@ def hybrid_jacobian(
     h = rel_step * scale
     fl, fr, fa = _fd_rows(camera, theta, R, t, fd, chord_ok & (reach < R), h, dl, dr, acceleration_mps2, n_nodes)
     if memo is not None:
-        full = {k: np.full((t.size, 6), np.nan) for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a")}
-        full["fd_l"][fd], full["fd_r"][fd], full["fd_a"][fd] = fl, fr, fa
-        full["corr_l"][fd], full["corr_r"][fd], full["corr_a"][fd] = fl - dl[fd], fr - dr[fd], fa - da[fd]
-        memo.update(full, theta=theta.copy(), t=t, have=fd.copy(), chord_ok=chord_ok)
+        if memo.get("n") != t.size:
+            for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a"):
+                memo[k] = np.zeros((t.size, 6))
+        memo["fd_l"][fd], memo["fd_r"][fd], memo["fd_a"][fd] = fl, fr, fa
+        memo["corr_l"][fd], memo["corr_r"][fd], memo["corr_a"][fd] = fl - dl[fd], fr - dr[fd], fa - da[fd]
+        memo.update(theta=theta.copy(), n=t.size, have=fd.copy(), chord_ok=chord_ok)
     dl[fd], dr[fd], da[fd] = fl, fr, fa
     return dl, dr, da
 
