@@ -1050,18 +1050,20 @@ def fit_motion(
     fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
 
-    def model_at(theta, full: bool) -> ModelEdges:
+    def model_at(theta) -> ModelEdges:
+        # always with the edge spread (a few more operations), so that the
+        # next round's selection at the solution reuses the solver's last
+        # evaluation
         key = np.asarray(theta, dtype=float)[:6].tobytes()
         me = model_cache.get("me")
-        if me is None or model_cache["key"] != key or (full and me.spread_px is None):
-            th1 = np.asarray(theta, dtype=float)[None, :6]
-            me = averaged_model(camera, th1, R, t, acc, nn) if full else _edges_model(camera, th1, R, t, acc, nn)
+        if me is None or model_cache["key"] != key:
+            me = averaged_model(camera, np.asarray(theta, dtype=float)[None, :6], R, t, acc, nn)
             model_cache["key"], model_cache["me"] = key, me
         return me
 
     def problem(theta):
         """Residual selection and weights at ``theta``, less the rejected edges."""
-        me = model_at(theta, True)
+        me = model_at(theta)
         me = ModelEdges(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
         ul, ur, ua, wl, wr = _select(edges, me, settings)
         ul, ur = ul & ~rejected_l, ur & ~rejected_r
@@ -1137,7 +1139,7 @@ def fit_motion(
 
         def resid_only(x):
             th_, b_ = unpack(x)
-            me = model_at(th_, False)
+            me = model_at(th_)
             r = np.concatenate(
                 [
                     (me.left_px[0, use_l] - b_ - ml) / sl,
