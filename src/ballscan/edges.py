@@ -418,23 +418,31 @@ def measure_edges(
             if p_in > 0 and sig_in > sig_bg:
                 sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(p / p_in, 0.0, 2.0))
 
-    def one_side(k: np.ndarray, sign: int, n_out: int = s.n_out, n_in: int = s.n_in):
-        # window and level pixel offsets relative to k, pointing inwards with `sign`
-        win_off = np.arange(-(n_out + 1), n_in + 1) * sign
-        lev_off = (n_in + 1 + np.arange(s.n_level)) * sign
-        win = k[:, None] + win_off[None, :]
-        lev = k[:, None] + lev_off[None, :]
+    # Both sides at once: rows 0..n-1 are the left edges (windows pointing
+    # inwards with sign +1), rows n..2n-1 the right edges (sign -1).
+    k_both = np.concatenate([k_left, k_right])
+    sgn = np.concatenate([np.ones(n, dtype=int), -np.ones(n, dtype=int)])[:, None]
+    rows2 = np.concatenate([rows, rows])
+    hs2 = np.concatenate([has_signal, has_signal])
+    halves = (slice(0, n), slice(n, 2 * n))
+
+    def both_sides(n_out: int, n_in: int):
+        k = k_both
+        # window and level pixel offsets relative to k, pointing inwards with the sign
+        win_off = np.arange(-(n_out + 1), n_in + 1)
+        win = k[:, None] + win_off[None, :] * sgn
+        lev = k[:, None] + (n_in + 1 + np.arange(s.n_level))[None, :] * sgn
         inside_box = (win.min(1) >= 0) & (win.max(1) < w) & (lev.min(1) >= 0) & (lev.max(1) < w)
         winc = np.clip(win, 0, w - 1)
         levc = np.clip(lev, 0, w - 1)
-        pw, pl = p[rows, winc], p[rows, levc]
-        sw, sl = sp[rows, winc], sp[rows, levc]
+        pw, pl = p[rows2, winc], p[rows2, levc]
+        sw, sl = sp[rows2, winc], sp[rows2, levc]
         # the level run and the n_level pixels just inside it (texture /
         # shading indicator, and the level's extrapolation towards the limb)
-        deep_off = (n_in + 1 + s.n_level + np.arange(s.n_level)) * sign
-        deep = np.clip(k[:, None] + deep_off[None, :], 0, w - 1)
-        pd = p[rows, deep].mean(axis=1)
-        sd2 = (sp[rows, deep] ** 2).sum(axis=1) / s.n_level**2
+        deep_base = n_in + 1 + s.n_level + np.arange(s.n_level)
+        deep = np.clip(k[:, None] + deep_base[None, :] * sgn, 0, w - 1)
+        pd = p[rows2, deep].mean(axis=1)
+        sd2 = (sp[rows2, deep] ** 2).sum(axis=1) / s.n_level**2
         L_run = pl.mean(axis=1)
         sl2 = (sl**2).sum(axis=1) / s.n_level**2
         kap = s.level_slope
@@ -448,7 +456,8 @@ def measure_edges(
             grad = (pd - L_run) / s.n_level
         dist = n_in + 1 + (s.n_level - 1) / 2.0 - 0.25
         Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
-        rel = _smooth_lines(np.where(has_signal, -dist * grad / Lsafe, np.nan), s.slope_lines, s.slope_degree)
+        raw_rel = np.where(hs2, -dist * grad / Lsafe, np.nan)
+        rel = np.concatenate([_smooth_lines(raw_rel[h], s.slope_lines, s.slope_degree) for h in halves])
         # noise of the smoothed gradient (median of slope_lines lines)
         if s.n_level >= 2:
             g_var = (sl[:, -1] ** 2 + sl[:, 0] ** 2) / (s.n_level - 1) ** 2
@@ -461,10 +470,12 @@ def measure_edges(
         # correction by its noise would bias noisy edges inwards.
         rel_sig = np.sqrt(rel_var)
         rel = np.nan_to_num(rel)
-        use = has_signal & (rel_sig > 0)
-        shaded = bool(use.any()) and float(np.mean(np.abs(rel[use]) / rel_sig[use])) > s.slope_threshold
-        if not shaded:
-            rel = np.zeros_like(rel)
+        use = hs2 & (rel_sig > 0)
+        for h in halves:
+            u = use[h]
+            shaded = bool(u.any()) and float(np.mean(np.abs(rel[h][u]) / rel_sig[h][u])) > s.slope_threshold
+            if not shaded:
+                rel[h] = 0.0
         applied = rel != 0
         L = L_run * (1.0 + kap * rel)
         S = pw.sum(axis=1)
@@ -472,7 +483,7 @@ def measure_edges(
         n_win = win_off.size
         uncovered = n_win - S / Ls
         # left: the window starts at its outermost pixel a; right: ends at b
-        e = np.where(sign > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
+        e = np.where(sgn[:, 0] > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
         var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
         var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
         sig = np.sqrt(var)
@@ -481,30 +492,29 @@ def measure_edges(
         abs_lo, abs_hi = lo + c0, hi + c0
         at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
         allidx = np.concatenate([winc, levc], axis=1)
-        saturated = sat[rows, allidx].any(axis=1)
-        overlapping = other[rows, allidx].any(axis=1)
+        saturated = sat[rows2, allidx].any(axis=1)
+        overlapping = other[rows2, allidx].any(axis=1)
         # texture indicator from pixels the edge does not use (the deep run and
         # the run inside it), so that its noise is independent of the edge's:
         # a weight correlated with the edge's own error would bias the fit
-        deeper = np.clip(k[:, None] + (deep_off + s.n_level * sign)[None, :], 0, w - 1)
-        pdd = p[rows, deeper].mean(axis=1)
-        sdd2 = (sp[rows, deeper] ** 2).sum(axis=1) / s.n_level**2
+        deeper = np.clip(k[:, None] + (deep_base + s.n_level)[None, :] * sgn, 0, w - 1)
+        pdd = p[rows2, deeper].mean(axis=1)
+        sdd2 = (sp[rows2, deeper] ** 2).sum(axis=1) / s.n_level**2
         dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
         tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
         plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
-        ok = has_signal & plausible & ~at_sensor_end & ~saturated & ~overlapping
-        return e + c0, sig, ok, L, at_sensor_end & has_signal, saturated & has_signal, overlapping & has_signal, tex
+        ok = hs2 & plausible & ~at_sensor_end & ~saturated & ~overlapping
+        out = (e + c0, sig, ok, L, at_sensor_end & hs2, saturated & hs2, overlapping & hs2, tex)
+        return tuple(a[halves[0]] for a in out), tuple(a[halves[1]] for a in out)
 
-    eL, sL, okL, LL, endL, satL, ovL, tL = one_side(k_left, +1)
-    eR, sR, okR, LR, endR, satR, ovR, tR = one_side(k_right, -1)
+    (eL, sL, okL, LL, endL, satL, ovL, tL), (eR, sR, okR, LR, endR, satR, ovR, tR) = both_sides(s.n_out, s.n_in)
     # both windows and level runs must fit in the segment without crossing
     span_needed = 2 * (s.n_in + s.n_level) + 1
     long_enough = (k_right - k_left) >= span_needed
     okL &= long_enough
     okR &= long_enough
     # wide windows for lines whose edge is spread over the exposure / pixel height
-    eLw, sLw, okLw, *_ = one_side(k_left, +1, s.n_out_wide, s.n_in_wide)
-    eRw, sRw, okRw, *_ = one_side(k_right, -1, s.n_out_wide, s.n_in_wide)
+    (eLw, sLw, okLw, *_), (eRw, sRw, okRw, *_) = both_sides(s.n_out_wide, s.n_in_wide)
     long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
     okLw &= long_wide
     okRw &= long_wide
