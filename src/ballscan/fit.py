@@ -1047,6 +1047,7 @@ def fit_motion(
     # residual selection and the solver: a round's selection and its first
     # residuals are taken at the same point
     model_cache: dict = {}
+    tables = _weight_tables(edges, settings)
     fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
 
@@ -1073,7 +1074,7 @@ def fit_motion(
             if up.any():
                 ua = ua & ~up
                 pix = _pixel_spec(edges, me, up, float(theta[0]), settings.pixel_floor)
-        return _weights_masked(edges, ul, ur, ua, settings, wl, wr) + (pix,)
+        return _weights_masked(edges, ul, ur, ua, settings, wl, wr, tables) + (pix,)
 
     def solve(x_start, sel, loss, start=None):
         use_l, use_r, use_a, sl, sr, sa, ml, mr, ma, pix = sel
@@ -1398,13 +1399,31 @@ def _lag_one(r: np.ndarray) -> float:
     return float(d[:-1] @ d[1:]) / den if den > 0 else 0.0
 
 
-def _weights_masked(edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitSettings, wide_l=None, wide_r=None):
+def _weights_masked(edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitSettings, wide_l=None, wide_r=None, tables=None):
     """Measured values and 1-sigma (pixels) of the selected residuals.
 
     Returns ``(use_l, use_r, use_a, sl, sr, sa, ml, mr, ma)``: the masks, the
     sigmas and the measurements of the left edges, right edges and areas;
-    edges in ``wide_l`` / ``wide_r`` come from the wide window.
+    edges in ``wide_l`` / ``wide_r`` come from the wide window.  ``tables``
+    (from :func:`_weight_tables`, same ``edges`` and ``settings``) gives the
+    same result from per-line values computed once.
     """
+    if tables is not None:
+        T = tables
+        n = edges.lines.size
+        wl = np.zeros(n, dtype=bool) if wide_l is None or not T["has_wide"] else wide_l
+        wr = np.zeros(n, dtype=bool) if wide_r is None or not T["has_wide"] else wide_r
+        return (
+            use_l,
+            use_r,
+            use_a,
+            np.where(wl, T["sl_w"], T["sl_n"])[use_l],
+            np.where(wr, T["sr_w"], T["sr_n"])[use_r],
+            T["sa"][use_a],
+            np.where(wl, T["el_w"], T["el_n"])[use_l],
+            np.where(wr, T["er_w"], T["er_n"])[use_r],
+            T["ma"][use_a],
+        )
     n = edges.lines.size
     wide_l = np.zeros(n, dtype=bool) if wide_l is None else wide_l
     wide_r = np.zeros(n, dtype=bool) if wide_r is None else wide_r
@@ -1426,6 +1445,42 @@ def _weights_masked(edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitS
         edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2
     )
     return use_l, use_r, use_a, sl, sr, sa, el[use_l], er[use_r], ma
+
+
+def _weight_tables(edges: EdgeMeasurements, settings: FitSettings) -> dict:
+    """Per-line measurements and 1-sigma of :func:`_weights_masked`, for both windows (pixels).
+
+    The same arithmetic on every line, done once per fit; selecting from
+    these tables gives exactly :func:`_weights_masked`'s values.
+    """
+    n = edges.lines.size
+    floor2 = settings.edge_floor_px**2
+    g = settings.texture_gain
+    tl = edges.left_texture_px if edges.left_texture_px is not None else np.zeros(n)
+    tr = edges.right_texture_px if edges.right_texture_px is not None else np.zeros(n)
+    tex_l = (g * np.nan_to_num(tl)) ** 2
+    tex_r = (g * np.nan_to_num(tr)) ** 2
+    has_wide = edges.left_wide_px is not None
+    T = dict(
+        has_wide=has_wide,
+        el_n=edges.left_px,
+        er_n=edges.right_px,
+        sl_n=np.sqrt(np.nan_to_num(edges.left_sigma_px) ** 2 + floor2 + tex_l),
+        sr_n=np.sqrt(np.nan_to_num(edges.right_sigma_px) ** 2 + floor2 + tex_r),
+    )
+    if has_wide:
+        T.update(
+            el_w=edges.left_wide_px,
+            er_w=edges.right_wide_px,
+            sl_w=np.sqrt(np.nan_to_num(edges.left_wide_sigma_px) ** 2 + floor2 + tex_l),
+            sr_w=np.sqrt(np.nan_to_num(edges.right_wide_sigma_px) ** 2 + floor2 + tex_r),
+        )
+    else:
+        T.update(el_w=T["el_n"], er_w=T["er_n"], sl_w=T["sl_n"], sr_w=T["sr_n"])
+    ma = _area_levelled(edges, settings)
+    T["ma"] = ma
+    T["sa"] = np.sqrt(edges.area_sigma_px**2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2)
+    return T
 
 
 def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray:
