@@ -897,11 +897,12 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     relative ``ftol``, does not stop early along the weak ``vz`` direction.
     The Jacobian (``resid_and_jac``) is computed at the start (or taken from
     ``start = (r, J)``; ``r`` None is recomputed) and after accepted steps
-    that lowered the cost by more than ``settings.jacobian_refresh``; with
-    ``settings.broyden``, after every trial
-    step it is corrected by Broyden's rank-one update, so that a step costs
-    one model evaluation.  Returns ``(x, n_eval, status, message, cost, r,
-    J)`` with the (updated) Jacobian at ``x``.
+    that lowered the cost by more than ``settings.jacobian_refresh`` (other
+    steps are chord steps with the previous one); with ``settings.broyden``
+    it is instead corrected after every trial step by Broyden's rank-one
+    update, so that a step costs one model evaluation.  Returns ``(x,
+    n_eval, status, message, cost, r, J)`` with the last Jacobian (taken at
+    or next to ``x``).
     """
     f2 = settings.f_scale**2
     tol = settings.cost_tol
