@@ -327,3 +327,22 @@ def test_missing_dask_is_a_clear_error(tmp_path, monkeypatch):
     monkeypatch.setattr(builtins, "__import__", no_distributed)
     with pytest.raises(BallscanError, match=r"pip install 'ballscan\[dask\]'"):
         _run(_tiny(trials=1), tmp_path, scheduler="tcp://127.0.0.1:1")
+
+
+@pytest.mark.slow
+def test_fig5_and_fig8_commands(tmp_path):
+    runner = CliRunner()
+    res = runner.invoke(experiment_app, ["fig5", "--quick", "--trials", "1", "--out", str(tmp_path / "f5"), "--jobs", "2", "--no-progress"])
+    assert res.exit_code == 0, res.output
+    assert res.output.startswith("quick mode: 1 trials per point, 8 points")
+    assert (tmp_path / "f5" / "fig5-quick.png").exists()
+    res = runner.invoke(
+        experiment_app,
+        ["fig8", "--trials", "1", "--textures", "none", "--methods", "initial,fit", "--out", str(tmp_path / "f8"), "--jobs", "1", "--no-progress"],
+    )
+    assert res.exit_code == 0, res.output
+    for name in ("fig8.png", "fig8-overlays.png", "summary.md", "trials.csv"):
+        assert (tmp_path / "f8" / name).exists(), name
+    assert len(ex.read_rows(tmp_path / "f8" / "trials.csv")) == 5 * 2
+    bad = runner.invoke(experiment_app, ["fig8", "--methods", "initial,magic", "--out", str(tmp_path / "f8b")])
+    assert bad.exit_code != 0 and "--methods" in bad.output
