@@ -452,7 +452,7 @@ def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
     return _project(camera, n), J, ok, x, w, tau
 
 
-def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes):
+def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes, base=None):
     """Forward differences of the averaged model on the lines ``fd``, (n_fd, 6) each.
 
     On lines ``inside`` (the section offsets stay inside the ball: presence
@@ -462,42 +462,53 @@ def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes):
     ``t_c`` and ``vx`` columns are differenced there, the others are the
     chord's (``dl``, ``dr``).  The other lines get all six columns.  All
     parameter sets and lines go through one model call (times per set).
+    ``base = (left, right, area)`` (all lines, the model at ``theta`` with
+    ``n_nodes``) spares the base set's evaluation.
     """
     idx = np.flatnonzero(fd)
     ins = inside[idx]
     i_in, i_out = idx[ins], idx[~ins]
     n_in, n_out = i_in.size, i_out.size
-    M = 3 * n_in + 7 * n_out
+    # parameter sets (None: the base set) on the inside lines and on the others
+    cols_in = [0, 3] if base is not None else [None, 0, 3]
+    cols_out = list(range(6)) if base is not None else [None, 0, 1, 2, 3, 4, 5]
+    groups = ((cols_in, i_in), (cols_out, i_out))
+    M = len(cols_in) * n_in + len(cols_out) * n_out
     th_all = np.empty((M, 6))
     th_all[:] = theta
     t_all = np.empty(M)
-    # rows: the base set, t_c + h, vx + h on the inside lines; the base set
-    # and every parameter + h on the others
-    for k, col in enumerate((None, 0, 3)):
-        sl = slice(k * n_in, (k + 1) * n_in)
-        t_all[sl] = t[i_in]
-        if col is not None:
-            th_all[sl, col] += h[col]
-    o = 3 * n_in
-    for k in range(7):
-        sl = slice(o + k * n_out, o + (k + 1) * n_out)
-        t_all[sl] = t[i_out]
-        if k:
-            th_all[sl, k - 1] += h[k - 1]
+    o = 0
+    for cols, ii in groups:
+        for col in cols:
+            sl = slice(o, o + ii.size)
+            t_all[sl] = t[ii]
+            if col is not None:
+                th_all[sl, col] += h[col]
+            o += ii.size
     me = _edges_model(camera, th_all, R, t_all[:, None], acc, n_nodes)
     L, Rr, A = me.left_px[:, 0], me.right_px[:, 0], me.area_px[:, 0]
+    out = []
+    o = 0
+    for cols, ii in groups:
+        k = len(cols)
+        vals = [v[o : o + k * ii.size].reshape(k, ii.size) for v in (L, Rr, A)]
+        o += k * ii.size
+        if base is not None:
+            # base values from the caller's evaluation at theta (same model and nodes)
+            vals = [np.vstack([b[ii][None, :], v]) for b, v in zip(base, vals)]
+        out.append(vals)
     fl = np.empty((idx.size, 6))
     fr = np.empty((idx.size, 6))
     fa = np.empty((idx.size, 6))
     if n_in:
-        l3, r3 = L[:o].reshape(3, n_in), Rr[:o].reshape(3, n_in)
+        l3, r3, _ = out[0]
         gl, gr = dl[i_in], dr[i_in]  # copies (fancy indexing)
         hc = h[[0, 3]][:, None]
         gl[:, [0, 3]] = ((l3[1:] - l3[0]) / hc).T
         gr[:, [0, 3]] = ((r3[1:] - r3[0]) / hc).T
         fl[ins], fr[ins], fa[ins] = gl, gr, gr - gl
     if n_out:
-        l7, r7, a7 = L[o:].reshape(7, n_out), Rr[o:].reshape(7, n_out), A[o:].reshape(7, n_out)
+        l7, r7, a7 = out[1]
         fl[~ins] = ((l7[1:] - l7[0]) / h[:, None]).T
         fr[~ins] = ((r7[1:] - r7[0]) / h[:, None]).T
         fa[~ins] = ((a7[1:] - a7[0]) / h[:, None]).T
@@ -518,6 +529,7 @@ def hybrid_jacobian(
     n_nodes: int = 3,
     memo: dict | None = None,
     reuse_px: float = 0.1,
+    base: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Jacobian of the averaged model: analytic chord derivatives inside, finite differences at the ends.
 
@@ -559,6 +571,10 @@ def hybrid_jacobian(
         differences.
     reuse_px : float
         See ``memo`` (pixels).
+    base : tuple of ndarray (N,), optional
+        ``(left, right, area)`` of the averaged model at ``theta`` with
+        ``n_nodes`` nodes on every line, when the caller has them: the
+        finite differences then evaluate only the perturbed sets.
 
     Returns
     -------
@@ -599,7 +615,7 @@ def hybrid_jacobian(
                 cur[whole] = old[whole]
             return dl, dr, da
     h = rel_step * scale
-    fl, fr, fa = _fd_rows(camera, theta, R, t, fd, chord_ok & (reach < R), h, dl, dr, acceleration_mps2, n_nodes)
+    fl, fr, fa = _fd_rows(camera, theta, R, t, fd, chord_ok & (reach < R), h, dl, dr, acceleration_mps2, n_nodes, base)
     if memo is not None:
         if memo.get("n") != t.size:
             for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a"):
@@ -1096,13 +1112,17 @@ def fit_motion(
         def resid_and_jac(x):
             th, b = unpack(x)
             if settings.jacobian_reach > 0:
+                key = x.tobytes()
+                r = last["r"] if last.get("key") == key else resid_only(x)
+                base = None
+                if settings.jacobian_nodes == nn:
+                    me0 = model_at(th)
+                    base = (me0.left_px[0], me0.right_px[0], me0.area_px[0])
                 dl, dr, da = hybrid_jacobian(
                     camera, th, R, t, scale, acc, fd_lines=use_a, needed=used,
                     reach_limit=settings.jacobian_reach, rel_step=settings_rel_step, n_nodes=settings.jacobian_nodes,
-                    memo=fd_memo, reuse_px=settings.jacobian_reuse_px,
+                    memo=fd_memo, reuse_px=settings.jacobian_reuse_px, base=base,
                 )
-                key = x.tobytes()
-                r = last["r"] if last.get("key") == key else resid_only(x)
                 h = settings_rel_step * scale
                 pr = pixel_res(np.vstack([th, th + np.diag(h)])) if pix is not None else np.zeros((7, 0))
             else:
