@@ -303,12 +303,12 @@ def test_factor_application():
 
 # --------------------------------------------------------------------------- Dask
 @pytest.mark.slow
-
-def test_dask_local_cluster_equals_local_run(tmp_path):
+@pytest.mark.parametrize("processes", [False, True], ids=["threads", "processes"])
+def test_dask_local_cluster_equals_local_run(tmp_path, processes):
     distributed = pytest.importorskip("distributed")
     cfg = _tiny()
     local = _run(cfg, tmp_path / "local", jobs=1)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=processes, dashboard_address=None) as cluster:
         remote = _run(cfg, tmp_path / "dask", scheduler=cluster.scheduler_address)
     assert remote.n_new_trials == local.n_new_trials
     assert _comparable(remote) == _comparable(local)
