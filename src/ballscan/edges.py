@@ -418,103 +418,115 @@ def measure_edges(
             if p_in > 0 and sig_in > sig_bg:
                 sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(p / p_in, 0.0, 2.0))
 
-    # Both sides at once: rows 0..n-1 are the left edges (windows pointing
-    # inwards with sign +1), rows n..2n-1 the right edges (sign -1).
-    k_both = np.concatenate([k_left, k_right])
-    sgn = np.concatenate([np.ones(n, dtype=int), -np.ones(n, dtype=int)])[:, None]
-    rows2 = np.concatenate([rows, rows])
-    hs2 = np.concatenate([has_signal, has_signal])
-    halves = (slice(0, n), slice(n, 2 * n))
-
-    def both_sides(n_out: int, n_in: int):
-        k = k_both
-        # window and level pixel offsets relative to k, pointing inwards with the sign
-        win_off = np.arange(-(n_out + 1), n_in + 1)
-        win = k[:, None] + win_off[None, :] * sgn
-        lev = k[:, None] + (n_in + 1 + np.arange(s.n_level))[None, :] * sgn
-        inside_box = (win.min(1) >= 0) & (win.max(1) < w) & (lev.min(1) >= 0) & (lev.max(1) < w)
-        winc = np.clip(win, 0, w - 1)
-        levc = np.clip(lev, 0, w - 1)
-        pw, pl = p[rows2, winc], p[rows2, levc]
-        sw, sl = sp[rows2, winc], sp[rows2, levc]
-        # the level run and the n_level pixels just inside it (texture /
-        # shading indicator, and the level's extrapolation towards the limb)
-        deep_base = n_in + 1 + s.n_level + np.arange(s.n_level)
-        deep = np.clip(k[:, None] + deep_base[None, :] * sgn, 0, w - 1)
-        pd = p[rows2, deep].mean(axis=1)
-        sd2 = (sp[rows2, deep] ** 2).sum(axis=1) / s.n_level**2
-        L_run = pl.mean(axis=1)
-        sl2 = (sl**2).sum(axis=1) / s.n_level**2
-        kap = s.level_slope
-        # relative level gradient, median-filtered along the lines (shading is
-        # smooth from line to line, felt texture and noise are not):
-        # gradient per pixel across the level run (inwards positive), towards
-        # the covered part of the edge pixel (about `dist` pixels outwards)
-        if s.n_level >= 2:
-            grad = (pl[:, -1] - pl[:, 0]) / (s.n_level - 1)
-        else:
-            grad = (pd - L_run) / s.n_level
-        dist = n_in + 1 + (s.n_level - 1) / 2.0 - 0.25
-        Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
-        raw_rel = np.where(hs2, -dist * grad / Lsafe, np.nan)
-        rel = np.concatenate([_smooth_lines(raw_rel[h], s.slope_lines, s.slope_degree) for h in halves])
-        # noise of the smoothed gradient (median of slope_lines lines)
-        if s.n_level >= 2:
-            g_var = (sl[:, -1] ** 2 + sl[:, 0] ** 2) / (s.n_level - 1) ** 2
-        else:
-            g_var = (sd2 + sl2) / s.n_level**2
-        rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(s.slope_lines, 1)
-        # Only a side whose gradient stands out of its noise is corrected (an
-        # unshaded ball keeps the plain level and its noise).  The decision
-        # is taken once per side, not per line: shrinking each line's
-        # correction by its noise would bias noisy edges inwards.
-        rel_sig = np.sqrt(rel_var)
-        rel = np.nan_to_num(rel)
-        use = hs2 & (rel_sig > 0)
-        for h in halves:
-            u = use[h]
-            shaded = bool(u.any()) and float(np.mean(np.abs(rel[h][u]) / rel_sig[h][u])) > s.slope_threshold
-            if not shaded:
-                rel[h] = 0.0
-        applied = rel != 0
-        L = L_run * (1.0 + kap * rel)
-        S = pw.sum(axis=1)
-        Ls = np.where(L > 0, L, 1.0)
-        n_win = win_off.size
-        uncovered = n_win - S / Ls
-        # left: the window starts at its outermost pixel a; right: ends at b
-        e = np.where(sgn[:, 0] > 0, np.minimum(win[:, 0], win[:, -1]) - 0.5 + uncovered, np.maximum(win[:, 0], win[:, -1]) + 0.5 - uncovered)
-        var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
-        var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
-        sig = np.sqrt(var)
-        lo = np.minimum(win.min(1), lev.min(1))
-        hi = np.maximum(win.max(1), lev.max(1))
-        abs_lo, abs_hi = lo + c0, hi + c0
-        at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
-        allidx = np.concatenate([winc, levc], axis=1)
-        saturated = sat[rows2, allidx].any(axis=1)
-        overlapping = other[rows2, allidx].any(axis=1)
-        # texture indicator from pixels the edge does not use (the deep run and
-        # the run inside it), so that its noise is independent of the edge's:
-        # a weight correlated with the edge's own error would bias the fit
-        deeper = np.clip(k[:, None] + (deep_base + s.n_level)[None, :] * sgn, 0, w - 1)
-        pdd = p[rows2, deeper].mean(axis=1)
-        sdd2 = (sp[rows2, deeper] ** 2).sum(axis=1) / s.n_level**2
-        dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
-        tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
-        plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
-        ok = hs2 & plausible & ~at_sensor_end & ~saturated & ~overlapping
-        out = (e + c0, sig, ok, L, at_sensor_end & hs2, saturated & hs2, overlapping & hs2, tex)
-        return tuple(a[halves[0]] for a in out), tuple(a[halves[1]] for a in out)
-
-    (eL, sL, okL, LL, endL, satL, ovL, tL), (eR, sR, okR, LR, endR, satR, ovR, tR) = both_sides(s.n_out, s.n_in)
+    # Every edge estimate at once: for each window (narrow, then wide) the
+    # left edges (windows pointing inwards with sign +1), then the right
+    # edges (sign -1), n rows each.  Windows shorter than the longest are
+    # padded with their last pixel, masked out of the sums.
+    variants = ((s.n_out, s.n_in), (s.n_out_wide, s.n_in_wide))
+    nv = 2 * len(variants)
+    quarters = tuple(slice(q * n, (q + 1) * n) for q in range(nv))
+    k = np.tile(np.concatenate([k_left, k_right]), len(variants))
+    sgn = np.tile(np.concatenate([np.ones(n, dtype=int), -np.ones(n, dtype=int)]), len(variants))[:, None]
+    rows4 = np.tile(rows[:, 0], nv)[:, None]
+    hs4 = np.tile(has_signal, nv)
+    n_len = max(n_out + n_in + 2 for n_out, n_in in variants)
+    off_rows, mask_rows, nin_rows = [], [], []
+    for n_out, n_in in variants:
+        off = np.arange(-(n_out + 1), n_in + 1)
+        padded = np.concatenate([off, np.full(n_len - off.size, off[-1])])
+        off_rows.append(np.broadcast_to(padded, (2 * n, n_len)))
+        mask_rows.append(np.broadcast_to(np.arange(n_len) < off.size, (2 * n, n_len)))
+        nin_rows.append(np.full(2 * n, n_in))
+    win_off = np.concatenate(off_rows)  # (4n, n_len)
+    win_mask = np.concatenate(mask_rows)
+    n_in_r = np.concatenate(nin_rows)[:, None]  # (4n, 1)
+    n_win = win_mask.sum(axis=1)
+    win = k[:, None] + win_off * sgn
+    win_first = k + win_off[:, 0] * sgn[:, 0]
+    win_last = k + (n_in_r[:, 0]) * sgn[:, 0]
+    lev = k[:, None] + (n_in_r + 1 + np.arange(s.n_level)[None, :]) * sgn
+    inside_box = (win.min(1) >= 0) & (win.max(1) < w) & (lev.min(1) >= 0) & (lev.max(1) < w)
+    winc = np.clip(win, 0, w - 1)
+    levc = np.clip(lev, 0, w - 1)
+    pw = np.where(win_mask, p[rows4, winc], 0.0)
+    sw = np.where(win_mask, sp[rows4, winc], 0.0)
+    pl, sl = p[rows4, levc], sp[rows4, levc]
+    # the level run and the n_level pixels just inside it (texture /
+    # shading indicator, and the level's extrapolation towards the limb)
+    deep_base = n_in_r + 1 + s.n_level + np.arange(s.n_level)[None, :]
+    deep = np.clip(k[:, None] + deep_base * sgn, 0, w - 1)
+    pd = p[rows4, deep].mean(axis=1)
+    sd2 = (sp[rows4, deep] ** 2).sum(axis=1) / s.n_level**2
+    L_run = pl.mean(axis=1)
+    sl2 = (sl**2).sum(axis=1) / s.n_level**2
+    kap = s.level_slope
+    # relative level gradient, median-filtered along the lines (shading is
+    # smooth from line to line, felt texture and noise are not):
+    # gradient per pixel across the level run (inwards positive), towards
+    # the covered part of the edge pixel (about `dist` pixels outwards)
+    if s.n_level >= 2:
+        grad = (pl[:, -1] - pl[:, 0]) / (s.n_level - 1)
+    else:
+        grad = (pd - L_run) / s.n_level
+    dist = n_in_r[:, 0] + 1 + (s.n_level - 1) / 2.0 - 0.25
+    Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
+    raw_rel = np.where(hs4, -dist * grad / Lsafe, np.nan)
+    rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
+    # noise of the smoothed gradient (median of slope_lines lines)
+    if s.n_level >= 2:
+        g_var = (sl[:, -1] ** 2 + sl[:, 0] ** 2) / (s.n_level - 1) ** 2
+    else:
+        g_var = (sd2 + sl2) / s.n_level**2
+    rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(s.slope_lines, 1)
+    # Only a side whose gradient stands out of its noise is corrected (an
+    # unshaded ball keeps the plain level and its noise).  The decision
+    # is taken once per side (and window), not per line: shrinking each
+    # line's correction by its noise would bias noisy edges inwards.
+    rel_sig = np.sqrt(rel_var)
+    rel = np.nan_to_num(rel)
+    use = hs4 & (rel_sig > 0)
+    for q in quarters:
+        u = use[q]
+        shaded = bool(u.any()) and float(np.mean(np.abs(rel[q][u]) / rel_sig[q][u])) > s.slope_threshold
+        if not shaded:
+            rel[q] = 0.0
+    applied = rel != 0
+    L = L_run * (1.0 + kap * rel)
+    S = pw.sum(axis=1)
+    Ls = np.where(L > 0, L, 1.0)
+    uncovered = n_win - S / Ls
+    # left: the window starts at its outermost pixel a; right: ends at b
+    e = np.where(sgn[:, 0] > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
+    var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
+    var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
+    sig = np.sqrt(var)
+    lo = np.minimum(win.min(1), lev.min(1))
+    hi = np.maximum(win.max(1), lev.max(1))
+    abs_lo, abs_hi = lo + c0, hi + c0
+    at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
+    allidx = np.concatenate([winc, levc], axis=1)
+    saturated = sat[rows4, allidx].any(axis=1)
+    overlapping = other[rows4, allidx].any(axis=1)
+    # texture indicator from pixels the edge does not use (the deep run and
+    # the run inside it), so that its noise is independent of the edge's:
+    # a weight correlated with the edge's own error would bias the fit
+    deeper = np.clip(k[:, None] + (deep_base + s.n_level) * sgn, 0, w - 1)
+    pdd = p[rows4, deeper].mean(axis=1)
+    sdd2 = (sp[rows4, deeper] ** 2).sum(axis=1) / s.n_level**2
+    dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
+    tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
+    plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
+    ok_all = hs4 & plausible & ~at_sensor_end & ~saturated & ~overlapping
+    res = (e + c0, sig, ok_all, L, at_sensor_end & hs4, saturated & hs4, overlapping & hs4, tex)
+    (eL, sL, okL, LL, endL, satL, ovL, tL), (eR, sR, okR, LR, endR, satR, ovR, tR), (eLw, sLw, okLw, *_), (eRw, sRw, okRw, *_) = (
+        tuple(a[q] for a in res) for q in quarters
+    )
     # both windows and level runs must fit in the segment without crossing
     span_needed = 2 * (s.n_in + s.n_level) + 1
     long_enough = (k_right - k_left) >= span_needed
     okL &= long_enough
     okR &= long_enough
     # wide windows for lines whose edge is spread over the exposure / pixel height
-    (eLw, sLw, okLw, *_), (eRw, sRw, okRw, *_) = both_sides(s.n_out_wide, s.n_in_wide)
     long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
     okLw &= long_wide
     okRw &= long_wide
