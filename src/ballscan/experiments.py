@@ -1287,8 +1287,10 @@ def plot_sweeps(res: ExperimentResult, path: str | Path | None = None, axes=None
                 ax.errorbar(xs[ok], med[ok], yerr=yerr, color=_COLOURS[m], marker="o", ms=3.5, lw=1.2, capsize=2, label=_LABELS[m])
                 for x, s in zip(xs, st):
                     if s.n_failed:
-                        ax.annotate(f"{s.n_failed}/{s.n} failed", (x, 1.0), xycoords=("data", "axes fraction"), fontsize=6,
-                                    color=_COLOURS[m], ha="center", va="top", rotation=90)
+                        # one line per method near the top, so that several methods' notes do not overlap
+                        y = 0.97 - 0.07 * METHODS.index(m)
+                        ax.annotate(f"{m}: {s.n_failed}/{s.n} failed", (x, y), xycoords=("data", "axes fraction"), fontsize=6,
+                                    color=_COLOURS[m], ha="left", va="top")
             if cfg.bound:
                 yb = np.array([bmap[(sw.factor, float(x))].median_abs_rel if (sw.factor, float(x)) in bmap else np.nan for x in xs])
                 ax.plot(xs, yb, "k--", lw=1.0, label="Cramér–Rao (0.67 sigma)")
