@@ -278,6 +278,16 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     return out
 
 
+def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
+    """``np.median`` of ``values`` repeated ``counts`` times (counts >= 0, total > 0)."""
+    order = np.argsort(values, kind="stable")
+    v, c = values[order], np.cumsum(counts[order])
+    m = int(c[-1])
+    lo = v[np.searchsorted(c, (m - 1) // 2, side="right")]
+    hi = v[np.searchsorted(c, m // 2, side="right")]
+    return float(lo) if m % 2 else float((lo + hi) / 2.0)
+
+
 def _running_median(x: np.ndarray, n: int) -> np.ndarray:
     """Median of ``x`` over a centred window of ``n`` entries, ignoring NaN (NaN where all are)."""
     if n <= 1 or x.size == 0:
@@ -414,7 +424,12 @@ def measure_edges(
             vals = d2[both]
             sig_in = 1.4826 * float(np.median(np.abs(vals - np.median(vals)))) / math.sqrt(6.0)
             p_in = float(np.median(p[both]))
-            sig_bg = float(np.median(sp[both]))
+            if sd.strides[0] == 0:
+                # every line has the same per-column noise: the median over
+                # the pixels is a median of the columns weighted by their counts
+                sig_bg = _weighted_median(sp[0], both.sum(axis=0))
+            else:
+                sig_bg = float(np.median(sp[both]))
             if p_in > 0 and sig_in > sig_bg:
                 sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(p / p_in, 0.0, 2.0))
 
