@@ -502,8 +502,10 @@ def load_camera(path: str | Path) -> LineScanCamera:
         text = path.read_bytes().decode("utf-8")
     except FileNotFoundError:
         raise CameraFileError(str(path), "file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CameraFileError(str(path), f"cannot read ({exc.__class__.__name__})") from None
+    except UnicodeDecodeError:
+        raise CameraFileError(str(path), "not a TOML text file (not UTF-8 text)") from None
+    except OSError as exc:
+        raise CameraFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
     try:
         d = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
