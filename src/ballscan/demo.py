@@ -42,6 +42,16 @@ def run_demo(out_dir: Path, preset: str = "tennis-serve") -> list[str]:
                 f"{method:5s}: speed {b.speed_mps:.4f}{sig} m/s (error {err:+.3f} %), initial guess {ini:.4f} m/s, "
                 f"{b.run_time_s * 1e3:.1f} ms, flags {list(b.flags)}; overlay {plot}"
             )
+            if b.velocity_mps is not None:
+                comp = ", ".join(
+                    f"{v:.3f}" + (f" ± {s:.3f}" if b.velocity_sigma_mps is not None else "")
+                    for v, s in zip(b.velocity_mps, b.velocity_sigma_mps or (0.0, 0.0, 0.0))
+                )
+                said.append(f"       velocity ({comp}) m/s")
         if not report.balls:
             said.append(f"{method:5s}: no ball found")
+    said.append(
+        "V.z (along the optical axis) is one line-scan camera's weak axis: it is seen only through the slow "
+        "change of the ball's apparent size, and shading or texture on the limb bias it; its 1-sigma says how far to trust it."
+    )
     return said
