@@ -21,10 +21,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from .camera import LineScanCamera, line_times
-from .detection import BallRegion, Detection, detect, region_background
+from .detection import BallRegion, Detection, background_at, detect, region_background
+from .edges import measure_edges
+from .errors import ImageFileError
+from .fit import fit_motion, propagate
 from .images import LineImage
 from .initial import InitialGuess, find_keypoints, initial_guess
 from .motion import BallMotion
+from .paper import refine_paper
 from .results import BallEstimate, EstimateReport
 
 __all__ = ["METHODS", "NormalisedBox", "normalised_box", "estimate_image", "estimate_region"]
@@ -150,8 +154,6 @@ def estimate_region(
     t_init = time.perf_counter() - t0
 
     if method == "paper":
-        from .paper import refine_paper
-
         res = refine_paper(camera, ig.motion, box.data, box.line_offset, box.col_offset, t_lines_s)
         if not res.converged:
             flags.append("not_converged")
@@ -172,9 +174,6 @@ def estimate_region(
                 "time_refine_s": res.run_time_s,
             },
         )
-
-    from .edges import measure_edges
-    from .fit import fit_motion, propagate
 
     t_e = time.perf_counter()
     others = [r for r in detection.regions if r.index != region.index]
@@ -248,8 +247,6 @@ def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
 
 def _full_background(detection: Detection) -> np.ndarray:
     n, w = detection.shape
-    from .detection import background_at
-
     return background_at(detection, slice(0, n), slice(0, w))
 
 
@@ -291,8 +288,6 @@ def estimate_image(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     n_lines, width = image.data.shape
     if width != camera.width:
-        from .errors import ImageFileError
-
         raise ImageFileError(image.source, f"has {width} pixels per line but the camera file says width = {camera.width}")
     if timestamps_s is not None and camera.exposure_s is None:
         # geometry.md: with per-line timestamps the exposure defaults to the median line period
