@@ -43,7 +43,7 @@ import math
 
 import numpy as np
 
-__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "measure_detection"]
+__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges"]
 
 
 @dataclass(frozen=True)
@@ -601,33 +601,3 @@ def measure_edges(
         profile_col0=int(c0),
     )
 
-
-def measure_detection(image: Any, detection: Any, t_lines_s: np.ndarray, settings: EdgeSettings = EdgeSettings()) -> tuple[EdgeMeasurements, ...]:
-    """:func:`measure_edges` for every region of a detection.
-
-    Parameters
-    ----------
-    image : LineImage
-        ``data`` (DN) and ``saturation_dn``.
-    detection : Detection
-        ``background_dn``, ``noise_dn`` and ``regions``.
-    t_lines_s : ndarray
-        Centre time of each image line, seconds.
-    """
-    regions = tuple(detection.regions)
-    out = []
-    for r in regions:
-        others = [o for o in regions if o is not r]
-        out.append(
-            measure_edges(
-                image.data,
-                r,
-                detection.background_dn,
-                detection.noise_dn,
-                t_lines_s,
-                saturation_dn=getattr(image, "saturation_dn", None),
-                others=others,
-                settings=settings,
-            )
-        )
-    return tuple(out)
