@@ -113,3 +113,32 @@ def test_world_frame_values_with_a_pose():
     # camera x (the crossing direction) is world Z here
     assert w["velocity_mps"][2] == pytest.approx(ball.velocity_mps[0])
     assert len(w["velocity_sigma_mps"]) == 3
+
+
+def test_json_of_a_degenerate_fit_is_valid_json():
+    """A ball cut by the sensor end whose fit does not converge still gives strict JSON (NaN -> null)."""
+    import json as _json
+
+    from ballscan.results import BallEstimate, EstimateReport
+
+    est = BallEstimate(
+        method="fit", radius_m=0.0335, t_c_s=0.001, position_m=(0, 0.1, 3.0), velocity_mps=(30.0, 0.0, 0.0),
+        speed_sigma_mps=float("nan"), velocity_sigma_mps=(0.1, float("nan"), float("inf")),
+        flags=("cut_sensor_end", "not_converged"),
+        extra={"position_cov_m2": np.full((3, 3), np.nan), "direction_sigma_deg": np.array([np.nan, 1.0])},
+    )
+    doc = _json.loads(EstimateReport("x.png", (est,)).to_json(CAM))
+    ball = doc["balls"][0]
+    assert ball["speed_sigma_mps"] is None and ball["velocity_sigma_mps"] == [0.1, None, None]
+    assert ball["position_cov_m2"][0] == [None, None, None] and ball["direction_sigma_deg"] == [None, 1.0]
+
+
+def test_cut_sensor_end_ball_through_the_json_path():
+    m = BallMotion(0.0335, 0.003, (0, 1.0, 3.0), (30.0, 1.0, -0.5))  # centre 24 px inside the last pixel
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
+    r = render(cam, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=3)
+    rep = estimate_image(_img(r.image), cam, 0.0335, method="fit")
+    import json as _json
+
+    doc = _json.loads(rep.to_json(cam))
+    assert len(doc["balls"]) == 1 and "cut_sensor_end" in doc["balls"][0]["flags"]

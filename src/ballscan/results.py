@@ -167,8 +167,9 @@ class BallEstimate:
         if self.initial is not None:
             d["initial"] = self.initial.to_dict(camera)
         for k, v in self.extra.items():
-            d.setdefault(k, _jsonable(v))
-        return d
+            d.setdefault(k, v)
+        # NaN (a sigma of a parameter the fit could not determine) is not JSON: null
+        return _jsonable(d)
 
     def _world(self, camera: LineScanCamera) -> dict[str, Any]:
         w: dict[str, Any] = {}
@@ -205,17 +206,18 @@ class EstimateReport:
         return json.dumps(self.to_dict(camera), indent=2, allow_nan=False)
 
 
-def _list(v) -> list[float] | None:
+def _list(v) -> list[float | None] | None:
     if v is None:
         return None
-    return [float(x) for x in np.asarray(v, dtype=float).reshape(-1)]
+    return [float(x) if math.isfinite(x) else None for x in np.asarray(v, dtype=float).reshape(-1)]
 
 
 def _jsonable(v: Any) -> Any:
+    """JSON-ready value: arrays to lists, numpy scalars to Python, NaN/inf to null."""
     if isinstance(v, np.ndarray):
-        return v.tolist()
+        return _jsonable(v.tolist())
     if isinstance(v, (np.floating, np.integer)):
-        return v.item()
+        return _jsonable(v.item())
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, dict):
