@@ -142,3 +142,14 @@ def test_cut_sensor_end_ball_through_the_json_path():
 
     doc = _json.loads(rep.to_json(cam))
     assert len(doc["balls"]) == 1 and "cut_sensor_end" in doc["balls"][0]["flags"]
+
+
+def test_timestamps_slower_than_the_nominal_line_rate():
+    """Encoder lines at half the nominal rate, no exposure in the camera file: geometry.md's default applies."""
+    m = BallMotion(0.0335, 0.003, (0, 0.02, 3.0), (15.0, 0.0, 0.0))
+    period = 2.0 / CAM.line_rate_hz
+    ts = np.arange(150) * period
+    cam_slow = LineScanCamera(2048, 3000.0, 1023.5, 1.0 / period)
+    r = render(cam_slow, (m, Appearance.flat(0.8)), 150, noise=SensorNoise(), seed=2, t_lines_s=ts)
+    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, timestamps_s=ts).balls
+    assert abs(ball.speed_mps - 15.0) / 15.0 < 0.01

@@ -361,8 +361,10 @@ def line_times(camera: LineScanCamera, n_lines: int, timestamps_s: np.ndarray | 
         raise ValueError(f"timestamps: expected {n_lines} values (one per line), got {ts.size}")
     if not np.all(np.isfinite(ts)):
         raise ValueError("timestamps: not all finite")
-    if np.any(np.diff(ts) <= 0):
-        raise ValueError("timestamps: not strictly increasing")
+    bad = np.flatnonzero(np.diff(ts) <= 0)
+    if bad.size:
+        k = int(bad[0])
+        raise ValueError(f"timestamps: not strictly increasing (line {k + 1}: {float(ts[k + 1])!r} s after {float(ts[k])!r} s)")
     return ts
 
 

@@ -289,12 +289,15 @@ def estimate_image(
     n_lines, width = image.data.shape
     if width != camera.width:
         raise ImageFileError(image.source, f"has {width} pixels per line but the camera file says width = {camera.width}")
-    if timestamps_s is not None and camera.exposure_s is None:
-        # geometry.md: with per-line timestamps the exposure defaults to the median line period
+    t = line_times(camera, n_lines, timestamps_s)
+    if timestamps_s is not None and camera.exposure_s is None and n_lines > 1:
+        # geometry.md: with per-line timestamps the exposure defaults to the
+        # median line period; that period, not the file's nominal line rate,
+        # is then the camera's actual rate (encoder-triggered lines)
         from dataclasses import replace
 
-        camera = replace(camera, exposure_s=float(np.median(np.diff(timestamps_s))))
-    t = line_times(camera, n_lines, timestamps_s)
+        period = float(np.median(np.diff(t)))
+        camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image, background_dn=background_dn, noise_dn=noise_dn)
     bg = _full_background(det) if method == "fit" and det.regions else None
     balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg) for r in det.regions]

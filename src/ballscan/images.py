@@ -395,6 +395,6 @@ def load_timestamps(path: str | os.PathLike[str], n_lines: int) -> np.ndarray:
     if bad.size:
         i = int(bad[0])
         raise ImageFileError(
-            src, f"timestamps must be strictly increasing: line {i + 1} ({t[i + 1]!r}) <= line {i} ({t[i]!r})"
+            src, f"timestamps must be strictly increasing: line {i + 1} ({float(t[i + 1])!r} s) <= line {i} ({float(t[i])!r} s)"
         )
     return t
