@@ -144,3 +144,11 @@ def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):
 def test_experiment_commands_are_registered(capsys):
     code, out, _ = run(capsys, "experiment", "--help")
     assert code == 0 and "fig5" in out and "fig8" in out and "custom" in out
+
+
+def test_simulate_refuses_a_ball_behind_the_camera(tmp_path, capsys):
+    cam = DATA / "scenes" / "pub_tennis_serve.camera.toml"
+    code, _, err = run(capsys, "simulate", "--camera", cam, "--radius", "0.0335", "--position", "0,0.01,-3.0",
+                       "--velocity", "30,1,-0.5", "--t-c", "0.001", "--lines", "100", "--out", tmp_path / "b")
+    assert code != 0 and "in front of the camera" in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "b.png").exists()

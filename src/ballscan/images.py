@@ -179,8 +179,13 @@ def _read_png(path: Path, raw: bytes, src: str, max_pixels: int) -> tuple[np.nda
 # TIFF
 # --------------------------------------------------------------------------
 def _read_tiff(path: Path, size: int, src: str, max_pixels: int) -> tuple[np.ndarray, int]:
+    import logging
+
     import tifffile
 
+    tiff_log = logging.getLogger("tifffile")
+    level = tiff_log.level
+    tiff_log.setLevel(logging.CRITICAL)  # its notes on odd tags would break the one-line contract
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # tifffile logs/warns on odd tags; errors are ours
@@ -220,6 +225,8 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int) -> tuple[np.nda
         raise
     except Exception as exc:
         raise ImageFileError(src, f"cannot read TIFF ({_one_line(exc)})") from None
+    finally:
+        tiff_log.setLevel(level)
     arr = np.asarray(arr)
     # Bring a samples axis (RGB / planar) to the end, refuse any other extra axis.
     if "S" in axes and arr.ndim == len(axes):

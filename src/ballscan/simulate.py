@@ -91,6 +91,12 @@ def run_simulation(req: SimulationRequest) -> list[Path]:
         changes["ball_level"] = req.ball_level
     app = replace(app, **changes)
     balls = [(motion, app)] + [(parse_ball_spec(s), app) for s in req.extra_balls]
+    for k, (b, _) in enumerate(balls):
+        # a ball that reaches the plane z = 0 is behind or beside the camera:
+        # nothing of it would image, and an empty picture must not pass for a scene
+        if not b.position_m[2] > b.radius_m:
+            what = "--position" if k == 0 else f"--add-ball {k}"
+            raise ValueError(f"{what}: the ball's centre must be in front of the camera by more than its radius (z = {b.position_m[2]!r} m)")
     if req.noise == "none":
         noise = SensorNoise.none(req.bits or 16)
     elif req.noise == "default":
