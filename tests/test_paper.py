@@ -40,31 +40,65 @@ CASES = {
 }
 
 
+_KEYS = [(name, dark) for name in CASES for dark in (False, True)]
+
+
+@pytest.fixture(scope="module")
+def paper_results():
+    """The paper method on every flat case, bright and dark ball (rendered once)."""
+    out = {}
+    for name, dark in _KEYS:
+        cam, m, n_lines, _ = CASES[name]
+        app = Appearance(ball_level=0.05 if dark else 0.8, shading=False)
+        (ball,) = estimate_image(_image(cam, m, n_lines, app, 0.6 if dark else 0.1), cam, m.radius_m, method="paper").balls
+        out[name, dark] = ball
+    return out
+
+
+def _speed_err_pct(ball, m):
+    return abs(ball.speed_mps - m.speed_mps) / m.speed_mps * 100
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("name", list(CASES))
-@pytest.mark.parametrize("dark", [False, True], ids=["bright-ball", "dark-ball"])
-def test_refinement_beats_initial_guess(name, dark):
+@pytest.mark.parametrize(("name", "dark"), _KEYS, ids=[f"{n}-{'dark' if d else 'bright'}" for n, d in _KEYS])
+def test_refinement_beats_initial_guess(paper_results, name, dark):
     """The refinement removes the key points' line-counting bias on V.x (paper Fig. 5).
 
-    The speed itself is asserted against a per-case tolerance only: the
-    gradient energy is nearly flat along V.z (the depth axis, seen only
-    through the slow change of apparent size), and Powell's line searches
-    move along it by metres per second on noisy images (measured: up to
-    +5.6 m/s on the 30-degree dark-ball case).
+    Per case the speed is held to a tolerance; that the refined speed is
+    closer to the truth than the initial guess is asserted over the set
+    (next test): the gradient energy is nearly flat along V.z (the depth
+    axis, seen only through the slow change of apparent size), and Powell's
+    line searches move along it by metres per second on noisy images
+    (measured: +5.6 m/s on the 30-degree dark-ball case).
     """
     cam, m, n_lines, tol_pct = CASES[name]
-    app = Appearance(ball_level=0.05 if dark else 0.8, shading=False)
-    img = _image(cam, m, n_lines, app, 0.6 if dark else 0.1)
-    (ball,) = estimate_image(img, cam, m.radius_m, method="paper").balls
+    ball = paper_results[name, dark]
     vx_err = abs(ball.velocity_mps[0] - m.velocity_mps[0])
     vx_err0 = abs(ball.initial.velocity_mps[0] - m.velocity_mps[0])
     assert vx_err < vx_err0, f"refined V.x error {vx_err:.4f} not below initial {vx_err0:.4f} m/s"
     assert vx_err / m.velocity_mps[0] < 0.005
-    err = abs(ball.speed_mps - m.speed_mps) / m.speed_mps * 100
-    assert err < tol_pct
+    assert _speed_err_pct(ball, m) < tol_pct
     assert ball.method == "paper" and ball.extra["evaluations"] > 10
     assert abs(ball.t_c_s - m.t_c_s) < 0.5 / cam.line_rate_hz
     assert ball.extra["energy"] < ball.extra["initial_energy"]
+
+
+@pytest.mark.slow
+def test_refined_speed_closer_to_truth_than_initial_guess(paper_results):
+    """Paper Fig. 5 on untextured balls: the refined speed beats the initial guess.
+
+    Measured: better in 7 of the 8 cases (the exception is the 30-degree
+    dark ball, 0.59 % -> 1.52 %, through V.z); the median error falls from
+    0.83 % to 0.06 %.
+    """
+    pairs = [
+        (_speed_err_pct(paper_results[key], CASES[key[0]][1]), _speed_err_pct(paper_results[key].initial, CASES[key[0]][1]))
+        for key in _KEYS
+    ]
+    better = sum(r < i for r, i in pairs)
+    assert better >= 7, pairs
+    refined, initial = np.median([r for r, _ in pairs]), np.median([i for _, i in pairs])
+    assert refined < 0.25 * initial
 
 
 @pytest.mark.slow
