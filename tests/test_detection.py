@@ -267,18 +267,3 @@ def test_separable_closing_equals_the_2d_structuring_element():
         st = np.ones((2 * r + 1, 2 * r + 1), bool)
         ref = ndi.binary_erosion(ndi.binary_dilation(p, st), st)[r + 1 : -(r + 1), r + 1 : -(r + 1)]
         assert np.array_equal(_close(m, r), ref)
-
-
-def test_known_background_gives_the_same_regions():
-    img, _ = _disc((150, 400), (75, 200), (50, 30), 150.0)
-    image = _image(_noisy(img, 1.5, 7))
-    own = detect(image)
-    given = detect(image, background_dn=own.background_dn, noise_dn=own.noise_dn)
-    assert len(given.regions) == len(own.regions) == 1
-    a, b = own.regions[0], given.regions[0]
-    assert (a.line_start, a.line_stop, a.col_start, a.col_stop) == (b.line_start, b.line_stop, b.col_start, b.col_stop)
-    assert abs(a.contrast_dn - b.contrast_dn) < 1.0
-    with pytest.raises(ValueError, match="both"):
-        detect(image, background_dn=own.background_dn)
-    with pytest.raises(ValueError, match="one per column"):
-        detect(image, background_dn=own.background_dn[:10], noise_dn=own.noise_dn[:10])

@@ -37,17 +37,3 @@ def test_invalid_motion(kw, match):
     base.update(kw)
     with pytest.raises(ValueError, match=match):
         BallMotion(**base)
-
-
-def test_time_window_covers_crossing():
-    m = BallMotion(0.03, 1.0, (0, 0, 3), (-10.0, 0, 0))
-    a, b = m.time_window()
-    assert a == pytest.approx(1.0 - 0.003) and b == pytest.approx(1.0 + 0.003)
-
-
-def test_time_window_with_acceleration_is_exact():
-    m = BallMotion(0.05, 0.0, (0, 0, 3), (2.0, 0, 0), (-3.0, 0.0, 0.0))
-    a, b = m.time_window()
-    for t in (a, b):
-        assert abs(m.centre(np.array([t]))[0, 0]) == pytest.approx(0.05, abs=1e-12)
-    assert a < 0 < b

@@ -532,10 +532,8 @@ def test_watch_ctrl_c_ends_the_stream_and_measures_the_ball_in_view(tmp_path, mo
 
 def test_balls_side_by_side_in_time_and_16_bit_raw(tmp_path):
     """Two balls crossing together (opposite halves of the sensor), 12-bit data in uint16 lines."""
-    from ballscan.stream_cli import simulate_stream as simulate_cli
-
     noise = SensorNoise(bits=12, white_dn=0.9 * 4095, black_dn=24.0, read_dn=6.0)
-    sim = simulate_cli(tmp_path / "s16.raw", CAM, 8000, 6, seed=5, side_by_side=2, noise=noise)
+    sim = simulate_stream(tmp_path / "s16.raw", CAM, 8000, 6, seed=5, side_by_side=2, noise=noise)
     assert sim.dtype == "uint16" and sim.raw.stat().st_size == 8000 * 512 * 2
     res = list(process_stream(RawLineSource(sim.raw, 512, "uint16", chunk_lines=300), CAM, RADIUS))
     pairs = match(res, load_truth_lines(sim.truth_path), CAM.line_rate_hz)

@@ -55,7 +55,8 @@ def simulate(
     from .simulate import SimulationRequest, run_simulation
 
     if stream is not None:
-        from .stream_cli import simulate_stream
+        from .camera import load_camera
+        from .sources import simulate_stream
 
         if camera is None and preset is None:
             raise ValueError("simulate --stream: give --camera CAMERA.toml or --preset NAME")
@@ -64,7 +65,7 @@ def simulate(
         from .presets import get_preset
 
         chosen = get_preset(preset) if preset is not None else None
-        cam = camera if camera is not None else chosen.camera
+        cam = load_camera(camera) if camera is not None else chosen.camera
         r_m = radius if radius is not None else (chosen.motion.radius_m if chosen is not None else None)
         if r_m is None:
             raise ValueError("simulate --stream: give --radius R (or a --preset)")

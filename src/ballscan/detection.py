@@ -390,35 +390,6 @@ def _background(
     return b, noise, gain, offset, ("gain" if use_gain else "offset")
 
 
-def _known_background(
-    x: np.ndarray, background_dn: np.ndarray, noise_dn: np.ndarray, noise_floor_dn: float, first_pass_k: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
-    """Per-line drift on top of a given per-column background (see :func:`detect`)."""
-    n, w = x.shape
-    b = np.asarray(background_dn, dtype=np.float64).reshape(-1)
-    sig = np.asarray(noise_dn, dtype=np.float64).reshape(-1)
-    if b.shape != (w,) or sig.shape != (w,):
-        raise ValueError(f"background_dn and noise_dn: expected {w} values (one per column), got {b.size} and {sig.size}")
-    if not (np.all(np.isfinite(b)) and np.all(np.isfinite(sig))):
-        raise ValueError("background_dn and noise_dn: values must be finite")
-    sig = np.maximum(sig, noise_floor_dn)
-    step = max(1, w // 512)
-    xs = x[:, ::step].astype(np.float64)
-    bs = b[::step]
-    thr = first_pass_k * sig[::step]
-    excluded = np.abs(xs - bs[None, :]) > thr[None, :]
-    use_gain = float(np.median(b)) > 10.0 * float(np.median(sig)) and float(b.min()) > 0.0
-    if use_gain:
-        g, c = _masked_median(xs / bs[None, :], excluded, axis=1)
-        gain = _fill_bad(g, c >= max(3, xs.shape[1] // 10), np.ones(n))
-        offset = np.zeros(n)
-    else:
-        o, c = _masked_median(xs - bs[None, :], excluded, axis=1)
-        offset = _fill_bad(o, c >= max(3, xs.shape[1] // 10), np.zeros(n))
-        gain = np.ones(n)
-    return b, sig, gain, offset, ("gain" if use_gain else "offset")
-
-
 def _fill_bad(values: np.ndarray, good: np.ndarray, fallback: np.ndarray) -> np.ndarray:
     """Replace values of lines without enough background by interpolation (or the fallback)."""
     if np.all(good):
@@ -566,8 +537,6 @@ def detect(
     min_area_px: int = 12,
     merge_gap_px: int = 6,
     noise_floor_dn: float = 0.5,
-    background_dn: np.ndarray | None = None,
-    noise_dn: np.ndarray | None = None,
 ) -> Detection:
     """Find the balls in a line-scan image.
 
@@ -586,11 +555,6 @@ def detect(
     noise_floor_dn : float, optional
         Smallest noise sigma (DN) used for thresholds: keeps a noise-free or
         flat image from dividing by zero.
-    background_dn, noise_dn : ndarray (W,), optional
-        A per-column background level and noise (DN) known from elsewhere,
-        e.g. a stream's running model: the image's own column statistics are
-        then not computed (only the per-line drift is), which is what makes
-        detection on a small event crop cheap.  Give both or neither.
 
     Returns
     -------
@@ -610,12 +574,7 @@ def detect(
     # float32 for the whole-image passes: exact for 16-bit integers, and the
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
-    if (background_dn is None) != (noise_dn is None):
-        raise ValueError("background_dn and noise_dn: give both or neither")
-    if background_dn is not None:
-        b, noise, gain, offset, model = _known_background(x32, background_dn, noise_dn, floor, first_pass_k=3.0)
-    else:
-        b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
+    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
     bg32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
     if model == "offset":
         bg32 += offset.astype(np.float32)[:, None]

@@ -263,8 +263,6 @@ def estimate_image(
     *,
     method: str = "fit",
     timestamps_s: np.ndarray | None = None,
-    background_dn: np.ndarray | None = None,
-    noise_dn: np.ndarray | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -278,9 +276,6 @@ def estimate_image(
     method : {"fit", "paper"}
     timestamps_s : ndarray, optional
         Per-line timestamps (seconds) replacing ``i / line_rate``.
-    background_dn, noise_dn : ndarray (W,), optional
-        A known per-column background and noise (DN), e.g. from a stream's
-        running model; see :func:`ballscan.detection.detect`.
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -298,7 +293,7 @@ def estimate_image(
 
         period = float(np.median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
-    det = detect(image, background_dn=background_dn, noise_dn=noise_dn)
+    det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None
     balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))

@@ -93,35 +93,6 @@ class BallMotion:
         dt = np.asarray(t_s, dtype=float)[..., None] - self.t_c_s
         return np.asarray(self.velocity_mps) + np.asarray(self.acceleration_mps2) * dt
 
-    def time_window(self, margin_m: float = 0.0) -> tuple[float, float]:
-        """Times between which ``|x_c(t)| <= R + margin_m`` (some of the ball is near the plane).
-
-        Solves ``x_c(t) = +-(R + margin_m)`` exactly for the quadratic
-        ``x_c(t) = V.x dt + a.x dt^2 / 2``; with no crossing velocity and no
-        x-acceleration the ball never leaves the plane: ``(-inf, inf)``.
-        """
-        vx, ax = self.velocity_mps[0], self.acceleration_mps2[0]
-        h = self.radius_m + margin_m
-        roots: list[float] = []
-        for target in (-h, h):
-            # 0.5 ax dt^2 + vx dt - target = 0
-            if ax == 0.0:
-                if vx != 0.0:
-                    roots.append(target / vx)
-                continue
-            disc = vx * vx + 2.0 * ax * target
-            if disc >= 0.0:
-                sq = math.sqrt(disc)
-                roots += [(-vx - sq) / ax, (-vx + sq) / ax]
-        if len(roots) < 2:
-            return (-math.inf, math.inf)
-        # the interval containing dt = 0 where |x| <= h
-        before = [r for r in roots if r <= 0.0]
-        after = [r for r in roots if r >= 0.0]
-        lo = max(before) if before else -math.inf
-        hi = min(after) if after else math.inf
-        return (self.t_c_s + lo, self.t_c_s + hi)
-
     def to_dict(self) -> dict:
         """geometry.md truth keys."""
         d = {

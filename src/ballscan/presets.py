@@ -37,7 +37,7 @@ from .camera import LineScanCamera
 from .motion import BallMotion
 from .render import Appearance
 
-__all__ = ["Preset", "PRESETS", "get_preset", "preset_names"]
+__all__ = ["Preset", "PRESETS", "get_preset"]
 
 
 class Preset(NamedTuple):
@@ -112,11 +112,6 @@ PRESETS: dict[str, Preset] = {
     "baseball-pitch": _baseball_pitch(),
     "paper-rail": _paper_rail(),
 }
-
-
-def preset_names() -> tuple[str, ...]:
-    """Names of the presets, in a stable order."""
-    return tuple(PRESETS)
 
 
 def get_preset(name: str) -> Preset:

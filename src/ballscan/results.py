@@ -135,9 +135,6 @@ class BallEstimate:
             return None
         return BallMotion(self.radius_m, self.t_c_s, self.position_m, self.velocity_mps)
 
-    def with_flags(self, *flags: str) -> "BallEstimate":
-        return replace(self, flags=tuple(self.flags) + tuple(flags))
-
     # ---------------------------------------------------------- serialisation
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
         """geometry.md estimate keys (plus diagnostics), JSON-ready."""

@@ -1,4 +1,4 @@
-"""Command functions for line streams: ``ballscan watch``, ``ballscan batch``, ``ballscan simulate --stream``.
+"""Command functions for line streams: ``ballscan watch`` and ``ballscan batch``.
 
 The functions take typer ``Annotated`` parameters with real defaults, so
 they are both typer commands (``app.command()(watch)``) and plain Python
@@ -22,7 +22,7 @@ from .camera import LineScanCamera, load_camera
 from .errors import BallscanError
 from .stream import StreamConfig, StreamResult, crop_camera, process_stream
 
-__all__ = ["watch", "batch", "simulate_stream", "open_source", "save_event"]
+__all__ = ["watch", "batch", "open_source", "save_event"]
 
 
 def open_source(
@@ -267,37 +267,3 @@ def batch(
     if summary.errors:
         raise typer.Exit(code=1)
     return summary.n_balls
-
-
-def simulate_stream(
-    out: Path,
-    camera: Path | LineScanCamera,
-    n_lines: int,
-    n_balls: int,
-    seed: int = 0,
-    *,
-    radius_m: float = 0.0335,
-    close_pairs: int = 0,
-    side_by_side: int = 0,
-    ramp: float = 0.0,
-    dropped: tuple[int, int] | None = None,
-    noise=None,
-    block_lines: int = 4096,
-):
-    """``ballscan simulate --stream``: render a raw line stream with balls and its truth.
-
-    Writes ``OUT`` (raw lines), ``OUT.camera.toml``, ``OUT.truth.jsonl`` and,
-    with ``dropped``, ``OUT.timestamps.npy``; see
-    :func:`ballscan.sources.simulate_stream`. ``camera`` is a camera TOML
-    path or a camera.
-
-    Returns
-    -------
-    ballscan.sources.SimulatedStream
-    """
-    from .sources import simulate_stream as _simulate
-
-    cam = camera if isinstance(camera, LineScanCamera) else load_camera(camera)
-    return _simulate(
-        out, cam, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, side_by_side=side_by_side, ramp=ramp, dropped=dropped, noise=noise, block_lines=block_lines
-    )
