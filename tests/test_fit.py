@@ -171,8 +171,11 @@ def test_propagate_speed_direction_world():
     V = np.asarray(m.velocity_mps)
     samples = rng.multivariate_normal(m.to_params(), C, size=20000)
     sp = np.linalg.norm(samples[:, 3:], axis=1)
-    assert u.speed_sigma_mps == pytest.approx(sp.std(), rel=0.05)
+    assert u.speed_raw_mps == pytest.approx(m.speed_mps)
+    # the correction removes the norm's upward bias, estimated from the sample
     assert u.speed_bias_mps == pytest.approx(sp.mean() - m.speed_mps, rel=0.3, abs=2e-3)
+    assert u.speed_mps == pytest.approx(m.speed_mps - u.speed_bias_mps)
+    assert u.speed_sigma_mps == pytest.approx(sp.std(), rel=0.1)
     psi = np.degrees(np.arctan2(samples[:, 4], samples[:, 3]))
     assert u.direction_sigma_deg[0] == pytest.approx(psi.std(), rel=0.05)
     assert u.world_velocity_mps is None
@@ -181,3 +184,29 @@ def test_propagate_speed_direction_world():
     uw = propagate(camw, m, C)
     assert np.allclose(uw.world_velocity_mps, rot.T @ V)
     assert np.allclose(np.sort(uw.world_velocity_sigma_mps), np.sort(u.velocity_sigma_mps))
+
+
+@pytest.mark.parametrize("velocity", [(30.0, 0.0, 0.0), (30.0, 3.0, -5.0), (30.0, 0.0, 8.0)])
+@pytest.mark.parametrize("sigma_vz", [1.0, 5.0, 10.0])
+def test_debiased_speed_monte_carlo(velocity, sigma_vz):
+    """Over noisy velocities the corrected speed is less biased and closer than |V|, and its sigma is its RMS error."""
+    cam, _ = _serve()
+    C = np.zeros((6, 6))
+    C[3:, 3:] = np.diag([1e-3, 1e-2, sigma_vz**2])
+    C[4, 5] = C[5, 4] = 0.05 * sigma_vz
+    truth = float(np.linalg.norm(velocity))
+    rng = np.random.default_rng(7)
+    est, raw, sig = [], [], []
+    for v in rng.multivariate_normal(velocity, C[3:, 3:], size=1500):
+        u = propagate(cam, BallMotion(0.0335, 0.0, (0.0, 0.0, 3.0), tuple(v)), C)
+        est.append(u.speed_mps)
+        raw.append(u.speed_raw_mps)
+        sig.append(u.speed_sigma_mps)
+    est, raw, sig = np.array(est), np.array(raw), np.array(sig)
+    rms = lambda x: float(np.sqrt(np.mean((x - truth) ** 2)))  # noqa: E731
+    se = 3.0 * rms(est) / np.sqrt(est.size)  # 3 standard errors of a mean
+    assert abs(est.mean() - truth) <= 0.55 * abs(raw.mean() - truth) + se
+    assert rms(est) <= rms(raw) * 1.01
+    # sigma is the RMS error (the error is skewed: 1-sigma coverage is not 68 %)
+    assert 0.8 < float(np.sqrt(np.mean(sig**2))) / rms(est) < 1.5
+    assert np.mean(np.abs(est - truth) < 3 * sig) > 0.97

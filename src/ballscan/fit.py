@@ -1561,14 +1561,22 @@ class MotionUncertainty:
     Attributes
     ----------
     speed_mps, speed_sigma_mps : float
-        ``|V|`` and the RMS of its error, m/s: the linearised variance
-        ``g^T C_v g`` plus the variance and the square of the mean of the
-        second-order term ``d^T P d / (2 |V|)`` (``P = I - g g^T``), which
-        dominate when ``vz`` is poorly determined.
+        The speed, corrected for the upward bias of the norm of a noisy
+        vector, and the RMS of its error, m/s.  In the eigenbasis of the
+        velocity covariance ``C_v = Q diag(lambda) Q^T`` with ``a = Q^T V``,
+        ``speed^2 = sum_k max(a_k^2 - lambda_k, 0)``: each ``a_k^2 - lambda_k``
+        is an unbiased estimate of the true ``(Q^T V_true)_k^2`` and the
+        positive part (a square cannot be negative) only lowers its error.
+        Only the poorly determined direction (chiefly ``vz``) is changed
+        noticeably.  The sigma is the linearised ``g^T C_v g`` plus the
+        variance of the second-order term ``d^T P d / (2 |V|)``
+        (``P = I - g g^T``, ``g = V / |V|``), which dominates when ``vz`` is
+        poorly determined.
+    speed_raw_mps : float
+        ``|V|`` of the estimated velocity (biased upward by about
+        ``speed_bias_mps``).
     speed_bias_mps : float
-        Expected upward bias of ``|V|`` of a noisy vector,
-        ``(tr(C_v) - g^T C_v g) / (2 |V|)`` with ``g = V / |V|``, m/s (not
-        subtracted from ``speed_mps``).
+        ``speed_raw_mps - speed_mps``, the bias correction applied, m/s.
     position_m, position_sigma_m : ndarray (3,)
         Centre at ``t_c`` and 1-sigma (x is 0 by definition, sigma 0).
     velocity_mps, velocity_sigma_mps : ndarray (3,)
@@ -1582,6 +1590,7 @@ class MotionUncertainty:
     speed_mps: float
     speed_sigma_mps: float
     speed_bias_mps: float
+    speed_raw_mps: float
     position_m: np.ndarray
     position_sigma_m: np.ndarray
     velocity_mps: np.ndarray
@@ -1592,6 +1601,36 @@ class MotionUncertainty:
     world_position_sigma_m: np.ndarray | None = None
     world_velocity_mps: np.ndarray | None = None
     world_velocity_sigma_mps: np.ndarray | None = None
+
+
+_GH_X, _GH_W = np.polynomial.hermite_e.hermegauss(24)
+_GH_W = _GH_W / _GH_W.sum()
+
+
+def _debiased_speed(V: np.ndarray, Cv: np.ndarray) -> tuple[float, float]:
+    """Bias-corrected speed and its mean squared error (see :class:`MotionUncertainty`).
+
+    In the eigenbasis of ``Cv`` each ``a_k^2 - lambda_k`` estimates the true
+    ``a_k^2`` without bias; the positive part keeps it a square.  The error of
+    the well-determined directions is linear (``sum (a_k / s)^2 lambda_k``);
+    that of the weakest direction is not (its noise can exceed its value), so
+    its mean squared error is integrated over ``a ~ N(mu, lambda)`` with
+    ``mu^2`` the plug-in estimate (Gauss-Hermite, 24 nodes).
+    """
+    lam, Q = np.linalg.eigh(Cv)
+    lam = np.maximum(lam, 0.0)
+    a = Q.T @ V
+    sq = np.maximum(a * a - lam, 0.0)
+    speed = float(np.sqrt(sq.sum()))
+    w = int(np.argmax(lam))
+    strong = np.arange(3) != w
+    s_strong2 = float(sq[strong].sum())
+    var_strong = float(np.sum(a[strong] ** 2 * lam[strong])) / max(speed * speed, 1e-300)
+    mu = math.sqrt(sq[w])
+    draws = mu + math.sqrt(lam[w]) * _GH_X
+    est = np.sqrt(s_strong2 + np.maximum(draws * draws - lam[w], 0.0))
+    mse_weak = float(_GH_W @ (est - speed) ** 2)
+    return speed, var_strong + mse_weak
 
 
 def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray) -> MotionUncertainty:
@@ -1605,35 +1644,28 @@ def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray
         raise ValueError(f"covariance: expected (6, 6), got {C.shape}")
     V = np.asarray(motion.velocity_mps)
     Cv = C[3:, 3:]
-    speed = float(np.linalg.norm(V))
-    g = V / speed if speed > 0 else np.zeros(3)
+    raw = float(np.linalg.norm(V))
+    g = V / raw if raw > 0 else np.zeros(3)
     var_lin = float(g @ Cv @ g)
-    bias = float((np.trace(Cv) - var_lin) / (2.0 * speed)) if speed > 0 else math.nan
-    # second order: |V + d| - |V| ~ g.d + d^T P d / (2 |V|), P = I - g g^T; the
-    # quadratic term matters when a component across V (chiefly vz) is poorly
-    # determined, and its mean (the bias) is part of the error
-    if speed > 0 and np.all(np.isfinite(Cv)):
-        P = np.eye(3) - np.outer(g, g)
-        PC = P @ Cv
-        var_s = var_lin + float(np.trace(PC @ PC)) / (2.0 * speed**2) + bias**2
+    if np.all(np.isfinite(Cv)) and raw > 0:
+        speed, var_s = _debiased_speed(V, Cv)
     else:
-        var_s = var_lin
+        speed, var_s = raw, var_lin
     # position (0, y0, z0): x is exact by definition of t_c
     Cp = np.zeros((3, 3))
     Cp[1:, 1:] = C[1:3, 1:3]
-    vx, vy, vz = V
-    q = vx * vx
+    vx = V[0]
     Jd = np.zeros((2, 3))
     for row, comp in ((0, 1), (1, 2)):
         den = vx * vx + V[comp] ** 2
         Jd[row, 0] = -V[comp] / den
         Jd[row, comp] = vx / den
-    del q, vy, vz
     Cd = Jd @ Cv @ Jd.T
     out = dict(
         speed_mps=speed,
         speed_sigma_mps=math.sqrt(var_s) if var_s >= 0 else math.nan,
-        speed_bias_mps=bias,
+        speed_bias_mps=raw - speed,
+        speed_raw_mps=raw,
         position_m=np.asarray(motion.position_m),
         position_sigma_m=np.sqrt(np.diag(Cp)),
         velocity_mps=V,
