@@ -210,19 +210,51 @@ def region_background(
 # --------------------------------------------------------------------------
 # Robust statistics helpers (vectorised)
 # --------------------------------------------------------------------------
-def _masked_median(a: np.ndarray, excluded: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
-    """Median of the non-excluded values along ``axis`` and their count.
+def _median(a: np.ndarray) -> np.floating:
+    """``np.median`` of all of ``a`` (non-empty), by a full sort.
 
-    Excluded values are replaced by alternately -BIG and +BIG (in the order
-    they occur along the axis), so that they cancel in pairs and an ordinary
-    (partition-based, fast) median returns the median of the kept values
-    (to half a rank when the number excluded is odd). Rows with no kept
-    value give 0; check the count.
+    The same value and type as ``np.median``: the middle order statistic, or
+    the mean of the two middle ones, of the same dtype. numpy's median
+    partitions, which on the few thousand values of an event crop is several
+    times slower than a full (SIMD) sort.
     """
-    parity = np.cumsum(excluded, axis=axis) & 1
-    filled = np.where(excluded, np.where(parity == 1, _BIG, -_BIG), a)
-    med = np.median(filled, axis=axis)
-    count = a.shape[axis] - excluded.sum(axis=axis)
+    s = np.sort(a, axis=None)
+    h = s.size // 2
+    return s[h] if s.size % 2 else (s[h - 1] + s[h]) / 2
+
+
+def _row_median(a: np.ndarray) -> np.ndarray:
+    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows (see :func:`_median`)."""
+    s = np.sort(a, axis=1)
+    h = s.shape[1] // 2
+    return s[:, h] if s.shape[1] % 2 else (s[:, h - 1] + s[:, h]) / 2
+
+
+def _masked_median(a: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Median of the non-excluded values of each row of ``a`` and their count.
+
+    Defined as the median of the row with its excluded values replaced by
+    alternately +BIG and -BIG (in the order they occur), so that they cancel
+    in pairs: the median of the kept values, to half a rank when the number
+    excluded is odd. Computed without building that row: the kept values are
+    sorted (excluded ones pushed to the end as +inf) and the middle ranks of
+    the virtual row ``[-BIG] * (e // 2) + kept + [+BIG] * ((e + 1) // 2)``
+    are looked up. Rows with no kept value give 0; check the count.
+    """
+    n_row, n = a.shape
+    e = np.count_nonzero(excluded, axis=1)
+    count = n - e
+    s = np.sort(np.where(excluded, np.inf, a), axis=1)
+    rows = np.arange(n_row)
+    n_low = e // 2  # -BIG values before the kept ones
+
+    def at(rank: int) -> np.ndarray:
+        k = rank - n_low  # rank among the kept values
+        v = s[rows, np.clip(k, 0, n - 1)]
+        return np.where(k < 0, -_BIG, np.where(k >= count, _BIG, v))
+
+    h = n // 2
+    med = at(h) if n % 2 else (at(h - 1) + at(h)) / 2
     med = np.where(count > 0, med, 0.0)
     return med, count
 
@@ -257,20 +289,25 @@ def _mode_seek(
     shift = base - rows * span
     keys = (s.astype(np.float64) - shift[:, None]).ravel()
     first = rows * n
+    row_shift = rows * span
+    top = rng + 0.25
 
+    # np.minimum(np.maximum(...)) is np.clip's definition, without its
+    # per-call overhead (these run on W-sized arrays a dozen times per image).
     def window(m: np.ndarray, half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        lo = np.clip(m - half - base, -0.25, rng + 0.25) + rows * span
-        hi = np.clip(m + half - base, -0.25, rng + 0.25) + rows * span
+        lo = np.minimum(np.maximum(m - half - base, -0.25), top) + row_shift
+        hi = np.minimum(np.maximum(m + half - base, -0.25), top) + row_shift
         return (np.searchsorted(keys, lo, side="left") - first,
                 np.searchsorted(keys, hi, side="right") - first)
 
     buf = np.empty(s.shape, dtype=s.dtype)
+    mag = np.empty(s.shape, dtype=s.dtype)
     inside = np.empty(s.shape, dtype=bool)
 
     def spread(m: np.ndarray, half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         # In place on preallocated buffers: this is the costly part.
         np.subtract(s, m.astype(s.dtype)[:, None], out=buf)
-        np.less_equal(np.abs(buf), half.astype(s.dtype)[:, None], out=inside)
+        np.less_equal(np.abs(buf, out=mag), half.astype(s.dtype)[:, None], out=inside)
         np.multiply(buf, inside, out=buf)
         k = np.count_nonzero(inside, axis=1)
         kk = np.maximum(k, 1)
@@ -289,8 +326,8 @@ def _mode_seek(
         half = 4.5 * sg
         a, b = window(m, half)
         cnt = b - a
-        i0 = np.clip(a + (cnt - 1) // 2, 0, n - 1)
-        i1 = np.clip(a + cnt // 2, 0, n - 1)
+        i0 = np.minimum(np.maximum(a + (cnt - 1) // 2, 0), n - 1)
+        i1 = np.minimum(np.maximum(a + cnt // 2, 0), n - 1)
         med = 0.5 * (s[rows, i0].astype(np.float64) + s[rows, i1])
         m = np.where(cnt >= 1, med, m)
     sig, k, mean = spread(m, 4.5 * sg)
@@ -311,7 +348,7 @@ def _global_noise(x: np.ndarray) -> float:
     d = d[:: max(1, d.size // 100_000)]
     if d.size == 0:
         return 0.0
-    mad = np.median(np.abs(d - np.median(d)))
+    mad = _median(np.abs(d - _median(d)))
     return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
 
 
@@ -329,8 +366,8 @@ def _background(
     sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
 
     # Per-line level from the line medians: balls cover a minority of a line.
-    level = np.median(xs, axis=1)
-    ref = float(np.median(level))
+    level = _row_median(xs)
+    ref = float(_median(level))
     use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
     if use_gain:
         gain0 = level / ref
@@ -370,14 +407,14 @@ def _background(
         excluded = np.abs(resid) > thr[None, :]
         safe = np.where(bs > 0, bs, 1.0)
         excluded |= (bs <= 0)[None, :]
-        g, c = _masked_median(xs / safe[None, :], excluded, axis=1)
+        g, c = _masked_median(xs / safe[None, :], excluded)
         good = c >= max(3, xs.shape[1] // 10)
         gain = _fill_bad(g, good, gain0)
         offset = np.zeros(n)
     else:
         resid = xs - bs[None, :] - offset0[:, None]
         excluded = np.abs(resid) > thr[None, :]
-        o, c = _masked_median(xs - bs[None, :], excluded, axis=1)
+        o, c = _masked_median(xs - bs[None, :], excluded)
         good = c >= max(3, xs.shape[1] // 10)
         offset = _fill_bad(o, good, offset0)
         gain = np.ones(n)
@@ -385,7 +422,7 @@ def _background(
     # Noise floor: the quantisation floor, and not less than a quarter of the
     # typical column noise (a column with too few background values to
     # measure must not get a tiny sigma and flood the mask).
-    typical = float(np.median(sig)) if sig.size else noise_floor_dn
+    typical = float(_median(sig)) if sig.size else noise_floor_dn
     noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
     return b, noise, gain, offset, ("gain" if use_gain else "offset")
 
@@ -421,26 +458,49 @@ def _fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
 
 
 def _runs(m: np.ndarray, axis: int) -> np.ndarray:
-    """Number of separate runs of True along ``axis``."""
-    starts = np.diff(m.astype(np.int8), axis=axis, prepend=0) == 1
-    return starts.sum(axis=axis)
+    """Number of separate runs of True along ``axis`` (0 or 1)."""
+    starts = m.copy()
+    if axis == 1:
+        starts[:, 1:] &= ~m[:, :-1]
+    else:
+        starts[1:] &= ~m[:-1]
+    return np.count_nonzero(starts, axis=axis)
+
+
+def _valid_run(f: np.ndarray, k: int, op: np.ufunc, axis: int) -> np.ndarray:
+    """``op`` (logical or / and) over every window of ``k`` entries along ``axis``, windows inside ``f`` only.
+
+    Entry ``i`` of the result combines ``f[i : i + k]`` along ``axis`` (the
+    result is ``k - 1`` shorter). Built by doubling: windows of 1, 2, 4, ...
+    entries, then two overlapping windows of the largest such length (or and
+    and are idempotent, so the overlap does not matter): a few whole-array
+    boolean operations instead of a per-pixel running filter.
+    """
+    g = np.moveaxis(f, axis, 0)
+    length = 1
+    while 2 * length <= k:
+        g = op(g[:-length], g[length:])
+        length *= 2
+    if length < k:
+        g = op(g[: -(k - length)], g[k - length :])
+    return np.moveaxis(g, 0, axis)
 
 
 def _close(m: np.ndarray, r: int) -> np.ndarray:
-    """Binary closing by a (2r+1)^2 square, on a padded copy (no edge effects).
+    """Binary closing by a (2r+1)^2 square, as if the mask were surrounded by background (no edge effects).
 
     A square is the sum of a horizontal and a vertical segment, so the
-    dilation and the erosion are each two 1-D running max / min filters:
-    several times faster than a 2-D structuring element (this runs on every
-    stream event's crop).
+    dilation and the erosion are each two 1-D window operations. The mask is
+    padded by ``2 r`` background pixels and only windows inside the padded
+    array are formed: the dilation then sees all the background it would see
+    in an unbounded plane, and the erosion of the ``r``-wide dilated border
+    never needs a pixel beyond it (this runs on every stream event's crop).
     """
     if r <= 0:
         return m
     k = 2 * r + 1
-    p = np.pad(m, r + 1).astype(np.uint8)
-    d = ndi.maximum_filter1d(ndi.maximum_filter1d(p, k, axis=0, mode="constant"), k, axis=1, mode="constant")
-    e = ndi.minimum_filter1d(ndi.minimum_filter1d(d, k, axis=0, mode="constant"), k, axis=1, mode="constant")
-    return e[r + 1 : -(r + 1), r + 1 : -(r + 1)].astype(bool)
+    d = _valid_run(_valid_run(np.pad(m, 2 * r), k, np.logical_or, 0), k, np.logical_or, 1)
+    return _valid_run(_valid_run(d, k, np.logical_and, 0), k, np.logical_and, 1)
 
 
 def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndarray]] | None:
@@ -584,7 +644,8 @@ def detect(
     lab, nlab = ndi.label(hit, structure=np.ones((3, 3), dtype=bool))
     regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
     if nlab:
-        sizes = np.bincount(lab.ravel(), minlength=nlab + 1)[1:]
+        # labels of the hit pixels only: most pixels are background
+        sizes = np.bincount(lab[hit], minlength=nlab + 1)[1:]
         objs = ndi.find_objects(lab)
         gap = max(int(merge_gap_px), 0)
         for grp in _group_components(lab, objs, sizes, gap, min_piece=2):
@@ -598,7 +659,9 @@ def detect(
             if l1 - l0 < 2 or c1 - c0 < 2:
                 continue  # a hot pixel run along one line or one column
             sub = lab[l0:l1, c0:c1]
-            m = np.isin(sub, np.asarray(grp) + 1)
+            in_group = np.zeros(nlab + 1, dtype=bool)
+            in_group[np.asarray(grp) + 1] = True
+            m = in_group[sub]
             closed = _close(m, gap)
             merged = bool(np.any(_runs(closed, 1) >= 2) or np.any(_runs(closed, 0) >= 2))
             if merged:
@@ -615,7 +678,7 @@ def detect(
         h, wd = filled.shape
         box = (slice(l0, l0 + h), slice(c0, c0 + wd))
         vals = (x[box] - (gain[box[0], None] * b[None, box[1]] + offset[box[0], None]))[filled]
-        contrast = float(np.median(vals)) if vals.size else 0.0
+        contrast = float(_median(vals)) if vals.size else 0.0
         polarity = 1 if contrast >= 0 else -1
         flags = []
         if l0 == 0:
