@@ -262,8 +262,41 @@ def test_separable_closing_equals_the_2d_structuring_element():
     rng = np.random.default_rng(0)
     for _ in range(100):
         m = rng.random((int(rng.integers(1, 50)), int(rng.integers(1, 50)))) < rng.uniform(0.02, 0.5)
-        r = int(rng.integers(1, 6))
+        r = int(rng.integers(1, 9))  # windows of 3 to 17 pixels (doubling steps and overlaps)
         p = np.pad(m, r + 1)
         st = np.ones((2 * r + 1, 2 * r + 1), bool)
         ref = ndi.binary_erosion(ndi.binary_dilation(p, st), st)[r + 1 : -(r + 1), r + 1 : -(r + 1)]
         assert np.array_equal(_close(m, r), ref)
+
+
+def test_median_is_numpys_median():
+    from ballscan.detection import median
+
+    rng = np.random.default_rng(1)
+    for a in (
+        rng.normal(size=101),
+        rng.normal(size=(12, 10)).astype(np.float32),
+        np.round(rng.normal(size=64) * 4),
+        rng.integers(0, 255, 33).astype(np.uint8),
+        np.array([2.0, np.nan, 1.0]),
+    ):
+        got, ref = median(a), np.median(a)
+        assert type(got) is type(ref)
+        assert got == ref or (np.isnan(got) and np.isnan(ref))
+    with pytest.raises(ValueError, match="empty"):
+        median(np.array([]))
+
+
+def test_masked_median_is_the_median_of_the_plus_minus_big_row():
+    from ballscan.detection import _BIG, _masked_median
+
+    rng = np.random.default_rng(2)
+    for _ in range(300):
+        a = np.round(rng.normal(size=(int(rng.integers(1, 6)), int(rng.integers(1, 30)))) * 5)
+        excluded = rng.random(a.shape) < rng.random()
+        parity = np.cumsum(excluded, axis=1) & 1
+        ref = np.median(np.where(excluded, np.where(parity == 1, _BIG, -_BIG), a), axis=1)
+        count = (~excluded).sum(axis=1)
+        got, got_count = _masked_median(a, excluded)
+        assert np.array_equal(got_count, count)
+        assert np.array_equal(got, np.where(count > 0, ref, 0.0))

@@ -56,6 +56,7 @@ __all__ = [
     "detect",
     "background_at",
     "region_background",
+    "median",
     "FLAG_WORDS",
 ]
 
@@ -210,21 +211,33 @@ def region_background(
 # --------------------------------------------------------------------------
 # Robust statistics helpers (vectorised)
 # --------------------------------------------------------------------------
-def _median(a: np.ndarray) -> np.floating:
-    """``np.median`` of all of ``a`` (non-empty), by a full sort.
+def median(a: np.ndarray) -> np.floating:
+    """``np.median`` of all of ``a``, by a full sort.
 
     The same value and type as ``np.median``: the middle order statistic, or
-    the mean of the two middle ones, of the same dtype. numpy's median
-    partitions, which on the few thousand values of an event crop is several
-    times slower than a full (SIMD) sort.
+    the mean of the two middle ones, of the same dtype (NaN if any value is
+    NaN). numpy's median partitions, which on a few thousand values (an
+    event crop's rows, a line's noise sigmas) is several times slower than a
+    full (SIMD) sort.
+
+    Raises
+    ------
+    ValueError
+        If ``a`` is empty.
     """
     s = np.sort(a, axis=None)
+    if s.size == 0:
+        raise ValueError("median: empty array")
+    if s.dtype.kind in "biu":
+        s = s.astype(np.float64)  # as np.median: integers average in float64
+    elif np.isnan(s[-1]):
+        return s[-1]  # NaN sorts last
     h = s.size // 2
     return s[h] if s.size % 2 else (s[h - 1] + s[h]) / 2
 
 
 def _row_median(a: np.ndarray) -> np.ndarray:
-    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows (see :func:`_median`)."""
+    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows (see :func:`median`)."""
     s = np.sort(a, axis=1)
     h = s.shape[1] // 2
     return s[:, h] if s.shape[1] % 2 else (s[:, h - 1] + s[:, h]) / 2
@@ -348,7 +361,7 @@ def _global_noise(x: np.ndarray) -> float:
     d = d[:: max(1, d.size // 100_000)]
     if d.size == 0:
         return 0.0
-    mad = _median(np.abs(d - _median(d)))
+    mad = median(np.abs(d - median(d)))
     return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
 
 
@@ -367,7 +380,7 @@ def _background(
 
     # Per-line level from the line medians: balls cover a minority of a line.
     level = _row_median(xs)
-    ref = float(_median(level))
+    ref = float(median(level))
     use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
     if use_gain:
         gain0 = level / ref
@@ -422,7 +435,7 @@ def _background(
     # Noise floor: the quantisation floor, and not less than a quarter of the
     # typical column noise (a column with too few background values to
     # measure must not get a tiny sigma and flood the mask).
-    typical = float(_median(sig)) if sig.size else noise_floor_dn
+    typical = float(median(sig)) if sig.size else noise_floor_dn
     noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
     return b, noise, gain, offset, ("gain" if use_gain else "offset")
 
@@ -678,7 +691,7 @@ def detect(
         h, wd = filled.shape
         box = (slice(l0, l0 + h), slice(c0, c0 + wd))
         vals = (x[box] - (gain[box[0], None] * b[None, box[1]] + offset[box[0], None]))[filled]
-        contrast = float(_median(vals)) if vals.size else 0.0
+        contrast = float(median(vals)) if vals.size else 0.0
         polarity = 1 if contrast >= 0 else -1
         flags = []
         if l0 == 0:

@@ -58,6 +58,7 @@ from typing import Any
 import numpy as np
 
 from .camera import LineScanCamera
+from .detection import detect, median
 from .errors import BallscanError
 from .images import LineImage
 from .results import BallEstimate
@@ -566,8 +567,6 @@ class StreamEngine:
         self._init_model_from(self._read(0, n_lines))
 
     def _init_model_from(self, data: np.ndarray) -> None:
-        from .detection import detect
-
         if data.shape[0] >= 2:
             sat = self.config.saturation_dn if self.config.saturation_dn is not None else float(self._max_dn)
             det = detect(LineImage(data.astype(np.float64), sat, 8 * self.dtype.itemsize, self.source), noise_floor_dn=self.config.noise_floor_dn)
@@ -591,7 +590,7 @@ class StreamEngine:
         self._lo = lo.astype(self.dtype)
         self._span = (hi - lo).astype(self.dtype)
         self._bg_ocols16 = np.rint(16.0 * self._bg[self._ocols]).astype(np.int64)
-        self._max_off = int(np.ceil(self.config.max_line_offset_sigma * float(np.median(sig))))
+        self._max_off = int(np.ceil(self.config.max_line_offset_sigma * float(median(sig))))
 
     def _update_model(self, lo: int, hi: int) -> None:
         cfg = self.config
@@ -753,7 +752,7 @@ class StreamEngine:
         cm = max(cfg.margin_px, ball_w)
         c0 = max(ev.col_min - cm, 0)
         c1 = min(ev.col_max + 1 + cm, self.width)
-        crop = self._read(l0, l1)[:, c0:c1]
+        crop = self._ring[np.arange(l0, l1) % self._cap, c0:c1]
         times = self._read_times(l0, l1)
         sat = cfg.saturation_dn if cfg.saturation_dn is not None else float(self._max_dn)
         camera = crop_camera(self.camera, c0, c1)
