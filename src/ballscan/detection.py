@@ -382,17 +382,20 @@ def _background(
     level = _row_median(xs)
     ref = float(median(level))
     use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
+    # Per-column mode, started from the neighbours' level, on the columns with
+    # the per-line level removed: s is (W, n), each column sorted. It is
+    # written transposed and sorted in place (sorting a transposed view
+    # copies every row first).
+    s = np.empty((w, n), dtype=x.dtype)
     if use_gain:
         gain0 = level / ref
         offset0 = np.zeros(n)
-        y = x / gain0[:, None].astype(x.dtype)
+        np.divide(x.T, gain0.astype(x.dtype)[None, :], out=s)
     else:
         gain0 = np.ones(n)
         offset0 = level - ref
-        y = x - offset0[:, None].astype(x.dtype)
-
-    # Per-column mode, started from the neighbours' level.
-    s = np.sort(y.T, axis=1)  # (W, n), each column sorted
+        np.subtract(x.T, offset0.astype(x.dtype)[None, :], out=s)
+    s.sort(axis=1)
     col_med = (s[:, n // 2] if n % 2 else 0.5 * (s[:, n // 2 - 1] + s[:, n // 2])).astype(np.float64)
     # Wide enough to out-vote a run of up to ~127 ball-dominated columns (a
     # median filter leaves monotone profiles such as vignetting unchanged).
