@@ -5,10 +5,13 @@
 * lines per second with no ball present, and with a ball every 10 000 lines
   (the estimates included);
 * latency from the arrival of the chunk holding a ball's last line to its
-  result (the wait for the ``margin_lines`` clean lines after the ball is
-  included when they fall into the next chunk: that chunk is pushed at once),
-  split into the engine's share (test, event cut, hand-off), ``detect()`` on
-  the crop, and the estimator's key points, edges and fit;
+  result, through :func:`ballscan.stream.process_stream` as ``ballscan
+  watch`` sees it: from the chunk leaving the source to the result leaving
+  ``process_stream`` (the wait for the ``margin_lines`` clean lines after the
+  ball is included when they fall into the next chunk: that chunk is pushed
+  at once). It is split into the engine's share (test up to the piece that
+  ends the event, event cut, hand-off), ``detect()`` on the crop, and the
+  estimator's key points, edges and fit;
 * a baseline in the same run: :func:`ballscan.detection.detect` on each
   chunk as a whole image (what a naive stream would do).
 
@@ -34,7 +37,7 @@ from ballscan.detection import detect  # noqa: E402
 from ballscan.images import LineImage  # noqa: E402
 from ballscan.motion import BallMotion  # noqa: E402
 from ballscan.render import Appearance, SensorNoise, apply_sensor, render  # noqa: E402
-from ballscan.stream import StreamConfig, StreamEngine, preload_estimator  # noqa: E402
+from ballscan.stream import StreamConfig, preload_estimator, process_stream  # noqa: E402
 
 W = 2048
 CHUNK = 1024
@@ -58,45 +61,44 @@ def ball_chunk(line_in_chunk: float, seed: int) -> tuple[np.ndarray, int]:
     return r.image, last
 
 
-def run(n_chunks: int, ball_every_lines: int | None, executor=None) -> dict:
+def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: StreamConfig | None = None) -> dict:
+    """Feed ``n_chunks`` chunks through :func:`process_stream` (the path of ``ballscan watch``)."""
     bgs = background_chunks(8)
     balls: dict[int, tuple[np.ndarray, int]] = {}
     if ball_every_lines:
         every = max(ball_every_lines // CHUNK, 1)
         for k in range(every // 2, n_chunks, every):
             balls[k] = ball_chunk(400.0 + 37 * (k % 7), seed=k)
-    eng = StreamEngine(CAMERA, 0.0335, StreamConfig(), source="bench", executor=executor)
     latencies = []
     handoffs = []
     fit_times = []
     rest = []
     pending: list[float] = []  # arrival times of chunks holding a ball's last line
+
+    def chunks():
+        for k in range(n_chunks):
+            chunk = balls[k][0] if k in balls else bgs[k % len(bgs)]
+            if k in balls:
+                pending.append(time.perf_counter())
+            yield chunk  # arrives now: process_stream pushes it at once
+
+    n_results = 0
     t0 = time.perf_counter()
     c0 = time.process_time()
-    for k in range(n_chunks):
-        chunk = balls[k][0] if k in balls else bgs[k % len(bgs)]
-        arrival = time.perf_counter()
-        if k in balls:
-            pending.append(arrival)
-        res = eng.push(chunk)
+    for r in process_stream(chunks(), CAMERA, 0.0335, config or StreamConfig(), source="bench", executor=executor):
         done = time.perf_counter()
-        for r in res:
-            handoffs.append(r.handoff_s)
-            fit_times.append(r.estimate.run_time_s)
-            rest.append(r.latency_s - r.handoff_s - r.estimate.run_time_s)
-            if pending:
-                latencies.append(done - pending.pop(0))
-    res = eng.finish()
-    total = time.perf_counter() - t0
-    cpu = time.process_time() - c0
-    for r in res:
+        n_results += 1
         handoffs.append(r.handoff_s)
         fit_times.append(r.estimate.run_time_s)
-    st = eng.stats()
+        rest.append(r.latency_s - r.handoff_s - r.estimate.run_time_s)
+        if pending and executor is None:
+            latencies.append(done - pending.pop(0))
+    total = time.perf_counter() - t0
+    cpu = time.process_time() - c0
     return {
         "lines_per_s": n_chunks * CHUNK / total,
         "lines_per_cpu_s": n_chunks * CHUNK / cpu,
-        "balls": st.balls,
+        "balls": n_results,
         "expected": len(balls),
         "latency_ms": (np.median(latencies) * 1e3, np.max(latencies) * 1e3) if latencies else (float("nan"), float("nan")),
         "handoff_ms": (np.median(handoffs) * 1e3, np.max(handoffs) * 1e3) if handoffs else (float("nan"), float("nan")),

@@ -262,6 +262,40 @@ def test_non_monotonic_timestamps_keep_earlier_results():
     assert eng.lines_received == 2500
 
 
+def test_fault_inside_one_push_keeps_the_results_before_it():
+    data = small_stream(3000, balls=((900.0, 0.0),))
+    t = np.arange(3000) / CAM.line_rate_hz
+    t[2500] = t[2499]
+    eng = StreamEngine(CAM, RADIUS, source="cam")
+    with pytest.raises(StreamError, match="cam: timestamp of line 2500") as ei:
+        eng.push(data, t)
+    assert [r.estimate.first_line is not None for r in ei.value.results] == [True]
+    got = []
+    with pytest.raises(StreamError, match="timestamp of line 2500"):
+        for r in process_stream([Chunk(data, t)], CAM, RADIUS):
+            got.append(r)
+    assert [r.estimate.t_c_s for r in got] == [r.estimate.t_c_s for r in ei.value.results]
+
+
+def test_result_comes_out_before_the_rest_of_the_chunk_is_tested():
+    data = small_stream(3000)  # balls at lines 900 and 2000, one chunk
+    eng = StreamEngine(CAM, RADIUS)
+    read_at_result = []
+    got = []
+    for r in eng._push_iter(data):  # what process_stream yields from
+        read_at_result.append(eng.lines_received)
+        got.append(r)
+    # the first ball's event ends near line 940: out once its 128-line piece is tested
+    assert read_at_result == [1024, 2048]
+    for tl in (7, 512):
+        ref = StreamEngine(CAM, RADIUS, StreamConfig(test_lines=tl)).push(data)
+        assert [(r.estimate.t_c_s, r.estimate.position_m, r.estimate.velocity_mps) for r in ref] == [
+            (r.estimate.t_c_s, r.estimate.position_m, r.estimate.velocity_mps) for r in got
+        ]
+    with pytest.raises(ValueError, match="test_lines: must be an integer >= 1"):
+        StreamConfig(test_lines=0)
+
+
 def test_engine_rejects_wrong_width_and_dtype():
     eng = StreamEngine(CAM, RADIUS, source="cam")
     with pytest.raises(StreamError, match="lines of 500 pixels after line 0, but the camera has width = 512"):

@@ -8,7 +8,8 @@ Pipeline per chunk
 ------------------
 1. **Ring buffer.** Lines (and their timestamps) are copied into a ring of
    ``buffer_lines`` lines: memory is fixed however long the stream runs.
-2. **Per-line test, vectorised over the chunk.** With the current background
+2. **Per-line test, vectorised over pieces** of at most ``test_lines`` lines
+   (ending at block boundaries). With the current background
    ``b[j]`` and noise ``s[j]`` (DN) each column has an integer band
    ``[lo, hi] = [floor(b - k s), ceil(b + k s)]``. A pixel is outside the band
    iff ``(x - lo) mod 2**bits > hi - lo`` (one unsigned subtraction and one
@@ -30,6 +31,9 @@ Pipeline per chunk
    :func:`ballscan.estimate.estimate_image` with a camera whose principal
    point is shifted by the crop's first column (the same camera frame, so
    positions and velocities need no correction) and the lines' timestamps.
+   :func:`process_stream` yields the result at once, before the rest of the
+   chunk is tested: the latency does not include the lines after the piece
+   that ended the event.
 5. **Background update.** The model is updated only at fixed absolute block
    boundaries (every ``block_lines`` lines), from every ``sample_step``-th
    line of the block that is at least two lines away from any hit line and
@@ -134,6 +138,12 @@ class StreamConfig:
         has more background than ball columns.
     block_lines : int
         Lines between background updates (and of the initial model).
+    test_lines : int
+        Most lines tested at a time (pieces also end at block boundaries). A
+        ball's result comes out as soon as the piece that ends its event is
+        tested, before the rest of the chunk: fewer lines give a lower
+        latency for a little more per-piece overhead. Results do not depend
+        on it.
     sample_step : int
         Every ``sample_step``-th clean line of a block feeds the update.
     ema_alpha : float
@@ -170,6 +180,7 @@ class StreamConfig:
     margin_lines: int = 16
     margin_px: int = 48
     block_lines: int = 512
+    test_lines: int = 128
     sample_step: int = 8
     ema_alpha: float = 0.25
     buffer_lines: int = 8192
@@ -187,7 +198,7 @@ class StreamConfig:
                 raise ValueError(f"{name}: {why}, got {getattr(self, name)!r}")
 
         need(math.isfinite(self.k_sigma) and self.k_sigma > 0, "k_sigma", "must be positive")
-        for name in ("min_run_px", "min_event_lines", "min_event_px", "margin_lines", "block_lines", "sample_step"):
+        for name in ("min_run_px", "min_event_lines", "min_event_px", "margin_lines", "block_lines", "test_lines", "sample_step"):
             v = getattr(self, name)
             need(isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= 1, name, "must be an integer >= 1")
         need(isinstance(self.margin_px, (int, np.integer)) and self.margin_px >= 0, "margin_px", "must be an integer >= 0")
@@ -417,6 +428,26 @@ class StreamEngine:
             are processed and the results they completed are in the
             exception's ``results``.
         """
+        out: list[StreamResult] = []
+        try:
+            for r in self._push_iter(lines, timestamps_s):
+                out.append(r)
+        except StreamError as exc:
+            exc.results[:0] = out
+            raise
+        return out
+
+    def _push_iter(self, lines: np.ndarray, timestamps_s: np.ndarray | None = None) -> Iterator[StreamResult]:
+        """:meth:`push` as a generator: each result as soon as it is measured.
+
+        The lines are tested ``test_lines`` at a time; a ball's result is
+        yielded as soon as the piece that completes its event is tested,
+        before the rest of the lines are tested and before the background
+        update that follows it. Engine time (``busy_s``) excludes the time
+        the consumer holds a result. A fault raises after every result before
+        it was yielded (the exception's ``results`` is empty). Exhaust it
+        before feeding more lines.
+        """
         arrival = time.perf_counter()
         self._chunk_arrival = arrival
         if self._finished:
@@ -454,16 +485,22 @@ class StreamEngine:
                 )
                 x, ts = x[:k], ts[:k]
         out: list[StreamResult] = []
+        t: float | None = arrival  # start of the current stretch of engine time
         try:
             if x.shape[0]:
-                self._ingest(x, ts, out)
+                for done in self._ingest(x, ts):
+                    self._busy += time.perf_counter() - t
+                    t = None
+                    yield from done
+                    t = time.perf_counter()
             if self._executor is not None:
                 self._collect(out, wait=False)
         finally:
-            self._busy += time.perf_counter() - arrival
+            if t is not None:
+                self._busy += time.perf_counter() - t
+        yield from out
         if fault is not None:
-            raise StreamError(fault, out)
-        return out
+            raise StreamError(fault)
 
     def poll(self) -> list[StreamResult]:
         """Results whose estimates finished in the executor since the last call (no new lines)."""
@@ -490,21 +527,30 @@ class StreamEngine:
         return out
 
     # ---------------------------------------------------------------- internals
-    def _ingest(self, x: np.ndarray, ts: np.ndarray | None, out: list[StreamResult]) -> None:
+    def _ingest(self, x: np.ndarray, ts: np.ndarray | None) -> Iterator[list[StreamResult]]:
+        """Store and test ``x`` piece by piece; yield the results of each piece that completes any."""
         n_in = x.shape[0]
         pos = 0
         block = self.config.block_lines
         while pos < n_in:
             # Pieces end at block boundaries so that model updates fall on
-            # fixed absolute lines (results independent of the chunking).
+            # fixed absolute lines (results independent of the chunking), and
+            # hold at most test_lines lines so that a ball's result comes out
+            # soon after its event ends, not after the whole chunk is tested.
             to_boundary = block - (self._n % block)
-            k = min(n_in - pos, to_boundary)
+            k = min(n_in - pos, to_boundary, self.config.test_lines)
             piece = x[pos : pos + k]
             tpiece = ts[pos : pos + k] if ts is not None else (np.arange(self._n, self._n + k, dtype=np.float64) / self.camera.line_rate_hz)
-            self._store(piece, tpiece, out)
+            out: list[StreamResult] = []
+            update = self._store(piece, tpiece, out)
+            if out:
+                yield out
+            if update:
+                self._update_model(self._n - block, self._n)
             pos += k
 
-    def _store(self, piece: np.ndarray, tpiece: np.ndarray, out: list[StreamResult]) -> None:
+    def _store(self, piece: np.ndarray, tpiece: np.ndarray, out: list[StreamResult]) -> bool:
+        """Copy a piece into the ring and test it; True when it completes a block (the model update is due)."""
         k = piece.shape[0]
         start = self._n
         self._check_overflow(start + k, out)
@@ -528,10 +574,9 @@ class StreamEngine:
             if self._n >= block:
                 self._init_model(block)
                 self._test(0, self._n, out)
-            return
+            return False
         self._test_piece(piece, start, out)
-        if self._n % block == 0:
-            self._update_model(self._n - block, self._n)
+        return self._n % block == 0
 
     def _check_overflow(self, new_n: int, out: list[StreamResult]) -> None:
         ev = self._event
@@ -913,6 +958,8 @@ def process_stream(
     Yields
     ------
     StreamResult
+        Each as soon as it is measured: after the piece of ``test_lines``
+        lines that ends its event, before the rest of that chunk is tested.
 
     Raises
     ------
@@ -938,11 +985,10 @@ def process_stream(
         if engine is None:
             engine = StreamEngine(camera, radius_m, config, source=source, dtype=dtype or ch.lines.dtype, executor=executor)
         try:
-            res = engine.push(ch.lines, ch.timestamps_s)
-        except StreamError as exc:
-            yield from exc.results
+            # each ball as soon as it is measured, not after the whole chunk
+            yield from engine._push_iter(ch.lines, ch.timestamps_s)
+        except StreamError:
             yield from engine.finish()
             raise
-        yield from res
     if engine is not None:
         yield from engine.finish()
