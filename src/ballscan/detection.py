@@ -257,7 +257,8 @@ def _masked_median(a: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.
     n_row, n = a.shape
     e = np.count_nonzero(excluded, axis=1)
     count = n - e
-    s = np.sort(np.where(excluded, np.inf, a), axis=1)
+    s = np.where(excluded, np.inf, a)
+    s.sort(axis=1)
     rows = np.arange(n_row)
     n_low = e // 2  # -BIG values before the kept ones
 
@@ -300,7 +301,7 @@ def _mode_seek(
     rng = s[:, -1].astype(np.float64) - base
     span = float(rng.max()) + 1.0
     shift = base - rows * span
-    keys = (s.astype(np.float64) - shift[:, None]).ravel()
+    keys = np.subtract(s, shift[:, None], dtype=np.float64).ravel()
     first = rows * n
     row_shift = rows * span
     top = rng + 0.25
@@ -419,8 +420,10 @@ def _background(
     bs = b[::step]
     thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
     if use_gain:
-        resid = xs - gain0[:, None] * bs[None, :]
-        excluded = np.abs(resid) > thr[None, :]
+        # |xs - gain0 bs| in one buffer (the same operations, fewer temporaries)
+        resid = np.multiply.outer(gain0, bs)
+        np.subtract(xs, resid, out=resid)
+        excluded = np.abs(resid, out=resid) > thr[None, :]
         safe = np.where(bs > 0, bs, 1.0)
         excluded |= (bs <= 0)[None, :]
         g, c = _masked_median(xs / safe[None, :], excluded)
@@ -428,9 +431,10 @@ def _background(
         gain = _fill_bad(g, good, gain0)
         offset = np.zeros(n)
     else:
-        resid = xs - bs[None, :] - offset0[:, None]
-        excluded = np.abs(resid) > thr[None, :]
-        o, c = _masked_median(xs - bs[None, :], excluded)
+        above_bs = xs - bs[None, :]
+        resid = above_bs - offset0[:, None]
+        excluded = np.abs(resid, out=resid) > thr[None, :]
+        o, c = _masked_median(above_bs, excluded)
         good = c >= max(3, xs.shape[1] // 10)
         offset = _fill_bad(o, good, offset0)
         gain = np.ones(n)
@@ -651,11 +655,12 @@ def detect(
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
     b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
-    bg32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
+    # |x - background| in one float32 buffer
+    resid32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
     if model == "offset":
-        bg32 += offset.astype(np.float32)[:, None]
-    resid32 = x32 - bg32
-    hit = np.abs(resid32) > (k_sigma * noise).astype(np.float32)[None, :]
+        resid32 += offset.astype(np.float32)[:, None]
+    np.subtract(x32, resid32, out=resid32)
+    hit = np.abs(resid32, out=resid32) > (k_sigma * noise).astype(np.float32)[None, :]
 
     lab, nlab = ndi.label(hit, structure=np.ones((3, 3), dtype=bool))
     regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
