@@ -37,7 +37,7 @@ or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import math
 
@@ -101,6 +101,21 @@ class EdgeSettings:
     max_walk_px : int
         Pixels the rough edge may move outwards from the peak-fraction
         crossing towards a darker (shaded) limb.
+    limb_samples : int
+        Samples per pixel of the profile model (``limb`` of
+        :func:`measure_edges`) when integrating it over a window and over the
+        level run.
+    limb_texture_tol : float
+        With ``limb``, an edge keeps its model-free value when the relative
+        change of the level from the level run to the run inside it differs
+        from the model's by more than 3 sigma plus this (texture, not
+        shading, near the edge).
+    limb_narrow_max_px, limb_wide_px : float, (float, float)
+        With ``limb``, the narrow-window edges are corrected on lines whose
+        model edge spread (``limb.spread_px``) is below ``limb_narrow_max_px``
+        and the wide-window edges where it lies within ``limb_wide_px``: the
+        lines where :func:`ballscan.fit.fit_motion` uses each (the model's
+        evaluation is the costly part); the others keep the model-free value.
     """
 
     n_out: int = 1
@@ -118,6 +133,10 @@ class EdgeSettings:
     slope_degree: int = -1
     slope_threshold: float = 2.0
     ball_noise: bool = True
+    limb_samples: int = 4
+    limb_texture_tol: float = 0.0
+    limb_narrow_max_px: float = 0.45
+    limb_wide_px: tuple[float, float] = (0.2, 1.0)
 
 
 @dataclass(frozen=True)
@@ -288,6 +307,70 @@ def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
     return float(lo) if m % 2 else float((lo + hi) / 2.0)
 
 
+def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol, n_rounds=1):
+    """Inner levels from a brightness model's profile (see ``limb`` of :func:`measure_edges`).
+
+    The window's sum is ``S = L_eff * c`` with ``c`` the covered length (the
+    window's inner end less the mean edge) and ``L_eff`` the mean level over
+    it.  For the model's profile placed at the current edge, ``L_eff`` is the
+    window's integral over ``c``; the data's ``L_eff`` is taken as the level
+    run's ``L_run`` times the model's ratio ``L_eff / L_run``, so the model
+    supplies only the profile's shape (the limb's shading, the spread of the
+    edge over the exposure) and the local level still comes from the pixels.
+    The edge follows from ``c = S / L_eff`` (the ratio changes slowly with the
+    edge: one round from the model-free edge is enough).  Positions are in box pixels.  Returns the
+    edges, their variances and the levels; rows without signal or a usable
+    ratio keep ``e``, ``var0`` and ``L0`` (the model-free estimate).
+    """
+    keep = np.ones(L_run.size, dtype=bool)
+    edge, var, L = e.copy(), var0.copy(), L0.copy()
+    rows = np.flatnonzero(valid & np.isfinite(e))
+    if rows.size == 0:
+        return edge, var, L
+    frac = (np.arange(m) + 0.5) / m
+    sg = sgn[rows].astype(float)
+    inner = win_last[rows] + 0.5 * sg
+    outer = np.where(sg > 0, np.minimum(win_first, win_last)[rows] - 0.5, np.maximum(win_first, win_last)[rows] + 0.5)
+    nw = n_win[rows].astype(float)
+    win_u = outer[:, None] + sg[:, None] * ((np.arange(int(nw.max()) * m) + 0.5) / m)[None, :]
+    in_win = (np.arange(win_u.shape[1])[None, :] < (nw * m)[:, None])
+    lev_u = (lev[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
+    deep_u = (deep[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
+    er = e[rows]
+    good = np.zeros(rows.size, dtype=bool)
+    ratio = np.ones(rows.size)
+    for _ in range(n_rounds):
+        val, cov = limb(lines_abs[rows], sg, sg[:, None] * (np.concatenate([win_u, lev_u, deep_u], axis=1) - er[:, None]))
+        nwu, nlu = win_u.shape[1], lev_u.shape[1]
+        s_model = np.where(in_win, val[:, :nwu], 0.0).sum(axis=1) / m
+        # the model's own covered length: its edge need not sit exactly at er
+        c_model = np.where(in_win, cov[:, :nwu], 0.0).sum(axis=1) / m
+        lvl_model = val[:, nwu : nwu + nlu].mean(axis=1)
+        deep_model = val[:, nwu + nlu :].mean(axis=1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            r = s_model / c_model / lvl_model
+            # the model knows the shading, not the texture: where the level
+            # run and the run inside it differ from the model's shape (a seam
+            # or a felt patch), the run's level says nothing about the limb's
+            # albedo and the model-free estimate is kept
+            q_data = pd[rows] / L_run[rows]
+            q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
+            smooth = np.abs(q_data - deep_model / lvl_model) <= 3.0 * q_sig + tol
+        good = np.isfinite(r) & (c_model > 0.05) & (r > 0.2) & (r < 2.0) & smooth
+        ratio = np.where(good, r, 1.0)
+        Lr = L_run[rows] * ratio
+        c_new = S[rows] / np.where(Lr > 0, Lr, 1.0)
+        er = np.where(good, inner - sg * c_new, er)
+    Lr = L_run[rows] * ratio
+    Ls = np.where(Lr > 0, Lr, 1.0)
+    # L = ratio * L_run: the level run's noise enters scaled by the ratio
+    v = (sw[rows] ** 2).sum(axis=1) / Ls**2 + (S[rows] / Ls**2) ** 2 * sl2[rows] * ratio**2
+    edge[rows] = np.where(good, er, e[rows])
+    var[rows] = np.where(good, v, var0[rows])
+    L[rows] = np.where(good, Lr, L0[rows])
+    return edge, var, L
+
+
 def _running_median(x: np.ndarray, n: int) -> np.ndarray:
     """Median of ``x`` over a centred window of ``n`` entries, ignoring NaN (NaN where all are)."""
     if n <= 1 or x.size == 0:
@@ -314,6 +397,7 @@ def measure_edges(
     saturation_dn: float | None = None,
     others: Sequence[Any] = (),
     settings: EdgeSettings = EdgeSettings(),
+    limb: Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None,
 ) -> EdgeMeasurements:
     """Measure both edges and the summed coverage on every line of one ball.
 
@@ -337,6 +421,16 @@ def measure_edges(
     others : sequence of BallRegion-like
         The other balls' regions: edges whose window meets one are unusable.
     settings : EdgeSettings
+    limb : callable, optional
+        ``limb(lines, sides, offsets) -> (value, coverage)``: the model's
+        expected normalised profile ``p`` and the ball's covered fraction
+        across the left (side +1) or right (-1) edge of image lines
+        ``lines`` (R,) at ``offsets`` (R, M) pixels inwards from the edge,
+        e.g. :func:`ballscan.shading.limb_profile`.  When given, each
+        edge's inner level is the level run times the model's ratio of the
+        mean level over the covered part of the window to the level run's
+        (see :func:`_limb_levels`) instead of the linear extrapolation of
+        ``level_slope``.
 
     Returns
     -------
@@ -514,6 +608,19 @@ def measure_edges(
     e = np.where(sgn[:, 0] > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
     var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
     var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
+    if limb is not None:
+        line_spread = np.asarray(getattr(limb, "spread_px", np.zeros(n_img)))[lines]
+        wanted = np.concatenate(
+            [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
+        )
+        deep_px = k[:, None] + deep_base * sgn
+        deep_inside = (deep_px.min(axis=1) >= 0) & (deep_px.max(axis=1) < w)
+        e, var, L = _limb_levels(
+            limb, e, var, L, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep_px, pd, sd2,
+            sgn[:, 0], hs4 & wanted & deep_inside, rows4[:, 0] + l0, s.limb_samples, s.limb_texture_tol,
+        )
+        Ls = np.where(L > 0, L, 1.0)
+        uncovered = n_win - S / Ls
     sig = np.sqrt(var)
     lo = np.minimum(win.min(1), lev.min(1))
     hi = np.maximum(win.max(1), lev.max(1))

@@ -770,7 +770,7 @@ class FitSettings:
     end_line_pixels: bool = False
     pixel_floor: float = 0.01
     level_areas: bool = False
-    edge_floor_px: float = 0.02
+    edge_floor_px: float = 0.015
     texture_gain: float = 1.0
     level_lines: int = 3
     reject_sigma: float = 3.5

@@ -1,0 +1,342 @@
+"""Lambertian shading of the ball, for the edges' limb brightness.
+
+A shaded ball is darker or brighter at its limb than one or two pixels
+inside it, and the brightness changes fastest right at the limb: for a
+Lambertian sphere lit from the camera's side the brightness at a distance
+``d`` inside the limb grows like ``sqrt(d)`` (the surface turns towards the
+camera), so a level measured a few pixels inside and extrapolated linearly
+still overestimates the limb, and the local-area edge (:mod:`ballscan.edges`)
+comes out biased inwards by a few hundredths of a pixel, on one side more than
+on the other and changing along the ball's passage: the pattern the depth
+velocity is read from.
+
+This module fits one shading law to the ball's interior pixels,
+
+    I = A + max(0, n . b)        (DN),
+
+``n`` the unit surface normal seen by the pixel (ray through the pixel
+centre, line centre time, the first fit's motion), ``A`` the ambient level
+and ``b`` the light's direction times its diffuse strength, robustly (Huber
+weights: seams and texture are outliers).  :func:`limb_profile` turns it into
+the normalised brightness ``polarity (I - background) / contrast`` of the
+ball's surface at any sensor position of any line, which
+:func:`ballscan.edges.measure_edges` uses only as a *shape*: the ratio of the
+mean brightness over the covered part of an edge pixel to the mean over the
+level run (the local level itself still comes from the pixels, so texture and
+albedo stay local).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+import numpy as np
+
+from .camera import LineScanCamera
+from .edges import EdgeMeasurements
+from .fit import averaged_model
+from .motion import BallMotion
+
+__all__ = ["LimbProfile", "ShadingModel", "ball_limb", "fit_shading", "limb_profile", "surface_normals"]
+
+
+@dataclass(frozen=True)
+class ShadingModel:
+    """``I = ambient_dn + max(0, n . light_dn)`` fitted to a ball's interior.
+
+    Attributes
+    ----------
+    ambient_dn : float
+        Brightness of surfaces facing away from the light, DN.
+    light_dn : tuple of float
+        Light direction (camera frame, from the ball towards the light)
+        times the diffuse brightness, DN.
+    residual_rms_dn : float
+        Robust RMS of the interior pixels about the law, DN (texture, noise).
+    n_pixels : int
+        Interior pixels used.
+    """
+
+    ambient_dn: float
+    light_dn: tuple[float, float, float]
+    residual_rms_dn: float
+    n_pixels: int
+
+    def brightness(self, normals: np.ndarray) -> np.ndarray:
+        """Brightness (DN) of surface elements with unit ``normals`` (..., 3)."""
+        return self.ambient_dn + np.maximum(normals @ np.asarray(self.light_dn), 0.0)
+
+
+def surface_normals(
+    camera: LineScanCamera, motion: BallMotion, t_s: np.ndarray, u_px: np.ndarray, h_px: np.ndarray | float = 0.0
+) -> tuple[np.ndarray, np.ndarray]:
+    """Unit normals of the sphere where the rays through ``u_px`` meet it.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+    t_s, u_px : ndarray
+        Times (s) and sensor positions (pixels), broadcast together.
+    h_px : ndarray or float
+        Position across the line within the pixel's height, pixels (0: the
+        viewing plane; the pixel spans -1/2 .. 1/2), broadcast too.
+
+    Returns
+    -------
+    hit : ndarray of bool
+        Whether the ray meets the sphere.
+    normals : ndarray (..., 3)
+        Outward unit normals at the first intersection (where ``hit``; the
+        closest point of the ray otherwise).
+    """
+    n_u = camera.backproject(np.asarray(u_px, dtype=float))
+    h = np.asarray(h_px, dtype=float) / camera.focal_px
+    inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
+    dx, dy, dz = h * inv, n_u * inv, inv
+    c = motion.centre(np.asarray(t_s, dtype=float))
+    cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
+    dc = dx * cx + dy * cy + dz * cz
+    disc = dc * dc - (cx * cx + cy * cy + cz * cz) + motion.radius_m**2
+    hit = disc >= 0.0
+    s = dc - np.sqrt(np.maximum(disc, 0.0))
+    nx, ny, nz = s * dx - cx, s * dy - cy, s * dz - cz
+    norm = np.maximum(np.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+    normals = np.stack(np.broadcast_arrays(nx / norm, ny / norm, nz / norm), axis=-1)
+    return np.broadcast_to(hit, normals.shape[:-1]), normals
+
+
+def fit_shading(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    data_dn: np.ndarray,
+    lines: np.ndarray,
+    t_lines_s: np.ndarray,
+    left_px: np.ndarray,
+    right_px: np.ndarray,
+    *,
+    inset_px: float = 1.5,
+    max_pixels: int = 2000,
+    huber_k: float = 1.5,
+    n_iterations: int = 5,
+) -> ShadingModel | None:
+    """Fit the shading law to the pixels well inside the ball.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+        The ball's motion (the first edge fit's).
+    data_dn : ndarray (n_lines, W)
+        The image, DN.
+    lines : ndarray of int
+        Image lines to use (those with both edges usable).
+    t_lines_s : ndarray
+        Centre time of each of ``lines``, seconds.
+    left_px, right_px : ndarray
+        Edges of each of ``lines`` (pixels); pixels more than ``inset_px``
+        inside both are used.
+    inset_px : float
+        Distance from the edges, pixels.
+    max_pixels : int
+        At most this many pixels (an even subsample), for speed.
+    huber_k : float
+        Huber threshold in robust sigmas.
+    n_iterations : int
+        Reweighting rounds.
+
+    Returns
+    -------
+    ShadingModel or None
+        None when fewer than 50 interior pixels exist.
+    """
+    lo = np.ceil(np.asarray(left_px) + inset_px).astype(int)
+    hi = np.floor(np.asarray(right_px) - inset_px).astype(int)
+    counts = np.maximum(hi - lo + 1, 0)
+    total = int(counts.sum())
+    if total < 50:
+        return None
+    row = np.repeat(np.arange(lines.size), counts)
+    col = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts) + np.repeat(lo, counts)
+    if total > max_pixels:
+        pick = np.linspace(0, total - 1, max_pixels).astype(int)
+        row, col = row[pick], col[pick]
+    hit, n = surface_normals(camera, motion, t_lines_s[row], col)
+    keep = hit
+    y = data_dn[lines[row[keep]], col[keep]].astype(float)
+    n = n[keep]
+    if y.size < 50:
+        return None
+    X = np.column_stack([np.ones(y.size), n])
+    w = np.ones(y.size)
+    active = np.ones(y.size, dtype=bool)
+    coef = np.zeros(4)
+    scale = 1.0
+    for _ in range(n_iterations):
+        # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
+        Xa = np.where(active[:, None], X, np.column_stack([np.ones(y.size), np.zeros((y.size, 3))]))
+        sw = np.sqrt(w)
+        coef = np.linalg.lstsq(Xa * sw[:, None], y * sw, rcond=None)[0]
+        lit = n @ coef[1:]
+        active = lit > 0
+        r = y - coef[0] - np.maximum(lit, 0.0)
+        scale = max(1.4826 * float(np.median(np.abs(r - np.median(r)))), 1e-9)
+        a = np.abs(r) / (huber_k * scale)
+        w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
+    return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
+
+
+@dataclass(frozen=True)
+class LimbProfile:
+    """The model's normalised profile across either edge of any line (see :func:`limb_profile`).
+
+    Calling it with ``(lines, sides, offsets)`` -- image lines (R,), sides
+    (R,) (+1 left, -1 right edge) and offsets (R, M) in pixels from the
+    model's mean edge, positive inwards -- returns ``(value, coverage)``:
+    the expected normalised value ``polarity (I - background) / contrast``
+    of a point-like pixel there (the surface brightness times the fraction
+    of the exposure and of the pixel's height in which the ball covers it)
+    and that fraction.  NaN on lines where the model has no edge.
+
+    Attributes
+    ----------
+    spread_px, left_px, right_px : ndarray (n_lines,)
+        The averaged silhouette's edge spread and mean edges per image line,
+        pixels (NaN where the ball is absent).
+    """
+
+    shading: ShadingModel
+    camera: LineScanCamera
+    motion: BallMotion
+    t_lines_s: np.ndarray
+    background_dn: np.ndarray
+    polarity: int
+    contrast_dn: float
+    spread_px: np.ndarray
+    left_px: np.ndarray
+    right_px: np.ndarray
+    sharp_px: float = 0.1
+    n_time: int = 4
+    n_height: int = 2
+
+    def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        lines = np.asarray(lines, dtype=int)
+        sides = np.asarray(sides)
+        width = self.background_dn.shape[1]
+        tau = self.camera.exposure
+        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * tau
+        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
+        light = np.asarray(self.shading.light_dn)
+        edge = np.where(sides > 0, self.left_px[lines], self.right_px[lines])
+        u = edge[:, None] + sides[:, None] * np.asarray(offsets, dtype=float)
+        cols = np.clip(np.rint(np.nan_to_num(u)).astype(int), 0, width - 1)
+        bg = self.background_dn[lines[:, None], cols]
+        val_out, cov_out = np.empty(u.shape), np.empty(u.shape)
+        # a sharp edge hardly moves during the exposure or across the
+        # pixel's height: one sample at the line's centre time will do
+        sharp = ~(self.spread_px[lines] >= self.sharp_px)
+        for rows, ts, hs in ((np.flatnonzero(sharp), np.zeros(1), np.zeros(1)), (np.flatnonzero(~sharp), tk, hk)):
+            if rows.size == 0:
+                continue
+            t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
+            hit, n = surface_normals(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
+            bright = self.shading.ambient_dn + np.maximum(n[..., 0] * light[0] + n[..., 1] * light[1] + n[..., 2] * light[2], 0.0)
+            val_out[rows] = np.where(hit, self.polarity * (bright - bg[rows][:, None, None, :]) / self.contrast_dn, 0.0).mean(axis=(1, 2))
+            cov_out[rows] = hit.mean(axis=(1, 2))
+        bad = ~np.isfinite(edge)[:, None]
+        return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
+
+
+def limb_profile(
+    shading: ShadingModel,
+    camera: LineScanCamera,
+    motion: BallMotion,
+    t_lines_s: np.ndarray,
+    background_dn: np.ndarray,
+    polarity: int,
+    contrast_dn: float,
+    spread_px: np.ndarray,
+    left_px: np.ndarray,
+    right_px: np.ndarray,
+    *,
+    sharp_px: float = 0.1,
+    n_time: int = 4,
+    n_height: int = 2,
+) -> LimbProfile:
+    """The model's normalised profile across either edge of any line.
+
+    Parameters
+    ----------
+    shading : ShadingModel
+    camera : LineScanCamera
+    motion : BallMotion
+    t_lines_s : ndarray (n_lines,)
+        Centre time of every image line, seconds.
+    background_dn : ndarray (n_lines, W)
+        Background of the image, DN.
+    polarity : int
+        +1 for a ball brighter than the background, -1 for darker.
+    contrast_dn : float
+        The normalisation of :func:`ballscan.edges.measure_edges`, DN.
+    spread_px, left_px, right_px : ndarray (n_lines,)
+        The averaged silhouette's edge spread and mean edges of every line
+        (:func:`ballscan.fit.averaged_model` at ``motion``), pixels; NaN
+        where the ball is absent.
+    sharp_px : float
+        Lines whose edges spread less than this over the exposure and the
+        pixel's height are evaluated at the line's centre time through the
+        pixel's centre; the others average ``n_time x n_height`` samples.
+    n_time, n_height : int
+        Samples over the exposure and across the pixel's height.
+
+    Returns
+    -------
+    LimbProfile
+    """
+    return LimbProfile(
+        shading, camera, motion, np.asarray(t_lines_s, dtype=float), background_dn, int(polarity), float(contrast_dn),
+        np.asarray(spread_px, dtype=float), np.asarray(left_px, dtype=float), np.asarray(right_px, dtype=float),
+        float(sharp_px), int(n_time), int(n_height),
+    )
+
+
+def ball_limb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    data_dn: np.ndarray,
+    edges: EdgeMeasurements,
+    t_lines_s: np.ndarray,
+    background_dn: np.ndarray,
+) -> LimbProfile | None:
+    """Fit the ball's shading and build its edge profile model in one step.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+        The first edge fit's motion.
+    data_dn : ndarray (n_lines, W)
+        The image, DN.
+    edges : EdgeMeasurements
+        The first (model-free) edges of the ball.
+    t_lines_s : ndarray (n_lines,)
+        Centre time of every image line, seconds.
+    background_dn : ndarray (n_lines, W)
+        Background of the image, DN.
+
+    Returns
+    -------
+    LimbProfile or None
+        None when the ball shows too few interior pixels for the fit.
+    """
+    theta = motion.to_params()[None]
+    me = averaged_model(camera, theta, motion.radius_m, edges.t_s, motion.acceleration_mps2)
+    both = edges.left_ok & edges.right_ok & (me.presence[0] > 0)
+    shading = fit_shading(camera, motion, data_dn, edges.lines[both], edges.t_s[both], me.left_px[0, both], me.right_px[0, both])
+    if shading is None:
+        return None
+    per_line = []
+    for arr in (me.spread_px[0], me.left_px[0], me.right_px[0]):
+        full = np.full(np.asarray(t_lines_s).size, np.nan)
+        full[edges.lines] = np.where(me.presence[0] > 0, arr, np.nan)
+        per_line.append(full)
+    return limb_profile(shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line)

@@ -1,0 +1,135 @@
+"""The ball's fitted shading and the shading-aware edges (ballscan.shading)."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from ballscan.camera import LineScanCamera, line_times
+from ballscan.detection import detect
+from ballscan.edges import measure_edges
+from ballscan.estimate import _full_background, estimate_image
+from ballscan.fit import averaged_model
+from ballscan.images import LineImage
+from ballscan.motion import BallMotion
+from ballscan.render import Appearance, render
+from ballscan.shading import ball_limb, fit_shading, surface_normals
+
+CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
+MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 0.0))
+LIGHT = (-0.35, -0.45, -0.82)
+WHITE_DN = 1000.0
+
+
+def _shaded(texture: str = "none"):
+    app = Appearance(ball_level=0.8, shading=True, light_dir=LIGHT, ambient=0.35, texture=texture, orientation_seed=1)
+    r = render(CAM, (MOTION, app), 200, background_level=0.1, noise=None)
+    return r, WHITE_DN * r.clean, app
+
+
+def test_surface_normals_geometry():
+    t = np.full(5, MOTION.t_c_s)
+    centre_u = CAM.project(MOTION.position_m[1], MOTION.position_m[2])
+    hit, n = surface_normals(CAM, MOTION, t, centre_u + np.array([0.0, 10.0, -10.0, 40.0, 100.0]))
+    assert hit.tolist() == [True, True, True, False, False]
+    assert np.allclose(np.linalg.norm(n, axis=-1), 1.0)
+    # the ray through the centre's image meets the sphere facing the camera
+    ray = np.array([0.0, MOTION.position_m[1], MOTION.position_m[2]])
+    assert np.dot(n[0], -ray / np.linalg.norm(ray)) > 0.9999
+    # the hit boundary is the silhouette: the model's edges at t_c
+    me = averaged_model(CAM, MOTION.to_params()[None], MOTION.radius_m, t[:1])
+    for edge, inward in ((me.left_px[0, 0], 1.0), (me.right_px[0, 0], -1.0)):
+        h_in, _ = surface_normals(CAM, MOTION, t[:1], edge + inward * 0.05)
+        h_out, _ = surface_normals(CAM, MOTION, t[:1], edge - inward * 0.05)
+        assert h_in[0] and not h_out[0]
+
+
+def test_fit_shading_recovers_the_lambertian_law():
+    r, img, app = _shaded()
+    t = line_times(CAM, img.shape[0])
+    me = averaged_model(CAM, MOTION.to_params()[None], MOTION.radius_m, t)
+    lines = np.flatnonzero(me.presence[0] >= 1.0)
+    sh = fit_shading(CAM, MOTION, img, lines, t[lines], me.left_px[0, lines], me.right_px[0, lines])
+    # the renderer's law: level * (ambient + (1 - ambient) max(0, N.L)), x white
+    level = app.ball_level * WHITE_DN
+    assert sh.ambient_dn == pytest.approx(level * app.ambient, rel=0.02)
+    assert np.allclose(sh.light_dn, level * (1 - app.ambient) * np.asarray(app.light_dir), rtol=0.03, atol=0.01 * level)
+    assert sh.residual_rms_dn < 0.01 * level
+
+
+def _edges(img, limb_on: bool):
+    image = LineImage(img, 1e9, 16, "render")
+    det = detect(image)
+    bg = _full_background(det)
+    reg = det.regions[0]
+    t = line_times(CAM, img.shape[0])
+    e0 = measure_edges(img, reg, bg, 0.5, t)
+    if not limb_on:
+        return e0, reg, t
+    limb = ball_limb(CAM, MOTION, img, e0, t, bg)
+    return measure_edges(img, reg, bg, 0.5, t, limb=limb), reg, t
+
+
+def test_limb_model_removes_the_lit_side_bias():
+    """Noise-free shaded ball: edges against the exact coverage edges, with and without the shading model."""
+    r, img, _ = _shaded()
+    me = averaged_model(CAM, MOTION.to_params()[None], MOTION.radius_m, line_times(CAM, img.shape[0]))
+    stats = {}
+    for on in (False, True):
+        e, reg, t = _edges(img, on)
+        sharp = (me.presence[0, e.lines] >= 1.0) & (me.spread_px[0, e.lines] < 0.3)
+        ok = e.left_ok & e.right_ok & sharp
+        dl = (e.left_px - me.left_px[0, e.lines])[ok]
+        dr = (e.right_px - me.right_px[0, e.lines])[ok]
+        stats[on] = (np.median(dl), np.median(dr), ok.sum())
+    # measured: left (lit) limb +0.035 px inwards without the model, <0.005 with it
+    assert abs(stats[False][0]) > 0.02
+    assert abs(stats[True][0]) < 0.008 and abs(stats[True][1]) < 0.008
+    assert stats[True][2] == stats[False][2]
+
+
+def test_texture_next_to_the_edge_keeps_the_model_free_value():
+    """Where the data follow the model's limb the edge follows the model; a seam inside keeps the plain estimate."""
+    W, n = 60, 12
+    # model: the limb 20 % darker, brightening linearly over 3 px
+    def shape(d):
+        return np.where(d > 0, 0.8 + 0.2 * np.minimum(d / 3.0, 1.0), 0.0)
+
+    img = np.full((n, W), 100.0)
+    img[:, 20:40] = 600.0  # ball from 19.5 to 39.5
+    for j, mean in ((39, 0.8 + 0.2 * 0.5 / 3), (38, 0.9), (37, 0.8 + 0.2 * 2.5 / 3)):
+        img[:, j] = 100.0 + 500.0 * mean  # the right limb shaded as the model says
+    img[:, 23:25] = 900.0  # a seam just inside the left edge's level run
+    region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
+    t = np.arange(n) * 1e-5
+
+    def limb(lines, sides, offsets):
+        d = np.asarray(offsets, dtype=float)
+        return shape(d), (d > 0).astype(float)
+
+    limb.spread_px = np.zeros(n)
+    plain = measure_edges(img, region, 100.0, 1.0, t)
+    with_limb = measure_edges(img, region, 100.0, 1.0, t, limb=limb)
+    okl = plain.left_ok & with_limb.left_ok
+    okr = plain.right_ok & with_limb.right_ok
+    assert okl.sum() >= 8 and okr.sum() >= 8
+    # left: the seam makes the level run disagree with the model -> unchanged
+    assert np.allclose(with_limb.left_px[okl], plain.left_px[okl])
+    # right: the data follow the model's limb -> the exact edge (the plain
+    # estimator, which assumes a flat level, is off)
+    assert np.allclose(with_limb.right_px[okr], 39.5, atol=1e-6)
+    assert np.all(np.abs(plain.right_px[okr] - 39.5) > 0.01)
+
+
+def test_estimate_reports_the_shading_and_can_skip_it():
+    r, img, _ = _shaded()
+    image = LineImage(img, 1e9, 16, "render")
+    on = estimate_image(image, CAM, MOTION.radius_m).balls[0]
+    off = estimate_image(image, CAM, MOTION.radius_m, shading=False).balls[0]
+    assert on.extra["shading"] is not None and off.extra["shading"] is None
+    assert off.extra["time_shading_s"] == 0.0
+    # the depth velocity of a shaded ball: the second pass removes most of the bias
+    assert abs(on.velocity_mps[2]) < abs(off.velocity_mps[2])
+    assert abs(on.velocity_mps[2]) < 0.5
