@@ -488,7 +488,7 @@ def _runs(m: np.ndarray, axis: int) -> np.ndarray:
 
 
 def _valid_run(f: np.ndarray, k: int, op: np.ufunc, axis: int) -> np.ndarray:
-    """``op`` (logical or / and) over every window of ``k`` entries along ``axis``, windows inside ``f`` only.
+    """``op`` (logical or / and) over every window of ``k`` entries along ``axis`` (0 or 1), windows inside ``f`` only.
 
     Entry ``i`` of the result combines ``f[i : i + k]`` along ``axis`` (the
     result is ``k - 1`` shorter). Built by doubling: windows of 1, 2, 4, ...
@@ -496,14 +496,21 @@ def _valid_run(f: np.ndarray, k: int, op: np.ufunc, axis: int) -> np.ndarray:
     and are idempotent, so the overlap does not matter): a few whole-array
     boolean operations instead of a per-pixel running filter.
     """
-    g = np.moveaxis(f, axis, 0)
+
+    def head(g: np.ndarray, d: int) -> np.ndarray:
+        return g[:-d] if axis == 0 else g[:, :-d]
+
+    def tail(g: np.ndarray, d: int) -> np.ndarray:
+        return g[d:] if axis == 0 else g[:, d:]
+
+    g = f
     length = 1
     while 2 * length <= k:
-        g = op(g[:-length], g[length:])
+        g = op(head(g, length), tail(g, length))
         length *= 2
     if length < k:
-        g = op(g[: -(k - length)], g[k - length :])
-    return np.moveaxis(g, 0, axis)
+        g = op(head(g, k - length), tail(g, k - length))
+    return g
 
 
 def _close(m: np.ndarray, r: int) -> np.ndarray:
@@ -519,7 +526,9 @@ def _close(m: np.ndarray, r: int) -> np.ndarray:
     if r <= 0:
         return m
     k = 2 * r + 1
-    d = _valid_run(_valid_run(np.pad(m, 2 * r), k, np.logical_or, 0), k, np.logical_or, 1)
+    p = np.zeros((m.shape[0] + 4 * r, m.shape[1] + 4 * r), dtype=bool)
+    p[2 * r : -2 * r, 2 * r : -2 * r] = m
+    d = _valid_run(_valid_run(p, k, np.logical_or, 0), k, np.logical_or, 1)
     return _valid_run(_valid_run(d, k, np.logical_and, 0), k, np.logical_and, 1)
 
 
