@@ -105,7 +105,7 @@ def test_texture_next_to_the_edge_keeps_the_model_free_value():
     region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
     t = np.arange(n) * 1e-5
 
-    def limb(lines, sides, offsets):
+    def limb(lines, sides, offsets, average=True):
         d = np.asarray(offsets, dtype=float)
         return shape(d), (d > 0).astype(float)
 

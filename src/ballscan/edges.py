@@ -340,13 +340,16 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     good = np.zeros(rows.size, dtype=bool)
     ratio = np.ones(rows.size)
     for _ in range(n_rounds):
-        val, cov = limb(lines_abs[rows], sg, sg[:, None] * (np.concatenate([win_u, lev_u, deep_u], axis=1) - er[:, None]))
-        nwu, nlu = win_u.shape[1], lev_u.shape[1]
-        s_model = np.where(in_win, val[:, :nwu], 0.0).sum(axis=1) / m
+        val, cov = limb(lines_abs[rows], sg, sg[:, None] * (win_u - er[:, None]))
+        # the level runs lie inside the limb throughout the exposure: one
+        # sample per position is enough there
+        inner_val, _ = limb(lines_abs[rows], sg, sg[:, None] * (np.concatenate([lev_u, deep_u], axis=1) - er[:, None]), average=False)
+        nlu = lev_u.shape[1]
+        s_model = np.where(in_win, val, 0.0).sum(axis=1) / m
         # the model's own covered length: its edge need not sit exactly at er
-        c_model = np.where(in_win, cov[:, :nwu], 0.0).sum(axis=1) / m
-        lvl_model = val[:, nwu : nwu + nlu].mean(axis=1)
-        deep_model = val[:, nwu + nlu :].mean(axis=1)
+        c_model = np.where(in_win, cov, 0.0).sum(axis=1) / m
+        lvl_model = inner_val[:, :nlu].mean(axis=1)
+        deep_model = inner_val[:, nlu:].mean(axis=1)
         with np.errstate(invalid="ignore", divide="ignore"):
             r = s_model / c_model / lvl_model
             # the model knows the shading, not the texture: where the level
@@ -422,11 +425,12 @@ def measure_edges(
         The other balls' regions: edges whose window meets one are unusable.
     settings : EdgeSettings
     limb : callable, optional
-        ``limb(lines, sides, offsets) -> (value, coverage)``: the model's
-        expected normalised profile ``p`` and the ball's covered fraction
-        across the left (side +1) or right (-1) edge of image lines
-        ``lines`` (R,) at ``offsets`` (R, M) pixels inwards from the edge,
-        e.g. :func:`ballscan.shading.limb_profile`.  When given, each
+        ``limb(lines, sides, offsets, average=True) -> (value, coverage)``:
+        the model's expected normalised profile ``p`` and the ball's covered
+        fraction across the left (side +1) or right (-1) edge of image lines
+        ``lines`` (R,) at ``offsets`` (R, M) pixels inwards from the edge
+        (``average=False``: a single sample per position suffices), e.g.
+        :func:`ballscan.shading.limb_profile`.  When given, each
         edge's inner level is the level run times the model's ratio of the
         mean level over the covered part of the window to the level run's
         (see :func:`_limb_levels`) instead of the linear extrapolation of

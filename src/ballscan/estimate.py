@@ -28,7 +28,7 @@ from .camera import LineScanCamera, line_times
 from .detection import BallRegion, Detection, background_at, detect, region_background
 from .edges import measure_edges
 from .errors import ImageFileError
-from .fit import fit_motion, propagate
+from .fit import FitSettings, fit_motion, propagate
 from .images import LineImage
 from .initial import InitialGuess, find_keypoints, initial_guess
 from .motion import BallMotion
@@ -107,6 +107,9 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
         cut_last="cut_last_line" in region.flags,
     )
     return initial_guess(kp, camera, radius_m)
+
+
+_FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 
 
 def estimate_region(
@@ -196,24 +199,33 @@ def estimate_region(
         others=others,
     )
     t_edges = time.perf_counter() - t_e
-    fit = fit_motion(camera, edges, ig.motion)
     shading_model = None
     t_shading = 0.0
-    if shading and fit.converged:
-        # second pass: the edges' limb levels from the ball's fitted shading
-        # (a Lambertian limb's brightness falls like sqrt(distance): a level
-        # taken inside and extrapolated linearly biases the lit side inwards)
-        t_s = time.perf_counter()
-        limb = ball_limb(camera, fit.motion, image.data, edges, t_lines_s, bg_full)
-        if limb is not None:
-            edges2 = measure_edges(
-                image.data, region, bg_full, detection.noise_dn, t_lines_s,
-                saturation_dn=detection.saturation_dn, others=others, limb=limb,
-            )
-            fit2 = fit_motion(camera, edges2, fit.motion)
-            if fit2.converged:
-                edges, fit, shading_model = edges2, fit2, limb.shading
-        t_shading = time.perf_counter() - t_s
+    if shading:
+        # a first fit good enough to place the shading model (its normals and
+        # edge spreads barely change with the last hundredths of a pixel):
+        # no outlier rounds, loose tolerance
+        first = fit_motion(camera, edges, ig.motion, _FIRST_PASS)
+        fit = None
+        if first.converged:
+            # second pass: the edges' limb levels from the ball's fitted shading
+            # (a Lambertian limb's brightness falls like sqrt(distance): a level
+            # taken inside and extrapolated linearly biases the lit side inwards)
+            t_s = time.perf_counter()
+            limb = ball_limb(camera, first.motion, image.data, edges, t_lines_s, bg_full)
+            if limb is not None:
+                edges2 = measure_edges(
+                    image.data, region, bg_full, detection.noise_dn, t_lines_s,
+                    saturation_dn=detection.saturation_dn, others=others, limb=limb,
+                )
+                fit2 = fit_motion(camera, edges2, first.motion)
+                if fit2.converged:
+                    edges, fit, shading_model = edges2, fit2, limb.shading
+            t_shading = time.perf_counter() - t_s
+        if fit is None:
+            fit = fit_motion(camera, edges, first.motion if first.converged else ig.motion)
+    else:
+        fit = fit_motion(camera, edges, ig.motion)
     flags.extend(fit.flags)
     if not fit.converged:
         flags.append("not_converged")

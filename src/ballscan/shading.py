@@ -66,6 +66,22 @@ class ShadingModel:
         return self.ambient_dn + np.maximum(normals @ np.asarray(self.light_dn), 0.0)
 
 
+def _normal_components(camera: LineScanCamera, motion: BallMotion, t_s, u_px, h_px=0.0):
+    """:func:`surface_normals` as separate (broadcast, not materialised) components."""
+    n_u = camera.backproject(np.asarray(u_px, dtype=float))
+    h = np.asarray(h_px, dtype=float) / camera.focal_px
+    inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
+    dx, dy, dz = h * inv, n_u * inv, inv
+    c = motion.centre(np.asarray(t_s, dtype=float))
+    cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
+    dc = dx * cx + dy * cy + dz * cz
+    disc = dc * dc - (cx * cx + cy * cy + cz * cz) + motion.radius_m**2
+    s = dc - np.sqrt(np.maximum(disc, 0.0))
+    nx, ny, nz = s * dx - cx, s * dy - cy, s * dz - cz
+    inv_n = 1.0 / np.maximum(np.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+    return disc >= 0.0, nx * inv_n, ny * inv_n, nz * inv_n
+
+
 def surface_normals(
     camera: LineScanCamera, motion: BallMotion, t_s: np.ndarray, u_px: np.ndarray, h_px: np.ndarray | float = 0.0
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -89,19 +105,8 @@ def surface_normals(
         Outward unit normals at the first intersection (where ``hit``; the
         closest point of the ray otherwise).
     """
-    n_u = camera.backproject(np.asarray(u_px, dtype=float))
-    h = np.asarray(h_px, dtype=float) / camera.focal_px
-    inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
-    dx, dy, dz = h * inv, n_u * inv, inv
-    c = motion.centre(np.asarray(t_s, dtype=float))
-    cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
-    dc = dx * cx + dy * cy + dz * cz
-    disc = dc * dc - (cx * cx + cy * cy + cz * cz) + motion.radius_m**2
-    hit = disc >= 0.0
-    s = dc - np.sqrt(np.maximum(disc, 0.0))
-    nx, ny, nz = s * dx - cx, s * dy - cy, s * dz - cz
-    norm = np.maximum(np.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
-    normals = np.stack(np.broadcast_arrays(nx / norm, ny / norm, nz / norm), axis=-1)
+    hit, nx, ny, nz = _normal_components(camera, motion, t_s, u_px, h_px)
+    normals = np.stack(np.broadcast_arrays(nx, ny, nz), axis=-1)
     return np.broadcast_to(hit, normals.shape[:-1]), normals
 
 
@@ -115,9 +120,9 @@ def fit_shading(
     right_px: np.ndarray,
     *,
     inset_px: float = 1.5,
-    max_pixels: int = 2000,
+    max_pixels: int = 1200,
     huber_k: float = 1.5,
-    n_iterations: int = 5,
+    n_iterations: int = 4,
 ) -> ShadingModel | None:
     """Fit the shading law to the pixels well inside the ball.
 
@@ -161,9 +166,8 @@ def fit_shading(
         pick = np.linspace(0, total - 1, max_pixels).astype(int)
         row, col = row[pick], col[pick]
     hit, n = surface_normals(camera, motion, t_lines_s[row], col)
-    keep = hit
-    y = data_dn[lines[row[keep]], col[keep]].astype(float)
-    n = n[keep]
+    y = data_dn[lines[row[hit]], col[hit]].astype(float)
+    n = n[hit]
     if y.size < 50:
         return None
     X = np.column_stack([np.ones(y.size), n])
@@ -195,7 +199,10 @@ class LimbProfile:
     the expected normalised value ``polarity (I - background) / contrast``
     of a point-like pixel there (the surface brightness times the fraction
     of the exposure and of the pixel's height in which the ball covers it)
-    and that fraction.  NaN on lines where the model has no edge.
+    and that fraction.  NaN on lines where the model has no edge.  With
+    ``average=False`` every line is sampled once, at its centre time through
+    the pixel's centre (enough well inside the limb, where the ball covers
+    the pixel throughout).
 
     Attributes
     ----------
@@ -218,7 +225,7 @@ class LimbProfile:
     n_time: int = 4
     n_height: int = 2
 
-    def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, average: bool = True) -> tuple[np.ndarray, np.ndarray]:
         lines = np.asarray(lines, dtype=int)
         sides = np.asarray(sides)
         width = self.background_dn.shape[1]
@@ -233,13 +240,13 @@ class LimbProfile:
         val_out, cov_out = np.empty(u.shape), np.empty(u.shape)
         # a sharp edge hardly moves during the exposure or across the
         # pixel's height: one sample at the line's centre time will do
-        sharp = ~(self.spread_px[lines] >= self.sharp_px)
+        sharp = ~(self.spread_px[lines] >= self.sharp_px) | (not average)
         for rows, ts, hs in ((np.flatnonzero(sharp), np.zeros(1), np.zeros(1)), (np.flatnonzero(~sharp), tk, hk)):
             if rows.size == 0:
                 continue
             t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
-            hit, n = surface_normals(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
-            bright = self.shading.ambient_dn + np.maximum(n[..., 0] * light[0] + n[..., 1] * light[1] + n[..., 2] * light[2], 0.0)
+            hit, nx, ny, nz = _normal_components(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
+            bright = self.shading.ambient_dn + np.maximum(nx * light[0] + ny * light[1] + nz * light[2], 0.0)
             val_out[rows] = np.where(hit, self.polarity * (bright - bg[rows][:, None, None, :]) / self.contrast_dn, 0.0).mean(axis=(1, 2))
             cov_out[rows] = hit.mean(axis=(1, 2))
         bad = ~np.isfinite(edge)[:, None]
