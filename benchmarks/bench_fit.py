@@ -7,8 +7,10 @@ On the same rendered images — an untextured, unshaded tennis ball
 30 degrees oblique in depth) plus Gaussian pixel noise of known sigma — it
 runs detection once per image and both refinements on it, and prints per
 method and geometry: the median time per ball of detection, edges and the
-refinement (``BallEstimate.extra``: ``time_edges_s``, ``time_fit_s``,
-``time_refine_s``) and of edges plus refinement (``e+r``: what a ball costs
+refinement (``BallEstimate.extra``: ``time_edges_s``, ``time_shading_s``
+(the fit's shading-aware second pass: shading model and edges measured
+again), ``time_fit_s``, ``time_refine_s``) and of edges plus refinement
+(``e+r``, the shading pass included: what a ball costs
 after detection), the speed's bias and RMSE over the runs, the RMSE of ``vz`` against its
 bound, the 1-sigma coverage of the reported speed sigma, and the speed
 RMSE's ratio to the
@@ -64,7 +66,7 @@ def run(runs: int, noise_dn: float) -> list[dict]:
         clean = render(CAMERA, (m, Appearance.flat(BALL)), N_LINES, background_level=BACKGROUND, noise=None).clean
         contrast = (BALL - BACKGROUND) * WHITE_DN
         bound = pixel_crlb(CAMERA, m, noise_dn, contrast)
-        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "refine": [], "err": [], "z": [], "vz": []} for k in ("paper", "fit")}
+        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "shade": [], "refine": [], "err": [], "z": [], "vz": []} for k in ("paper", "fit")}
         rng = np.random.default_rng(12345)
         for _ in range(runs):
             data = clean * WHITE_DN + noise_dn * rng.standard_normal(clean.shape)
@@ -80,9 +82,11 @@ def run(runs: int, noise_dn: float) -> list[dict]:
                 a["det"].append(t_det)
                 if method == "fit":
                     a["edges"].append(b.extra["time_edges_s"])
+                    a["shade"].append(b.extra["time_shading_s"])
                     a["refine"].append(b.extra["time_fit_s"])
                 else:
                     a["edges"].append(0.0)
+                    a["shade"].append(0.0)
                     a["refine"].append(b.extra["time_refine_s"])
                 err = (b.speed_mps - m.speed_mps) if b.speed_mps is not None else math.nan
                 a["err"].append(err)
@@ -98,8 +102,9 @@ def run(runs: int, noise_dn: float) -> list[dict]:
                     method=method,
                     det_ms=1000 * statistics.median(a["det"]),
                     edges_ms=1000 * statistics.median(a["edges"]),
+                    shade_ms=1000 * statistics.median(a["shade"]),
                     refine_ms=1000 * statistics.median(a["refine"]),
-                    total_ms=1000 * statistics.median([e + r for e, r in zip(a["edges"], a["refine"])]),
+                    total_ms=1000 * statistics.median([e + s + r for e, s, r in zip(a["edges"], a["shade"], a["refine"])]),
                     bias=float(np.nanmean(err)),
                     rmse=rmse,
                     crlb=bound.speed_sigma_mps,
@@ -119,12 +124,12 @@ def main() -> None:
     a = ap.parse_args()
     rows = run(a.runs, a.noise)
     print(f"{a.runs} images per geometry, pixel noise {a.noise:g} DN, contrast {(BALL - BACKGROUND) * WHITE_DN:g} DN, one core")
-    hdr = f"{'geometry':<15} {'method':<6} {'detect ms':>9} {'edges ms':>9} {'refine ms':>9} {'e+r ms':>7} {'bias m/s':>10} {'RMSE m/s':>10} {'CRLB m/s':>10} {'RMSE/CRLB':>9} {'1-sig cov':>9} {'vz RMSE':>8} {'vz CRLB':>8}"
+    hdr = f"{'geometry':<15} {'method':<6} {'detect ms':>9} {'edges ms':>9} {'shade ms':>8} {'refine ms':>9} {'e+r ms':>7} {'bias m/s':>10} {'RMSE m/s':>10} {'CRLB m/s':>10} {'RMSE/CRLB':>9} {'1-sig cov':>9} {'vz RMSE':>8} {'vz CRLB':>8}"
     print(hdr)
     print("-" * len(hdr))
     for r in rows:
         print(
-            f"{r['geometry']:<15} {r['method']:<6} {r['det_ms']:9.1f} {r['edges_ms']:9.1f} {r['refine_ms']:9.1f} {r['total_ms']:7.1f} "
+            f"{r['geometry']:<15} {r['method']:<6} {r['det_ms']:9.1f} {r['edges_ms']:9.1f} {r['shade_ms']:8.1f} {r['refine_ms']:9.1f} {r['total_ms']:7.1f} "
             f"{r['bias']:+10.4f} {r['rmse']:10.4f} {r['crlb']:10.4f} {r['ratio']:9.2f} {r['cover']:9.2f} {r['vz_rmse']:8.3f} {r['vz_crlb']:8.3f}"
         )
 
