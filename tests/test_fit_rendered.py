@@ -3,17 +3,16 @@
 Targets and what is met (see the module's tests for the tolerances used):
 
 * flat, noise-free tennis ball at 3 m (f = 3000 px, 50 kHz): perpendicular
-  crossing, speed error target < 0.01 %, achieved 0.012 %; 30 degrees
-  oblique along the sensor, target < 0.05 %, met; in depth 0.076 %; position target
-  < 0.5 mm, achieved < 0.05 mm.  At this level the result depends on the
-  renderer's sampling: rendering the same scenes with 32 x 8 x 32 instead of
-  16 x 4 x 8 samples per edge pixel moves the speed errors to 0.017 % and
-  +0.105 % (edges are exact to about 0.01 px; ``vz`` of an oblique ball is
-  its weakest parameter).
+  crossing, speed error target < 0.01 %, achieved 0.0043 %; 30 degrees
+  oblique along the sensor, target < 0.05 %, achieved 0.0066 %; in depth
+  0.085 % (not met: V.z, the weak axis); position target < 0.5 mm, achieved
+  < 0.035 mm.  At this level the result depends on the renderer's sampling
+  (16 x 4 x 8 samples per edge pixel; edges are exact to about 0.01 px).
 * clean reference scenes (POV-Ray, textured and shaded): median speed error
-  target <= 0.3 %, achieved 0.30 %.
+  target <= 0.3 %, achieved 0.14 % (worst 0.79 %), with the shading-aware
+  second pass.
 * 1-sigma coverage of the speed over noisy renders of an untextured ball
-  crossing at 30 degrees: 60-76 %.
+  crossing at 30 degrees: 60-76 % (measured 74.5 %).
 """
 
 from __future__ import annotations
@@ -59,9 +58,9 @@ def _oblique(deg: float, speed: float = 30.0, towards: str = "z") -> BallMotion:
 @pytest.mark.parametrize(
     ("deg", "towards", "max_speed_pct"),
     # the issue's targets are 0.01 % (perpendicular) and 0.05 % (30 degrees):
-    # met along the sensor (measured 0.0101 %); perpendicular measured 0.0115 %
-    # and in depth 0.076 % (V.z, the weak axis): those two are held at what is met
-    [(0.0, "z", 0.02), (30.0, "y", 0.05), (30.0, "z", 0.15)],
+    # measured 0.0043 % and 0.0066 % (along the sensor); in depth 0.085 %
+    # (V.z, the weak axis), held at what is met
+    [(0.0, "z", 0.01), (30.0, "y", 0.05), (30.0, "z", 0.15)],
 )
 def test_flat_noise_free_render_accuracy(deg, towards, max_speed_pct):
     m = _oblique(deg, towards=towards)
@@ -123,7 +122,8 @@ def test_clean_reference_scenes_speed_error():
             zs.append(abs(eb.speed_mps - s_true) / eb.speed_sigma_mps)
             pos_err = np.linalg.norm(np.asarray(eb.position_m) - tb["position_m"])
             assert pos_err < 0.005, name  # metres
-    assert float(np.median(errs)) < 0.35
+    # measured median 0.14 %, worst 0.79 % (the serve: V.z sigma 10 m/s)
+    assert float(np.median(errs)) < 0.3
     assert max(errs) < 1.0
     # the clean 16-bit images have almost no pixel noise: the sigmas come from
     # the systematic floor and the residual scatter, and still cover the error
