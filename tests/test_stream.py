@@ -287,7 +287,7 @@ def test_result_comes_out_before_the_rest_of_the_chunk_is_tested():
     for r in eng._push_iter(data):  # what process_stream yields from
         read_at_result.append(eng.lines_received)
         got.append(r)
-    # the first ball's event ends near line 940: out once its 128-line piece is tested
+    # the first ball's event ends near line 940: out once the piece [768, 1024) is tested, before line 2000 is read
     assert read_at_result == [1024, 2048]
     for tl in (7, 512):
         ref = StreamEngine(CAM, RADIUS, StreamConfig(test_lines=tl)).push(data)

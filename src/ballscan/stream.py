@@ -180,7 +180,7 @@ class StreamConfig:
     margin_lines: int = 16
     margin_px: int = 48
     block_lines: int = 512
-    test_lines: int = 128
+    test_lines: int = 256
     sample_step: int = 8
     ema_alpha: float = 0.25
     buffer_lines: int = 8192
