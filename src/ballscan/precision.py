@@ -55,6 +55,10 @@ class PrecisionBound:
         Of the centre at ``t_c`` (x is 0 by definition).
     velocity_sigma_mps : ndarray (3,)
     speed_sigma_mps : float
+        RMS error of the reported (bias-corrected) speed of an efficient
+        velocity estimate, :func:`ballscan.fit.propagate` of the bound's
+        covariance: not the linearised bound alone, which ignores a poorly
+        determined ``vz`` when ``vz = 0``.
     direction_sigma_deg : ndarray (2,)
         Of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``.
     n_measurements : int
