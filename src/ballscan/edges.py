@@ -133,7 +133,7 @@ class EdgeSettings:
     slope_degree: int = -1
     slope_threshold: float = 2.0
     ball_noise: bool = True
-    limb_samples: int = 4
+    limb_samples: int = 3
     limb_texture_tol: float = 0.0
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)

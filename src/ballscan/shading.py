@@ -120,7 +120,7 @@ def fit_shading(
     right_px: np.ndarray,
     *,
     inset_px: float = 1.5,
-    max_pixels: int = 1200,
+    max_pixels: int = 800,
     huber_k: float = 1.5,
     n_iterations: int = 4,
 ) -> ShadingModel | None:
@@ -222,7 +222,7 @@ class LimbProfile:
     left_px: np.ndarray
     right_px: np.ndarray
     sharp_px: float = 0.1
-    n_time: int = 4
+    n_time: int = 3
     n_height: int = 2
 
     def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, average: bool = True) -> tuple[np.ndarray, np.ndarray]:
@@ -266,7 +266,7 @@ def limb_profile(
     right_px: np.ndarray,
     *,
     sharp_px: float = 0.1,
-    n_time: int = 4,
+    n_time: int = 3,
     n_height: int = 2,
 ) -> LimbProfile:
     """The model's normalised profile across either edge of any line.
