@@ -71,7 +71,7 @@ def test_quick_mode_is_small_and_says_so(quick):
 def test_quick_error_falls_with_ball_size_and_line_rate(quick):
     # The paper's Sec. 3.A: larger balls and faster scanning give more contour.
     # Margin: the fit's median at the large end must be at least 2x smaller
-    # (the measured ratios are ~0.005-0.02).
+    # (the measured ratios are ~0.025-0.09).
     for m in ("fit",):
         assert _median(quick, "radius_m", 0.11, m) < 0.5 * _median(quick, "radius_m", 0.02, m)
         assert _median(quick, "line_rate_hz", 140000.0, m) < 0.5 * _median(quick, "line_rate_hz", 5800.0, m)
@@ -99,14 +99,17 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
         pytest.fail("fit not better than the initial guess at: " + "; ".join(worse))
 
 
-# Known shortfall of the fit (reported, not hidden).  With fit.py of commit
-# 59868f7 (and at cc633cb) the fit's median |error| is 2.1x-4.8x the
-# bound where the ball spans 100+ lines (2.1x at 4.7 m/s, 2.4x at the base
-# direction, 4.2x at R = 0.11 m, 4.8x at 140 000 lines/s) and 3.7x-68x with few
-# lines (R = 0.02 m: 3.7x, 60 m/s: 16x, 5 800 lines/s: 68x).  Remove the marker when it passes
+# Known shortfall of the fit (reported, not hidden).  With the two-pass fit
+# of commit d88b6a6 (runs/fig5-quick-s2) the fit's median |error| is 2.2x-3.8x
+# the bound at six of the eight points, few lines or many (2.25x at 60 m/s,
+# 2.6x at 60 deg, 3.4x at 4.7 m/s and at 5 800 lines/s, 3.5x at 140 000
+# lines/s, 3.8x at R = 0.11 m), and within it at two (0.87x at the base
+# direction; 0.26x at R = 0.02 m, where one trial of 8 is off by 1.4 % and
+# the median says little).  At 41ca944 (cheaper shading pass) the same six
+# points fail at 2.2x-3.7x.  Remove the marker when it passes
 # (strict: the quick sweep is seeded, so an unexpected pass fails CI and says so).
 @pytest.mark.slow
-@pytest.mark.xfail(reason="fit 2.1x-68x the pixel Cramér–Rao bound on the quick sweep; see comment", strict=True)
+@pytest.mark.xfail(reason="fit 2.2x-3.8x the pixel Cramér–Rao bound at 6 of 8 points of the quick sweep; see comment", strict=True)
 def test_quick_fit_within_1p5_of_cramer_rao(quick):
     # Margin 1.5x the median |error| of an efficient unbiased estimator
     # (0.6745 sigma_CRLB), untextured flat ball.
