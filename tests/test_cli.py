@@ -152,3 +152,15 @@ def test_simulate_refuses_a_ball_behind_the_camera(tmp_path, capsys):
                        "--velocity", "30,1,-0.5", "--t-c", "0.001", "--lines", "100", "--out", tmp_path / "b")
     assert code != 0 and "in front of the camera" in err and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "b.png").exists()
+
+
+def test_estimate_shading_switch(capsys):
+    scene = DATA / "scenes" / "pub_pingpong"
+    args = ("estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", "0.02", "--json")
+    code, out_on, err = run(capsys, *args)
+    assert code == 0, err
+    code, out_off, err = run(capsys, *args, "--no-shading")
+    assert code == 0, err
+    on, off = json.loads(out_on)["balls"][0], json.loads(out_off)["balls"][0]
+    assert on["shading"]["light_dn"] is not None and off["shading"] is None
+    assert off["time_shading_s"] == 0.0 and on["velocity_mps"] != off["velocity_mps"]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 import os
 import threading
 import time
@@ -586,3 +587,19 @@ def test_ball_longer_than_buffer_is_cut_and_later_balls_are_found():
     assert len(res) == 3
     assert res[0].estimate.t_c_s is None and "buffer" in res[0].estimate.extra["reason"]
     assert [round(r.estimate.t_c_s * CAM.line_rate_hz) for r in res[1:]] == [5000, 5600]
+
+
+def test_stream_shading_switch_reaches_the_estimator():
+    """StreamConfig.shading is what estimate_image gets (the same numbers as on the crop)."""
+    m = BallMotion(RADIUS, 300 / CAM.line_rate_hz, (0.0, 0.05, 3.0), (30.0, 1.0, 0.0))
+    data = render(CAM, [(m, Appearance(texture="none", shading=True))], 600, background_level=0.1, noise=SensorNoise(), seed=5).image
+    for shading in (True, False):
+        eng = StreamEngine(CAM, RADIUS, StreamConfig(shading=shading, keep_crops=True))
+        res = eng.push(data) + eng.finish()
+        assert len(res) == 1
+        r = res[0]
+        (c0, c1) = r.crop_cols
+        cam = replace(crop_camera(CAM, c0, c1), exposure_s=1.0 / CAM.line_rate_hz)  # as the engine does without timestamps
+        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", shading)
+        assert ref[0].velocity_mps == r.estimate.velocity_mps
+        assert (r.estimate.extra["shading"] is not None) == shading

@@ -110,6 +110,7 @@ def estimate(
     timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
     lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
+    shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off halves the time per ball, V.z less accurate)."),
 ) -> None:
     """Measure every ball in a line-scan image."""
     from .camera import line_times, load_camera
@@ -122,7 +123,7 @@ def estimate(
     cam = load_camera(camera)
     img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
     ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
-    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts)
+    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading)
     if as_json:
         typer.echo(report.to_json(cam))
     else:
