@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import fields
 from types import SimpleNamespace
 
 import numpy as np
@@ -9,12 +10,12 @@ import pytest
 
 from ballscan.camera import LineScanCamera, line_times
 from ballscan.detection import detect
-from ballscan.edges import measure_edges
+from ballscan.edges import EdgeMeasurements, measure_edges, with_limb
 from ballscan.estimate import _full_background, estimate_image
 from ballscan.fit import averaged_model
 from ballscan.images import LineImage
 from ballscan.motion import BallMotion
-from ballscan.render import Appearance, render
+from ballscan.render import Appearance, SensorNoise, render
 from ballscan.shading import ball_limb, fit_shading, surface_normals
 
 CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
@@ -133,3 +134,62 @@ def test_estimate_reports_the_shading_and_can_skip_it():
     # the depth velocity of a shaded ball: the second pass removes most of the bias
     assert abs(on.velocity_mps[2]) < abs(off.velocity_mps[2])
     assert abs(on.velocity_mps[2]) < 0.5
+
+
+def _assert_same_edges(a: EdgeMeasurements, b: EdgeMeasurements) -> None:
+    for f in fields(EdgeMeasurements):
+        if not f.compare:
+            continue
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, np.ndarray):
+            assert x.dtype == y.dtype and np.array_equal(x, y, equal_nan=True), f.name
+        else:
+            assert x == y, f.name
+
+
+def _noisy_scenes():
+    """Shaded noisy balls: one, two at overlapping times, one cut by the sensor's start, one saturated."""
+    app = Appearance(ball_level=0.8, shading=True, light_dir=LIGHT, ambient=0.35)
+    other = BallMotion(0.0335, 0.0017, (0.0, 0.08, 3.0), (25.0, 1.0, 0.0))
+    cut = BallMotion(0.0335, 0.003, (0.0, -0.998, 3.0), (30.0, 0.0, 0.0))  # centre at u = 25 px
+    return {
+        "one": ([MOTION], render(CAM, (MOTION, app), 200, noise=SensorNoise(), seed=3).image),
+        "two": ([MOTION, other], render(CAM, [(MOTION, app), (other, app)], 200, noise=SensorNoise(), seed=4).image),
+        "cut": ([cut], render(CAM, (cut, app), 300, noise=SensorNoise(), seed=5).image),
+        "saturated": ([MOTION], render(CAM, (MOTION, app), 200, noise=SensorNoise(white_dn=400.0), seed=6).image),
+    }
+
+
+@pytest.mark.parametrize("name", ["one", "two", "cut", "saturated"])
+def test_with_limb_equals_measuring_again(name):
+    """with_limb reuses the first pass and gives measure_edges(limb=...) bit for bit."""
+    motions, data = _noisy_scenes()[name]
+    image = LineImage(np.asarray(data, dtype=float), 255.0, 8, name)
+    det = detect(image)
+    assert len(det.regions) == len(motions)
+    bg = _full_background(det)
+    t = line_times(CAM, data.shape[0])
+    flags = set()
+    for reg in det.regions:
+        others = [o for o in det.regions if o.index != reg.index]
+        kw = dict(saturation_dn=det.saturation_dn, others=others)
+        plain = measure_edges(image.data, reg, bg, det.noise_dn, t, **kw)
+        flags |= set(plain.flags)
+        t_mid = t[(reg.line_start + reg.line_stop) // 2]
+        motion = min(motions, key=lambda m: abs(m.t_c_s - t_mid))
+        limb = ball_limb(CAM, motion, image.data, plain, t, bg)
+        assert limb is not None
+        again = measure_edges(image.data, reg, bg, det.noise_dn, t, limb=limb, **kw)
+        reused = with_limb(plain, limb)
+        _assert_same_edges(reused, again)
+        # the model did change some edges, and None gives the model-free ones back
+        assert not np.array_equal(reused.left_px, plain.left_px, equal_nan=True)
+        _assert_same_edges(with_limb(reused, None), plain)
+    assert {"one": set(), "two": {"overlap"}, "cut": {"cut_sensor_end"}, "saturated": {"saturated"}}[name] <= flags
+
+
+def test_with_limb_needs_measured_edges():
+    n = np.zeros(3)
+    synthetic = EdgeMeasurements(np.arange(3), n, n, n, n, n, n > 0, n > 0, n, n, n, n, n, n > 0)
+    with pytest.raises(ValueError, match="measure_edges"):
+        with_limb(synthetic, None)

@@ -36,14 +36,14 @@ or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Sequence
 
 import math
 
 import numpy as np
 
-__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges"]
+__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "with_limb"]
 
 
 @dataclass(frozen=True)
@@ -235,6 +235,8 @@ class EdgeMeasurements:
     profile: np.ndarray | None = None
     profile_sigma: np.ndarray | None = None
     profile_col0: int = 0
+    # the first pass's intermediates, for with_limb (None: not made by measure_edges)
+    _pass: _EdgePass | None = field(default=None, compare=False, repr=False)
 
     @property
     def n_edges(self) -> int:
@@ -245,6 +247,51 @@ class EdgeMeasurements:
     def signal(self) -> np.ndarray:
         """Lines whose peak shows the ball (edges measured or end line)."""
         return (self.left_ok | self.right_ok) | self.end_line
+
+
+@dataclass(frozen=True)
+class _EdgePass:
+    """What :func:`measure_edges` computes before and besides the inner levels of ``limb``.
+
+    The per-estimate arrays have ``4 n`` rows (``n`` lines each: narrow
+    window left and right, wide window left and right, see ``quarters``) and
+    are in box pixels; ``e``, ``var`` and ``L`` are the model-free edges,
+    variances and levels.  ``usable`` holds every rule of an edge's usability
+    but the plausibility of its level, ``run_ok`` the level run's own,
+    ``limb_rows`` the rows ``limb`` may correct (signal, deep run inside the
+    box), ``spoiled`` the lines whose area is not clean (cut, saturated or
+    overlapped edge), ``common`` the fields of :class:`EdgeMeasurements` that
+    ``limb`` does not change.  The other arrays are the arguments of
+    :func:`_limb_levels`.
+    """
+
+    settings: EdgeSettings
+    n_img: int
+    c0: int
+    quarters: tuple[slice, ...]
+    has_signal: np.ndarray
+    e: np.ndarray
+    var: np.ndarray
+    L: np.ndarray
+    S: np.ndarray
+    L_run: np.ndarray
+    sl2: np.ndarray
+    sw: np.ndarray
+    n_win: np.ndarray
+    win_first: np.ndarray
+    win_last: np.ndarray
+    lev: np.ndarray
+    deep: np.ndarray
+    limb_rows: np.ndarray
+    pd: np.ndarray
+    sd2: np.ndarray
+    sgn: np.ndarray
+    lines_abs: np.ndarray
+    dlev: np.ndarray
+    usable: np.ndarray
+    run_ok: np.ndarray
+    spoiled: np.ndarray
+    common: dict[str, Any]
 
 
 def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
@@ -434,12 +481,66 @@ def measure_edges(
         edge's inner level is the level run times the model's ratio of the
         mean level over the covered part of the window to the level run's
         (see :func:`_limb_levels`) instead of the linear extrapolation of
-        ``level_slope``.
+        ``level_slope``.  :func:`with_limb` gives the same for edges
+        already measured, without measuring them again.
 
     Returns
     -------
     EdgeMeasurements
     """
+    return _finish(
+        _edge_pass(data, region, background_dn, noise_dn, t_lines_s, saturation_dn=saturation_dn, others=others, settings=settings), limb
+    )
+
+
+def with_limb(
+    edges: EdgeMeasurements, limb: Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]] | None
+) -> EdgeMeasurements:
+    """The edges of :func:`measure_edges` measured again with another profile model.
+
+    Equal to calling :func:`measure_edges` with the same arguments as for
+    ``edges`` and ``limb=limb`` (bit for bit), but only the inner levels and
+    what follows from them are recomputed: the profile, the rough edges, the
+    windows' sums, the level runs and the noise model of ``edges`` are
+    reused (the fields that do not depend on ``limb``, e.g. ``profile``,
+    are the same arrays as ``edges``').
+
+    Parameters
+    ----------
+    edges : EdgeMeasurements
+        Made by :func:`measure_edges` or by this function (with or without
+        a ``limb``).
+    limb : callable or None
+        The profile model, as ``limb`` of :func:`measure_edges`; None gives
+        the model-free edges.
+
+    Returns
+    -------
+    EdgeMeasurements
+
+    Raises
+    ------
+    ValueError
+        If ``edges`` were not made by :func:`measure_edges` (e.g. built
+        directly from synthetic edges).
+    """
+    if edges._pass is None:
+        raise ValueError("edges: not made by measure_edges (no first pass to reuse)")
+    return _finish(edges._pass, limb)
+
+
+def _edge_pass(
+    data: np.ndarray,
+    region: Any,
+    background_dn: Any,
+    noise_dn: Any,
+    t_lines_s: np.ndarray,
+    *,
+    saturation_dn: float | None,
+    others: Sequence[Any],
+    settings: EdgeSettings,
+) -> _EdgePass:
+    """Everything of :func:`measure_edges` that does not depend on ``limb`` (same parameters)."""
     data = np.asarray(data, dtype=float)
     if data.ndim != 2:
         raise ValueError(f"data: expected a 2-D (n_lines, W) array, got shape {data.shape}")
@@ -612,20 +713,7 @@ def measure_edges(
     e = np.where(sgn[:, 0] > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
     var = (sw**2).sum(axis=1) / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
     var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
-    if limb is not None:
-        line_spread = np.asarray(getattr(limb, "spread_px", np.zeros(n_img)))[lines]
-        wanted = np.concatenate(
-            [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
-        )
-        deep_px = k[:, None] + deep_base * sgn
-        deep_inside = (deep_px.min(axis=1) >= 0) & (deep_px.max(axis=1) < w)
-        e, var, L = _limb_levels(
-            limb, e, var, L, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep_px, pd, sd2,
-            sgn[:, 0], hs4 & wanted & deep_inside, rows4[:, 0] + l0, s.limb_samples, s.limb_texture_tol,
-        )
-        Ls = np.where(L > 0, L, 1.0)
-        uncovered = n_win - S / Ls
-    sig = np.sqrt(var)
+    deep_px = k[:, None] + deep_base * sgn
     lo = np.minimum(win.min(1), lev.min(1))
     hi = np.maximum(win.max(1), lev.max(1))
     abs_lo, abs_hi = lo + c0, hi + c0
@@ -640,22 +728,14 @@ def measure_edges(
     pdd = p[rows4, deeper].mean(axis=1)
     sdd2 = (sp[rows4, deeper] ** 2).sum(axis=1) / s.n_level**2
     dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
-    tex = (S / Ls) * np.maximum(dlev, 0.0) / Ls
-    plausible = (L_run > 3.0 * np.sqrt(sl2)) & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
-    ok_all = hs4 & plausible & ~at_sensor_end & ~saturated & ~overlapping
-    res = (e + c0, sig, ok_all, L, at_sensor_end & hs4, saturated & hs4, overlapping & hs4, tex)
-    (eL, sL, okL, LL, endL, satL, ovL, tL), (eR, sR, okR, LR, endR, satR, ovR, tR), (eLw, sLw, okLw, *_), (eRw, sRw, okRw, *_) = (
-        tuple(a[q] for a in res) for q in quarters
-    )
+    usable = hs4 & ~at_sensor_end & ~saturated & ~overlapping
     # both windows and level runs must fit in the segment without crossing
     span_needed = 2 * (s.n_in + s.n_level) + 1
     long_enough = (k_right - k_left) >= span_needed
-    okL &= long_enough
-    okR &= long_enough
     # wide windows for lines whose edge is spread over the exposure / pixel height
     long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
-    okLw &= long_wide
-    okRw &= long_wide
+    usable &= np.concatenate([long_enough, long_enough, long_wide, long_wide])
+    endL, endR, satL, satR, ovL, ovR = (a[q] & has_signal for a in (at_sensor_end, saturated, overlapping) for q in quarters[:2])
 
     # summed coverage: over the segment +- 3 px where the ball is seen, else the whole box
     jj = np.arange(w)[None, :]
@@ -668,11 +748,6 @@ def measure_edges(
         centroid = np.where(sel, p * (jj + c0), 0.0).sum(axis=1) / area
     centroid = np.where(area > 3.0 * area_sig, centroid, np.nan)
 
-    level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
-    # faint/short lines whose area is clean: the fit uses their area instead of edges
-    spoiled = endL | endR | satL | satR | ovL | ovR
-    end_line = has_signal & ~(okL & okR) & ~spoiled
-
     flags = []
     if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or c1 == W and np.any(has_signal & (k_right >= w - 1)):
         flags.append("cut_sensor_end")
@@ -681,24 +756,84 @@ def measure_edges(
     if np.any(other & (p > 0.5)) or np.any(ovL | ovR):
         flags.append("overlap")
 
+    return _EdgePass(
+        settings=s,
+        n_img=n_img,
+        c0=c0,
+        quarters=quarters,
+        has_signal=has_signal,
+        e=e,
+        var=var,
+        L=L,
+        S=S,
+        L_run=L_run,
+        sl2=sl2,
+        sw=sw,
+        n_win=n_win,
+        win_first=win_first,
+        win_last=win_last,
+        lev=lev,
+        deep=deep_px,
+        limb_rows=hs4 & (deep_px.min(axis=1) >= 0) & (deep_px.max(axis=1) < w),
+        pd=pd,
+        sd2=sd2,
+        sgn=sgn[:, 0],
+        lines_abs=rows4[:, 0] + l0,
+        dlev=np.maximum(dlev, 0.0),
+        usable=usable,
+        run_ok=L_run > 3.0 * np.sqrt(sl2),
+        spoiled=endL | endR | satL | satR | ovL | ovR,
+        common=dict(
+            lines=lines,
+            t_s=t_lines_s[lines],
+            area_px=area,
+            area_sigma_px=area_sig,
+            centroid_px=centroid,
+            peak=peak,
+            polarity=pol,
+            contrast_dn=contrast,
+            flags=tuple(flags),
+            profile=np.where(sat | other, np.nan, p),
+            profile_sigma=sp,
+            profile_col0=int(c0),
+        ),
+    )
+
+
+def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | None) -> EdgeMeasurements:
+    """The edges of a first pass, with the inner levels of ``limb`` where given (see :func:`measure_edges`)."""
+    s = ps.settings
+    e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
+    if limb is not None:
+        line_spread = np.asarray(getattr(limb, "spread_px", np.zeros(ps.n_img)))[ps.common["lines"]]
+        wanted = np.concatenate(
+            [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
+        )
+        e, var, L = _limb_levels(
+            limb, e, var, L, S, ps.L_run, ps.sl2, ps.sw, n_win, ps.win_first, ps.win_last, ps.lev, ps.deep, ps.pd, ps.sd2,
+            ps.sgn, ps.limb_rows & wanted, ps.lines_abs, s.limb_samples, s.limb_texture_tol,
+        )
+    Ls = np.where(L > 0, L, 1.0)
+    uncovered = n_win - S / Ls
+    sig = np.sqrt(var)
+    tex = (S / Ls) * ps.dlev / Ls
+    plausible = ps.run_ok & (L > 0.5 * ps.L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
+    ok_all = ps.usable & plausible
+    res = (e + ps.c0, sig, ok_all, L, tex)
+    (eL, sL, okL, LL, tL), (eR, sR, okR, LR, tR), (eLw, sLw, okLw, _, _), (eRw, sRw, okRw, _, _) = (tuple(a[q] for a in res) for q in ps.quarters)
+    has_signal = ps.has_signal
+    level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
+    # faint/short lines whose area is clean: the fit uses their area instead of edges
+    end_line = has_signal & ~(okL & okR) & ~ps.spoiled
     return EdgeMeasurements(
-        lines=lines,
-        t_s=t_lines_s[lines],
         left_px=np.where(has_signal, eL, np.nan),
         right_px=np.where(has_signal, eR, np.nan),
         left_sigma_px=np.where(has_signal, sL, np.nan),
         right_sigma_px=np.where(has_signal, sR, np.nan),
         left_ok=okL,
         right_ok=okR,
-        area_px=area,
-        area_sigma_px=area_sig,
-        centroid_px=centroid,
         level=level,
-        peak=peak,
         end_line=end_line,
-        polarity=pol,
-        contrast_dn=contrast,
-        flags=tuple(flags),
         left_texture_px=np.where(has_signal, tL, np.nan),
         right_texture_px=np.where(has_signal, tR, np.nan),
         left_wide_px=np.where(has_signal, eLw, np.nan),
@@ -707,8 +842,6 @@ def measure_edges(
         right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
         left_wide_ok=okLw,
         right_wide_ok=okRw,
-        profile=np.where(sat | other, np.nan, p),
-        profile_sigma=sp,
-        profile_col0=int(c0),
+        _pass=ps,
+        **ps.common,
     )
-

@@ -26,7 +26,7 @@ import numpy as np
 
 from .camera import LineScanCamera, line_times
 from .detection import BallRegion, Detection, background_at, detect, region_background
-from .edges import measure_edges
+from .edges import measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
 from .images import LineImage
@@ -219,10 +219,8 @@ def estimate_region(
             # taken inside and extrapolated linearly biases the lit side inwards)
             limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full)
             if limb is not None:
-                edges2 = measure_edges(
-                    image.data, region, bg_full, detection.noise_dn, t_lines_s,
-                    saturation_dn=detection.saturation_dn, others=others, limb=limb,
-                )
+                # the first pass's profile, windows and noise model are reused
+                edges2 = with_limb(edges, limb)
                 t_shading = time.perf_counter() - t_s
                 fit2 = fit_motion(camera, edges2, start)
                 if fit2.converged:
