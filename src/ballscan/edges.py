@@ -369,7 +369,6 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     edges, their variances and the levels; rows without signal or a usable
     ratio keep ``e``, ``var0`` and ``L0`` (the model-free estimate).
     """
-    keep = np.ones(L_run.size, dtype=bool)
     edge, var, L = e.copy(), var0.copy(), L0.copy()
     rows = np.flatnonzero(valid & np.isfinite(e))
     if rows.size == 0:

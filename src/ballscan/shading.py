@@ -67,19 +67,50 @@ class ShadingModel:
 
 
 def _normal_components(camera: LineScanCamera, motion: BallMotion, t_s, u_px, h_px=0.0):
-    """:func:`surface_normals` as separate (broadcast, not materialised) components."""
+    """:func:`surface_normals` as separate components ``hit, nx, ny, nz`` (arrays of the broadcast shape).
+
+    The samples' arithmetic runs in place in five buffers of the broadcast
+    shape (the limb profile evaluates tens of thousands of samples per ball,
+    where the plain expressions' two dozen temporaries are a good part of
+    the cost); the operations and their order are those of the plain
+    expressions, so the results are the same to the bit.
+    """
     n_u = camera.backproject(np.asarray(u_px, dtype=float))
     h = np.asarray(h_px, dtype=float) / camera.focal_px
     inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
     dx, dy, dz = h * inv, n_u * inv, inv
     c = motion.centre(np.asarray(t_s, dtype=float))
     cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
-    dc = dx * cx + dy * cy + dz * cz
-    disc = dc * dc - (cx * cx + cy * cy + cz * cz) + motion.radius_m**2
-    s = dc - np.sqrt(np.maximum(disc, 0.0))
-    nx, ny, nz = s * dx - cx, s * dy - cy, s * dz - cz
-    inv_n = 1.0 / np.maximum(np.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
-    return disc >= 0.0, nx * inv_n, ny * inv_n, nz * inv_n
+    shape = np.broadcast_shapes(np.shape(dx), np.shape(dy), cx.shape)
+    nx, ny, nz, a, b = (np.empty(shape) for _ in range(5))
+    # the ray's parameter at the centre's foot: dc = d . c (in nz)
+    np.multiply(dx, cx, out=nz)
+    nz += np.multiply(dy, cy, out=a)
+    nz += np.multiply(dz, cz, out=a)
+    # disc = dc^2 - |c|^2 + r^2 (in b); the first intersection s = dc - sqrt(disc) (in nz)
+    np.multiply(nz, nz, out=b)
+    b -= cx * cx + cy * cy + cz * cz
+    b += motion.radius_m**2
+    hit = b >= 0.0
+    np.maximum(b, 0.0, out=b)
+    nz -= np.sqrt(b, out=b)
+    # n = s d - c, normalised
+    np.multiply(nz, dx, out=nx)
+    nx -= cx
+    np.multiply(nz, dy, out=ny)
+    ny -= cy
+    nz *= dz
+    nz -= cz
+    np.multiply(nx, nx, out=a)
+    a += np.multiply(ny, ny, out=b)
+    a += np.multiply(nz, nz, out=b)
+    np.sqrt(a, out=a)
+    np.maximum(a, 1e-12, out=a)
+    np.divide(1.0, a, out=a)
+    nx *= a
+    ny *= a
+    nz *= a
+    return hit, nx, ny, nz
 
 
 def surface_normals(
@@ -171,13 +202,15 @@ def fit_shading(
     if y.size < 50:
         return None
     X = np.column_stack([np.ones(y.size), n])
+    X_dark = np.zeros((1, 4))
+    X_dark[0, 0] = 1.0
     w = np.ones(y.size)
     active = np.ones(y.size, dtype=bool)
     coef = np.zeros(4)
     scale = 1.0
     for _ in range(n_iterations):
         # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
-        Xa = np.where(active[:, None], X, np.column_stack([np.ones(y.size), np.zeros((y.size, 3))]))
+        Xa = np.where(active[:, None], X, X_dark)
         sw = np.sqrt(w)
         coef = np.linalg.lstsq(Xa * sw[:, None], y * sw, rcond=None)[0]
         lit = n @ coef[1:]
@@ -246,8 +279,16 @@ class LimbProfile:
                 continue
             t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
             hit, nx, ny, nz = _normal_components(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
-            bright = self.shading.ambient_dn + np.maximum(nx * light[0] + ny * light[1] + nz * light[2], 0.0)
-            val_out[rows] = np.where(hit, self.polarity * (bright - bg[rows][:, None, None, :]) / self.contrast_dn, 0.0).mean(axis=(1, 2))
+            # polarity (ambient + max(n . light, 0) - bg) / contrast, in place in nx
+            nx *= light[0]
+            nx += np.multiply(ny, light[1], out=ny)
+            nx += np.multiply(nz, light[2], out=nz)
+            np.maximum(nx, 0.0, out=nx)
+            nx += self.shading.ambient_dn
+            nx -= bg[rows][:, None, None, :]
+            nx /= self.polarity * self.contrast_dn  # the sign of +-x / c is exact either way
+            nx[~hit] = 0.0
+            val_out[rows] = nx.mean(axis=(1, 2))
             cov_out[rows] = hit.mean(axis=(1, 2))
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
