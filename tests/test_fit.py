@@ -173,8 +173,8 @@ def test_propagate_speed_direction_world():
     sp = np.linalg.norm(samples[:, 3:], axis=1)
     assert u.speed_raw_mps == pytest.approx(m.speed_mps)
     # the correction removes the norm's upward bias, estimated from the sample
-    assert u.speed_bias_mps == pytest.approx(sp.mean() - m.speed_mps, rel=0.3, abs=2e-3)
-    assert u.speed_mps == pytest.approx(m.speed_mps - u.speed_bias_mps)
+    assert u.speed_correction_mps == pytest.approx(sp.mean() - m.speed_mps, rel=0.3, abs=2e-3)
+    assert u.speed_mps == pytest.approx(m.speed_mps - u.speed_correction_mps)
     assert u.speed_sigma_mps == pytest.approx(sp.std(), rel=0.1)
     psi = np.degrees(np.arctan2(samples[:, 4], samples[:, 3]))
     assert u.direction_sigma_deg[0] == pytest.approx(psi.std(), rel=0.05)
@@ -210,3 +210,23 @@ def test_debiased_speed_monte_carlo(velocity, sigma_vz):
     # sigma is the RMS error (the error is skewed: 1-sigma coverage is not 68 %)
     assert 0.8 < float(np.sqrt(np.mean(sig**2))) / rms(est) < 1.5
     assert np.mean(np.abs(est - truth) < 3 * sig) > 0.97
+
+
+def test_debiased_speed_edge_cases_and_bound_at_truth():
+    cam, _ = _serve()
+    # the correction removes everything: the sigma stays of the noise's size
+    C = np.zeros((6, 6))
+    C[3:, 3:] = np.diag([1.0, 2.0, 1.0])
+    u = propagate(cam, BallMotion(0.0335, 0.0, (0.0, 0.0, 3.0), (0.5, 0.0, 0.0)), C)
+    assert u.speed_mps == 0.0 and 0.5 < u.speed_sigma_mps < 3.0
+    # at the truth the sigma is the RMS error of the corrected speed of
+    # measurements about |V| (Monte Carlo, 4000 draws: +-3 % on the RMS)
+    C = np.zeros((6, 6))
+    C[3:, 3:] = np.diag([1e-3, 1e-2, 25.0])
+    truth = np.array([30.0, 0.0, 8.0])
+    bound = propagate(cam, BallMotion(0.0335, 0.0, (0.0, 0.0, 3.0), tuple(truth)), C, at_truth=True)
+    assert bound.speed_mps == pytest.approx(np.linalg.norm(truth))
+    rng = np.random.default_rng(3)
+    est = [propagate(cam, BallMotion(0.0335, 0.0, (0.0, 0.0, 3.0), tuple(v)), C).speed_mps for v in rng.multivariate_normal(truth, C[3:, 3:], 4000)]
+    rms = float(np.sqrt(np.mean((np.array(est) - np.linalg.norm(truth)) ** 2)))
+    assert bound.speed_sigma_mps == pytest.approx(rms, rel=0.1)

@@ -31,7 +31,7 @@ def test_edge_crlb_matches_empirical_spread():
     # 200 samples: the std itself is known to +-5 % (1 sigma)
     assert np.all((ratio > 0.85) & (ratio < 1.15)), ratio
     # (|V| itself is not compared: with sigma_vz ~ 13 m/s at this noise the
-    # speed is far from linear in vz, see MotionUncertainty.speed_bias_mps)
+    # speed is far from linear in vz, see MotionUncertainty.speed_correction_mps)
 
 
 def test_bounds_scale_and_table():

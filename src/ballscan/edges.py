@@ -354,20 +354,57 @@ def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
     return float(lo) if m % 2 else float((lo + hi) / 2.0)
 
 
-def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol, n_rounds=1):
+def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol):
     """Inner levels from a brightness model's profile (see ``limb`` of :func:`measure_edges`).
 
     The window's sum is ``S = L_eff * c`` with ``c`` the covered length (the
     window's inner end less the mean edge) and ``L_eff`` the mean level over
-    it.  For the model's profile placed at the current edge, ``L_eff`` is the
-    window's integral over ``c``; the data's ``L_eff`` is taken as the level
-    run's ``L_run`` times the model's ratio ``L_eff / L_run``, so the model
-    supplies only the profile's shape (the limb's shading, the spread of the
-    edge over the exposure) and the local level still comes from the pixels.
-    The edge follows from ``c = S / L_eff`` (the ratio changes slowly with the
-    edge: one round from the model-free edge is enough).  Positions are in box pixels.  Returns the
-    edges, their variances and the levels; rows without signal or a usable
-    ratio keep ``e``, ``var0`` and ``L0`` (the model-free estimate).
+    it.  For the model's profile placed at the model-free edge ``e``,
+    ``L_eff`` is the window's integral over ``c``; the data's ``L_eff`` is
+    taken as the level run's ``L_run`` times the model's ratio
+    ``L_eff / L_run``, so the model supplies only the profile's shape (the
+    limb's shading, the spread of the edge over the exposure) and the local
+    level still comes from the pixels.  The edge follows from
+    ``c = S / L_eff`` (the ratio changes slowly with the edge: one round).
+
+    The model knows the shading, not the texture: where the data's ratio of
+    the run inside the level run (``pd``) to the level run differs from the
+    model's, evaluated at the new edge, by more than 3 sigma plus ``tol``
+    (a seam or a felt patch), or the ratio leaves [0.5, 2] (the level rule
+    of :func:`_finish` would reject the edge), the model-free estimate is
+    kept.
+
+    Parameters
+    ----------
+    limb : callable
+        See :func:`measure_edges`.
+    e, var0, L0 : ndarray (R,)
+        Model-free edges (box pixels), their variances (px^2) and levels.
+    S, L_run, sl2 : ndarray (R,)
+        Window sums, level-run means and the level runs' variances
+        (normalised units).
+    sw : ndarray (R, n)
+        Window pixels' sigmas (zero where padded).
+    n_win, win_first, win_last : ndarray (R,)
+        Window lengths and first (outermost) / last (innermost) pixels.
+    lev, deep : ndarray (R, n_level)
+        Level-run pixels and the run inside it (box pixels).
+    pd, sd2 : ndarray (R,)
+        Mean and variance of the run inside the level run.
+    sgn : ndarray (R,)
+        +1 for left edges, -1 for right edges.
+    valid : ndarray of bool (R,)
+        Rows to correct.
+    lines_abs : ndarray of int (R,)
+        Image line of each row.
+    m : int
+        Samples per pixel.
+    tol : float
+        Texture tolerance (see :class:`EdgeSettings`).
+
+    Returns
+    -------
+    edge, var, L : ndarray (R,)
     """
     edge, var, L = e.copy(), var0.copy(), L0.copy()
     rows = np.flatnonzero(valid & np.isfinite(e))
@@ -382,39 +419,36 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     in_win = (np.arange(win_u.shape[1])[None, :] < (nw * m)[:, None])
     lev_u = (lev[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
     deep_u = (deep[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
-    er = e[rows]
-    good = np.zeros(rows.size, dtype=bool)
-    ratio = np.ones(rows.size)
-    for _ in range(n_rounds):
-        val, cov = limb(lines_abs[rows], sg, sg[:, None] * (win_u - er[:, None]))
-        # the level runs lie inside the limb throughout the exposure: one
-        # sample per position is enough there
-        inner_val, _ = limb(lines_abs[rows], sg, sg[:, None] * (np.concatenate([lev_u, deep_u], axis=1) - er[:, None]), average=False)
-        nlu = lev_u.shape[1]
-        s_model = np.where(in_win, val, 0.0).sum(axis=1) / m
-        # the model's own covered length: its edge need not sit exactly at er
-        c_model = np.where(in_win, cov, 0.0).sum(axis=1) / m
-        lvl_model = inner_val[:, :nlu].mean(axis=1)
-        deep_model = inner_val[:, nlu:].mean(axis=1)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            r = s_model / c_model / lvl_model
-            # the model knows the shading, not the texture: where the level
-            # run and the run inside it differ from the model's shape (a seam
-            # or a felt patch), the run's level says nothing about the limb's
-            # albedo and the model-free estimate is kept
-            q_data = pd[rows] / L_run[rows]
-            q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
-            smooth = np.abs(q_data - deep_model / lvl_model) <= 3.0 * q_sig + tol
-        good = np.isfinite(r) & (c_model > 0.05) & (r > 0.2) & (r < 2.0) & smooth
-        ratio = np.where(good, r, 1.0)
-        Lr = L_run[rows] * ratio
-        c_new = S[rows] / np.where(Lr > 0, Lr, 1.0)
-        er = np.where(good, inner - sg * c_new, er)
+    runs_u = np.concatenate([lev_u, deep_u], axis=1)
+    nlu = lev_u.shape[1]
+    e0 = e[rows]
+    val, cov = limb(lines_abs[rows], sg, sg[:, None] * (win_u - e0[:, None]))
+    # the level runs lie inside the limb throughout the exposure: one
+    # sample per position is enough there
+    runs0, _ = limb(lines_abs[rows], sg, sg[:, None] * (runs_u - e0[:, None]), average=False)
+    s_model = np.where(in_win, val, 0.0).sum(axis=1) / m
+    # the model's own covered length: its edge need not sit exactly at e0
+    c_model = np.where(in_win, cov, 0.0).sum(axis=1) / m
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = s_model / c_model / runs0[:, :nlu].mean(axis=1)
+    usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
+    ratio = np.where(usable, ratio, 1.0)
     Lr = L_run[rows] * ratio
+    er = np.where(usable, inner - sg * S[rows] / np.where(Lr > 0, Lr, 1.0), e0)
+    # texture test with the model at the new edge: at the biased model-free
+    # edge the model's runs sit a few tenths of a pixel off and a strongly
+    # shaded limb would look like texture
+    runs1, _ = limb(lines_abs[rows], sg, sg[:, None] * (runs_u - er[:, None]), average=False)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
+        q_data = pd[rows] / L_run[rows]
+        q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
+        smooth = np.abs(q_data - q_model) <= 3.0 * q_sig + tol
+    good = usable & smooth
     Ls = np.where(Lr > 0, Lr, 1.0)
     # L = ratio * L_run: the level run's noise enters scaled by the ratio
     v = (sw[rows] ** 2).sum(axis=1) / Ls**2 + (S[rows] / Ls**2) ** 2 * sl2[rows] * ratio**2
-    edge[rows] = np.where(good, er, e[rows])
+    edge[rows] = np.where(good, er, e0)
     var[rows] = np.where(good, v, var0[rows])
     L[rows] = np.where(good, Lr, L0[rows])
     return edge, var, L
@@ -480,8 +514,11 @@ def measure_edges(
         edge's inner level is the level run times the model's ratio of the
         mean level over the covered part of the window to the level run's
         (see :func:`_limb_levels`) instead of the linear extrapolation of
-        ``level_slope``.  :func:`with_limb` gives the same for edges
-        already measured, without measuring them again.
+        ``level_slope``.  It must carry ``spread_px``, the model's edge
+        spread per image line (pixels), which selects the narrow and wide
+        windows to correct (``limb_narrow_max_px``, ``limb_wide_px``).
+        :func:`with_limb` gives the same for edges already measured, without
+        measuring them again.
 
     Returns
     -------
@@ -804,7 +841,10 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     s = ps.settings
     e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
     if limb is not None:
-        line_spread = np.asarray(getattr(limb, "spread_px", np.zeros(ps.n_img)))[ps.common["lines"]]
+        spread = getattr(limb, "spread_px", None)
+        if spread is None or np.shape(spread) != (ps.n_img,):
+            raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")
+        line_spread = np.asarray(spread)[ps.common["lines"]]
         wanted = np.concatenate(
             [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
         )

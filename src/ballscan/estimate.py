@@ -265,7 +265,7 @@ def estimate_region(
             "iterations": fit.n_iterations,
             "edge_bias_px": fit.edge_bias_px,
             "n_edges": fit.n_edges,
-            "speed_bias_mps": unc.speed_bias_mps,
+            "speed_correction_mps": unc.speed_correction_mps,
             "speed_raw_mps": unc.speed_raw_mps,
             "direction_deg": unc.direction_deg,
             "direction_sigma_deg": unc.direction_sigma_deg,

@@ -55,10 +55,10 @@ class PrecisionBound:
         Of the centre at ``t_c`` (x is 0 by definition).
     velocity_sigma_mps : ndarray (3,)
     speed_sigma_mps : float
-        RMS error of the reported (bias-corrected) speed of an efficient
-        velocity estimate, :func:`ballscan.fit.propagate` of the bound's
-        covariance: not the linearised bound alone, which ignores a poorly
-        determined ``vz`` when ``vz = 0``.
+        RMS error about the true speed of the reported (bias-corrected)
+        speed of an efficient velocity estimate (:func:`ballscan.fit.propagate`
+        of the bound's covariance with ``at_truth``): not the linearised
+        bound alone, which ignores a poorly determined ``vz`` when ``vz = 0``.
     direction_sigma_deg : ndarray (2,)
         Of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``.
     n_measurements : int
@@ -120,7 +120,7 @@ def _bound(method: str, motion: BallMotion, camera: LineScanCamera, F: np.ndarra
         cov_full = np.linalg.inv(Fn) / np.outer(d, d)
     cov = cov_full[:6, :6]
     if np.all(np.isfinite(cov)):
-        u = propagate(camera, motion, cov)
+        u = propagate(camera, motion, cov, at_truth=True)
         pos, vel, spd, dire = u.position_sigma_m, u.velocity_sigma_mps, u.speed_sigma_mps, u.direction_sigma_deg
     else:
         pos, vel, spd, dire = np.full(3, np.inf), np.full(3, np.inf), math.inf, np.full(2, np.inf)

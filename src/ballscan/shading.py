@@ -154,6 +154,7 @@ def fit_shading(
     max_pixels: int = 800,
     huber_k: float = 1.5,
     n_iterations: int = 4,
+    usable: np.ndarray | None = None,
 ) -> ShadingModel | None:
     """Fit the shading law to the pixels well inside the ball.
 
@@ -179,14 +180,17 @@ def fit_shading(
         Huber threshold in robust sigmas.
     n_iterations : int
         Reweighting rounds.
+    usable : ndarray of bool (n_lines, W), optional
+        Pixels that may be used (False: saturated, another ball's, ...).
 
     Returns
     -------
     ShadingModel or None
         None when fewer than 50 interior pixels exist.
     """
-    lo = np.ceil(np.asarray(left_px) + inset_px).astype(int)
-    hi = np.floor(np.asarray(right_px) - inset_px).astype(int)
+    width = data_dn.shape[1]
+    lo = np.clip(np.ceil(np.asarray(left_px) + inset_px), 0, width - 1).astype(int)
+    hi = np.clip(np.floor(np.asarray(right_px) - inset_px), -1, width - 1).astype(int)
     counts = np.maximum(hi - lo + 1, 0)
     total = int(counts.sum())
     if total < 50:
@@ -197,6 +201,8 @@ def fit_shading(
         pick = np.linspace(0, total - 1, max_pixels).astype(int)
         row, col = row[pick], col[pick]
     hit, n = surface_normals(camera, motion, t_lines_s[row], col)
+    if usable is not None:
+        hit = hit & usable[lines[row], col]
     y = data_dn[lines[row[hit]], col[hit]].astype(float)
     n = n[hit]
     if y.size < 50:
@@ -379,7 +385,17 @@ def ball_limb(
     theta = motion.to_params()[None]
     me = averaged_model(camera, theta, motion.radius_m, edges.t_s, motion.acceleration_mps2)
     both = edges.left_ok & edges.right_ok & (me.presence[0] > 0)
-    shading = fit_shading(camera, motion, data_dn, edges.lines[both], edges.t_s[both], me.left_px[0, both], me.right_px[0, both])
+    # interior: inside both the model's and the measured edges (the model is
+    # at a rough motion), and not saturated or another ball's (NaN in the
+    # edges' profile)
+    left = np.fmax(me.left_px[0], edges.left_px)[both]
+    right = np.fmin(me.right_px[0], edges.right_px)[both]
+    usable = None
+    if edges.profile is not None:
+        usable = np.zeros(np.shape(data_dn), dtype=bool)
+        c0 = edges.profile_col0
+        usable[edges.lines[:, None], c0 + np.arange(edges.profile.shape[1])[None, :]] = np.isfinite(edges.profile)
+    shading = fit_shading(camera, motion, data_dn, edges.lines[both], edges.t_s[both], left, right, usable=usable)
     if shading is None:
         return None
     per_line = []
