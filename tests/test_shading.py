@@ -130,6 +130,7 @@ def test_estimate_reports_the_shading_and_can_skip_it():
     on = estimate_image(image, CAM, MOTION.radius_m).balls[0]
     off = estimate_image(image, CAM, MOTION.radius_m, shading=False).balls[0]
     assert on.extra["shading"] is not None and off.extra["shading"] is None
+    assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off"
     assert off.extra["time_shading_s"] == 0.0
     # the depth velocity of a shaded ball: the second pass removes most of the bias
     assert abs(on.velocity_mps[2]) < abs(off.velocity_mps[2])

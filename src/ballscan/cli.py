@@ -110,7 +110,7 @@ def estimate(
     timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
     lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
-    shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off halves the time per ball, V.z less accurate)."),
+    shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
 ) -> None:
     """Measure every ball in a line-scan image."""
     from .camera import line_times, load_camera

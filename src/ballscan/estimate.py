@@ -202,6 +202,8 @@ def estimate_region(
     t_edges = time.perf_counter() - t_e
     shading_model = None
     t_shading = 0.0
+    # what became of the second pass: "off", "used", or why it was not used
+    shading_pass = "off"
     if shading:
         # The shading model needs the motion only roughly (its normals and edge
         # spreads barely change with a percent of speed): the key-point guess
@@ -213,18 +215,21 @@ def estimate_region(
             first = fit_motion(camera, edges, ig.motion, _FIRST_PASS)
             start = first.motion if first.converged else None
         fit = None
+        shading_pass = "no_start"
         if start is not None:
             # second pass: the edges' limb levels from the ball's fitted shading
             # (a Lambertian limb's brightness falls like sqrt(distance): a level
             # taken inside and extrapolated linearly biases the lit side inwards)
             limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full)
+            shading_pass = "too_few_pixels"
             if limb is not None:
                 # the first pass's profile, windows and noise model are reused
                 edges2 = with_limb(edges, limb)
                 t_shading = time.perf_counter() - t_s
                 fit2 = fit_motion(camera, edges2, start)
+                shading_pass = "not_converged"
                 if fit2.converged:
-                    edges, fit, shading_model = edges2, fit2, limb.shading
+                    edges, fit, shading_model, shading_pass = edges2, fit2, limb.shading, "used"
         if fit is None:
             t_shading = time.perf_counter() - t_s
             fit = fit_motion(camera, edges, start if start is not None else ig.motion)
@@ -275,6 +280,7 @@ def estimate_region(
             "time_edges_s": t_edges,
             "time_fit_s": fit.run_time_s,
             "time_shading_s": t_shading,
+            "shading_pass": shading_pass,
             "shading": None
             if shading_model is None
             else {

@@ -51,7 +51,8 @@ class ShadingModel:
         Light direction (camera frame, from the ball towards the light)
         times the diffuse brightness, DN.
     residual_rms_dn : float
-        Robust RMS of the interior pixels about the law, DN (texture, noise).
+        Robust scale (1.4826 x the median absolute deviation) of the interior
+        pixels about the law, DN (texture, noise).
     n_pixels : int
         Interior pixels used.
     """
@@ -60,10 +61,6 @@ class ShadingModel:
     light_dn: tuple[float, float, float]
     residual_rms_dn: float
     n_pixels: int
-
-    def brightness(self, normals: np.ndarray) -> np.ndarray:
-        """Brightness (DN) of surface elements with unit ``normals`` (..., 3)."""
-        return self.ambient_dn + np.maximum(normals @ np.asarray(self.light_dn), 0.0)
 
 
 def _normal_components(camera: LineScanCamera, motion: BallMotion, t_s, u_px, h_px=0.0):
