@@ -186,7 +186,9 @@ def test_with_limb_equals_measuring_again(name):
         # the model did change some edges, and None gives the model-free ones back
         assert not np.array_equal(reused.left_px, plain.left_px, equal_nan=True)
         _assert_same_edges(with_limb(reused, None), plain)
-    assert {"one": set(), "two": {"overlap"}, "cut": {"cut_sensor_end"}, "saturated": {"saturated"}}[name] <= flags
+    # the hard cases really are hard (a flag), and the plain ball is clean
+    expected = {"one": set(), "two": {"overlap"}, "cut": {"cut_sensor_end"}, "saturated": {"saturated"}}[name]
+    assert expected <= flags and (expected or not flags)
 
 
 def test_with_limb_needs_measured_edges():
