@@ -225,7 +225,7 @@ def fit_shading(
     return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class LimbProfile:
     """The model's normalised profile across either edge of any line (see :func:`limb_profile`).
 
@@ -242,9 +242,26 @@ class LimbProfile:
 
     Attributes
     ----------
+    shading : ShadingModel
+        The fitted law.
+    camera : LineScanCamera
+    motion : BallMotion
+        The motion the normals and edges are computed at.
+    t_lines_s : ndarray (n_lines,)
+        Centre time of every image line, seconds.
+    background_dn : ndarray (n_lines, W)
+        The image's background, DN (not copied: not to be modified).
+    polarity : int
+        +1 for a ball brighter than the background, -1 for darker.
+    contrast_dn : float
+        The edges' normalisation, DN.
     spread_px, left_px, right_px : ndarray (n_lines,)
         The averaged silhouette's edge spread and mean edges per image line,
         pixels (NaN where the ball is absent).
+    sharp_px : float
+        Lines whose edge spread is below this are sampled once per position.
+    n_time, n_height : int
+        Samples over the exposure and across the pixel's height elsewhere.
     """
 
     shading: ShadingModel
