@@ -9,10 +9,10 @@ Targets and what is met (see the module's tests for the tolerances used):
   < 0.035 mm.  At this level the result depends on the renderer's sampling
   (16 x 4 x 8 samples per edge pixel; edges are exact to about 0.01 px).
 * clean reference scenes (POV-Ray, textured and shaded): median speed error
-  target <= 0.3 %, achieved 0.14 % (worst 0.79 %), with the shading-aware
+  target <= 0.3 %, achieved 0.22 % (worst 0.80 %), with the shading-aware
   second pass.
 * 1-sigma coverage of the speed over noisy renders of an untextured ball
-  crossing at 30 degrees: 60-76 % (measured 74.5 %).
+  crossing at 30 degrees: 60-76 % (measured 75.5 %).
 """
 
 from __future__ import annotations
@@ -122,7 +122,7 @@ def test_clean_reference_scenes_speed_error():
             zs.append(abs(eb.speed_mps - s_true) / eb.speed_sigma_mps)
             pos_err = np.linalg.norm(np.asarray(eb.position_m) - tb["position_m"])
             assert pos_err < 0.005, name  # metres
-    # measured median 0.14 %, worst 0.79 % (the serve: V.z sigma 10 m/s)
+    # measured median 0.22 %, worst 0.80 % (the serve: V.z sigma 10 m/s)
     assert float(np.median(errs)) < 0.3
     assert max(errs) < 1.0
     # the clean 16-bit images have almost no pixel noise: the sigmas come from
