@@ -652,10 +652,13 @@ class FitSettings:
         On the clean reference scenes the measured edges differ from the
         renderer's exact coverage edges by 0.049 px RMS on uniform limbs
         (texture indicator < 0.01 px) and 0.08-0.14 px next to seams; the
-        part above 0.02 px is carried by ``texture_gain``, by the reduced
+        part above the floor is carried by ``texture_gain``, by the reduced
         chi-square scaling and by ``correlation_inflation`` (which see the
         actual scatter), so that a plain noisy ball keeps its pixel-noise
-        sigma.
+        sigma.  0.015 px since the shading-aware second pass
+        (:mod:`ballscan.shading`): with 0.02 the speed's 1-sigma covered
+        78.5 % of 200 noisy flat renders at 30 degrees (too wide), with
+        0.015 75.5 %.
     texture_gain : float
         Multiplies the edges' texture indicator
         (:attr:`ballscan.edges.EdgeMeasurements.left_texture_px`), added in
