@@ -15,7 +15,7 @@ This module fits one shading law to the ball's interior pixels,
     I = A + max(0, n . b)        (DN),
 
 ``n`` the unit surface normal seen by the pixel (ray through the pixel
-centre, line centre time, the first fit's motion), ``A`` the ambient level
+centre, line centre time, a rough motion: the key-point guess), ``A`` the ambient level
 and ``b`` the light's direction times its diffuse strength, robustly (Huber
 weights: seams and texture are outliers).  :func:`limb_profile` turns it into
 the normalised brightness ``polarity (I - background) / contrast`` of the
@@ -152,6 +152,7 @@ def fit_shading(
     huber_k: float = 1.5,
     n_iterations: int = 4,
     usable: np.ndarray | None = None,
+    usable_origin: tuple[int, int] = (0, 0),
 ) -> ShadingModel | None:
     """Fit the shading law to the pixels well inside the ball.
 
@@ -159,7 +160,7 @@ def fit_shading(
     ----------
     camera : LineScanCamera
     motion : BallMotion
-        The ball's motion (the first edge fit's).
+        The ball's motion, roughly (the key-point guess, or a loose first fit).
     data_dn : ndarray (n_lines, W)
         The image, DN.
     lines : ndarray of int
@@ -177,8 +178,11 @@ def fit_shading(
         Huber threshold in robust sigmas.
     n_iterations : int
         Reweighting rounds.
-    usable : ndarray of bool (n_lines, W), optional
-        Pixels that may be used (False: saturated, another ball's, ...).
+    usable : ndarray of bool (h, w), optional
+        Pixels of a box that may be used (False: saturated, another ball's,
+        ...); pixels outside the box are not used.
+    usable_origin : (int, int)
+        Image line and sensor pixel of ``usable[0, 0]``.
 
     Returns
     -------
@@ -199,7 +203,9 @@ def fit_shading(
         row, col = row[pick], col[pick]
     hit, n = surface_normals(camera, motion, t_lines_s[row], col)
     if usable is not None:
-        hit = hit & usable[lines[row], col]
+        r_box, c_box = lines[row] - usable_origin[0], col - usable_origin[1]
+        inside = (r_box >= 0) & (r_box < usable.shape[0]) & (c_box >= 0) & (c_box < usable.shape[1])
+        hit = hit & inside & usable[np.clip(r_box, 0, usable.shape[0] - 1), np.clip(c_box, 0, usable.shape[1] - 1)]
     y = data_dn[lines[row[hit]], col[hit]].astype(float)
     n = n[hit]
     if y.size < 50:
@@ -381,7 +387,7 @@ def ball_limb(
     ----------
     camera : LineScanCamera
     motion : BallMotion
-        The first edge fit's motion.
+        The ball's motion, roughly (the key-point guess, or a loose first fit).
     data_dn : ndarray (n_lines, W)
         The image, DN.
     edges : EdgeMeasurements
@@ -404,12 +410,12 @@ def ball_limb(
     # edges' profile)
     left = np.fmax(me.left_px[0], edges.left_px)[both]
     right = np.fmin(me.right_px[0], edges.right_px)[both]
-    usable = None
-    if edges.profile is not None:
-        usable = np.zeros(np.shape(data_dn), dtype=bool)
-        c0 = edges.profile_col0
-        usable[edges.lines[:, None], c0 + np.arange(edges.profile.shape[1])[None, :]] = np.isfinite(edges.profile)
-    shading = fit_shading(camera, motion, data_dn, edges.lines[both], edges.t_s[both], left, right, usable=usable)
+    # the edges' lines are consecutive: their profile is a box of the image
+    usable = None if edges.profile is None else np.isfinite(edges.profile)
+    shading = fit_shading(
+        camera, motion, data_dn, edges.lines[both], edges.t_s[both], left, right,
+        usable=usable, usable_origin=(int(edges.lines[0]), int(edges.profile_col0)),
+    )
     if shading is None:
         return None
     per_line = []
