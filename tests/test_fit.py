@@ -237,3 +237,57 @@ def test_debiased_speed_edge_cases_and_bound_at_truth():
     est = [propagate(cam, BallMotion(0.0335, 0.0, (0.0, 0.0, 3.0), tuple(v)), C).speed_mps for v in rng.multivariate_normal(truth, C[3:, 3:], 4000)]
     rms = float(np.sqrt(np.mean((np.array(est) - np.linalg.norm(truth)) ** 2)))
     assert bound.speed_sigma_mps == pytest.approx(rms, rel=0.1)
+
+
+def _with_levels(e, level: float = 1.0, rel: float = 0.0):
+    """Synthetic edges whose lines with signal carry a brightness-model level (areas scaled by it)."""
+    from dataclasses import replace
+
+    lev = np.where(e.signal, level, np.nan)
+    return replace(
+        e, area_px=e.area_px * level, area_sigma_px=e.area_sigma_px * level, area_level=lev, area_level_sigma=np.where(e.signal, rel, np.nan)
+    )
+
+
+def test_levelled_end_areas_sharpen_the_ends_and_stay_honest():
+    """With a brightness level, the ends' areas are covered lengths: t_c, vx and vz tighten, sigmas stay honest."""
+    cam, m = _serve()
+    init = BallMotion(0.0335, 0.00172, (0, -0.079, 4.3), (43.0, 3.5, -3.0))
+    st = FitSettings(fit_edge_bias=False, edge_floor_px=0.0, area_level_floor=0.0, area_level_floor_px=0.0)
+    z, ratio = [], []
+    for seed in range(30):
+        e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=seed, area_sigma_px=0.03)
+        plain = fit_motion(cam, e, init, st)
+        r = fit_motion(cam, _with_levels(e), init, st)
+        assert r.converged and plain.converged
+        ratio.append(plain.sigmas / r.sigmas)
+        z.append((r.motion.to_params() - m.to_params()) / r.sigmas)
+    z, ratio = np.array(z), np.median(ratio, axis=0)
+    # measured (synthetic edges only up to 0.3 px of spread, so the ends are
+    # all areas): sigma ratios t_c 32, y0 1.6, z0 1.6, vx 15, vy 8.5, vz 9.8
+    assert ratio[0] > 10 and ratio[3] > 5 and ratio[5] > 3 and np.all(ratio > 1.2)
+    assert np.all(np.abs(z.mean(axis=0)) < 0.6)
+    assert np.all((z.std(axis=0) > 0.6) & (z.std(axis=0) < 1.4))
+    # the level only scales: a cap half as bright with its level gives the same fit
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=1, area_sigma_px=0.03)
+    a, b = fit_motion(cam, _with_levels(e, 1.0), init, st), fit_motion(cam, _with_levels(e, 0.5), init, st)
+    # (the partial lines stay loose and unlevelled: their weight changes a little)
+    assert np.allclose(a.motion.to_params(), b.motion.to_params(), rtol=0, atol=0.01 * a.sigmas)
+
+
+def test_partial_exposure_lines_stay_loose_by_default():
+    """Lines seen during part of the exposure keep the loose area weight unless asked (sampled exposures bias them)."""
+    from dataclasses import replace
+
+    cam, m = _serve()
+    e = _with_levels(synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=2, area_sigma_px=0.03))
+    me = averaged_model(cam, m.to_params()[None], m.radius_m, e.t_s)
+    partial = (me.presence[0] > 0) & (me.presence[0] < 0.999)
+    assert partial.sum() >= 2
+    spoilt = replace(e, area_px=np.where(partial, 1.5 * e.area_px, e.area_px))
+    st = FitSettings(fit_edge_bias=False, edge_floor_px=0.0)
+    base = fit_motion(cam, e, m, st)
+    moved = np.abs(fit_motion(cam, spoilt, m, st).motion.to_params() - base.motion.to_params()) / base.sigmas
+    st_p = replace(st, area_level_partial=True)
+    moved_p = np.abs(fit_motion(cam, spoilt, m, st_p).motion.to_params() - fit_motion(cam, e, m, st_p).motion.to_params()) / base.sigmas
+    assert moved.max() < 0.2 and moved_p.max() > 2.0

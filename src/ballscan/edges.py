@@ -116,6 +116,12 @@ class EdgeSettings:
         and the wide-window edges where it lies within ``limb_wide_px``: the
         lines where :func:`ballscan.fit.fit_motion` uses each (the model's
         evaluation is the costly part); the others keep the model-free value.
+    limb_area_min_spread_px : float
+        With a ``limb`` that has ``line_levels``, the lines with signal whose
+        model edge spread is at least this, or that lack a usable edge pair,
+        get the model's brightness of their covered part
+        (:attr:`EdgeMeasurements.area_level`): the lines whose area the fit
+        uses (the ball's ends).
     """
 
     n_out: int = 1
@@ -137,6 +143,7 @@ class EdgeSettings:
     limb_texture_tol: float = 0.0
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)
+    limb_area_min_spread_px: float = 0.5
 
 
 @dataclass(frozen=True)
@@ -205,6 +212,11 @@ class EdgeMeasurements:
         saturated or belongs to another ball.
     profile_col0 : int
         Sensor pixel of ``profile[:, 0]``.
+    area_level, area_level_sigma : ndarray or None
+        The brightness model's mean normalised level over the covered part of
+        each line (``limb.line_levels`` of :func:`measure_edges`; NaN on the
+        lines it was not evaluated on) and its relative 1-sigma: ``area_px /
+        area_level`` is the line's covered length.  None without a model.
     """
 
     lines: np.ndarray
@@ -235,6 +247,8 @@ class EdgeMeasurements:
     profile: np.ndarray | None = None
     profile_sigma: np.ndarray | None = None
     profile_col0: int = 0
+    area_level: np.ndarray | None = None
+    area_level_sigma: np.ndarray | None = None
     # the first pass's intermediates, for with_limb (None: not made by measure_edges)
     _pass: _EdgePass | None = field(default=None, compare=False, repr=False)
 
@@ -840,6 +854,7 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     """The edges of a first pass, with the inner levels of ``limb`` where given (see :func:`measure_edges`)."""
     s = ps.settings
     e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
+    area_level = area_level_sigma = None
     if limb is not None:
         spread = getattr(limb, "spread_px", None)
         if spread is None or np.shape(spread) != (ps.n_img,):
@@ -864,6 +879,14 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
     # faint/short lines whose area is clean: the fit uses their area instead of edges
     end_line = has_signal & ~(okL & okR) & ~ps.spoiled
+    if limb is not None and hasattr(limb, "line_levels"):
+        # the brightness of the ends' covered part (their area's divisor)
+        line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
+        want = np.flatnonzero(has_signal & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR)))
+        area_level = np.full(has_signal.size, np.nan)
+        area_level_sigma = np.full(has_signal.size, np.nan)
+        lev_a, rel_a = limb.line_levels(ps.common["lines"][want])
+        area_level[want], area_level_sigma[want] = lev_a, rel_a
     return EdgeMeasurements(
         left_px=np.where(has_signal, eL, np.nan),
         right_px=np.where(has_signal, eR, np.nan),
@@ -881,6 +904,8 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
         left_wide_ok=okLw,
         right_wide_ok=okRw,
+        area_level=area_level,
+        area_level_sigma=area_level_sigma,
         _pass=ps,
         **ps.common,
     )

@@ -711,6 +711,22 @@ class FitSettings:
         renders) but keeps them as a weak anchor of where the ball is seen.
     area_floor_px : float
         Added in quadrature to each area sigma, pixels.
+    area_level_floor : float
+        Relative systematic 1-sigma of the brightness model's level of an
+        end line (:attr:`ballscan.edges.EdgeMeasurements.area_level`), added
+        in quadrature to the level's texture sigma.  Where the edges carry
+        such a level, the line's area divided by it is a covered length with
+        the sigma of its pixel noise, this and the texture, in place of
+        ``area_rel_sigma``: the ball's ends, where the chord grows like the
+        square root of time, hold most of the information on ``t_c``,
+        ``vx`` and ``vz`` that the edges of the spread ends cannot give.
+    area_level_floor_px : float
+        Added in quadrature to the sigma of a levelled area, pixels.
+    area_level_partial : bool
+        Also level the lines on which the ball is present during only part
+        of the exposure (its first and last lines).  Their area depends on
+        how the exposure is sampled: a renderer with a few discrete exposure
+        sub-frames makes it differ from the continuous average.
     loss, f_scale : str, float
         Robust loss of :func:`scipy.optimize.least_squares` and its scale in
         sigmas.
@@ -781,6 +797,10 @@ class FitSettings:
     correlation_inflation: bool = True
     area_rel_sigma: float = 3.0
     area_floor_px: float = 0.1
+    area_level_floor: float = 0.002
+    area_level_floor_px: float = 0.005
+    area_level_partial: bool = False
+    area_level_margin_lines: int = 0
     loss: str = "soft_l1"
     f_scale: float = 3.0
     min_edge_lines: int = 5
@@ -1094,7 +1114,12 @@ def fit_motion(
             if up.any():
                 ua = ua & ~up
                 pix = _pixel_spec(edges, me, up, float(theta[0]), settings.pixel_floor)
-        return _weights_masked(edges, ul, ur, ua, settings, wl, wr, tables) + (pix,)
+        loose = None
+        if not settings.area_level_partial:
+            loose = me.presence < 0.999
+            for _ in range(settings.area_level_margin_lines):
+                loose = loose | np.roll(loose, 1) | np.roll(loose, -1)
+        return _weights_masked(edges, ul, ur, ua, settings, wl, wr, tables, loose) + (pix,)
 
     def solve(x_start, sel, loss, start=None):
         use_l, use_r, use_a, sl, sr, sa, ml, mr, ma, pix = sel
@@ -1423,52 +1448,34 @@ def _lag_one(r: np.ndarray) -> float:
     return float(d[:-1] @ d[1:]) / den if den > 0 else 0.0
 
 
-def _weights_masked(edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitSettings, wide_l=None, wide_r=None, tables=None):
+def _weights_masked(
+    edges: EdgeMeasurements, use_l, use_r, use_a, settings: FitSettings, wide_l=None, wide_r=None, tables=None, loose_a=None
+):
     """Measured values and 1-sigma (pixels) of the selected residuals.
 
     Returns ``(use_l, use_r, use_a, sl, sr, sa, ml, mr, ma)``: the masks, the
     sigmas and the measurements of the left edges, right edges and areas;
-    edges in ``wide_l`` / ``wide_r`` come from the wide window.  ``tables``
-    (from :func:`_weight_tables`, same ``edges`` and ``settings``) gives the
-    same result from per-line values computed once.
+    edges in ``wide_l`` / ``wide_r`` come from the wide window; areas of
+    lines in ``loose_a`` are not levelled (see :func:`_area_tables`).
+    ``tables`` (from :func:`_weight_tables`, same ``edges`` and
+    ``settings``) gives the same result from per-line values computed once.
     """
-    if tables is not None:
-        T = tables
-        n = edges.lines.size
-        wl = np.zeros(n, dtype=bool) if wide_l is None or not T["has_wide"] else wide_l
-        wr = np.zeros(n, dtype=bool) if wide_r is None or not T["has_wide"] else wide_r
-        return (
-            use_l,
-            use_r,
-            use_a,
-            np.where(wl, T["sl_w"], T["sl_n"])[use_l],
-            np.where(wr, T["sr_w"], T["sr_n"])[use_r],
-            T["sa"][use_a],
-            np.where(wl, T["el_w"], T["el_n"])[use_l],
-            np.where(wr, T["er_w"], T["er_n"])[use_r],
-            T["ma"][use_a],
-        )
+    T = tables if tables is not None else _weight_tables(edges, settings)
     n = edges.lines.size
-    wide_l = np.zeros(n, dtype=bool) if wide_l is None else wide_l
-    wide_r = np.zeros(n, dtype=bool) if wide_r is None else wide_r
-    floor2 = settings.edge_floor_px**2
-    g = settings.texture_gain
-    tl = edges.left_texture_px if edges.left_texture_px is not None else np.zeros(n)
-    tr = edges.right_texture_px if edges.right_texture_px is not None else np.zeros(n)
-    if edges.left_wide_px is not None:
-        el = np.where(wide_l, edges.left_wide_px, edges.left_px)
-        er = np.where(wide_r, edges.right_wide_px, edges.right_px)
-        esl = np.where(wide_l, edges.left_wide_sigma_px, edges.left_sigma_px)
-        esr = np.where(wide_r, edges.right_wide_sigma_px, edges.right_sigma_px)
-    else:
-        el, er, esl, esr = edges.left_px, edges.right_px, edges.left_sigma_px, edges.right_sigma_px
-    sl = np.sqrt(np.nan_to_num(esl[use_l]) ** 2 + floor2 + (g * np.nan_to_num(tl[use_l])) ** 2)
-    sr = np.sqrt(np.nan_to_num(esr[use_r]) ** 2 + floor2 + (g * np.nan_to_num(tr[use_r])) ** 2)
-    ma = _area_levelled(edges, settings)[use_a]
-    sa = np.sqrt(
-        edges.area_sigma_px[use_a] ** 2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2
+    wl = np.zeros(n, dtype=bool) if wide_l is None or not T["has_wide"] else wide_l
+    wr = np.zeros(n, dtype=bool) if wide_r is None or not T["has_wide"] else wide_r
+    lev = T["levelled"] if loose_a is None else T["levelled"] & ~loose_a
+    return (
+        use_l,
+        use_r,
+        use_a,
+        np.where(wl, T["sl_w"], T["sl_n"])[use_l],
+        np.where(wr, T["sr_w"], T["sr_n"])[use_r],
+        np.where(lev, T["sa_lev"], T["sa"])[use_a],
+        np.where(wl, T["el_w"], T["el_n"])[use_l],
+        np.where(wr, T["er_w"], T["er_n"])[use_r],
+        np.where(lev, T["ma_lev"], T["ma"])[use_a],
     )
-    return use_l, use_r, use_a, sl, sr, sa, el[use_l], er[use_r], ma
 
 
 def _weight_tables(edges: EdgeMeasurements, settings: FitSettings) -> dict:
@@ -1504,7 +1511,32 @@ def _weight_tables(edges: EdgeMeasurements, settings: FitSettings) -> dict:
     ma = _area_levelled(edges, settings)
     T["ma"] = ma
     T["sa"] = np.sqrt(edges.area_sigma_px**2 + (settings.area_rel_sigma * np.maximum(ma, 0.0)) ** 2 + settings.area_floor_px**2)
+    T["ma_lev"], T["sa_lev"], T["levelled"] = _area_tables(edges, settings)
     return T
+
+
+def _area_tables(edges: EdgeMeasurements, settings: FitSettings) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Covered lengths of the lines with a model level, their 1-sigma (pixels) and where they exist.
+
+    ``area_px / area_level``: the level is the brightness model's mean over
+    the line's covered part (:attr:`ballscan.edges.EdgeMeasurements.area_level`),
+    so the quotient is the covered length the silhouette model predicts.
+    Its sigma: the area's pixel noise and the level's relative sigma
+    (texture, in quadrature with ``area_level_floor``) times the length,
+    plus ``area_level_floor_px``.
+    """
+    n = edges.lines.size
+    if edges.area_level is None:
+        z = np.zeros(n)
+        return z, z, np.zeros(n, dtype=bool)
+    lev = np.asarray(edges.area_level, dtype=float)
+    rel = np.nan_to_num(np.asarray(edges.area_level_sigma, dtype=float), nan=np.inf)
+    ok = np.isfinite(lev) & (lev > 0.05) & np.isfinite(rel)
+    ls = np.where(ok, lev, 1.0)
+    ma = np.where(ok, edges.area_px / ls, 0.0)
+    rel2 = np.where(ok, rel, 0.0) ** 2 + settings.area_level_floor**2
+    sa = np.sqrt((edges.area_sigma_px / ls) ** 2 + rel2 * np.maximum(ma, 0.0) ** 2 + settings.area_level_floor_px**2)
+    return ma, np.where(ok, sa, np.inf), ok
 
 
 def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray:
