@@ -1,11 +1,13 @@
-"""Timing and precision of the "paper" and "fit" methods (run on demand, not part of the test suite).
+"""Timing and precision of the "paper" and "fit" methods and of the fit of the ends' pixels (run on demand, not a test).
 
     python benchmarks/bench_fit.py [--runs N] [--noise DN]
 
 On the same rendered images — an untextured, unshaded tennis ball
 (R = 33.5 mm, z = 3 m, f = 3000 px, 50 kHz, 30 m/s; perpendicular and
 30 degrees oblique in depth) plus Gaussian pixel noise of known sigma — it
-runs detection once per image and both refinements on it, and prints per
+runs detection once per image and the three refinements on it (``paper``;
+``fit``, the default; ``pixels``, the fit with ``pixels=True``: the ball's
+ends fitted pixel by pixel), and prints per
 method and geometry: the median time per ball of detection, edges and the
 refinement (``BallEstimate.extra``: ``time_edges_s``, ``time_shading_s``
 (the fit's shading-aware second pass: shading model and edges measured
@@ -53,6 +55,11 @@ WHITE_DN = 1000.0  # DN per unit of linear grey; contrast = 700 DN
 TRUTH_SAMPLING = RenderSettings(samples_across=16, samples_time=64)
 
 
+# label -> (estimate_region's method, its ``pixels``): the paper's method, the
+# default fit (edges and levelled end areas) and the fit of the ends' pixels
+METHODS = {"paper": ("paper", False), "fit": ("fit", False), "pixels": ("fit", True)}
+
+
 def geometries() -> list[tuple[str, BallMotion]]:
     """The benchmark's motions (camera frame; m, s, m/s)."""
     out = []
@@ -63,14 +70,14 @@ def geometries() -> list[tuple[str, BallMotion]]:
 
 
 def run(runs: int, noise_dn: float) -> list[dict]:
-    """Estimate every geometry ``runs`` times with both methods; one row per (geometry, method)."""
+    """Estimate every geometry ``runs`` times with every method; one row per (geometry, method)."""
     rows = []
     t_lines = line_times(CAMERA, N_LINES)
     for gname, m in geometries():
         clean = render(CAMERA, (m, Appearance.flat(BALL)), N_LINES, background_level=BACKGROUND, noise=None, settings=TRUTH_SAMPLING).clean
         contrast = (BALL - BACKGROUND) * WHITE_DN
         bound = pixel_crlb(CAMERA, m, noise_dn, contrast)
-        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "shade": [], "refine": [], "err": [], "z": [], "vz": []} for k in ("paper", "fit")}
+        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "shade": [], "refine": [], "err": [], "z": [], "vz": []} for k in METHODS}
         rng = np.random.default_rng(12345)
         for _ in range(runs):
             data = clean * WHITE_DN + noise_dn * rng.standard_normal(clean.shape)
@@ -80,11 +87,11 @@ def run(runs: int, noise_dn: float) -> list[dict]:
             t_det = time.perf_counter() - t0
             if len(det.regions) != 1:
                 raise RuntimeError(f"{gname}: {len(det.regions)} balls detected")
-            for method in ("paper", "fit"):
-                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, method)
+            for method in METHODS:
+                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method][0], pixels=METHODS[method][1])
                 a = acc[method]
                 a["det"].append(t_det)
-                if method == "fit":
+                if method != "paper":
                     a["edges"].append(b.extra["time_edges_s"])
                     a["shade"].append(b.extra["time_shading_s"])
                     a["refine"].append(b.extra["time_fit_s"])

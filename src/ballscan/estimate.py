@@ -122,6 +122,7 @@ def estimate_region(
     method: str = "fit",
     background_dn: np.ndarray | None = None,
     shading: bool = True,
+    pixels: bool = False,
 ) -> BallEstimate:
     """Estimate one detected ball's motion (see the module docstring).
 
@@ -130,7 +131,9 @@ def estimate_region(
     several regions of one image so it is built once.  ``shading`` turns the
     fit's second, shading-aware pass on (see the module docstring; a few ms
     per ball, ``extra["time_shading_s"]``; ``extra["time_fit_s"]`` is the
-    final fit's).
+    final fit's).  ``pixels`` fits the pixels of the ball's ends in the final
+    fit (``pixels`` of :class:`ballscan.fit.FitSettings`: uniform balls and a
+    continuous exposure only; ``extra["pixels"]``).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -187,6 +190,7 @@ def estimate_region(
             },
         )
 
+    final = FitSettings(pixels=True) if pixels else FitSettings()
     t_e = time.perf_counter()
     others = [r for r in detection.regions if r.index != region.index]
     bg_full = background_dn if background_dn is not None else _full_background(detection)
@@ -226,15 +230,15 @@ def estimate_region(
                 # the first pass's profile, windows and noise model are reused
                 edges2 = with_limb(edges, limb)
                 t_shading = time.perf_counter() - t_s
-                fit2 = fit_motion(camera, edges2, start)
+                fit2 = fit_motion(camera, edges2, start, final)
                 shading_pass = "not_converged"
                 if fit2.converged:
                     edges, fit, shading_model, shading_pass = edges2, fit2, limb.shading, "used"
         if fit is None:
             t_shading = time.perf_counter() - t_s
-            fit = fit_motion(camera, edges, start if start is not None else ig.motion)
+            fit = fit_motion(camera, edges, start if start is not None else ig.motion, final)
     else:
-        fit = fit_motion(camera, edges, ig.motion)
+        fit = fit_motion(camera, edges, ig.motion, final)
     flags.extend(fit.flags)
     if not fit.converged:
         flags.append("not_converged")
@@ -281,6 +285,7 @@ def estimate_region(
             "time_fit_s": fit.run_time_s,
             "time_shading_s": t_shading,
             "shading_pass": shading_pass,
+            "pixels": bool(pixels),
             "shading": None
             if shading_model is None
             else {
@@ -321,6 +326,7 @@ def estimate_image(
     method: str = "fit",
     timestamps_s: np.ndarray | None = None,
     shading: bool = True,
+    pixels: bool = False,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -336,6 +342,8 @@ def estimate_image(
         Per-line timestamps (seconds) replacing ``i / line_rate``.
     shading : bool
         The fit's shading-aware second pass (see the module docstring).
+    pixels : bool
+        Fit the pixels of the balls' ends (see :func:`estimate_region`).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -355,6 +363,6 @@ def estimate_image(
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None
-    balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading) for r in det.regions]
+    balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls))
