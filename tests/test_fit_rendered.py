@@ -163,7 +163,7 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     m0 = _oblique(0.0)
     clean = render(CAM, (m0, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
     b = estimate_image(LineImage(clean * 65535.0, 65535.0, 16, "fine"), CAM, R_TENNIS, pixels=True).balls[0]
-    assert b.extra["pixels"]
+    assert b.extra["pixels"] == "used"
     # measured -0.0003 % (edges and areas: -0.012 % on this render), V.z 2e-5 m/s
     assert abs(b.speed_mps - m0.speed_mps) / m0.speed_mps < 2e-5
     assert abs(b.velocity_mps[2]) < 0.01
@@ -173,16 +173,32 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     bound = pixel_crlb(CAM, m, 5.0, 700.0)
     t = np.arange(200) / CAM.line_rate_hz
     rng = np.random.default_rng(7)
-    err, sig = [], []
+    err, sig, used = [], [], []
     for _ in range(40):
         img = LineImage(clean * 1000.0 + 5.0 * rng.standard_normal(clean.shape), 1e12, 16, "fine")
         det = detect(img)
         b = estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t, "fit", pixels=True)
+        used.append(b.extra["pixels"] == "used")
         err.append(b.speed_mps - m.speed_mps)
         sig.append(b.speed_sigma_mps)
     err, sig = np.array(err), np.array(sig)
     rmse = float(np.sqrt(np.mean(err**2)))
     # measured over 30 runs of benchmarks/bench_fit.py: 1.0-1.2x the bound
     # (edges and levelled areas: 2.3-2.7x); 40 runs scatter by about 20 %
+    # one image of 40 looked shaded (a poor key-point guess: light 4 % of
+    # the contrast, level scatter 2.6 %) and kept the edge fit
+    assert sum(used) >= 36
     assert rmse < 1.6 * bound.speed_sigma_mps
     assert 0.5 <= np.mean(np.abs(err) <= sig) <= 0.97
+
+
+def test_pixel_fit_refuses_a_shaded_ball():
+    """A ball lit from the side is not uniform: the pixel fit is not used and says why."""
+    app = Appearance(ball_level=0.8, shading=True, light_dir=(-0.35, -0.45, -0.82), ambient=0.35)
+    m = _oblique(0.0)
+    clean = render(CAM, (m, app), 200, background_level=0.1, noise=None).clean
+    img = LineImage(clean * 65535.0, 65535.0, 16, "shaded")
+    asked = estimate_image(img, CAM, R_TENNIS, pixels=True).balls[0]
+    plain = estimate_image(img, CAM, R_TENNIS).balls[0]
+    assert asked.extra["pixels"] == "not_uniform" and plain.extra["pixels"] == "off"
+    assert asked.velocity_mps == plain.velocity_mps

@@ -122,9 +122,6 @@ class EdgeSettings:
         get the model's brightness of their covered part
         (:attr:`EdgeMeasurements.area_level`): the lines whose area the fit
         uses (the ball's ends).
-    limb_pixels_min_spread_px : float
-        The same for :attr:`EdgeMeasurements.profile_shade` (the lines whose
-        pixels the fit may model).
     """
 
     n_out: int = 1
@@ -146,8 +143,7 @@ class EdgeSettings:
     limb_texture_tol: float = 0.0
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)
-    limb_area_min_spread_px: float = 0.5
-    limb_pixels_min_spread_px: float = 0.2
+    limb_area_min_spread_px: float = 0.8
 
 
 @dataclass(frozen=True)
@@ -217,12 +213,11 @@ class EdgeMeasurements:
     profile_col0 : int
         Sensor pixel of ``profile[:, 0]``.
     profile_shade : ndarray (n_lines, n_cols) or None
-        The brightness model's relative surface brightness of the ball at
-        each pixel of ``profile`` (the surface nearest the pixel where the
-        model does not cover it), on the lines near the ball's ends
-        (``limb_pixels_min_spread_px``), 1 elsewhere; None without a model.
-        The fit's pixel model (``pixels`` of
-        :class:`ballscan.fit.FitSettings`) multiplies the coverage by it.
+        The brightness model's surface brightness of the ball at each pixel
+        of ``profile`` (normalised units; 1 where not evaluated), for the
+        fit's pixel model (``pixels`` of :class:`ballscan.fit.FitSettings`),
+        which multiplies the coverage by it; None: 1 everywhere.  Set by
+        :func:`ballscan.shading.shade_profile`.
     area_level, area_level_sigma : ndarray or None
         The brightness model's mean normalised level over the covered part of
         each line (``limb.line_levels`` of :func:`measure_edges`; NaN on the
@@ -899,23 +894,6 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         area_level_sigma = np.full(has_signal.size, np.nan)
         lev_a, rel_a = limb.line_levels(ps.common["lines"][want])
         area_level[want], area_level_sigma[want] = lev_a, rel_a
-    profile_shade = None
-    if limb is not None and hasattr(limb, "left_px") and ps.common["profile"] is not None:
-        # the surface brightness under every pixel of the ends' lines, for the
-        # fit's pixel model (outside the silhouette: the nearest surface)
-        line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
-        lines_img = ps.common["lines"]
-        want = np.flatnonzero(has_signal & np.isfinite(line_spread) & ((line_spread >= s.limb_pixels_min_spread_px) | ~(okL & okR)))
-        n_cols = ps.common["profile"].shape[1]
-        profile_shade = np.ones((lines_img.size, n_cols))
-        if want.size:
-            left = np.asarray(limb.left_px)[lines_img[want]]
-            right = np.asarray(limb.right_px)[lines_img[want]]
-            u = ps.c0 + np.arange(n_cols, dtype=float)[None, :]
-            chord = np.maximum(right - left, 0.5)
-            off = np.clip(u - left[:, None], 0.25, np.maximum(chord - 0.25, 0.25)[:, None])
-            val, cov = limb(lines_img[want], np.ones(want.size), off, average=False)
-            profile_shade[want] = np.where(cov > 0, val, np.nan)
     return EdgeMeasurements(
         left_px=np.where(has_signal, eL, np.nan),
         right_px=np.where(has_signal, eR, np.nan),
@@ -935,7 +913,6 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         right_wide_ok=okRw,
         area_level=area_level,
         area_level_sigma=area_level_sigma,
-        profile_shade=profile_shade,
         _pass=ps,
         **ps.common,
     )

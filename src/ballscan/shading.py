@@ -36,7 +36,7 @@ from .edges import EdgeMeasurements
 from .fit import averaged_model
 from .motion import BallMotion
 
-__all__ = ["LimbProfile", "ShadingModel", "ball_limb", "fit_shading", "limb_profile", "surface_normals"]
+__all__ = ["LimbProfile", "ShadingModel", "ball_limb", "fit_shading", "limb_profile", "shade_profile", "surface_normals"]
 
 
 @dataclass(frozen=True)
@@ -294,7 +294,7 @@ class LimbProfile:
     level_rel_sigma: float = 0.0
     level_ref_px: float = 1.0
 
-    def line_levels(self, lines: np.ndarray, samples_per_px: int = 4) -> tuple[np.ndarray, np.ndarray]:
+    def line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
         """The model's mean brightness over the part of each line the ball covers.
 
         A line's summed normalised profile (its ``area``) is the covered
@@ -545,3 +545,45 @@ def _line_level_scatter(
     if good.sum() < 3:
         return 0.0, 1.0
     return float(np.sqrt(max(float(np.mean(d[good] ** 2) - np.mean(v[good])), 0.0))), float(np.mean(n[good]))
+
+
+def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: float = 0.2) -> np.ndarray | None:
+    """The shading model's surface brightness under every pixel of the ball's ends.
+
+    For :attr:`ballscan.edges.EdgeMeasurements.profile_shade` (the fit's
+    pixel model multiplies each pixel's coverage by it): on the lines with
+    signal whose model edge spread is at least ``min_spread_px`` or that lack
+    an edge pair, the normalised brightness of the surface seen through each
+    pixel of the edges' profile box (outside the silhouette, of the surface
+    nearest to it, a quarter pixel inside); 1 on the other lines.
+
+    Parameters
+    ----------
+    limb : LimbProfile
+    edges : EdgeMeasurements
+        With a profile (made by :func:`ballscan.edges.measure_edges`).
+    min_spread_px : float
+        Pixels.
+
+    Returns
+    -------
+    ndarray (n_lines, n_cols) or None
+        None when ``edges`` carry no profile.
+    """
+    if edges.profile is None:
+        return None
+    lines = edges.lines
+    spread = limb.spread_px[lines]
+    n_cols = edges.profile.shape[1]
+    out = np.ones((lines.size, n_cols))
+    pair = edges.left_ok & edges.right_ok
+    want = np.flatnonzero(edges.signal & np.isfinite(spread) & ((spread >= min_spread_px) | ~pair))
+    if want.size == 0:
+        return out
+    left, right = limb.left_px[lines[want]], limb.right_px[lines[want]]
+    u = edges.profile_col0 + np.arange(n_cols, dtype=float)[None, :]
+    chord = np.maximum(right - left, 0.5)
+    off = np.clip(u - left[:, None], 0.25, np.maximum(chord - 0.25, 0.25)[:, None])
+    val, cov = limb(lines[want], np.ones(want.size), off, average=False)
+    out[want] = np.where(cov > 0, val, np.nan)
+    return out
