@@ -229,3 +229,18 @@ def test_line_levels_against_the_rendered_ends(texture):
     # levels exist only where the model sees the ball
     lv, _ = limb.line_levels(np.array([0, reg.line_start + 5]))
     assert np.isnan(lv[0]) and np.isfinite(lv[1])
+
+
+def test_no_area_level_where_a_line_is_saturated():
+    """A line with a clipped pixel gets no brightness level (its area is not coverage times a level)."""
+    motions, data = _noisy_scenes()["saturated"]
+    image = LineImage(np.asarray(data, dtype=float), 255.0, 8, "saturated")
+    det = detect(image)
+    bg = _full_background(det)
+    t = line_times(CAM, data.shape[0])
+    plain = measure_edges(image.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
+    limb = ball_limb(CAM, motions[0], image.data, plain, t, bg)
+    e = with_limb(plain, limb)
+    clipped = ~np.all(np.isfinite(e.profile), axis=1)
+    assert clipped.any() and np.isfinite(e.area_level).any()
+    assert not np.any(np.isfinite(e.area_level[clipped]))

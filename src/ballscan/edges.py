@@ -216,8 +216,8 @@ class EdgeMeasurements:
         The brightness model's surface brightness of the ball at each pixel
         of ``profile`` (normalised units; 1 where not evaluated), for the
         fit's pixel model (``pixels`` of :class:`ballscan.fit.FitSettings`),
-        which multiplies the coverage by it; None: 1 everywhere.  Set by
-        :func:`ballscan.shading.shade_profile`.
+        which multiplies the coverage by it (NaN: 1); None: 1 everywhere.
+        Set by :func:`ballscan.shading.shade_profile`.
     area_level, area_level_sigma : ndarray or None
         The brightness model's mean normalised level over the covered part of
         each line (``limb.line_levels`` of :func:`measure_edges`; NaN on the
@@ -889,7 +889,12 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     if limb is not None and hasattr(limb, "line_levels"):
         # the brightness of the ends' covered part (their area's divisor)
         line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
-        want = np.flatnonzero(has_signal & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR)))
+        # not where a pixel of the line is saturated or another ball's (NaN in
+        # the profile): its area is not the ball's coverage times a level
+        clean = np.all(np.isfinite(ps.common["profile"]), axis=1)
+        want = np.flatnonzero(
+            has_signal & clean & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR))
+        )
         area_level = np.full(has_signal.size, np.nan)
         area_level_sigma = np.full(has_signal.size, np.nan)
         lev_a, rel_a = limb.line_levels(ps.common["lines"][want])

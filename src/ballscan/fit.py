@@ -18,9 +18,14 @@ Residuals (all whitened by their 1-sigma):
   dependent), a systematic floor and its texture indicator in quadrature;
 * area lines: the lines just outside the ball (``area_model - area_meas``,
   so that lines where the model says "absent" but the data shows ball, and
-  vice versa, produce residuals) and, with a large relative sigma, the
-  faint end lines (their summed coverage is weighted by the brightness of
-  the lit or shaded cap).
+  vice versa, produce residuals) and the ball's end lines, where the chord
+  grows like the square root of time: their summed coverage divided by the
+  shading model's brightness of the covered part when the edges carry it
+  (``area_level``; sigma from the pixel noise and how well that model
+  predicts a line's brightness), else with a large relative sigma (the lit
+  or shaded cap's brightness is unknown);
+* optionally (``pixels``) the pixels of the spread edges' windows and of
+  the end lines instead of their edges and areas (:func:`_pixel_residuals`).
 
 The built-in Levenberg-Marquardt solver (:func:`_levenberg_marquardt`; a
 :func:`scipy.optimize.least_squares` path is kept as a cross-check) fits by
@@ -665,17 +670,19 @@ class FitSettings:
         quadrature to each edge sigma: edges next to a seam or a steep
         shading gradient get a larger sigma.
     end_line_areas : bool
-        Fit the summed coverage of lines with signal but no usable edge (the
-        ball's faint ends).  Off by default: the sum is weighted by the
-        brightness of the ball's cap, which a shaded ball's lighting changes
-        between its leading and trailing ends by tens of per cent, hence the
-        large ``area_rel_sigma``.  Lines without signal (the ball is absent)
+        Fit the summed coverage of lines with signal but no usable edge pair
+        (the ball's ends).  Without a brightness level for the line (edges
+        measured without a shading model) the sum is weighted by the
+        unknown brightness of the ball's cap, which a shaded ball's lighting
+        changes between its leading and trailing ends by tens of per cent,
+        hence the large ``area_rel_sigma``; with one see
+        ``area_level_floor``.  Lines without signal (the ball is absent)
         always give area residuals.
     pixels : bool
         Fit the pixels of the ball's ends instead of their edges and areas
-        (:func:`_pixel_residuals`): on every line seen during the whole
-        exposure whose model edge spread is at least ``pixel_min_spread_px``
-        the pixels within ``spread / 2 + pixel_window_px`` of each model
+        (:func:`_pixel_residuals`): on every line whose model edge spread is
+        at least ``pixel_min_spread_px`` (seen during the whole exposure, or
+        also partly with ``pixel_partial``) the pixels within ``spread / 2 + pixel_window_px`` of each model
         edge, and every pixel of the end lines without an edge pair, each
         modelled as a free brightness times the shading model's relative
         surface brightness (``profile_shade`` of the edges) times the
@@ -812,7 +819,7 @@ class FitSettings:
     max_spread_px: float = 0.3
     max_spread_wide_px: float = 0.8
     end_line_areas: bool = True
-    pixel_floor: float = 0.01
+    pixel_floor: float = 0.002
     pixels: bool = False
     pixel_min_spread_px: float = 0.3
     pixel_window_px: float = 6.0
@@ -1059,7 +1066,9 @@ def whitened_jacobian(
 ) -> tuple[np.ndarray, tuple[str, ...]]:
     """Jacobian of the fit's whitened residuals at ``motion``.
 
-    Same residual selection and weights as :func:`fit_motion`; one column per
+    Same edge and area selection and weights as :func:`fit_motion` with
+    ``area_level_partial`` and without ``pixels`` (the pixel residuals are
+    not included; :func:`ballscan.precision.pixel_crlb` bounds those); one column per
     parameter of :data:`PARAM_NAMES` plus ``edge_bias_px`` when
     ``settings.fit_edge_bias``.  ``J^T J`` is the Fisher information of the
     edge measurements (Gaussian noise), used by :mod:`ballscan.precision`.
@@ -1103,6 +1112,8 @@ def fit_motion(
         the optimiser did not converge.
     """
     t0 = time.perf_counter()
+    if settings.pixels and settings.pixel_groups not in ("end", "window"):
+        raise ValueError(f"settings.pixel_groups: expected 'end' or 'window', got {settings.pixel_groups!r}")
     R = initial.radius_m
     acc = initial.acceleration_mps2
     nn = settings.n_nodes
@@ -1154,7 +1165,10 @@ def fit_motion(
         if not settings.area_level_partial:
             loose = me.presence < 0.999
             for _ in range(settings.area_level_margin_lines):
-                loose = loose | np.roll(loose, 1) | np.roll(loose, -1)
+                grown = loose.copy()
+                grown[1:] |= loose[:-1]
+                grown[:-1] |= loose[1:]
+                loose = grown
         return _weights_masked(edges, ul, ur, ua, settings, wl, wr, tables, loose) + (pix,)
 
     def solve(x_start, sel, loss, start=None):
@@ -1270,12 +1284,17 @@ def fit_motion(
             raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
         return out, resid_and_jac
 
+    def edge_lines(sel) -> int:
+        # lines with both edges, as edges or as the pixels of their windows
+        pix = sel[-1]
+        return int((sel[0] & sel[1]).sum()) + (0 if pix is None else pix["n_spread"])
+
     sel = problem(theta0)
     use_l, use_r, use_a = sel[:3]
-    n_edge_lines = int((use_l & use_r).sum())
+    n_edge_lines = edge_lines(sel)
     fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
     n_par = 6 + int(fit_b)
-    m_res = int(use_l.sum() + use_r.sum() + use_a.sum())
+    m_res = int(use_l.sum() + use_r.sum() + use_a.sum()) + (0 if sel[-1] is None else sel[-1]["n"])
     if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
         return _degenerate_result(initial, n_edge_lines, settings, use_l, use_r, use_a, t0)
     x = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
@@ -1296,7 +1315,7 @@ def fit_motion(
         if _round > 0:
             sel = problem(x[:6])
         use_l, use_r, use_a, sl, sr, sa = sel[:6]
-        if int((use_l & use_r).sum()) < settings.min_edge_lines:
+        if edge_lines(sel) < settings.min_edge_lines:
             break
         (x, n_iter, status, message, cost, r, J), rj = solve(x, sel, "linear")
         sel_solved = sel
@@ -1320,7 +1339,7 @@ def fit_motion(
     x_sol = x
     th, b = x_sol[:6], (x_sol[6] if fit_b else 0.0)
     if sel_solved is None:
-        return _degenerate_result(initial, int((use_l & use_r).sum()), settings, use_l, use_r, use_a, t0)
+        return _degenerate_result(initial, edge_lines(sel), settings, use_l, use_r, use_a, t0)
     # r and J belong to the last solved selection (a later re-selection that
     # left too few edges is not used)
     sel = sel_solved
@@ -1444,7 +1463,6 @@ def _pixel_spec(
     n_col = n_col[keep]
     K = int(n_col.max())
     order = np.argsort(~mask, axis=1, kind="stable")[:, :K]
-    rows = np.arange(idx.size)[:, None]
     m = np.take_along_axis(mask, order, axis=1)
     shade = edges.profile_shade[idx] if edges.profile_shade is not None else np.ones_like(prof)
     shade = np.take_along_axis(shade, order, axis=1)
@@ -1465,8 +1483,8 @@ def _pixel_spec(
         group=groups,
         n_groups=int(g_dense.max()) + 1,
         n=int(m.sum()),
+        n_spread=int(spread_p[idx].sum()),
         nodes=settings.pixel_nodes,
-        rows=rows,
     )
 
 

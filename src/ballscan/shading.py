@@ -28,6 +28,7 @@ albedo stay local).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 import numpy as np
 
@@ -486,7 +487,12 @@ def ball_limb(
     # plateau lines and scaled to each end line's length, is the sigma of the
     # end lines' levels (a rendered tennis ball: plateau lines' scatter 5.2 %;
     # the ends' levels 8.5 % RMS off, their sigmas 8-22 %)
+    # lines seen during the whole exposure, one line away from any that is
+    # not (the guess's presence may be off by a line; a partial line's mean
+    # is far lower)
     full = both & (me.presence[0] > 0.999)
+    for _ in range(1):
+        full = full & np.concatenate([[False], full[:-1]]) & np.concatenate([full[1:], [False]])
     inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
     scatter, length = _line_level_scatter(limb, edges, full, me.spread_px[0], *inner)
     return replace(limb, level_rel_sigma=scatter, level_ref_px=length)
@@ -494,7 +500,7 @@ def ball_limb(
 
 def _line_level_scatter(
     limb: LimbProfile, edges: EdgeMeasurements, lines_ok: np.ndarray, spread_px: np.ndarray, left_px: np.ndarray, right_px: np.ndarray, max_lines: int = 40
-) -> float:
+) -> tuple[float, float]:
     """Relative scatter of the lines' measured mean brightness about the law's, pixel noise removed.
 
     The end lines' areas are divided by the law's mean brightness of their
@@ -506,12 +512,13 @@ def _line_level_scatter(
     spread; ``lines_ok`` must leave out the lines on which the ball is
     present during only part of the exposure (their mean is lower);
     returns the scatter and the mean number of pixels per line it was
-    measured over (``(0, 1)`` when too few lines);
+    measured over (``(nan, 1)`` when fewer than 3 lines qualify: not
+    measured is not uniform);
     ``left_px``, ``right_px`` are the edges inside both the model's and the
     measured ones (a narrow-window edge of a spread end is off by a pixel).
     """
     if edges.profile is None or edges.profile_sigma is None:
-        return 0.0, 1.0
+        return math.nan, 1.0
     idx = np.flatnonzero(lines_ok)
     if idx.size > max_lines:
         idx = idx[np.linspace(0, idx.size - 1, max_lines).astype(int)]
@@ -523,7 +530,7 @@ def _line_level_scatter(
     count = hi - lo + 1
     keep = count >= 3
     if keep.sum() < 3:
-        return 0.0, 1.0
+        return math.nan, 1.0
     idx, lo, count = idx[keep], lo[keep], count[keep]
     k = np.arange(count.max())[None, :]
     inside = k < count[:, None]
@@ -543,7 +550,7 @@ def _line_level_scatter(
         v = noise2 / m_mean**2
     good &= np.isfinite(d) & np.isfinite(v) & (m_mean > 0.05)
     if good.sum() < 3:
-        return 0.0, 1.0
+        return math.nan, 1.0
     return float(np.sqrt(max(float(np.mean(d[good] ** 2) - np.mean(v[good])), 0.0))), float(np.mean(n[good]))
 
 
@@ -555,7 +562,8 @@ def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: flo
     signal whose model edge spread is at least ``min_spread_px`` or that lack
     an edge pair, the normalised brightness of the surface seen through each
     pixel of the edges' profile box (outside the silhouette, of the surface
-    nearest to it, a quarter pixel inside); 1 on the other lines.
+    nearest to it, a quarter pixel inside); 1 on the other lines; NaN on
+    lines where the model does not see the ball (the pixel model then uses 1).
 
     Parameters
     ----------
