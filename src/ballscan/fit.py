@@ -1344,7 +1344,8 @@ def fit_motion(
     # left too few edges is not used)
     sel = sel_solved
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
-    dof = r.size - n_par
+    # the pixel windows' (or ends') free brightnesses are parameters too
+    dof = r.size - n_par - (0 if sel[-1] is None else sel[-1]["n_groups"])
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
     nl, nr = int(use_l.sum()), int(use_r.sum())
     inflation = 1.0

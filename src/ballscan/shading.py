@@ -391,6 +391,7 @@ def limb_profile(
     n_time: int = 3,
     n_height: int = 2,
     level_rel_sigma: float = 0.0,
+    level_ref_px: float = 1.0,
 ) -> LimbProfile:
     """The model's normalised profile across either edge of any line.
 
@@ -417,9 +418,9 @@ def limb_profile(
         pixel's centre; the others average ``n_time x n_height`` samples.
     n_time, n_height : int
         Samples over the exposure and across the pixel's height.
-    level_rel_sigma : float
-        Relative 1-sigma of the law's mean brightness of a line (see
-        :class:`LimbProfile`).
+    level_rel_sigma, level_ref_px : float
+        Relative 1-sigma of the law's mean brightness of a line and the
+        length it was measured over, pixels (see :class:`LimbProfile`).
 
     Returns
     -------
@@ -428,7 +429,7 @@ def limb_profile(
     return LimbProfile(
         shading, camera, motion, np.asarray(t_lines_s, dtype=float), background_dn, int(polarity), float(contrast_dn),
         np.asarray(spread_px, dtype=float), np.asarray(left_px, dtype=float), np.asarray(right_px, dtype=float),
-        float(sharp_px), int(n_time), int(n_height), float(level_rel_sigma),
+        float(sharp_px), int(n_time), int(n_height), float(level_rel_sigma), float(level_ref_px),
     )
 
 
