@@ -164,3 +164,21 @@ def test_estimate_shading_switch(capsys):
     on, off = json.loads(out_on)["balls"][0], json.loads(out_off)["balls"][0]
     assert on["shading"]["light_dn"] is not None and off["shading"] is None
     assert off["time_shading_s"] == 0.0 and on["velocity_mps"] != off["velocity_mps"]
+
+
+def test_estimate_pixels_switch(tmp_path, capsys):
+    """--pixels: used on an untextured flat ball, refused (and said) on the textured pingpong scene."""
+    cam = DATA / "scenes" / "pub_tennis_serve.camera.toml"
+    code, _, err = run(capsys, "simulate", "--camera", cam, "--radius", "0.0335", "--position", "0,0.01,3.0", "--velocity", "30,0,2",
+                       "--t-c", "0.0015", "--lines", "220", "--out", tmp_path / "s", "--noise", "none", "--flat")
+    assert code == 0, err
+    code, out, err = run(capsys, "estimate", tmp_path / "s.png", "--camera", cam, "--radius", "0.0335", "--json", "--pixels")
+    assert code == 0, err
+    ball = json.loads(out)["balls"][0]
+    truth = json.loads((tmp_path / "s.truth.json").read_text())
+    assert ball["pixels"] == "used"
+    assert abs(ball["speed_mps"] - truth["speed_mps"]) / truth["speed_mps"] < 1e-3
+    scene = DATA / "scenes" / "pub_pingpong"
+    code, out, err = run(capsys, "estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", "0.02", "--json", "--pixels")
+    assert code == 0, err
+    assert json.loads(out)["balls"][0]["pixels"] == "not_uniform"

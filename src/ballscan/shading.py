@@ -538,11 +538,13 @@ def _line_level_scatter(
     cols = np.where(inside, lo[:, None] + k, lo[:, None])
     p = edges.profile[idx[:, None], cols]
     sp = edges.profile_sigma[idx[:, None], cols]
-    inside &= np.isfinite(p)
+    lines_img = edges.lines[idx]
+    model, hit = limb(lines_img, np.ones(idx.size), cols + c0 - limb.left_px[lines_img][:, None], average=False)
+    # only where the model's surface is seen too (the model sits at a rough
+    # motion: a pixel inside the measured ball may lie outside its silhouette)
+    inside &= np.isfinite(p) & (np.nan_to_num(hit) > 0)
     n = inside.sum(axis=1)
     good = n >= 3
-    lines_img = edges.lines[idx]
-    model, _ = limb(lines_img, np.ones(idx.size), cols + c0 - limb.left_px[lines_img][:, None], average=False)
     with np.errstate(invalid="ignore", divide="ignore"):
         p_mean = np.where(inside, p, 0.0).sum(axis=1) / n
         m_mean = np.where(inside, model, 0.0).sum(axis=1) / n
