@@ -346,3 +346,17 @@ def test_fig5_and_fig8_commands(tmp_path):
     assert len(ex.read_rows(tmp_path / "f8" / "trials.csv")) == 5 * 2
     bad = runner.invoke(experiment_app, ["fig8", "--methods", "initial,magic", "--out", str(tmp_path / "f8b")])
     assert bad.exit_code != 0 and "--methods" in bad.output
+
+
+def test_pixels_method_on_request(tmp_path):
+    """'pixels' is an estimator one can ask for; it is not in the default set and says when it fell back."""
+    assert "pixels" in ex.METHODS and "pixels" not in ex.DEFAULT_METHODS
+    assert ex.fig5_config().methods == ex.DEFAULT_METHODS
+    res = _run(_tiny(methods=("initial", "fit", "pixels")), tmp_path / "px", jobs=1)
+    pix = [r for r in res.rows if r.method == "pixels"]
+    fit = [r for r in res.rows if r.method == "fit"]
+    assert len(pix) == len(fit) > 0
+    for r in pix:
+        assert r.est_speed_mps is not None and np.isfinite(r.est_speed_mps)
+        words = [w for w in r.flags.split(";") if w.startswith("pixels_")] if r.flags else []
+        assert all(w in ex.EXTRA_FLAGS for w in words)

@@ -112,7 +112,7 @@ def estimate(
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
     shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
     pixels: bool = typer.Option(
-        False, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: near the Cramér–Rao bound, about twice the time; not for textured balls)."
+        False, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
     ),
 ) -> None:
     """Measure every ball in a line-scan image."""

@@ -62,7 +62,7 @@ def fig5(
     trials: Optional[int] = typer.Option(None, "--trials", help="Trials per point and texture (default 16; 8 with --quick)."),
     points: int = typer.Option(5, "--points", help="Values per factor (full mode)."),
     textures: Optional[str] = typer.Option(None, "--textures", help="Comma list of none,tennis (default both; none with --quick)."),
-    methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit (default all; initial,fit with --quick)."),
+    methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit,pixels (default initial,paper,fit; initial,fit with --quick)."),
     seed: int = _SEED,
     jobs: Optional[int] = _JOBS,
     scheduler: Optional[str] = _SCHED,
@@ -75,7 +75,7 @@ def fig5(
     if quick:
         cfg = ex.fig5_quick_config(seed=seed, textures=tex or ("none",), methods=meth or ("initial", "fit"))
     else:
-        cfg = ex.fig5_config(seed=seed, points=points, textures=tex or ex.TEXTURES, methods=meth or ex.METHODS)
+        cfg = ex.fig5_config(seed=seed, points=points, textures=tex or ex.TEXTURES, methods=meth or ex.DEFAULT_METHODS)
     if trials is not None:
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("fig5", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []),
@@ -91,7 +91,7 @@ def fig8(
     quick: bool = typer.Option(False, "--quick", help="8 trials per point."),
     trials: Optional[int] = typer.Option(None, "--trials", help="Trials per point and texture (default 16; 8 with --quick)."),
     textures: Optional[str] = typer.Option(None, "--textures", help="Comma list of none,tennis (default both)."),
-    methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit (default all)."),
+    methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit,pixels (default initial,paper,fit)."),
     overlays: bool = typer.Option(True, "--overlays/--no-overlays", help="Also draw Fig. 7-like overlay images."),
     seed: int = _SEED,
     jobs: Optional[int] = _JOBS,
@@ -102,7 +102,7 @@ def fig8(
     """The laboratory rail: viewing-plane rotation 0/4/10 deg, 100/200 lines/s (paper Fig. 7-8)."""
     tex = _words(textures, ex.TEXTURES, "--textures")
     meth = _words(methods, ex.METHODS, "--methods")
-    cfg = ex.fig8_config(seed=seed, textures=tex or ex.TEXTURES, methods=meth or ex.METHODS)
+    cfg = ex.fig8_config(seed=seed, textures=tex or ex.TEXTURES, methods=meth or ex.DEFAULT_METHODS)
     if quick:
         cfg = ex.replace_trials(cfg, 8)
     if trials is not None:
