@@ -188,7 +188,7 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     err, sig = np.array(err), np.array(sig)
     rmse = float(np.sqrt(np.mean(err**2)))
     # measured over 100 runs of benchmarks/bench_fit.py at this geometry:
-    # 1.31x the bound (edges and levelled areas: 1.94x); 40 runs scatter by
+    # 1.10x the bound (edges and levelled areas: 1.94x); 40 runs scatter by
     # about 20 %
     # one image of 40 looked shaded (a poor key-point guess: light 4 % of
     # the contrast, level scatter 2.6 %) and kept the edge fit
