@@ -244,3 +244,28 @@ def test_no_area_level_where_a_line_is_saturated():
     clipped = ~np.all(np.isfinite(e.profile), axis=1)
     assert clipped.any() and np.isfinite(e.area_level).any()
     assert not np.any(np.isfinite(e.area_level[clipped]))
+
+
+def test_shade_profile_against_the_rendered_surface():
+    """The pixel model's surface brightness: the law where the ball covers a pixel, 1 on the sharp lines."""
+    from ballscan.shading import shade_profile
+
+    r, img, _ = _shaded()
+    e, reg, t = _edges(img, False)
+    bg = 0.1 * WHITE_DN
+    limb = ball_limb(CAM, MOTION, img, e, t, np.full(img.shape, bg))
+    shade = shade_profile(limb, e)
+    assert shade.shape == e.profile.shape
+    spread = limb.spread_px[e.lines]
+    wanted = e.signal & np.isfinite(spread) & ((spread >= 0.2) | ~(e.left_ok & e.right_ok))
+    assert wanted.sum() >= 10 and np.all(shade[~wanted] == 1.0)
+    # where the renderer's pixel is fully covered its value is the surface's
+    # brightness averaged over the pixel: the law at the pixel's centre, up
+    # to the brightness's curvature over one pixel (measured: 0.12 % RMS over
+    # 2 063 pixels, 1.8 % at most)
+    cols = e.profile_col0 + np.arange(shade.shape[1])
+    full = r.coverage[np.ix_(e.lines, cols)] >= 1.0
+    sel = wanted[:, None] & full & np.isfinite(shade)
+    measured = (img[np.ix_(e.lines, cols)] - bg) / limb.contrast_dn
+    rel = shade[sel] / measured[sel] - 1.0
+    assert sel.sum() > 200 and np.sqrt(np.mean(rel**2)) < 0.005 and np.abs(rel).max() < 0.04
