@@ -1482,7 +1482,12 @@ def _pixel_spec(
     _, g_dense = np.unique(g[m], return_inverse=True)
     groups = np.full(m.shape, -1)
     groups[m] = g_dense
+    # rows in two blocks by width (the end lines' windows are several times
+    # wider than the edge windows): the coverage is computed per block
+    narrow = n_col <= max(int(np.median(n_col) * 1.5), 1)
+    blocks = [(np.flatnonzero(b), int(n_col[b].max())) for b in (narrow, ~narrow) if b.any()]
     return dict(
+        blocks=blocks,
         lines=idx,
         t=edges.t_s[idx],
         cols=np.where(m, cols[order], cols[order[:, :1]]),
@@ -1510,9 +1515,11 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
     """
     me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True)
     u_lo, u_hi, wgt = me.samples
-    a = pix["cols"][None, :, None, None, :] - 0.5
-    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
-    cov = (wgt[..., None] * ov).sum(axis=(2, 3))  # (P, Np, K)
+    cov = np.zeros((thetas.shape[0],) + pix["cols"].shape)  # (P, Np, K)
+    for rows, width in pix["blocks"]:
+        a = pix["cols"][rows, :width][None, :, None, None, :] - 0.5
+        ov = np.clip(np.minimum(u_hi[:, rows, ..., None], a + 1.0) - np.maximum(u_lo[:, rows, ..., None], a), 0.0, 1.0)
+        cov[:, rows, :width] = (wgt[:, rows, ..., None] * ov).sum(axis=(2, 3))
     c = cov * pix["shade"]
     m = pix["mask"]
     g = pix["group"][m]
