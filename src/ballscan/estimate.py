@@ -131,9 +131,16 @@ def estimate_region(
     several regions of one image so it is built once.  ``shading`` turns the
     fit's second, shading-aware pass on (see the module docstring; a few ms
     per ball, ``extra["time_shading_s"]``; ``extra["time_fit_s"]`` is the
-    final fit's).  ``pixels`` fits the pixels of the ball's ends in the final
-    fit (``pixels`` of :class:`ballscan.fit.FitSettings`: uniform balls and a
-    continuous exposure only; ``extra["pixels"]``).
+    final fit's).  ``pixels`` fits the pixels of the ball's edge windows and
+    ends in the final fit (``pixels`` of :class:`ballscan.fit.FitSettings`)
+    when the ball is uniform and its image does not move along the sensor
+    during the exposure (:func:`_pixel_fit_refusal`; the test needs the
+    shading model, which is then fitted even with ``shading`` off but kept
+    only for the pixel fit): for untextured balls and a continuous exposure.
+    Where it is not used the result is that of the same call without
+    ``pixels``, and ``extra["pixels"]`` says why: "off", "used",
+    "not_uniform", "lateral_motion", "no_start", "no_shading_model",
+    "not_converged".
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
