@@ -297,15 +297,12 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
     """Synthetic edges plus the exact averaged coverage of every pixel as their profile (flat ball, level 1)."""
     from dataclasses import replace
 
-    from ballscan.fit import _model_core
+    from ballscan.fit import _model_core, pixel_coverage
 
     me = _model_core(cam, m.to_params()[None], m.radius_m, e.t_s, m.acceleration_mps2, 16, True)
-    u_lo, u_hi, wgt = me.samples
     lo = int(np.floor(np.nanmin(e.left_px))) - 12
     cols = np.arange(lo, int(np.ceil(np.nanmax(e.right_px))) + 13, dtype=float)
-    a = cols[None, None, None, None, :] - 0.5
-    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
-    prof = (wgt[..., None] * ov).sum(axis=(2, 3))[0]
+    prof = pixel_coverage(*me.samples, cols)[0]
     prof = prof + noise * np.random.default_rng(seed).standard_normal(prof.shape)
     return replace(e, profile=prof, profile_sigma=np.full(prof.shape, max(noise, 1e-3)), profile_col0=lo)
 

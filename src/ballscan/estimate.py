@@ -346,10 +346,10 @@ def _pixel_fit_refusal(limb, edges, motion: BallMotion, camera: LineScanCamera) 
     sensor (``vy``): at 70 deg and 80 m/s the coverage erred by up to 0.12
     of the contrast where the areas agreed to 1e-6.  On noise-free, finely
     sampled renders of the benchmark ball (30 m/s towards y) the pixel
-    model's misfit grew with that motion: RMS 0.0006, 0.0010, 0.0015, 0.0043
-    and 0.0073 of the contrast at 0.10, 0.21, 0.30, 0.42 and 0.52 px per
-    exposure (speed errors 0.0001 % up to 0.30 px, 0.0023 % and 0.0064 %
-    beyond): up to 0.3 px it is far below any camera's pixel noise.
+    fit's reduced chi-square grew with that motion: 0.09, 0.22, 0.51, 4.2
+    and 12 at 0.10, 0.21, 0.30, 0.42 and 0.52 px per exposure (the pixels'
+    sigma there is the 0.002 floor and the detector's noise floor), its
+    speed errors 0.0001 % up to 0.30 px, 0.0023 % and 0.0064 % beyond.
     """
     light = float(np.linalg.norm(limb.shading.light_dn))
     if not (light <= _UNIFORM_LIGHT * edges.contrast_dn and limb.level_rel_sigma <= _UNIFORM_LEVEL):

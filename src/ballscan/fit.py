@@ -81,6 +81,7 @@ __all__ = [
     "hybrid_jacobian",
     "model_jacobian",
     "param_scale",
+    "pixel_coverage",
     "fit_motion",
     "propagate",
     "synthetic_edges",
@@ -844,7 +845,6 @@ class FitSettings:
     area_level_floor: float = 0.002
     area_level_floor_px: float = 0.005
     area_level_partial: bool = False
-    area_level_margin_lines: int = 0
     loss: str = "soft_l1"
     f_scale: float = 3.0
     min_edge_lines: int = 5
@@ -1167,14 +1167,7 @@ def fit_motion(
             if pix is not None:
                 ua = ua & ~end_p
                 ul, ur = ul & ~spread_p, ur & ~spread_p
-        loose = None
-        if not settings.area_level_partial:
-            loose = me.presence < 0.999
-            for _ in range(settings.area_level_margin_lines):
-                grown = loose.copy()
-                grown[1:] |= loose[:-1]
-                grown[:-1] |= loose[1:]
-                loose = grown
+        loose = None if settings.area_level_partial else me.presence < 0.999
         return _weights_masked(edges, ul, ur, ua, settings, wl, wr, tables, loose) + (pix,)
 
     def solve(x_start, sel, loss, start=None):
@@ -1488,7 +1481,6 @@ def _pixel_spec(
     blocks = [(np.flatnonzero(b), int(n_col[b].max())) for b in (narrow, ~narrow) if b.any()]
     return dict(
         blocks=blocks,
-        lines=idx,
         t=edges.t_s[idx],
         cols=np.where(m, cols[order], cols[order[:, :1]]),
         mask=m,
@@ -1501,6 +1493,31 @@ def _pixel_spec(
         n_spread=int(spread_p[idx].sum()),
         nodes=settings.pixel_nodes,
     )
+
+
+def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Averaged coverage of pixels by the model's chord samples.
+
+    Parameters
+    ----------
+    u_lo, u_hi, wgt : ndarray (P, N, 3, n)
+        Chord ends (pixels) and weights of each sample of each line
+        (``samples`` of :func:`averaged_model` with ``return_samples``).
+    cols : ndarray (C,) or (N, C)
+        Pixel centres (pixels), shared by the lines or one row per line; a
+        pixel spans ``[col - 1/2, col + 1/2]``.
+
+    Returns
+    -------
+    ndarray (P, N, C)
+        Sum over the samples of weight times the overlap of ``[lo, hi]``
+        with the pixel.
+    """
+    a = np.asarray(cols, dtype=float) - 0.5
+    if a.ndim == 2:
+        a = a[:, None, None, :]
+    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
+    return (wgt[..., None] * ov).sum(axis=(-3, -2))
 
 
 def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
@@ -1517,9 +1534,7 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
     u_lo, u_hi, wgt = me.samples
     cov = np.zeros((thetas.shape[0],) + pix["cols"].shape)  # (P, Np, K)
     for rows, width in pix["blocks"]:
-        a = pix["cols"][rows, :width][None, :, None, None, :] - 0.5
-        ov = np.clip(np.minimum(u_hi[:, rows, ..., None], a + 1.0) - np.maximum(u_lo[:, rows, ..., None], a), 0.0, 1.0)
-        cov[:, rows, :width] = (wgt[:, rows, ..., None] * ov).sum(axis=(2, 3))
+        cov[:, rows, :width] = pixel_coverage(u_lo[:, rows], u_hi[:, rows], wgt[:, rows], pix["cols"][rows, :width])
     c = cov * pix["shade"]
     m = pix["mask"]
     g = pix["group"][m]

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .camera import LineScanCamera
-from .fit import FitSettings, averaged_model, param_scale, propagate, synthetic_edges, whitened_jacobian
+from .fit import FitSettings, averaged_model, param_scale, pixel_coverage, propagate, synthetic_edges, whitened_jacobian
 from .motion import BallMotion
 from .silhouette import visible_line_count
 
@@ -187,15 +187,6 @@ def edge_crlb(
     return _bound("edges", motion, camera, F, n, noise)
 
 
-def _coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """Averaged pixel coverage (P, N, C): sum over samples of overlap([lo, hi], pixel)."""
-    a = cols - 0.5
-    lo = u_lo[..., None]
-    hi = u_hi[..., None]
-    ov = np.clip(np.minimum(hi, a + 1.0) - np.maximum(lo, a), 0.0, 1.0)
-    return (wgt[..., None] * ov).sum(axis=(-3, -2))
-
-
 def pixel_crlb(
     camera: LineScanCamera,
     motion: BallMotion,
@@ -241,7 +232,7 @@ def pixel_crlb(
     thetas = np.vstack([theta + np.diag(h), theta - np.diag(h)])
     ms = averaged_model(camera, thetas, motion.radius_m, t, motion.acceleration_mps2, n_nodes, return_samples=True)
     u_lo, u_hi, wgt = ms.samples  # type: ignore[misc]
-    cov = _coverage(u_lo, u_hi, wgt, cols)  # (12, N, C)
+    cov = pixel_coverage(u_lo, u_hi, wgt, cols)  # (12, N, C)
     dI = contrast_dn * (cov[:6] - cov[6:]) / (2.0 * h[:, None, None])  # (6, N, C)
     G = dI.reshape(6, -1)
     F = (G @ G.T) / noise_dn**2

@@ -486,8 +486,8 @@ def ball_limb(
     limb = limb_profile(shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line)
     # how well the law predicts a line's mean brightness, measured on the
     # plateau lines and scaled to each end line's length, is the sigma of the
-    # end lines' levels (a rendered tennis ball: plateau lines' scatter 5.2 %;
-    # the ends' levels 8.5 % RMS off, their sigmas 8-22 %)
+    # end lines' levels (a rendered tennis ball: plateau lines' scatter 4.7 %;
+    # the ends' levels 8.5 % RMS off, their sigmas 7-21 %)
     # lines seen during the whole exposure, one line away from any that is
     # not (the guess's presence may be off by a line; a partial line's mean
     # is far lower)
