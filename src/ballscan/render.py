@@ -283,7 +283,7 @@ class RenderSettings:
     cap_across, cap_time : int
         Tilts and instants of the edge pixels on a ball's first and last
         lines (its caps: lines on which a sample's section plane lies more
-        than ``0.8 R`` from the ball's centre).  There the section grows
+        than ``0.9 R`` from the ball's centre).  There the section grows
         like the square root of the plane's offset, which both the tilt and
         the time shift: with the 4 x 8 (tilt x time) grid of the other
         lines a cap line's summed coverage is up to 0.06 px off the
@@ -369,15 +369,26 @@ class Rendered:
 
 @dataclass(frozen=True, eq=False)
 class _Pattern:
-    """Sub-samples of one pixel: along-sensor offsets (M, A) in pixels, tilts (M,), time offsets (M,) in s."""
+    """Sub-samples of one pixel: along-sensor offsets (M, A) in pixels, tilts (M,), time offsets (M,) in s.
+
+    ``level_pairs`` (M,) of bool, when set, marks the (tilt, time) pairs at
+    which a textured surface is evaluated; the pixel's other hit samples
+    take the mean of those (the coverage still counts every sample).
+    """
 
     offsets_px: np.ndarray
     tilt: np.ndarray
     dt_s: np.ndarray
+    level_pairs: np.ndarray | None = None
 
 
-def _sample_pattern(along: int, across: int, times: int, seed: int, f_px: float, tau_s: float) -> _Pattern:
-    """Stratified pattern; ``M = across * times`` indexes the (tilt, time) pairs."""
+def _sample_pattern(along: int, across: int, times: int, seed: int, f_px: float, tau_s: float, level_stride: int = 1) -> _Pattern:
+    """Stratified pattern; ``M = across * times`` indexes the (tilt, time) pairs.
+
+    ``level_stride > 1`` marks every ``level_stride``-th diagonal of the
+    (tilt, time) grid as the pairs a texture is evaluated at (all tilts and
+    all instants among them).
+    """
     M = across * times
     s_idx, t_idx = np.divmod(np.arange(M), times)
     tilt = ((s_idx + 0.5) / across - 0.5) / f_px
@@ -387,7 +398,8 @@ def _sample_pattern(along: int, across: int, times: int, seed: int, f_px: float,
     # pixel's offsets is then a regular grid of M*A positions.
     perm = np.random.default_rng(seed).permutation(M)
     offsets = -0.5 + (np.arange(along)[None, :] + (perm[:, None] + 0.5) / M) / along
-    return _Pattern(offsets, tilt, dt)
+    level_pairs = None if level_stride <= 1 else (s_idx + t_idx) % level_stride == 0
+    return _Pattern(offsets, tilt, dt, level_pairs)
 
 
 def _ball_spans(
@@ -457,7 +469,7 @@ def _ball_spans(
     return tuple(np.clip(a, -1, W) for a in (outer_lo, outer_hi, inner_lo, inner_hi))  # type: ignore[return-value]
 
 
-def _cap_lines(camera: LineScanCamera, motion: BallMotion, t_lines: np.ndarray, reach: float = 0.8) -> np.ndarray:
+def _cap_lines(camera: LineScanCamera, motion: BallMotion, t_lines: np.ndarray, reach: float = 0.9) -> np.ndarray:
     """Lines on which some sample's section plane lies more than ``reach * R`` from the ball's centre.
 
     The plane of tilt ``s`` meets the ball at distance ``|c_x - s c_z|``
@@ -661,19 +673,31 @@ def _render_linear(
     st = settings
     edge_pat = _sample_pattern(st.samples_along, st.samples_across, st.samples_time, st.sampling_seed, f, tau)
     inner_pat = _sample_pattern(st.interior_along, st.interior_across, st.interior_time, st.sampling_seed + 1, f, tau)
-    cap_pat = _sample_pattern(st.samples_along, st.cap_across, st.cap_time, st.sampling_seed + 2, f, tau)
-    # which pixels a ball may touch, and which it surely covers, for the
-    # samples of both the edge and the cap pattern
-    span_pat = _Pattern(edge_pat.offsets_px, np.r_[edge_pat.tilt, cap_pat.tilt], np.r_[edge_pat.dt_s, cap_pat.dt_s])
+    # the cap pattern is for the coverage: a texture there is evaluated at
+    # about as many pairs as on the other edge pixels (it costs 2x the
+    # render of a textured ball otherwise)
+    level_stride = max(1, (st.cap_across * st.cap_time) // (st.samples_across * st.samples_time))
+    cap_pat = _sample_pattern(st.samples_along, st.cap_across, st.cap_time, st.sampling_seed + 2, f, tau, level_stride)
     # Normalised coordinates a little beyond the sensor's ends bound every sample ray.
     n_sensor = (float(camera.backproject(-1.0)), float(camera.backproject(float(W))))
 
     for mo in motions:
-        c = mo.centre(t_lines[:, None] + span_pat.dt_s[None, :])
+        c = mo.centre(t_lines[:, None] + cap_pat.dt_s[None, :])
         if np.any(np.einsum("lmk,lmk->lm", c, c) <= mo.radius_m**2):
             raise GeometryError("the projection centre is inside a ball during the image: cannot render")
 
-    spans = [_ball_spans(camera, mo, t_lines, span_pat, n_sensor) for mo in motions]
+    # the lines any ball's cap is on get the cap pattern, and which pixels a
+    # ball may touch or surely covers there follows from its samples
+    cap_lines = np.zeros(L, dtype=bool)
+    for mo in motions:
+        cap_lines |= _cap_lines(camera, mo, t_lines)
+    spans = []
+    for mo in motions:
+        sp = [a.copy() for a in _ball_spans(camera, mo, t_lines, edge_pat, n_sensor)]
+        if cap_lines.any():
+            for a, b in zip(sp, _ball_spans(camera, mo, t_lines[cap_lines], cap_pat, n_sensor)):
+                a[cap_lines] = b
+        spans.append(tuple(sp))
     active = np.zeros(L, dtype=bool)
     for olo, ohi, _, _ in spans:
         active |= ohi >= olo
@@ -688,10 +712,7 @@ def _render_linear(
         edge |= _paint(olo[l0:l1], ohi[l0:l1], W) & ~ball_inner
         inner |= ball_inner
     inner &= ~edge  # another ball's silhouette may cross this ball's interior
-    cap_lines = np.zeros(l1 - l0, dtype=bool)
-    for mo in motions:
-        cap_lines |= _cap_lines(camera, mo, t_lines[l0:l1])
-    cap = edge & cap_lines[:, None]
+    cap = edge & cap_lines[l0:l1, None]
     edge &= ~cap
 
     rot0 = [app.initial_rotation() for app in apps]
@@ -756,14 +777,30 @@ def _sample_pixels(
             nearer = hit & (lam < best)
             best = np.where(nearer, lam, best)
             if app.texture != "none":
-                # The texture is costly: evaluate it only on the samples this ball wins.
-                sel = np.nonzero(nearer)
+                # The texture is costly: evaluate it only on the samples this ball wins
+                # (and of those, on the pattern's level pairs, see _Pattern).
                 shape = nearer.shape
-                lam_h = lam[sel]
-                s_h = np.broadcast_to(s, shape)[sel]
-                cx_h, cy_h, cz_h = (np.broadcast_to(v, shape)[sel] for v in (cx, cy, cz))
-                normal = ((lam_h * s_h - cx_h) / R, (lam_h * n[sel] - cy_h) / R, (lam_h - cz_h) / R)
-                level[sel] = _surface_level(app, motion, r0, normal, np.broadcast_to(t, shape)[sel])
+
+                def surface(mask):
+                    sel = np.nonzero(mask)
+                    lam_h = lam[sel]
+                    s_h = np.broadcast_to(s, shape)[sel]
+                    cx_h, cy_h, cz_h = (np.broadcast_to(v, shape)[sel] for v in (cx, cy, cz))
+                    normal = ((lam_h * s_h - cx_h) / R, (lam_h * n[sel] - cy_h) / R, (lam_h - cz_h) / R)
+                    level[sel] = _surface_level(app, motion, r0, normal, np.broadcast_to(t, shape)[sel])
+
+                if pat.level_pairs is None:
+                    surface(nearer)
+                else:
+                    at = nearer & pat.level_pairs[None, :, None]
+                    surface(at)
+                    n_at = at.sum(axis=(1, 2))
+                    mean_at = np.where(at, level, 0.0).sum(axis=(1, 2)) / np.maximum(n_at, 1)
+                    rest = nearer & ~at
+                    fill = rest & (n_at > 0)[:, None, None]
+                    level[fill] = np.broadcast_to(mean_at[:, None, None], shape)[fill]
+                    # a pixel the ball touches at none of the level pairs: all its samples
+                    surface(rest & ~fill)
             elif app.shading:
                 normal = ((lam * s - cx) / R, (lam * n - cy) / R, (lam - cz) / R)
                 level = np.where(nearer, _surface_level(app, motion, r0, normal, t), level)
