@@ -436,35 +436,112 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     rows = np.flatnonzero(valid & np.isfinite(e))
     if rows.size == 0:
         return edge, var, L
-    frac = (np.arange(m) + 0.5) / m
     sg = sgn[rows].astype(float)
     inner = win_last[rows] + 0.5 * sg
-    outer = np.where(sg > 0, np.minimum(win_first, win_last)[rows] - 0.5, np.maximum(win_first, win_last)[rows] + 0.5)
-    nw = n_win[rows].astype(float)
-    win_u = outer[:, None] + sg[:, None] * ((np.arange(int(nw.max()) * m) + 0.5) / m)[None, :]
-    in_win = (np.arange(win_u.shape[1])[None, :] < (nw * m)[:, None])
-    lev_u = (lev[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
-    deep_u = (deep[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
-    runs_u = np.concatenate([lev_u, deep_u], axis=1)
-    nlu = lev_u.shape[1]
+    lines_r = lines_abs[rows]
     e0 = e[rows]
-    val, cov = limb(lines_abs[rows], sg, sg[:, None] * (win_u - e0[:, None]))
-    # the level runs lie inside the limb throughout the exposure: one
-    # sample per position is enough there
-    runs0, _ = limb(lines_abs[rows], sg, sg[:, None] * (runs_u - e0[:, None]), average=False)
-    s_model = np.where(in_win, val, 0.0).sum(axis=1) / m
-    # the model's own covered length: its edge need not sit exactly at e0
-    c_model = np.where(in_win, cov, 0.0).sum(axis=1) / m
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = s_model / c_model / runs0[:, :nlu].mean(axis=1)
-    usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
-    ratio = np.where(usable, ratio, 1.0)
-    Lr = L_run[rows] * ratio
-    er = np.where(usable, inner - sg * S[rows] / np.where(Lr > 0, Lr, 1.0), e0)
+    frac = (np.arange(m) + 0.5) / m
+    if hasattr(limb, "pixel_coverage"):
+        # whole pixels with their exact coverage (LimbProfile.pixel_coverage)
+        # times the surface's brightness: the window from its outermost pixel
+        # inwards, then the level run and the run inside it, in one array
+        k = np.arange(int(n_win[rows].max()))
+        first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
+        px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+        kw = k.size
+        in_win = k[None, :] < n_win[rows][:, None]
+        nlu = lev.shape[1]
+        last: dict = {}
+
+        def profile(edge_at):
+            if last.get("at") is not edge_at:
+                off = sg[:, None] * (px - edge_at[:, None])
+                cov = limb.pixel_coverage(lines_r, sg, off)
+                if "shade" not in last:
+                    # The surface's mean brightness where the ball covers each
+                    # pixel, from the point model averaged over the exposure
+                    # and the pixel's height (a shaded limb darkens steeply
+                    # towards the edge and moves with it during the
+                    # exposure); where none of its points is covered (a
+                    # spread edge's tail), the surface's just inside the edge
+                    # at the line's centre time.  It changes slowly with the
+                    # edge's placement: once.
+                    # Only the partly covered pixels need the average; inside
+                    # the limb the brightness varies slowly (the centre's).
+                    shade = limb.surface(lines_r, sg, off)
+                    ri, ki = np.nonzero((cov > 0) & (cov < 1.0 - 1e-9))
+                    if ri.size:
+                        pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
+                        v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
+                        v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
+                        with np.errstate(invalid="ignore", divide="ignore"):
+                            shade[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, shade[ri, ki])
+                    last["shade"] = shade
+                last["at"], last["vc"] = edge_at, (np.where(cov > 0, last["shade"] * cov, 0.0), cov)
+            return last["vc"]
+
+        def window(edge_at):
+            val, cov = profile(edge_at)
+            return val[:, :kw], cov[:, :kw]
+
+        def runs(edge_at):
+            return profile(edge_at)[0][:, kw:]
+
+        per_px = 1.0
+        # a level run in the tail of a spread edge's coverage is more or less
+        # covered as the edge moves: the ratio again at the new edge
+        n_rounds = 2
+        exact = True
+    else:
+        outer = np.where(sg > 0, np.minimum(win_first, win_last)[rows] - 0.5, np.maximum(win_first, win_last)[rows] + 0.5)
+        nw = n_win[rows].astype(float)
+        win_u = outer[:, None] + sg[:, None] * ((np.arange(int(nw.max()) * m) + 0.5) / m)[None, :]
+        in_win = (np.arange(win_u.shape[1])[None, :] < (nw * m)[:, None])
+        lev_u = (lev[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
+        deep_u = (deep[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
+        runs_u = np.concatenate([lev_u, deep_u], axis=1)
+        nlu = lev_u.shape[1]
+
+        def window(edge_at):
+            return limb(lines_r, sg, sg[:, None] * (win_u - edge_at[:, None]))
+
+        def runs(edge_at):
+            # the level runs lie inside the limb throughout the exposure: one
+            # sample per position is enough there
+            return limb(lines_r, sg, sg[:, None] * (runs_u - edge_at[:, None]), average=False)[0]
+
+        per_px = float(m)
+        n_rounds = 1
+        exact = False
+    er = e0
+    for _ in range(n_rounds):
+        at = er
+        val, cov = window(at)
+        runs0 = runs(at)
+        s_model = np.where(in_win, val, 0.0).sum(axis=1) / per_px
+        # the model's covered length in the window, with its mean edge at `at`
+        c_model = np.where(in_win, cov, 0.0).sum(axis=1) / per_px
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratio = s_model / c_model / runs0[:, :nlu].mean(axis=1)
+        usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
+        ratio = np.where(usable, ratio, 1.0)
+        Lr = L_run[rows] * ratio
+        covered = S[rows] / np.where(Lr > 0, Lr, 1.0)
+        if exact:
+            # The data's covered length S / L_eff against the model's: the
+            # mean edge moves by their difference.  (``inner - S / L_eff``
+            # alone is the mean edge only when the window holds the whole
+            # ramp; a spread edge's inner tail reaches past it, by 0.02-0.04
+            # px of coverage next to a ball's ends.)
+            er = np.where(usable, at + sg * (c_model - covered), e0)
+        else:
+            # point samples quantise the model's covered length (1/m px): the
+            # window is taken to hold the whole ramp
+            er = np.where(usable, inner - sg * covered, e0)
     # texture test with the model at the new edge: at the biased model-free
     # edge the model's runs sit a few tenths of a pixel off and a strongly
     # shaded limb would look like texture
-    runs1, _ = limb(lines_abs[rows], sg, sg[:, None] * (runs_u - er[:, None]), average=False)
+    runs1 = runs(er)
     with np.errstate(invalid="ignore", divide="ignore"):
         q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
         q_data = pd[rows] / L_run[rows]
