@@ -392,6 +392,14 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     limb's shading, the spread of the edge over the exposure) and the local
     level still comes from the pixels.  The edge follows from
     ``c = S / L_eff`` (the ratio changes slowly with the edge: one round).
+    With a model that gives whole pixels' exact coverage (``pixel_coverage``
+    and ``surface``, see :func:`measure_edges`) the mean edge instead moves
+    from where the model was placed by the difference between the model's
+    covered length in the window and the data's ``S / L_eff``: a spread
+    edge's coverage reaches past the window's inner end (by 0.02-0.04 px of
+    coverage next to a ball's ends on the renders tried), and then
+    ``inner - c`` is not the mean edge; two rounds, the second with the
+    model at the first's edge (the level run sits in that tail).
 
     The model knows the shading, not the texture: where the data's ratio of
     the run inside the level run (``pd``) to the level run differs from the
@@ -620,6 +628,14 @@ def measure_edges(
         ``level_slope``.  It must carry ``spread_px``, the model's edge
         spread per image line (pixels), which selects the narrow and wide
         windows to correct (``limb_narrow_max_px``, ``limb_wide_px``).
+        A model that also offers ``pixel_coverage(lines, sides, offsets)``
+        (each whole pixel's exact covered fraction, e.g.
+        :meth:`ballscan.shading.LimbProfile.pixel_coverage`) and
+        ``surface(lines, sides, offsets)`` (the surface's brightness) is
+        used with whole pixels: the window's and runs' values are that
+        coverage times the surface's mean brightness where the ball covers
+        the pixel, and the edge moves by the difference between the data's
+        covered length and the model's (see :func:`_limb_levels`).
         :func:`with_limb` gives the same for edges already measured, without
         measuring them again.
 
