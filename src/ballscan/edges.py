@@ -109,12 +109,14 @@ class EdgeSettings:
         With ``limb``, an edge keeps its model-free value when the relative
         change of the level from the level run to the run inside it differs
         from the model's by more than 3 sigma plus this (texture, not
-        shading, near the edge).  Not 0: the model samples each pixel of a
-        run at a few points in time and height, and on a spread edge near a
-        ball's end the run's last partly covered pixel (coverage 0.99-0.999)
-        differs from it by 0.05-0.4 %; on noise-free images (sigma 1e-5) a
-        zero tolerance then kept the model-free edges there, 0.015-0.033 px
-        outside, and V.x 0.011 % low (0.004 % with 0.002).
+        shading, near the edge).  Not 0: the model's run levels carry its
+        own small errors (0.05-0.4 % with point samples on a spread edge
+        next to a ball's end, where the run's last pixel is 0.1-1 %
+        uncovered; about 0.1 % with whole pixels' coverage, 4 quadrature
+        nodes), and on noise-free images (sigma 1e-5) a zero tolerance
+        kept the model-free edges there, 0.015-0.035 px outward (V.x
+        0.011 % low on the perpendicular bench ball with point samples,
+        0.004 % with 0.002).
     limb_narrow_max_px, limb_wide_px : float, (float, float)
         With ``limb``, the narrow-window edges are corrected on lines whose
         model edge spread (``limb.spread_px``) is below ``limb_narrow_max_px``
@@ -449,10 +451,10 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     lines_r = lines_abs[rows]
     e0 = e[rows]
     frac = (np.arange(m) + 0.5) / m
-    if hasattr(limb, "pixel_coverage"):
-        # whole pixels with their exact coverage (LimbProfile.pixel_coverage)
-        # times the surface's brightness: the window from its outermost pixel
-        # inwards, then the level run and the run inside it, in one array
+    if hasattr(limb, "pixel_coverage") and hasattr(limb, "surface"):
+        # whole pixels (LimbProfile.pixel_coverage) times the surface's
+        # brightness: the window from its outermost pixel inwards, then the
+        # level run and the run inside it, in one array
         k = np.arange(int(n_win[rows].max()))
         first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
         px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
@@ -465,27 +467,40 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
             if last.get("at") is not edge_at:
                 off = sg[:, None] * (px - edge_at[:, None])
                 cov = limb.pixel_coverage(lines_r, sg, off)
-                if "shade" not in last:
-                    # The surface's mean brightness where the ball covers each
-                    # pixel, from the point model averaged over the exposure
-                    # and the pixel's height (a shaded limb darkens steeply
-                    # towards the edge and moves with it during the
-                    # exposure); where none of its points is covered (a
-                    # spread edge's tail), the surface's just inside the edge
-                    # at the line's centre time.  It changes slowly with the
-                    # edge's placement: once.
-                    # Only the partly covered pixels need the average; inside
-                    # the limb the brightness varies slowly (the centre's).
-                    shade = limb.surface(lines_r, sg, off)
-                    ri, ki = np.nonzero((cov > 0) & (cov < 1.0 - 1e-9))
+                # The surface's mean brightness where the ball covers each
+                # pixel: inside the limb the centre's at the line's centre
+                # time; on the partly covered pixels the point model's,
+                # averaged over the exposure and the pixel's height (a shaded
+                # limb darkens steeply towards the edge and moves with it
+                # during the exposure), and where none of its points is
+                # covered (a spread edge's tail) the nearest pixel's.  The
+                # point model's part, the costly one, is taken at the first
+                # placement: later ones move the edge by hundredths of a pixel.
+                shade = limb.surface(lines_r, sg, off)
+                partial = (cov > 0) & (cov < 1.0 - 1e-9)
+                if "point" not in last:
+                    point = np.full(shade.shape, np.nan)
+                    ri, ki = np.nonzero(partial)
                     if ri.size:
                         pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
                         v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
                         v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
                         with np.errstate(invalid="ignore", divide="ignore"):
-                            shade[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, shade[ri, ki])
-                    last["shade"] = shade
-                last["at"], last["vc"] = edge_at, (np.where(cov > 0, last["shade"] * cov, 0.0), cov)
+                            point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
+                    last["point"] = point
+                shade = np.where(partial & np.isfinite(last["point"]), last["point"], shade)
+                missing = ~np.isfinite(shade) & (cov > 0)
+                if missing.any():
+                    # nearest finite brightness along the row
+                    idx = np.where(np.isfinite(shade), np.arange(shade.shape[1])[None, :], -1)
+                    fwd = np.maximum.accumulate(idx, axis=1)
+                    bwd = np.flip(np.minimum.accumulate(np.flip(np.where(idx >= 0, idx, shade.shape[1]), axis=1), axis=1), axis=1)
+                    col = np.arange(shade.shape[1])[None, :]
+                    pick = np.where((fwd >= 0) & ((bwd >= shade.shape[1]) | (col - fwd <= bwd - col)), fwd, bwd)
+                    ok = (pick >= 0) & (pick < shade.shape[1])
+                    filled = np.take_along_axis(shade, np.clip(pick, 0, shade.shape[1] - 1), axis=1)
+                    shade = np.where(missing & ok, filled, shade)
+                last["at"], last["vc"] = edge_at, (np.where(cov > 0, shade * cov, 0.0), cov)
             return last["vc"]
 
         def window(edge_at):

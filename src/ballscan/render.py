@@ -286,8 +286,9 @@ class RenderSettings:
         than ``0.9 R`` from the ball's centre).  There the section grows
         like the square root of the plane's offset, which both the tilt and
         the time shift: with the 4 x 8 (tilt x time) grid of the other
-        lines a cap line's summed coverage is up to 0.06 px off the
-        continuous exposure (twice the area noise of a typical end line);
+        lines a cap line's summed coverage is up to 0.066 px off the
+        continuous exposure (three times the area noise of a typical end
+        line);
         with 16 x 16 at most 0.01 px (measured against 32 x 256 on the
         bench ball of ``benchmarks/bench_fit.py``, at 0 and 30 degrees).
     sampling_seed : int
@@ -470,17 +471,19 @@ def _ball_spans(
 
 
 def _cap_lines(camera: LineScanCamera, motion: BallMotion, t_lines: np.ndarray, reach: float = 0.9) -> np.ndarray:
-    """Lines on which some sample's section plane lies more than ``reach * R`` from the ball's centre.
+    """Lines on which the ball is seen and some sample's section plane lies more than ``reach * R`` from its centre.
 
     The plane of tilt ``s`` meets the ball at distance ``|c_x - s c_z|``
     (over ``sqrt(1 + s^2)``) from its centre; over the exposure ``c_x``
     moves by ``|v_x| tau / 2`` either way and over the pixel's height ``s
-    c_z`` by ``c_z / (2 f)``.
+    c_z`` by ``c_z / (2 f)``: the planes of a line lie between ``|c_x| - w``
+    and ``|c_x| + w`` from the centre, ``w`` the sum of the two.
     """
     c = motion.centre(t_lines)
     vx = np.abs(motion.velocity_at(t_lines)[:, 0])
-    offset = np.abs(c[:, 0]) + vx * camera.exposure / 2.0 + np.abs(c[:, 2]) / (2.0 * camera.focal_px)
-    return offset > reach * motion.radius_m
+    w = vx * camera.exposure / 2.0 + np.abs(c[:, 2]) / (2.0 * camera.focal_px)
+    near, far = np.abs(c[:, 0]) - w, np.abs(c[:, 0]) + w
+    return (far > reach * motion.radius_m) & (near < motion.radius_m)
 
 
 def _paint(lo: np.ndarray, hi: np.ndarray, W: int) -> np.ndarray:
@@ -681,8 +684,9 @@ def _render_linear(
     # Normalised coordinates a little beyond the sensor's ends bound every sample ray.
     n_sensor = (float(camera.backproject(-1.0)), float(camera.backproject(float(W))))
 
+    instants = np.r_[edge_pat.dt_s, cap_pat.dt_s]
     for mo in motions:
-        c = mo.centre(t_lines[:, None] + cap_pat.dt_s[None, :])
+        c = mo.centre(t_lines[:, None] + instants[None, :])
         if np.any(np.einsum("lmk,lmk->lm", c, c) <= mo.radius_m**2):
             raise GeometryError("the projection centre is inside a ball during the image: cannot render")
 

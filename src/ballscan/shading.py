@@ -344,11 +344,14 @@ class LimbProfile:
     def pixel_coverage(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, n_nodes: int = 4) -> np.ndarray:
         """Exact coverage of whole pixels across either edge (``limb`` of :func:`ballscan.edges.measure_edges` may offer it).
 
-        Unlike :meth:`__call__`, which samples points, this is each pixel's
-        overlap with the averaged silhouette's chord samples
+        Unlike :meth:`__call__`, which samples points, this is each whole
+        pixel's overlap with the averaged silhouette's chord samples
         (:func:`ballscan.fit.pixel_coverage`; ``n_nodes`` Gauss-Legendre nodes
-        per piece over the exposure and the pixel's height), placed so that
-        the model's mean edge sits at offset 0.  Near a ball's ends a spread
+        per piece over the exposure and the pixel's height, a quadrature of
+        a function with kinks: against a finely supersampled render within
+        0.010 of a pixel on the bench ball, and 0.020 with 4 nodes, 0.006
+        with 8 at 140 000 lines/s, on lines whose edge spreads 0.2-1 px),
+        placed so that the model's mean edge sits at offset 0.  Near a ball's ends a spread
         edge's samples have long tails: a pixel 2-3 px inside the mean edge
         is still uncovered for a few per cent of them, which a few point
         samples miss (on a noise-free render that left the level runs of the
