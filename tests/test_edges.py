@@ -135,3 +135,16 @@ def test_edge_bias_on_reference_scenes():
     # README: a half-level threshold is off by ~0.06 px on average, up to 0.5 px
     assert np.mean(b) < 0.1
     assert np.median(b) < 0.08
+
+
+def test_fill_nearest_takes_the_closest_finite_value_of_the_row():
+    from ballscan.edges import _fill_nearest
+
+    a = np.array([[np.nan, 2.0, np.nan, np.nan, 5.0, np.nan], [np.nan, np.nan, np.nan, np.nan, np.nan, np.nan]])
+    out = _fill_nearest(a, ~np.isfinite(a))
+    assert out[0].tolist() == [2.0, 2.0, 2.0, 5.0, 5.0, 5.0]  # ties go left
+    assert np.all(np.isnan(out[1]))  # nothing to take
+    # only the entries asked for are filled
+    keep = np.array([[True, False, False, False, False, False], [False] * 6])
+    out = _fill_nearest(a, keep)
+    assert out[0, 0] == 2.0 and np.isnan(out[0, 2])

@@ -394,7 +394,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     limb's shading, the spread of the edge over the exposure) and the local
     level still comes from the pixels.  The edge follows from
     ``c = S / L_eff`` (the ratio changes slowly with the edge: one round).
-    With a model that gives whole pixels' exact coverage (``pixel_coverage``
+    With a model that gives whole pixels' coverage (``pixel_coverage``
     and ``surface``, see :func:`measure_edges`) the mean edge instead moves
     from where the model was placed by the difference between the model's
     covered length in the window and the data's ``S / L_eff``: a spread
@@ -489,17 +489,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
                             point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
                     last["point"] = point
                 shade = np.where(partial & np.isfinite(last["point"]), last["point"], shade)
-                missing = ~np.isfinite(shade) & (cov > 0)
-                if missing.any():
-                    # nearest finite brightness along the row
-                    idx = np.where(np.isfinite(shade), np.arange(shade.shape[1])[None, :], -1)
-                    fwd = np.maximum.accumulate(idx, axis=1)
-                    bwd = np.flip(np.minimum.accumulate(np.flip(np.where(idx >= 0, idx, shade.shape[1]), axis=1), axis=1), axis=1)
-                    col = np.arange(shade.shape[1])[None, :]
-                    pick = np.where((fwd >= 0) & ((bwd >= shade.shape[1]) | (col - fwd <= bwd - col)), fwd, bwd)
-                    ok = (pick >= 0) & (pick < shade.shape[1])
-                    filled = np.take_along_axis(shade, np.clip(pick, 0, shade.shape[1] - 1), axis=1)
-                    shade = np.where(missing & ok, filled, shade)
+                shade = _fill_nearest(shade, ~np.isfinite(shade) & (cov > 0))
                 last["at"], last["vc"] = edge_at, (np.where(cov > 0, shade * cov, 0.0), cov)
             return last["vc"]
 
@@ -514,7 +504,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
         # a level run in the tail of a spread edge's coverage is more or less
         # covered as the edge moves: the ratio again at the new edge
         n_rounds = 2
-        exact = True
+        whole_pixels = True
     else:
         outer = np.where(sg > 0, np.minimum(win_first, win_last)[rows] - 0.5, np.maximum(win_first, win_last)[rows] + 0.5)
         nw = n_win[rows].astype(float)
@@ -535,7 +525,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
 
         per_px = float(m)
         n_rounds = 1
-        exact = False
+        whole_pixels = False
     er = e0
     for _ in range(n_rounds):
         at = er
@@ -550,7 +540,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
         ratio = np.where(usable, ratio, 1.0)
         Lr = L_run[rows] * ratio
         covered = S[rows] / np.where(Lr > 0, Lr, 1.0)
-        if exact:
+        if whole_pixels:
             # The data's covered length S / L_eff against the model's: the
             # mean edge moves by their difference.  (``inner - S / L_eff``
             # alone is the mean edge only when the window holds the whole
@@ -578,6 +568,24 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     var[rows] = np.where(good, v, var0[rows])
     L[rows] = np.where(good, Lr, L0[rows])
     return edge, var, L
+
+
+def _fill_nearest(a: np.ndarray, missing: np.ndarray) -> np.ndarray:
+    """``a`` (rows, K) with its ``missing`` entries replaced by the nearest finite, not missing entry of their row (left on ties).
+
+    Entries of rows without any such value stay as they are.
+    """
+    if not missing.any():
+        return a
+    k = a.shape[1]
+    col = np.arange(k)[None, :]
+    have = np.isfinite(a) & ~missing
+    left = np.maximum.accumulate(np.where(have, col, -1), axis=1)  # nearest on the left, -1 if none
+    right = np.flip(np.minimum.accumulate(np.flip(np.where(have, col, k), axis=1), axis=1), axis=1)  # k if none
+    pick = np.where((left >= 0) & ((right >= k) | (col - left <= right - col)), left, right)
+    found = (pick >= 0) & (pick < k)
+    filled = np.take_along_axis(a, np.clip(pick, 0, k - 1), axis=1)
+    return np.where(missing & found, filled, a)
 
 
 def _running_median(x: np.ndarray, n: int) -> np.ndarray:
@@ -644,7 +652,7 @@ def measure_edges(
         spread per image line (pixels), which selects the narrow and wide
         windows to correct (``limb_narrow_max_px``, ``limb_wide_px``).
         A model that also offers ``pixel_coverage(lines, sides, offsets)``
-        (each whole pixel's exact covered fraction, e.g.
+        (each whole pixel's covered fraction, e.g.
         :meth:`ballscan.shading.LimbProfile.pixel_coverage`) and
         ``surface(lines, sides, offsets)`` (the surface's brightness) is
         used with whole pixels: the window's and runs' values are that
