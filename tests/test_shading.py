@@ -106,11 +106,22 @@ def test_texture_next_to_the_edge_keeps_the_model_free_value():
     region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
     t = np.arange(n) * 1e-5
 
-    def limb(lines, sides, offsets, average=True):
-        d = np.asarray(offsets, dtype=float)
-        return shape(d), (d > 0).astype(float)
+    class Limb:
+        """A sharp edge whose limb the model says is shaded like ``shape``."""
 
-    limb.spread_px = np.zeros(n)
+        spread_px = np.zeros(n)
+
+        def __call__(self, lines, sides, offsets, average=True):
+            d = np.asarray(offsets, dtype=float)
+            return shape(d), (d > 0).astype(float)
+
+        def pixel_coverage(self, lines, sides, offsets):
+            return np.clip(np.asarray(offsets, dtype=float) + 0.5, 0.0, 1.0)
+
+        def surface(self, lines, sides, offsets):
+            return shape(np.maximum(np.asarray(offsets, dtype=float), 0.25))
+
+    limb = Limb()
     plain = measure_edges(img, region, 100.0, 1.0, t)
     with_limb = measure_edges(img, region, 100.0, 1.0, t, limb=limb)
     okl = plain.left_ok & with_limb.left_ok
@@ -322,3 +333,17 @@ def test_spread_edges_next_to_the_ends_are_not_biased(flat_noise_free):
     assert plain.size >= 40 and shaded.size == plain.size
     assert np.abs(plain).max() > 0.025  # the bias the shading pass removes
     assert np.abs(shaded).max() < 0.01 and abs(shaded.mean()) < 0.002
+
+
+def test_a_limb_model_without_whole_pixels_is_refused():
+    img = np.full((12, 60), 100.0)
+    img[:, 20:40] = 600.0
+    region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
+
+    def limb(lines, sides, offsets, average=True):
+        d = np.asarray(offsets, dtype=float)
+        return (d > 0).astype(float), (d > 0).astype(float)
+
+    limb.spread_px = np.zeros(12)
+    with pytest.raises(ValueError, match="pixel_coverage and surface"):
+        measure_edges(img, region, 100.0, 1.0, np.arange(12) * 1e-5, limb=limb)

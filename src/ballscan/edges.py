@@ -102,9 +102,9 @@ class EdgeSettings:
         Pixels the rough edge may move outwards from the peak-fraction
         crossing towards a darker (shaded) limb.
     limb_samples : int
-        Samples per pixel of the profile model (``limb`` of
-        :func:`measure_edges`) when integrating it over a window and over the
-        level run.
+        Point samples per pixel of the profile model (``limb`` of
+        :func:`measure_edges`) for the surface's mean brightness on the
+        partly covered pixels of a window.
     limb_texture_tol : float
         With ``limb``, an edge keeps its model-free value when the relative
         change of the level from the level run to the run inside it differs
@@ -385,22 +385,20 @@ def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
 def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol):
     """Inner levels from a brightness model's profile (see ``limb`` of :func:`measure_edges`).
 
-    The window's sum is ``S = L_eff * c`` with ``c`` the covered length (the
-    window's inner end less the mean edge) and ``L_eff`` the mean level over
-    it.  For the model's profile placed at the model-free edge ``e``,
-    ``L_eff`` is the window's integral over ``c``; the data's ``L_eff`` is
-    taken as the level run's ``L_run`` times the model's ratio
-    ``L_eff / L_run``, so the model supplies only the profile's shape (the
-    limb's shading, the spread of the edge over the exposure) and the local
-    level still comes from the pixels.  The edge follows from
-    ``c = S / L_eff`` (the ratio changes slowly with the edge: one round).
-    With a model that gives whole pixels' coverage (``pixel_coverage``
-    and ``surface``, see :func:`measure_edges`) the mean edge instead moves
-    from where the model was placed by the difference between the model's
-    covered length in the window and the data's ``S / L_eff``: a spread
-    edge's coverage reaches past the window's inner end (by 0.02-0.04 px of
-    coverage next to a ball's ends on the renders tried), and then
-    ``inner - c`` is not the mean edge; two rounds, the second with the
+    The window's sum is ``S = L_eff * c`` with ``c`` the covered length and
+    ``L_eff`` the mean level over it.  The data's ``L_eff`` is taken as the
+    level run's ``L_run`` times the model's ratio ``L_eff / L_run`` (the
+    model's window value per covered length over its level run's value), so
+    the model supplies only the profile's shape (the limb's shading, the
+    spread of the edge over the exposure) and the local level still comes
+    from the pixels.  The model is evaluated on whole pixels (its
+    ``pixel_coverage`` times the surface's brightness) with its mean edge
+    placed at the model-free edge ``e``, and the mean edge moves from there
+    by the difference between the model's covered length in the window and
+    the data's ``S / L_eff``: ``inner - S / L_eff`` alone would be the mean
+    edge only if the window held the whole ramp, and a spread edge's
+    coverage reaches past its inner end (by 0.02-0.04 px of coverage next
+    to a ball's ends on the renders tried).  Two rounds, the second with the
     model at the first's edge (the level run sits in that tail).
 
     The model knows the shading, not the texture: where the data's ratio of
@@ -412,7 +410,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
 
     Parameters
     ----------
-    limb : callable
+    limb : LimbProfile-like
         See :func:`measure_edges`.
     e, var0, L0 : ndarray (R,)
         Model-free edges (box pixels), their variances (px^2) and levels.
@@ -434,7 +432,8 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     lines_abs : ndarray of int (R,)
         Image line of each row.
     m : int
-        Samples per pixel.
+        Point samples per pixel of the model's brightness on the partly
+        covered pixels.
     tol : float
         Texture tolerance (see :class:`EdgeSettings`).
 
@@ -447,114 +446,73 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     if rows.size == 0:
         return edge, var, L
     sg = sgn[rows].astype(float)
-    inner = win_last[rows] + 0.5 * sg
     lines_r = lines_abs[rows]
     e0 = e[rows]
     frac = (np.arange(m) + 0.5) / m
-    if hasattr(limb, "pixel_coverage") and hasattr(limb, "surface"):
-        # whole pixels (LimbProfile.pixel_coverage) times the surface's
-        # brightness: the window from its outermost pixel inwards, then the
-        # level run and the run inside it, in one array
-        k = np.arange(int(n_win[rows].max()))
-        first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
-        px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
-        kw = k.size
-        in_win = k[None, :] < n_win[rows][:, None]
-        nlu = lev.shape[1]
-        last: dict = {}
+    # whole pixels (LimbProfile.pixel_coverage) times the surface's
+    # brightness: the window from its outermost pixel inwards, then the
+    # level run and the run inside it, in one array
+    k = np.arange(int(n_win[rows].max()))
+    first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
+    px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+    kw = k.size
+    in_win = k[None, :] < n_win[rows][:, None]
+    nlu = lev.shape[1]
+    last: dict = {}
 
-        def profile(edge_at):
-            if last.get("at") is not edge_at:
-                off = sg[:, None] * (px - edge_at[:, None])
-                cov = limb.pixel_coverage(lines_r, sg, off)
-                # The surface's mean brightness where the ball covers each
-                # pixel: inside the limb the centre's at the line's centre
-                # time; on the partly covered pixels the point model's,
-                # averaged over the exposure and the pixel's height (a shaded
-                # limb darkens steeply towards the edge and moves with it
-                # during the exposure), and where none of its points is
-                # covered (a spread edge's tail) the nearest pixel's.  The
-                # point model's part, the costly one, is taken at the first
-                # placement: later ones move the edge by hundredths of a pixel.
-                shade = limb.surface(lines_r, sg, off)
-                partial = (cov > 0) & (cov < 1.0 - 1e-9)
-                if "point" not in last:
-                    point = np.full(shade.shape, np.nan)
-                    ri, ki = np.nonzero(partial)
-                    if ri.size:
-                        pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
-                        v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
-                        v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
-                        with np.errstate(invalid="ignore", divide="ignore"):
-                            point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
-                    last["point"] = point
-                shade = np.where(partial & np.isfinite(last["point"]), last["point"], shade)
-                shade = _fill_nearest(shade, ~np.isfinite(shade) & (cov > 0))
-                last["at"], last["vc"] = edge_at, (np.where(cov > 0, shade * cov, 0.0), cov)
-            return last["vc"]
+    def profile(edge_at):
+        """Model values and coverage of the row's pixels with its mean edge at ``edge_at``."""
+        off = sg[:, None] * (px - edge_at[:, None])
+        cov = limb.pixel_coverage(lines_r, sg, off)
+        # The surface's mean brightness where the ball covers each pixel:
+        # inside the limb the centre's at the line's centre time; on the
+        # partly covered pixels the point model's, averaged over the exposure
+        # and the pixel's height (a shaded limb darkens steeply towards the
+        # edge and moves with it during the exposure), and where none of its
+        # points is covered (a spread edge's tail) the nearest pixel's.  The
+        # point model's part, the costly one, is taken at the first
+        # placement: later ones move the edge by hundredths of a pixel.
+        shade = limb.surface(lines_r, sg, off)
+        partial = (cov > 0) & (cov < 1.0 - 1e-9)
+        if "point" not in last:
+            point = np.full(shade.shape, np.nan)
+            ri, ki = np.nonzero(partial)
+            if ri.size:
+                pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
+                v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
+                v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
+                with np.errstate(invalid="ignore", divide="ignore"):
+                    point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
+            last["point"] = point
+        shade = np.where(partial & np.isfinite(last["point"]), last["point"], shade)
+        shade = _fill_nearest(shade, ~np.isfinite(shade) & (cov > 0))
+        return np.where(cov > 0, shade * cov, 0.0), cov
 
-        def window(edge_at):
-            val, cov = profile(edge_at)
-            return val[:, :kw], cov[:, :kw]
-
-        def runs(edge_at):
-            return profile(edge_at)[0][:, kw:]
-
-        per_px = 1.0
-        # a level run in the tail of a spread edge's coverage is more or less
-        # covered as the edge moves: the ratio again at the new edge
-        n_rounds = 2
-        whole_pixels = True
-    else:
-        outer = np.where(sg > 0, np.minimum(win_first, win_last)[rows] - 0.5, np.maximum(win_first, win_last)[rows] + 0.5)
-        nw = n_win[rows].astype(float)
-        win_u = outer[:, None] + sg[:, None] * ((np.arange(int(nw.max()) * m) + 0.5) / m)[None, :]
-        in_win = (np.arange(win_u.shape[1])[None, :] < (nw * m)[:, None])
-        lev_u = (lev[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
-        deep_u = (deep[rows][:, :, None] - 0.5 + frac[None, None, :]).reshape(rows.size, -1)
-        runs_u = np.concatenate([lev_u, deep_u], axis=1)
-        nlu = lev_u.shape[1]
-
-        def window(edge_at):
-            return limb(lines_r, sg, sg[:, None] * (win_u - edge_at[:, None]))
-
-        def runs(edge_at):
-            # the level runs lie inside the limb throughout the exposure: one
-            # sample per position is enough there
-            return limb(lines_r, sg, sg[:, None] * (runs_u - edge_at[:, None]), average=False)[0]
-
-        per_px = float(m)
-        n_rounds = 1
-        whole_pixels = False
+    # Two rounds: a level run in the tail of a spread edge's coverage is
+    # more or less covered as the edge moves, so the ratio again at the new edge.
     er = e0
-    for _ in range(n_rounds):
+    for _ in range(2):
         at = er
-        val, cov = window(at)
-        runs0 = runs(at)
-        s_model = np.where(in_win, val, 0.0).sum(axis=1) / per_px
+        val, cov = profile(at)
+        s_model = np.where(in_win, val[:, :kw], 0.0).sum(axis=1)
         # the model's covered length in the window, with its mean edge at `at`
-        c_model = np.where(in_win, cov, 0.0).sum(axis=1) / per_px
+        c_model = np.where(in_win, cov[:, :kw], 0.0).sum(axis=1)
         with np.errstate(invalid="ignore", divide="ignore"):
-            ratio = s_model / c_model / runs0[:, :nlu].mean(axis=1)
+            ratio = s_model / c_model / val[:, kw : kw + nlu].mean(axis=1)
         usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
         ratio = np.where(usable, ratio, 1.0)
         Lr = L_run[rows] * ratio
         covered = S[rows] / np.where(Lr > 0, Lr, 1.0)
-        if whole_pixels:
-            # The data's covered length S / L_eff against the model's: the
-            # mean edge moves by their difference.  (``inner - S / L_eff``
-            # alone is the mean edge only when the window holds the whole
-            # ramp; a spread edge's inner tail reaches past it, by 0.02-0.04
-            # px of coverage next to a ball's ends.)
-            er = np.where(usable, at + sg * (c_model - covered), e0)
-        else:
-            # point samples quantise the model's covered length (1/m px): the
-            # window is taken to hold the whole ramp
-            er = np.where(usable, inner - sg * covered, e0)
+        # The data's covered length S / L_eff against the model's: the mean
+        # edge moves by their difference.  (``inner - S / L_eff`` alone is
+        # the mean edge only when the window holds the whole ramp; a spread
+        # edge's inner tail reaches past it, by 0.02-0.04 px of coverage
+        # next to a ball's ends.)
+        er = np.where(usable, at + sg * (c_model - covered), e0)
     # texture test with the model at the new edge: at the biased model-free
     # edge the model's runs sit a few tenths of a pixel off and a strongly
     # shaded limb would look like texture
-    runs1 = runs(er)
+    runs1 = profile(er)[0][:, kw:]
     with np.errstate(invalid="ignore", divide="ignore"):
         q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
         q_data = pd[rows] / L_run[rows]
@@ -638,29 +596,26 @@ def measure_edges(
     others : sequence of BallRegion-like
         The other balls' regions: edges whose window meets one are unusable.
     settings : EdgeSettings
-    limb : callable, optional
-        ``limb(lines, sides, offsets, average=True) -> (value, coverage)``:
-        the model's expected normalised profile ``p`` and the ball's covered
-        fraction across the left (side +1) or right (-1) edge of image lines
-        ``lines`` (R,) at ``offsets`` (R, M) pixels inwards from the edge
-        (``average=False``: a single sample per position suffices), e.g.
-        :func:`ballscan.shading.limb_profile`.  When given, each
+    limb : LimbProfile-like, optional
+        The ball's brightness model across the left (side +1) or right (-1)
+        edge of image lines ``lines`` (R,), at ``offsets`` (R, M) pixels
+        inwards from the model's mean edge, e.g.
+        :class:`ballscan.shading.LimbProfile`: ``limb(lines, sides, offsets,
+        average=True) -> (value, coverage)`` the expected normalised profile
+        ``p`` and the ball's covered fraction at points (``average=False``:
+        one sample per position), ``limb.pixel_coverage(lines, sides,
+        offsets)`` each whole pixel's covered fraction (pixels centred on
+        ``offsets``), ``limb.surface(lines, sides, offsets)`` the surface's
+        brightness, and ``limb.spread_px`` the model's edge spread per image
+        line (pixels), which selects the narrow and wide windows to correct
+        (``limb_narrow_max_px``, ``limb_wide_px``).  When given, each
         edge's inner level is the level run times the model's ratio of the
-        mean level over the covered part of the window to the level run's
-        (see :func:`_limb_levels`) instead of the linear extrapolation of
-        ``level_slope``.  It must carry ``spread_px``, the model's edge
-        spread per image line (pixels), which selects the narrow and wide
-        windows to correct (``limb_narrow_max_px``, ``limb_wide_px``).
-        A model that also offers ``pixel_coverage(lines, sides, offsets)``
-        (each whole pixel's covered fraction, e.g.
-        :meth:`ballscan.shading.LimbProfile.pixel_coverage`) and
-        ``surface(lines, sides, offsets)`` (the surface's brightness) is
-        used with whole pixels: the window's and runs' values are that
-        coverage times the surface's mean brightness where the ball covers
-        the pixel, and the edge moves by the difference between the data's
-        covered length and the model's (see :func:`_limb_levels`).
-        :func:`with_limb` gives the same for edges already measured, without
-        measuring them again.
+        mean level over the covered part of the window to the level run's,
+        and the edge is the model's mean edge moved by the difference
+        between the data's covered length and the model's (see
+        :func:`_limb_levels`), instead of the linear extrapolation of
+        ``level_slope``.  :func:`with_limb` gives the same for edges already
+        measured, without measuring them again.
 
     Returns
     -------
@@ -984,6 +939,9 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
     area_level = area_level_sigma = None
     if limb is not None:
+        missing = [name for name in ("pixel_coverage", "surface") if not callable(getattr(limb, name, None))]
+        if missing:
+            raise ValueError(f"limb: needs {' and '.join(missing)} (see measure_edges; e.g. a ballscan.shading.LimbProfile)")
         spread = getattr(limb, "spread_px", None)
         if spread is None or np.shape(spread) != (ps.n_img,):
             raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")
