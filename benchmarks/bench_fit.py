@@ -53,7 +53,7 @@ WHITE_DN = 1000.0  # DN per unit of linear grey; contrast = 700 DN
 # time) samples of an edge pixel leave 0.004 px RMS on the ball's lines and
 # the default 16 x 16 on its first and last lines up to 0.01 px (4 x 8
 # there: 0.066 px, three times the area's pixel noise here); 16 x 64 on
-# every line, cap lines included, is within 0.003 px of a 32 x 256 render.
+# every line, cap lines included, is within 0.004 px of a 32 x 256 render.
 TRUTH_SAMPLING = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
 
 

@@ -458,24 +458,24 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     kw = k.size
     in_win = k[None, :] < n_win[rows][:, None]
     nlu = lev.shape[1]
-    last: dict = {}
 
-    def profile(edge_at):
-        """Model values and coverage of the row's pixels with its mean edge at ``edge_at``."""
+    def profile(edge_at, point=None):
+        """Model values and coverage of the rows' pixels with the mean edge at ``edge_at``, and ``point``.
+
+        The surface's mean brightness where the ball covers each pixel:
+        inside the limb the centre's at the line's centre time; on the partly
+        covered pixels ``point``, the point model's, averaged over the
+        exposure and the pixel's height (a shaded limb darkens steeply
+        towards the edge and moves with it during the exposure), computed
+        here when not given (it is the costly part; later placements move the
+        edge by hundredths of a pixel); where neither is finite (a spread
+        edge's tail, none of whose points is covered) the nearest pixel's.
+        """
         off = sg[:, None] * (px - edge_at[:, None])
         cov = limb.pixel_coverage(lines_r, sg, off)
-        # The surface's mean brightness where the ball covers each pixel:
-        # inside the limb the centre's at the line's centre time; on the
-        # partly covered pixels the point model's, averaged over the exposure
-        # and the pixel's height (a shaded limb darkens steeply towards the
-        # edge and moves with it during the exposure), and where none of its
-        # points is covered (a spread edge's tail) the nearest pixel's.  The
-        # point model's part, the costly one, is taken at the first
-        # placement: later ones move the edge by hundredths of a pixel.
-        shade = limb.surface(lines_r, sg, off)
         partial = (cov > 0) & (cov < 1.0 - 1e-9)
-        if "point" not in last:
-            point = np.full(shade.shape, np.nan)
+        if point is None:
+            point = np.full(cov.shape, np.nan)
             ri, ki = np.nonzero(partial)
             if ri.size:
                 pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
@@ -483,17 +483,16 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
                 v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
                 with np.errstate(invalid="ignore", divide="ignore"):
                     point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
-            last["point"] = point
-        shade = np.where(partial & np.isfinite(last["point"]), last["point"], shade)
+        shade = np.where(partial & np.isfinite(point), point, limb.surface(lines_r, sg, off))
         shade = _fill_nearest(shade, ~np.isfinite(shade) & (cov > 0))
-        return np.where(cov > 0, shade * cov, 0.0), cov
+        return np.where(cov > 0, shade * cov, 0.0), cov, point
 
     # Two rounds: a level run in the tail of a spread edge's coverage is
     # more or less covered as the edge moves, so the ratio again at the new edge.
-    er = e0
+    er, point = e0, None
     for _ in range(2):
         at = er
-        val, cov = profile(at)
+        val, cov, point = profile(at, point)
         s_model = np.where(in_win, val[:, :kw], 0.0).sum(axis=1)
         # the model's covered length in the window, with its mean edge at `at`
         c_model = np.where(in_win, cov[:, :kw], 0.0).sum(axis=1)
@@ -512,7 +511,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     # texture test with the model at the new edge: at the biased model-free
     # edge the model's runs sit a few tenths of a pixel off and a strongly
     # shaded limb would look like texture
-    runs1 = profile(er)[0][:, kw:]
+    runs1 = profile(er, point)[0][:, kw:]
     with np.errstate(invalid="ignore", divide="ignore"):
         q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
         q_data = pd[rows] / L_run[rows]

@@ -342,21 +342,21 @@ class LimbProfile:
         return level, np.where(np.isfinite(level), rel, np.nan)
 
     def pixel_coverage(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, n_nodes: int = 4) -> np.ndarray:
-        """Exact coverage of whole pixels across either edge (``limb`` of :func:`ballscan.edges.measure_edges` may offer it).
+        """Covered fraction of whole pixels across either edge (``pixel_coverage`` of a ``limb`` of :func:`ballscan.edges.measure_edges`).
 
         Unlike :meth:`__call__`, which samples points, this is each whole
         pixel's overlap with the averaged silhouette's chord samples
-        (:func:`ballscan.fit.pixel_coverage`; ``n_nodes`` Gauss-Legendre nodes
-        per piece over the exposure and the pixel's height, a quadrature of
-        a function with kinks: against a finely supersampled render within
-        0.010 of a pixel on the bench ball, and 0.020 with 4 nodes, 0.006
-        with 8 at 140 000 lines/s, on lines whose edge spreads 0.2-1 px),
-        placed so that the model's mean edge sits at offset 0.  Near a ball's ends a spread
-        edge's samples have long tails: a pixel 2-3 px inside the mean edge
-        is still uncovered for a few per cent of them, which a few point
-        samples miss (on a noise-free render that left the level runs of the
-        wide windows 1 % darker than the point model said, and their edges
-        0.02-0.04 px outward).
+        (:func:`ballscan.fit.pixel_coverage`), placed so that the model's mean
+        edge sits at offset 0.  Near a ball's ends a spread edge's samples
+        have long tails: a pixel 2-3 px inside the mean edge is still
+        uncovered for a few per cent of them, which a few point samples miss
+        (on a noise-free render that left the level runs of the wide windows
+        1 % darker than the point model said, and their edges 0.02-0.04 px
+        outward).  ``n_nodes`` Gauss-Legendre nodes per piece over the
+        exposure and the pixel's height: a quadrature of a function with
+        kinks, per pixel within 0.010 of a finely supersampled render on the
+        bench ball's lines whose edge spreads 0.2-1 px, within 0.020 at
+        140 000 lines/s (0.006 with 8 nodes).
 
         Parameters
         ----------
@@ -402,13 +402,13 @@ class LimbProfile:
         bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
         return np.where(bad, np.nan, cov)
 
-    def surface(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, floor: float = 0.25) -> np.ndarray:
-        """The shading law's normalised brightness of the surface at ``offsets`` (at least ``floor`` pixels inside the edge).
+    def surface(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray) -> np.ndarray:
+        """The shading law's normalised brightness of the surface at ``offsets`` (at least a quarter pixel inside the edge).
 
         Arguments as for :meth:`__call__`; one sample per position at the
         line's centre time; NaN where the model does not see the ball there.
         """
-        val, hit = self(lines, sides, np.maximum(np.asarray(offsets, dtype=float), floor), average=False)
+        val, hit = self(lines, sides, np.maximum(np.asarray(offsets, dtype=float), 0.25), average=False)
         return np.where(hit > 0, val, np.nan)
 
     def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, average: bool = True) -> tuple[np.ndarray, np.ndarray]:
@@ -667,6 +667,5 @@ def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: flo
     u = edges.profile_col0 + np.arange(n_cols, dtype=float)[None, :]
     chord = np.maximum(right - left, 0.5)
     off = np.clip(u - left[:, None], 0.25, np.maximum(chord - 0.25, 0.25)[:, None])
-    val, cov = limb(lines[want], np.ones(want.size), off, average=False)
-    out[want] = np.where(cov > 0, val, np.nan)
+    out[want] = limb.surface(lines[want], np.ones(want.size), off)
     return out
