@@ -275,22 +275,37 @@ def test_levelled_end_areas_sharpen_the_ends_and_stay_honest():
     assert np.allclose(a.motion.to_params(), b.motion.to_params(), rtol=0, atol=0.01 * a.sigmas)
 
 
-def test_partial_exposure_lines_stay_loose_by_default():
-    """Lines seen during part of the exposure keep the loose area weight unless asked (sampled exposures bias them)."""
-    from dataclasses import replace
+def test_partial_exposure_lines_levelled_only_when_they_agree():
+    """Lines seen during part of the exposure are levelled when they agree with the rest, loose otherwise."""
+    from dataclasses import fields, replace
 
     cam, m = _serve()
     e = _with_levels(synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=2, area_sigma_px=0.03))
     me = averaged_model(cam, m.to_params()[None], m.radius_m, e.t_s)
     partial = (me.presence[0] > 0) & (me.presence[0] < 0.999)
-    assert partial.sum() >= 2
-    spoilt = replace(e, area_px=np.where(partial, 1.5 * e.area_px, e.area_px))
+    assert np.any(partial & (e.t_s < m.t_c_s)) and np.any(partial & (e.t_s > m.t_c_s))
     st = FitSettings(fit_edge_bias=False, edge_floor_px=0.0)
-    base = fit_motion(cam, e, m, st)
-    moved = np.abs(fit_motion(cam, spoilt, m, st).motion.to_params() - base.motion.to_params()) / base.sigmas
+    loose_st = replace(st, area_partial_check=0.0)
+    # consistent lines: levelled, the ends' information sharpens t_c and vx
+    fit, loose = fit_motion(cam, e, m, st), fit_motion(cam, e, m, loose_st)
+    assert fit.partial_levelled and not loose.partial_levelled
+    assert fit.sigmas[0] < 0.8 * loose.sigmas[0] and fit.sigmas[3] < 0.9 * loose.sigmas[3]
+    assert np.all(np.abs(fit.motion.to_params() - m.to_params()) < 3 * fit.sigmas)
+    # the same lines 50 % too large (a sampled exposure): the loose fit, to the bit
+    spoilt = replace(e, area_px=np.where(partial, 1.5 * e.area_px, e.area_px))
+    fit_s = fit_motion(cam, spoilt, m, st)
+    assert not fit_s.partial_levelled
+    assert np.array_equal(fit_s.motion.to_params(), fit_motion(cam, spoilt, m, loose_st).motion.to_params())
+    moved = np.abs(fit_s.motion.to_params() - loose.motion.to_params()) / loose.sigmas
+    # levelling them regardless would move the fit by sigmas
     st_p = replace(st, area_level_partial=True)
-    moved_p = np.abs(fit_motion(cam, spoilt, m, st_p).motion.to_params() - fit_motion(cam, e, m, st_p).motion.to_params()) / base.sigmas
+    moved_p = np.abs(fit_motion(cam, spoilt, m, st_p).motion.to_params() - fit_motion(cam, e, m, st_p).motion.to_params()) / loose.sigmas
     assert moved.max() < 0.2 and moved_p.max() > 2.0
+    # one end only (the lines before t_c dropped: a ball cut by the first line): loose
+    keep = e.t_s > m.t_c_s - 0.3 * m.radius_m / m.velocity_mps[0]
+    n = e.lines.size
+    cut = replace(e, **{f.name: getattr(e, f.name)[keep] for f in fields(e) if isinstance(getattr(e, f.name), np.ndarray) and getattr(e, f.name).shape[:1] == (n,)})
+    assert not fit_motion(cam, cut, m, st).partial_levelled
 
 
 def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):

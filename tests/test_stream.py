@@ -156,7 +156,12 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
         v = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
         w = np.r_[rb.t_c_s, rb.position_m[1:], rb.velocity_mps]
         s = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
-        ratios.append(np.abs(v - w) / s)
+        s_ref = np.r_[rb.t_c_sigma_s, rb.position_sigma_m[1:], rb.velocity_sigma_mps]
+        # the larger of the two sigmas: where one fit keeps the lines of the
+        # ball's partial exposure levelled and the other does not
+        # (FitSettings.area_partial_check), the looser one says how far apart
+        # two valid estimates may be
+        ratios.append(np.abs(v - w) / np.maximum(s, s_ref))
         # 3. and the truth within the fit's uncertainty
         tr = min(truths, key=lambda t: abs(t["t_c_s"] - e.t_c_s))
         u = np.r_[tr["t_c_s"], tr["position_m"][1:], tr["velocity_mps"]]
@@ -170,10 +175,18 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
     # keeps 60 edges, the whole width 62, and on so short a ball two end
     # edges move V.x by that much (the crop's V.x is 1.3 sigma from the
     # truth, the whole width's 1.6).  The other 31 balls stay within 1.5
-    # sigma.
+    # sigma.  Since session 5 (the partial lines levelled when they agree)
+    # two balls of 32 take different decisions on the crop and the whole
+    # width: the levelled fit's t_c sigma is 3-30x smaller, and in its units
+    # one ball's t_c moved 4.8 sigma (both fits 1.8 sigma from the truth); in
+    # the larger sigma 1.9.  Measured then: two balls above 1.5 (1.9 in t_c,
+    # 1.59 in V.x on a ball both fits level), the others within 1.26.
     assert np.all(ratios <= 3.0)
-    assert np.sum(np.any(ratios > 1.5, axis=1)) <= 1
-    assert np.all(np.median(ratios, axis=0) <= 0.3)
+    assert np.sum(np.any(ratios > 1.5, axis=1)) <= 2
+    # medians 0.10-0.19, V.x 0.50: the levelled partial lines (areas over the
+    # shading law's brightness) narrow V.x's sigma and follow the crop's own
+    # background and gain
+    assert np.all(np.median(ratios, axis=0) <= np.array([0.3, 0.3, 0.3, 0.6, 0.3, 0.3]))
 
 
 @pytest.mark.slow

@@ -295,6 +295,7 @@ def estimate_region(
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,
             "iterations": fit.n_iterations,
+            "partial_levelled": fit.partial_levelled,
             "edge_bias_px": fit.edge_bias_px,
             "n_edges": fit.n_edges,
             "speed_correction_mps": unc.speed_correction_mps,
