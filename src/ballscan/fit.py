@@ -802,9 +802,9 @@ class FitSettings:
         0.005 sigma; smaller values mostly add steps that only trade the
         Jacobian's last digits).
     stall_tol : float
-        A step that does not lower the cost, where the Gauss-Newton step
-        would lower half the chi-square by less than this (1e-3: a move of
-        about 0.045 sigma), also ends the solve (converged).
+        A step that does not lower the cost, where both it and the undamped
+        Gauss-Newton step would lower half the chi-square by less than this
+        (1e-3: a move of about 0.045 sigma), also ends the solve (converged).
     jacobian_refresh : float
         After an accepted step that lowered half the chi-square by more than
         this (predicted), the Jacobian is recomputed; after smaller steps the
@@ -1087,8 +1087,9 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
                 r, J = resid_and_jac(x)
                 n_eval += 1
         else:
-            if predicted < settings.stall_tol:
-                # the last hundredths of a sigma: the averaged model's
+            if predicted < settings.stall_tol and _gn_decrease(A, g) < settings.stall_tol:
+                # the last hundredths of a sigma (the undamped step's too, so
+                # that heavy damping cannot fake it): the averaged model's
                 # quadrature is not smooth at this scale, and damping the
                 # step further only spends evaluations (up to 7 at 30 deg)
                 return x, n_eval, 1, f"converged: no step lowers the cost, predicted decrease below {settings.stall_tol:g}", cost, r, J
@@ -1096,6 +1097,15 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
             if lam > 1e10:
                 return x, n_eval, 0, "stopped: no step lowers the cost", cost, r, J
     return x, n_eval, 0, f"stopped: {settings.max_nfev} evaluations", cost, r, J
+
+
+def _gn_decrease(A: np.ndarray, g: np.ndarray) -> float:
+    """First-order decrease of half the chi-square along the undamped Gauss-Newton step (normal matrix ``A``, gradient ``g``)."""
+    try:
+        step = np.linalg.solve(A, g)
+    except np.linalg.LinAlgError:
+        step = np.linalg.lstsq(A, g, rcond=None)[0]
+    return float(g @ step)
 
 
 def _weights(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
