@@ -297,6 +297,15 @@ def test_partial_exposure_lines_levelled_only_when_they_agree():
     assert not fit_s.partial_levelled
     assert np.array_equal(fit_s.motion.to_params(), fit_motion(cam, spoilt, m, loose_st).motion.to_params())
     moved = np.abs(fit_s.motion.to_params() - loose.motion.to_params()) / loose.sigmas
+    assert fit_s.partial_verdict == "disagree" and fit.partial_verdict == "agree"
+    # each test on its own catches lines 10 % too large: the per-line test
+    # (the Hausman test made blind) and the Hausman test (the per-line one blind)
+    mild = replace(e, area_px=np.where(partial, 1.1 * e.area_px, e.area_px))
+    assert fit_motion(cam, mild, m, replace(st, partial_shift_p=1e-300)).partial_verdict == "disagree"
+    assert fit_motion(cam, mild, m, replace(st, area_partial_check=1e9)).partial_verdict == "disagree"
+    # and neither fires on the consistent lines
+    assert fit_motion(cam, e, m, replace(st, partial_shift_p=1e-300)).partial_verdict == "agree"
+    assert fit_motion(cam, e, m, replace(st, area_partial_check=1e9)).partial_verdict == "agree"
     # levelling them regardless would move the fit by sigmas
     st_p = replace(st, area_level_partial=True)
     moved_p = np.abs(fit_motion(cam, spoilt, m, st_p).motion.to_params() - fit_motion(cam, e, m, st_p).motion.to_params()) / loose.sigmas
@@ -305,7 +314,8 @@ def test_partial_exposure_lines_levelled_only_when_they_agree():
     keep = e.t_s > m.t_c_s - 0.3 * m.radius_m / m.velocity_mps[0]
     n = e.lines.size
     cut = replace(e, **{f.name: getattr(e, f.name)[keep] for f in fields(e) if isinstance(getattr(e, f.name), np.ndarray) and getattr(e, f.name).shape[:1] == (n,)})
-    assert not fit_motion(cam, cut, m, st).partial_levelled
+    fit_c = fit_motion(cam, cut, m, st)
+    assert fit_c.converged and not fit_c.partial_levelled and fit_c.partial_verdict == "one_end"
 
 
 def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):

@@ -296,6 +296,7 @@ def estimate_region(
             "residual_rms_px": fit.residual_rms_px,
             "iterations": fit.n_iterations,
             "partial_levelled": fit.partial_levelled,
+            "partial_verdict": fit.partial_verdict,
             "edge_bias_px": fit.edge_bias_px,
             "n_edges": fit.n_edges,
             "speed_correction_mps": unc.speed_correction_mps,

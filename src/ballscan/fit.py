@@ -25,9 +25,9 @@ Residuals (all whitened by their 1-sigma):
   predicts a line's brightness), else with a large relative sigma (the lit
   or shaded cap's brightness is unknown).  The lines the ball enters or
   leaves during the exposure are levelled only when they agree with the
-  rest of the fit (:func:`_partial_verdict`; a renderer's few exposure
-  sub-frames, or a ball cut by the image's first or last line, keep them
-  loose);
+  rest of the fit (:func:`_partial_verdict`: a ball cut by the image's
+  first or last line keeps them loose, and so do lines that a renderer's
+  few exposure sub-frames put measurably off);
 * optionally (``pixels``) the pixels of the spread edges' windows and of
   the end lines instead of their edges and areas (:func:`_pixel_residuals`).
 
@@ -799,12 +799,13 @@ class FitSettings:
     cost_tol : float
         The built-in solver stops when the next step would lower half the
         chi-square by less than this (1e-5: a remaining move of about
-        0.005 sigma; smaller values mostly add steps that only trade the
+        0.003 sigma; smaller values mostly add steps that only trade the
         Jacobian's last digits).
     stall_tol : float
-        A step that does not lower the cost, where both it and the undamped
-        Gauss-Newton step would lower half the chi-square by less than this
-        (1e-3: a move of about 0.045 sigma), also ends the solve (converged).
+        A step that does not lower the cost but raises it by at most this,
+        where both it and the undamped Gauss-Newton step would lower half
+        the chi-square by less than this (1e-3: a move of about 0.03 sigma),
+        also ends the solve (converged).
     jacobian_refresh : float
         After an accepted step that lowered half the chi-square by more than
         this (predicted), the Jacobian is recomputed; after smaller steps the
@@ -929,7 +930,13 @@ class FitResult:
     partial_levelled : bool
         The lines the ball enters or leaves during the exposure were fitted
         with their levelled areas (``FitSettings.area_level_partial`` or
-        ``area_partial_check``).
+        ``area_partial_check``) in the returned fit.
+    partial_verdict : str
+        What ``area_partial_check`` decided: ``"off"`` (not run: 0, the
+        pixel fit or ``area_level_partial``), ``"one_end"`` (such lines at
+        one end of the ball only: loose), ``"none"`` (no such line with a
+        level), ``"agree"`` (levelled) or ``"disagree"`` (the loose fit, from
+        the start; ``n_iterations`` and ``run_time_s`` then count both fits).
     """
 
     motion: BallMotion
@@ -950,6 +957,7 @@ class FitResult:
     n_rejected: int = 0
     inflation: float = 1.0
     partial_levelled: bool = False
+    partial_verdict: str = "off"
 
     @property
     def sigmas(self) -> np.ndarray:
@@ -1008,7 +1016,7 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     Steps are solved on the column-equilibrated normal equations (the
     parameters' sizes differ by ~1e8).  It stops when the Gauss-Newton step
     would lower the cost by less than ``settings.cost_tol`` (in units of
-    half the chi-square: 1e-5 is a move of about 0.005 sigma), which, unlike a
+    half the chi-square: 1e-5 is a move of about 0.003 sigma), which, unlike a
     relative ``ftol``, does not stop early along the weak ``vz`` direction.
     The Jacobian (``resid_and_jac``) is computed at the start (or taken from
     ``start = (r, J)``; ``r`` None is recomputed) and after accepted steps
@@ -1087,7 +1095,7 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
                 r, J = resid_and_jac(x)
                 n_eval += 1
         else:
-            if predicted < settings.stall_tol and _gn_decrease(A, g) < settings.stall_tol:
+            if predicted < settings.stall_tol and cost_new - cost <= settings.stall_tol and _gn_decrease(A, g) < settings.stall_tol:
                 # the last hundredths of a sigma (the undamped step's too, so
                 # that heavy damping cannot fake it): the averaged model's
                 # quadrature is not smooth at this scale, and damping the
@@ -1187,6 +1195,7 @@ def fit_motion(
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
     # the partial lines levelled (area_partial_check: first, then tested)
     level_partial = [settings.area_partial_check > 0 and not settings.area_level_partial and not settings.pixels]
+    verdict = "off"
 
     def model_at(theta) -> ModelEdges:
         # always with the edge spread (a few more operations), so that the
@@ -1340,10 +1349,11 @@ def fit_motion(
     sel = problem(theta0)
     if level_partial[0]:
         me0 = model_at(theta0)
-        part = sel[2] & (me0.presence[0] < 0.999) & tables["levelled"]
+        part = sel[2] & (me0.presence[0] > 0) & (me0.presence[0] < 0.999) & tables["levelled"]
         if not (np.any(part & (t < theta0[0])) and np.any(part & (t > theta0[0]))):
             # not at both ends (a ball cut by the image's first or last line): loose
             level_partial[0] = False
+            verdict = "one_end"
             sel = problem(theta0)
     use_l, use_r, use_a = sel[:3]
     n_edge_lines = edge_lines(sel)
@@ -1390,16 +1400,15 @@ def fit_motion(
         rejected_l[idx_l[bad[:nl]]] = True
         rejected_r[idx_r[bad[nl:]]] = True
         n_rejected += int(bad.sum())
-    levelled = settings.area_level_partial
     if level_partial[0] and sel_solved is not None:
-        verdict = _partial_verdict(model_at(x[:6]), sel_solved, r, J, tables, settings, t, float(x[0]))
-        levelled = verdict == "agree"
+        # an unfinished levelled solve (J^T r != 0) would mix its own step into the test's
+        verdict = _partial_verdict(model_at(x[:6]), sel_solved, r, J, tables, settings, t, float(x[0])) if status > 0 else "disagree"
         if verdict == "disagree":
             # the fit with those lines loose, from the start (its outlier
             # rounds and its path along the weak V.z direction would
             # otherwise depend on the levelled fit's)
             loose = fit_motion(camera, edges, initial, replace(settings, area_partial_check=0.0))
-            return replace(loose, n_iterations=loose.n_iterations + n_total, run_time_s=time.perf_counter() - t0)
+            return replace(loose, n_iterations=loose.n_iterations + n_total, run_time_s=time.perf_counter() - t0, partial_verdict="disagree")
     n_iter = n_total
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
     fit_b = len(x) == 7
@@ -1412,6 +1421,10 @@ def fit_motion(
     # left too few edges is not used)
     sel = sel_solved
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
+    levelled = False
+    if level_partial[0] or settings.area_level_partial:
+        pres = model_at(th).presence[0]
+        levelled = bool(np.any(use_a & (pres > 0) & (pres < 0.999) & tables["levelled"]))
     # the pixel windows' (or ends') free brightnesses are parameters too
     dof = r.size - n_par - (0 if sel[-1] is None else sel[-1]["n_groups"])
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
@@ -1480,6 +1493,7 @@ def fit_motion(
         n_rejected=n_rejected,
         inflation=inflation,
         partial_levelled=levelled,
+        partial_verdict=verdict,
     )
 
 
@@ -1504,7 +1518,10 @@ def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: 
     covariance ``C_loose - C_levelled``.  Both ends of the ball need such
     lines: a ball cut by the first or last line has one end, which then
     fixes ``t_c``, V.x and V.z nearly alone (on the POV-Ray scene of such a
-    ball its levelled last lines moved the speed by up to 4 %).
+    ball its levelled last lines moved the speed by up to 4 %).  Both tests
+    use the fits' unscaled sigmas (no reduced chi-square or correlation
+    inflation), so on real images they fail more often than
+    ``partial_shift_p`` says; failing only costs the loose fit.
 
     Returns
     -------
@@ -1513,7 +1530,7 @@ def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: 
     """
     use_l, use_r, use_a = sel[:3]
     sa = sel[5]
-    partial = use_a & (me.presence[0] < 0.999) & tables["levelled"]
+    partial = use_a & (me.presence[0] > 0) & (me.presence[0] < 0.999) & tables["levelled"]
     if not partial.any():
         return "none"
     if not (np.any(partial & (t_s < t_c_s)) and np.any(partial & (t_s > t_c_s))):
