@@ -936,7 +936,9 @@ class FitResult:
         pixel fit or ``area_level_partial``), ``"one_end"`` (such lines at
         one end of the ball only: loose), ``"none"`` (no such line with a
         level), ``"agree"`` (levelled) or ``"disagree"`` (the loose fit, from
-        the start; ``n_iterations`` and ``run_time_s`` then count both fits).
+        the start; ``n_iterations`` and ``run_time_s`` then count both fits;
+        also ``"one_end"`` when the levelled fit's solution has such lines
+        at one end only).
     """
 
     motion: BallMotion
@@ -1348,9 +1350,7 @@ def fit_motion(
 
     sel = problem(theta0)
     if level_partial[0]:
-        me0 = model_at(theta0)
-        part = sel[2] & (me0.presence[0] > 0) & (me0.presence[0] < 0.999) & tables["levelled"]
-        if not (np.any(part & (t < theta0[0])) and np.any(part & (t > theta0[0]))):
+        if not _at_both_ends(_partial_lines(sel[2], model_at(theta0), tables), t, theta0[0]):
             # not at both ends (a ball cut by the image's first or last line): loose
             level_partial[0] = False
             verdict = "one_end"
@@ -1403,12 +1403,12 @@ def fit_motion(
     if level_partial[0] and sel_solved is not None:
         # an unfinished levelled solve (J^T r != 0) would mix its own step into the test's
         verdict = _partial_verdict(model_at(x[:6]), sel_solved, r, J, tables, settings, t, float(x[0])) if status > 0 else "disagree"
-        if verdict == "disagree":
+        if verdict in ("disagree", "one_end"):
             # the fit with those lines loose, from the start (its outlier
             # rounds and its path along the weak V.z direction would
             # otherwise depend on the levelled fit's)
             loose = fit_motion(camera, edges, initial, replace(settings, area_partial_check=0.0))
-            return replace(loose, n_iterations=loose.n_iterations + n_total, run_time_s=time.perf_counter() - t0, partial_verdict="disagree")
+            return replace(loose, n_iterations=loose.n_iterations + n_total, run_time_s=time.perf_counter() - t0, partial_verdict=verdict)
     n_iter = n_total
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
     fit_b = len(x) == 7
@@ -1421,10 +1421,7 @@ def fit_motion(
     # left too few edges is not used)
     sel = sel_solved
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
-    levelled = False
-    if level_partial[0] or settings.area_level_partial:
-        pres = model_at(th).presence[0]
-        levelled = bool(np.any(use_a & (pres > 0) & (pres < 0.999) & tables["levelled"]))
+    levelled = (level_partial[0] or settings.area_level_partial) and bool(_partial_lines(use_a, model_at(th), tables).any())
     # the pixel windows' (or ends') free brightnesses are parameters too
     dof = r.size - n_par - (0 if sel[-1] is None else sel[-1]["n_groups"])
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
@@ -1504,6 +1501,17 @@ def _pinv_sym(a: np.ndarray) -> np.ndarray:
     return (v * inv) @ v.T
 
 
+def _partial_lines(use_a: np.ndarray, me: ModelEdges, tables: dict) -> np.ndarray:
+    """Area lines seen during part of the exposure (model presence in (0, 0.999)) that have a level."""
+    pres = me.presence[0]
+    return use_a & (pres > 0) & (pres < 0.999) & tables["levelled"]
+
+
+def _at_both_ends(lines: np.ndarray, t_s: np.ndarray, t_c_s: float) -> bool:
+    """Whether the mask ``lines`` holds lines both before and after ``t_c_s`` (line times ``t_s``)."""
+    return bool(np.any(lines & (t_s < t_c_s)) and np.any(lines & (t_s > t_c_s)))
+
+
 def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: dict, settings: "FitSettings", t_s: np.ndarray, t_c_s: float) -> str:
     """Whether the levelled areas of the partial lines may stay in the fit (``area_partial_check``).
 
@@ -1526,15 +1534,16 @@ def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: 
     Returns
     -------
     str
-        ``"none"`` (no partial line is levelled), ``"agree"`` or ``"disagree"``.
+        ``"none"`` (no partial line is levelled), ``"one_end"``, ``"agree"``
+        or ``"disagree"``.
     """
     use_l, use_r, use_a = sel[:3]
     sa = sel[5]
-    partial = use_a & (me.presence[0] > 0) & (me.presence[0] < 0.999) & tables["levelled"]
+    partial = _partial_lines(use_a, me, tables)
     if not partial.any():
         return "none"
-    if not (np.any(partial & (t_s < t_c_s)) and np.any(partial & (t_s > t_c_s))):
-        return "disagree"
+    if not _at_both_ends(partial, t_s, t_c_s):
+        return "one_end"
     pa = np.flatnonzero(partial[use_a])  # among the area rows
     rows = int(use_l.sum() + use_r.sum()) + pa
     lines = np.flatnonzero(use_a)[pa]
