@@ -126,6 +126,15 @@ def test_precision_prints_bounds(capsys):
     assert sig2["vx"] == pytest.approx(2 * sig["vx"], rel=2e-3)  # scales with the noise (4 printed digits)
     code, _, err = run(capsys, *args)
     assert code != 0 and "--edge-noise" in err
+    # the pixel bound, with the columns' unknown gains (PRNU) widening it
+    px = ("--pixel-noise", "2", "--contrast", "150")
+    _, o0, _ = run(capsys, *args, *px)
+    _, o1, _ = run(capsys, *args, *px, "--prnu", "0.02")
+    s0 = {line.split()[0]: float(line.split()[3]) for line in o0.splitlines()[2:]}
+    s1 = {line.split()[0]: float(line.split()[3]) for line in o1.splitlines()[2:]}
+    assert "PRNU 0.02" in o1 and s1["z0"] > s0["z0"] and all(s1[k] >= s0[k] for k in s0)
+    code, _, err = run(capsys, *args, *px, "--prnu", "1.5")
+    assert code != 0 and "--prnu" in err
 
 
 def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):

@@ -147,6 +147,7 @@ def precision(
     edge_noise: Optional[float] = typer.Option(None, "--edge-noise", help="1-sigma of one edge measurement, pixels."),
     pixel_noise: Optional[float] = typer.Option(None, "--pixel-noise", help="Pixel noise 1-sigma in DN (with --contrast): bound for any estimator on the image."),
     contrast: Optional[float] = typer.Option(None, "--contrast", help="Ball/background contrast in DN (with --pixel-noise)."),
+    prnu: float = typer.Option(0.0, "--prnu", help="Relative 1-sigma of the columns' gains (PRNU) not flat-fielded, e.g. 0.008 (with --pixel-noise)."),
 ) -> None:
     """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a rig."""
     from .camera import load_camera
@@ -176,7 +177,9 @@ def precision(
     if pixel_noise is not None:
         if contrast is None or not contrast != 0 or not pixel_noise > 0:
             raise ValueError("precision: --pixel-noise needs a positive noise and a non-zero --contrast")
-        typer.echo(pixel_crlb(cam, motion, pixel_noise, abs(contrast)).to_text())
+        if not 0 <= prnu < 1:
+            raise typer.BadParameter(f"must be in [0, 1), got {prnu}", param_hint="--prnu")
+        typer.echo(pixel_crlb(cam, motion, pixel_noise, abs(contrast), prnu_sigma=prnu).to_text())
 
 
 # ---------------------------------------------------------------- demo

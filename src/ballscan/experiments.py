@@ -17,8 +17,9 @@ and measured by each method:
     exposure; where it refuses a ball the row is the plain fit's, with the
     reason in ``flags`` as ``pixels_<reason>``).
 
-The Cramér–Rao bound of the pixel intensities (:func:`ballscan.precision.pixel_crlb`)
-is added as a fourth curve.  Results are one tidy CSV row per trial and
+The Cramér–Rao bound of the pixel intensities under the scene's sensor model
+(:func:`ballscan.precision.sensor_crlb`: each pixel's shot noise, the
+columns' unknown gains) is added as a fourth curve.  Results are one tidy CSV row per trial and
 method, a figure like Fig. 5 and a Markdown summary.
 
 Trials are independent tasks: they run on local cores (joblib) or on a Dask
@@ -192,7 +193,7 @@ class Scene:
         Linear grey levels in ``[0, 1]``.
     shading : bool
         Lambertian shading of the ball; off by default so that the untextured
-        ball is the flat disc :func:`ballscan.precision.pixel_crlb` bounds.
+        ball is the flat disc :func:`ballscan.precision.sensor_crlb` bounds.
     noise : SensorNoise
         Sensor model of every trial.
     """
@@ -441,13 +442,14 @@ def appearance(scene: Scene, texture: str, orientation_seed: int) -> Appearance:
 
 
 def crlb_noise_dn(scene: Scene) -> tuple[float, float]:
-    """Pixel noise and contrast (DN) assumed by the Cramér–Rao curve.
+    """White noise of an edge pixel and the contrast (DN), for the record.
 
-    The noise is that of an edge pixel, half ball and half background:
     ``sigma^2 = read_dn^2 + Y_mid white_dn^2 / full_well_e + 1/12`` with
-    ``Y_mid = (ball_level + background_level) / 2`` (shot noise in DN^2 at
-    that level, plus uniform quantisation); PRNU is left out (a fixed
-    pattern of 0.8 % that the column background absorbs).
+    ``Y_mid = (ball_level + background_level) / 2`` (read, shot and uniform
+    quantisation noise of a pixel half ball and half background).  The
+    bound itself (:func:`run_bound`, :func:`ballscan.precision.sensor_crlb`)
+    gives every pixel its own shot noise and includes the columns' unknown
+    gains (PRNU).
 
     Returns
     -------
@@ -762,7 +764,10 @@ class BoundRow:
         ``0.6745 rel_sigma``: the median ``|relative error|`` an efficient
         unbiased estimator reaches (what is plotted and compared).
     noise_dn, contrast_dn : float
-        From :func:`crlb_noise_dn`.
+        From :func:`crlb_noise_dn` (an edge pixel's white noise, for the
+        record: the bound gives each pixel its own).
+    prnu_sigma : float
+        The columns' relative gain spread the bound includes.
     """
 
     factor: str
@@ -773,6 +778,7 @@ class BoundRow:
     median_abs_rel: float
     noise_dn: float
     contrast_dn: float
+    prnu_sigma: float
 
     @property
     def key(self) -> tuple[str, float]:
@@ -783,14 +789,20 @@ BOUND_FIELDS = tuple(f.name for f in fields(BoundRow))
 
 
 def run_bound(spec: BoundSpec) -> BoundRow:
-    """Evaluate :func:`ballscan.precision.pixel_crlb` at the point's nominal motion (phase 0)."""
-    from .precision import pixel_crlb
+    """Evaluate :func:`ballscan.precision.sensor_crlb` at the point's nominal motion (phase 0).
 
-    geom = scene_geometry(spec.scene, 0.0)
-    noise_dn, contrast_dn = crlb_noise_dn(spec.scene)
-    b = pixel_crlb(spec.scene.camera, geom.motion, noise_dn, contrast_dn)
+    The scene's sensor model as rendered: each pixel's read, shot and
+    quantisation noise, and the columns' gains (PRNU) unknown.
+    """
+    from .precision import sensor_crlb
+
+    sc = spec.scene
+    geom = scene_geometry(sc, 0.0)
+    noise_dn, contrast_dn = crlb_noise_dn(sc)
+    b = sensor_crlb(sc.camera, geom.motion, sc.noise, sc.ball_level, sc.background_level)
     s = geom.motion.speed_mps
-    return BoundRow(spec.factor, float(spec.value), s, float(b.speed_sigma_mps), b.speed_sigma_mps / s, MEDIAN_ABS_NORMAL * b.speed_sigma_mps / s, noise_dn, contrast_dn)
+    sig = float(b.speed_sigma_mps)
+    return BoundRow(spec.factor, float(spec.value), s, sig, sig / s, MEDIAN_ABS_NORMAL * sig / s, noise_dn, contrast_dn, sc.noise.prnu_sigma)
 
 
 # --------------------------------------------------------------------------- execution
@@ -1223,7 +1235,7 @@ def summary_markdown(res: ExperimentResult, command: str | None = None, quick: b
         "",
         "Median over the trials; in brackets the inter-quartile range; `fail` = more than half the trials gave no speed. "
         "CRLB = 0.6745 x the pixel Cramér–Rao 1-sigma bound (what an efficient unbiased estimator's median |error| would be, "
-        "for the untextured flat ball).",
+        "for the untextured flat ball, under the sensor's read, shot and quantisation noise and its columns' unknown gains).",
         "",
     ]
     head = ["factor", "value", "texture"] + list(cfg.methods) + (["CRLB"] if cfg.bound else []) + ["failed"]

@@ -29,9 +29,10 @@ import numpy as np
 from .camera import LineScanCamera
 from .fit import FitSettings, averaged_model, param_scale, pixel_coverage, propagate, synthetic_edges, whitened_jacobian
 from .motion import BallMotion
+from .render import SensorNoise
 from .silhouette import visible_line_count
 
-__all__ = ["PrecisionBound", "edge_crlb", "pixel_crlb"]
+__all__ = ["PrecisionBound", "edge_crlb", "pixel_crlb", "sensor_crlb"]
 
 
 @dataclass(frozen=True)
@@ -187,36 +188,15 @@ def edge_crlb(
     return _bound("edges", motion, camera, F, n, noise)
 
 
-def pixel_crlb(
-    camera: LineScanCamera,
-    motion: BallMotion,
-    noise_dn: float,
-    contrast_dn: float,
-    *,
-    n_nodes: int = 8,
-) -> PrecisionBound:
-    """Cramér–Rao bound of the pixel intensities of a flat, untextured ball.
+def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """Averaged coverage of the ball's pixels and its derivatives.
 
-    ``I_ij = bg + contrast_dn * coverage_ij(theta) + N(0, noise_dn^2)``;
-    ``bg`` and ``contrast_dn`` are treated as known (they are measured on
-    thousands of pixels).  The coverage derivatives are central differences
-    of the averaged coverage model.
-
-    Parameters
-    ----------
-    camera : LineScanCamera
-    motion : BallMotion
-    noise_dn : float
-        Gaussian pixel noise, DN (1-sigma).
-    contrast_dn : float
-        ``|ball - background|``, DN.
-    n_nodes : int
-        Quadrature nodes per piece of the averaged model.
+    Returns ``(coverage, d_coverage)``: ``(N, C)`` and ``(6, N, C)`` (per
+    unit of each parameter of :data:`ballscan.motion.PARAM_NAMES`) on the
+    lines that see the ball and the columns it touches plus two on each
+    side; derivatives by central differences (step ``1e-3`` of
+    :func:`ballscan.fit.param_scale`).
     """
-    if not (noise_dn > 0 and math.isfinite(noise_dn)):
-        raise ValueError(f"noise_dn: must be positive and finite, got {noise_dn!r}")
-    if not (contrast_dn != 0 and math.isfinite(contrast_dn)):
-        raise ValueError(f"contrast_dn: must be non-zero and finite, got {contrast_dn!r}")
     n_lines = _n_lines_for(camera, motion)
     t = np.arange(n_lines) / camera.line_rate_hz
     theta = motion.to_params()
@@ -229,12 +209,157 @@ def pixel_crlb(
     hi = np.nanmax(me.right_px[0, keep])
     cols = np.arange(math.floor(lo) - 2, math.ceil(hi) + 3, dtype=float)
     h = 1e-3 * param_scale(camera, motion)
-    thetas = np.vstack([theta + np.diag(h), theta - np.diag(h)])
+    thetas = np.vstack([theta[None], theta + np.diag(h), theta - np.diag(h)])
     ms = averaged_model(camera, thetas, motion.radius_m, t, motion.acceleration_mps2, n_nodes, return_samples=True)
     u_lo, u_hi, wgt = ms.samples  # type: ignore[misc]
-    cov = pixel_coverage(u_lo, u_hi, wgt, cols)  # (12, N, C)
-    dI = contrast_dn * (cov[:6] - cov[6:]) / (2.0 * h[:, None, None])  # (6, N, C)
-    G = dI.reshape(6, -1)
-    F = (G @ G.T) / noise_dn**2
+    cov = pixel_coverage(u_lo, u_hi, wgt, cols)  # (13, N, C)
+    return cov[0], (cov[1:7] - cov[7:]) / (2.0 * h[:, None, None])
+
+
+def _pixel_fisher(G: np.ndarray, var: np.ndarray, signal: np.ndarray | None = None, prnu_sigma: float = 0.0) -> np.ndarray:
+    """Fisher information of independent columns of Gaussian pixels.
+
+    Column ``c`` of the image has the covariance
+    ``diag(var[:, c]) + prnu_sigma^2 s_c s_c^T`` with ``s_c = signal[:, c]``:
+    white noise plus an unknown gain ``1 + prnu_sigma N(0, 1)`` of the
+    column applied to the ball's signal above the column's background (the
+    background itself, gain included, is what every line of that column
+    without the ball measures).  By the Woodbury identity
+    ``F = sum_c G_c^T D_c^-1 G_c - k (G_c^T D_c^-1 s_c)(s_c^T D_c^-1 G_c) / (1 + k s_c^T D_c^-1 s_c)``
+    with ``k = prnu_sigma^2``.  The information in the covariance's own
+    dependence on the parameters is left out (below 1e-4 of the mean's here).
+
+    Parameters
+    ----------
+    G : ndarray (p, N, C)
+        Derivatives of the pixels' mean, DN per parameter unit.
+    var : ndarray (N, C)
+        White-noise variance of each pixel, DN^2.
+    signal : ndarray (N, C), optional
+        The ball's signal above the background that the column gain scales, DN.
+    prnu_sigma : float
+        Relative 1-sigma of the column gain.
+    """
+    Gw = G / var
+    F = np.einsum("pnc,qnc->pq", Gw, G)
+    if prnu_sigma > 0 and signal is not None:
+        k = prnu_sigma**2
+        u = np.einsum("pnc,nc->pc", Gw, signal)  # G_c^T D^-1 s_c
+        q = np.einsum("nc,nc->c", signal / var, signal)  # s_c^T D^-1 s_c
+        F = F - (u * (k / (1.0 + k * q))) @ u.T
+    return F
+
+
+def pixel_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise_dn: float,
+    contrast_dn: float,
+    *,
+    prnu_sigma: float = 0.0,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixel intensities of a flat, untextured ball.
+
+    ``I_ij = bg_j + g_j contrast_dn coverage_ij(theta) + N(0, noise_dn^2)``;
+    ``bg_j`` and ``contrast_dn`` are treated as known (they are measured on
+    thousands of pixels); the column gain ``g_j = 1 + prnu_sigma N(0, 1)``
+    (fixed-pattern photo-response non-uniformity, PRNU) is unknown and
+    enters as noise correlated along each column (:func:`_pixel_fisher`).
+    The coverage derivatives are central differences of the averaged
+    coverage model.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+    noise_dn : float
+        Gaussian pixel noise, DN (1-sigma).
+    contrast_dn : float
+        ``|ball - background|``, DN.
+    prnu_sigma : float
+        Relative 1-sigma of the columns' gain, unknown to the estimator
+        (0: a flat-field corrected or ideal sensor).
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+
+    See Also
+    --------
+    sensor_crlb : the same with the renderer's full sensor model (shot noise per pixel).
+    """
+    if not (noise_dn > 0 and math.isfinite(noise_dn)):
+        raise ValueError(f"noise_dn: must be positive and finite, got {noise_dn!r}")
+    if not (contrast_dn != 0 and math.isfinite(contrast_dn)):
+        raise ValueError(f"contrast_dn: must be non-zero and finite, got {contrast_dn!r}")
+    _check_prnu(prnu_sigma)
+    cov, dcov = _pixel_model(camera, motion, n_nodes)
+    G = contrast_dn * dcov
+    F = _pixel_fisher(G, np.full(cov.shape, float(noise_dn) ** 2), contrast_dn * cov, prnu_sigma)
     n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
-    return _bound("pixels", motion, camera, F, n_pix, f"pixel noise {noise_dn:g} DN, contrast {abs(contrast_dn):g} DN")
+    noise = f"pixel noise {noise_dn:g} DN, contrast {abs(contrast_dn):g} DN" + (f", PRNU {prnu_sigma:g}" if prnu_sigma > 0 else "")
+    return _bound("pixels", motion, camera, F, n_pix, noise)
+
+
+def sensor_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise: SensorNoise,
+    ball_level: float,
+    background_level: float,
+    *,
+    flat_field: bool = False,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixels of a flat ball seen by a modelled sensor.
+
+    The sensor of :class:`ballscan.render.SensorNoise`: pixel ``(i, j)`` of
+    linear grey ``Y_ij = bg + (ball - bg) coverage_ij(theta)`` has the mean
+    ``black + white g_j Y_ij`` DN and the white-noise variance
+    ``read^2 + white^2 Y_ij / full_well + 1/12`` DN^2 (read, shot and
+    uniform quantisation noise, each pixel its own), and the column gain
+    ``g_j = 1 + prnu_sigma N(0, 1)`` is unknown (``flat_field=False``): it
+    scales the ball's signal ``white (ball - bg) coverage_ij`` of every
+    line of column ``j`` alike, a fixed pattern that does not average out
+    over the lines a slow ball's edge spends in one column
+    (:func:`_pixel_fisher`).  The background of each column, gain included,
+    is treated as known (every line without the ball measures it), as are
+    the two levels.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+    noise : SensorNoise
+    ball_level, background_level : float
+        Linear grey of the (flat) ball and of the background, 0..1.
+    flat_field : bool
+        The column gains are known (a flat-field corrected camera): PRNU
+        then costs nothing.
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+    """
+    for name, v in (("ball_level", ball_level), ("background_level", background_level)):
+        if not (math.isfinite(v) and v >= 0):
+            raise ValueError(f"{name}: must be a finite number >= 0, got {v!r}")
+    if ball_level == background_level:
+        raise ValueError("ball_level: must differ from background_level (no contrast, no bound)")
+    cov, dcov = _pixel_model(camera, motion, n_nodes)
+    dy = ball_level - background_level
+    y = background_level + dy * cov
+    var = noise.read_dn**2 + 1.0 / 12.0 + (y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else 0.0)
+    var = np.broadcast_to(var, cov.shape)
+    prnu = 0.0 if flat_field else noise.prnu_sigma
+    G = noise.white_dn * dy * dcov
+    F = _pixel_fisher(G, var, noise.white_dn * dy * cov, prnu)
+    n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
+    fw = f"{noise.full_well_e:g} e-" if noise.full_well_e else "no shot noise"
+    desc = (
+        f"sensor: read {noise.read_dn:g} DN, {fw}, white {noise.white_dn:g} DN, {noise.bits}-bit, "
+        f"PRNU {noise.prnu_sigma:g}" + (" (flat-fielded)" if flat_field else "") + f"; levels {ball_level:g} / {background_level:g}"
+    )
+    return _bound("pixels", motion, camera, F, n_pix, desc)
+
+
+def _check_prnu(prnu_sigma: float) -> None:
+    if not (math.isfinite(prnu_sigma) and 0 <= prnu_sigma < 1):
+        raise ValueError(f"prnu_sigma: must be in [0, 1), got {prnu_sigma!r}")
