@@ -121,10 +121,18 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # (session 5, FitSettings.area_partial_check): 1.5x-4.1x at four points
 # (1.52x at 60 deg, 2.43x at 4.7 m/s, 2.48x at 140 000 lines/s, 4.05x at
 # R = 0.11 m) and 0.15x-0.98x at the others (0.69x at 5 800 lines/s, 0.41x
-# at 60 m/s, 0.98x at 0 deg, 0.15x at R = 0.02 m).  Remove the marker when it passes
+# at 60 m/s, 0.98x at 0 deg, 0.15x at R = 0.02 m).  Since the bound is that
+# of the scene's sensor model (session 6, precision.sensor_crlb: each
+# pixel's own shot noise, and the columns' gains, PRNU 0.8 %, unknown; the
+# bound moves by -4 % to +3.5 %), 2.4x-4.1x at three points (2.44x at
+# 4.7 m/s, 2.49x at 140 000 lines/s, 4.07x at R = 0.11 m) and 0.15x-1.48x at
+# the others (1.48x at 60 deg, where the bound widened by 3.5 %).  PRNU
+# costs the bound under 4 % but the fit about 2x at 4.7 m/s (with the
+# columns' true gains divided out of the image: 2.4x -> 1.8x over 24
+# trials): the estimator's loss, not the bound's.  Remove the marker when it passes
 # (strict: the quick sweep is seeded, so an unexpected pass fails CI and says so).
 @pytest.mark.slow
-@pytest.mark.xfail(reason="fit 1.5x-4.1x the pixel Cramér–Rao bound at 4 of 8 points of the quick sweep; see comment", strict=True)
+@pytest.mark.xfail(reason="fit 2.4x-4.1x the pixel Cramér–Rao bound at 3 of 8 points of the quick sweep; see comment", strict=True)
 def test_quick_fit_within_1p5_of_cramer_rao(quick):
     # Margin 1.5x the median |error| of an efficient unbiased estimator
     # (0.6745 sigma_CRLB), untextured flat ball.
