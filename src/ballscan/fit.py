@@ -1680,7 +1680,15 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
     ov -= np.maximum(u_lo[..., None], a)
     np.clip(ov, 0.0, 1.0, out=ov)
     ov *= wgt[..., None]
-    return ov.sum(axis=(-3, -2))
+    if ov.shape[-1] == 1:
+        return ov.sum(axis=(-3, -2))
+    # the sum over the samples one after the other: the order of numpy's
+    # reduction over these two outer axes (the same bits), at half its cost
+    flat = ov.reshape(ov.shape[:-3] + (-1, ov.shape[-1]))
+    out = flat[..., 0, :].copy()
+    for j in range(1, flat.shape[-2]):
+        out += flat[..., j, :]
+    return out
 
 
 def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
