@@ -434,6 +434,9 @@ class LimbProfile:
         for rows, ts, hs in ((np.flatnonzero(sharp), np.zeros(1), np.zeros(1)), (np.flatnonzero(~sharp), tk, hk)):
             if rows.size == 0:
                 continue
+            if rows.size == lines.size:
+                # every row in one group (always so with average=False): views, not copies
+                rows = slice(None)
             t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
             hit, nx, ny, nz = _normal_components(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
             # polarity (ambient + max(n . light, 0) - bg) / contrast, in place in nx
