@@ -25,7 +25,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .camera import LineScanCamera, line_times
-from .detection import BallRegion, Detection, background_at, detect, region_background
+from .detection import BallRegion, Detection, background_at, detect, median, region_background
 from .edges import measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
@@ -90,7 +90,7 @@ def normalised_box(image: LineImage, detection: Detection, region: BallRegion, m
 def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
     if t.size < 3:
         return False
-    period = float(np.median(np.diff(t)))
+    period = float(median(np.diff(t)))
     seg = np.diff(t[max(first - 1, 0) : last + 2])
     return bool(np.any(seg > 1.5 * period))
 
@@ -422,7 +422,7 @@ def estimate_image(
         # geometry.md: with per-line timestamps the exposure defaults to the
         # median line period; that period, not the file's nominal line rate,
         # is then the camera's actual rate (encoder-triggered lines)
-        period = float(np.median(np.diff(t)))
+        period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None

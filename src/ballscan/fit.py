@@ -72,6 +72,7 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from .camera import LineScanCamera
+from .detection import median as _median
 from .edges import EdgeMeasurements
 from .motion import PARAM_NAMES, BallMotion
 from .silhouette import _gauss
@@ -1392,7 +1393,7 @@ def fit_motion(
             # nothing to reject (every line given by its pixels)
             break
         re = r[: nl + nr]
-        robust = max(1.0, 1.4826 * float(np.median(np.abs(re - np.median(re)))))
+        robust = max(1.0, 1.4826 * float(_median(np.abs(re - _median(re)))))
         bad = np.abs(re) > settings.reject_sigma * robust
         if not bad.any():
             break
@@ -1673,8 +1674,21 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
     a = np.asarray(cols, dtype=float) - 0.5
     if a.ndim == 2:
         a = a[:, None, None, :]
-    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
-    return (wgt[..., None] * ov).sum(axis=(-3, -2))
+    # in place: the arrays are tens of thousands of entries, called several
+    # times per ball
+    ov = np.minimum(u_hi[..., None], a + 1.0)
+    ov -= np.maximum(u_lo[..., None], a)
+    np.clip(ov, 0.0, 1.0, out=ov)
+    ov *= wgt[..., None]
+    if ov.shape[-1] == 1:
+        return ov.sum(axis=(-3, -2))
+    # the sum over the samples one after the other: the order of numpy's
+    # reduction over these two outer axes (the same bits), at half its cost
+    flat = ov.reshape(ov.shape[:-3] + (-1, ov.shape[-1]))
+    out = flat[..., 0, :].copy()
+    for j in range(1, flat.shape[-2]):
+        out += flat[..., j, :]
+    return out
 
 
 def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
@@ -1852,7 +1866,7 @@ def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray
     k = max(int(settings.level_lines), 1)
     for i in np.flatnonzero(edges.signal):
         near = have[np.argsort(np.abs(have - i), kind="stable")[:k]]
-        L = float(np.median(lev[near]))
+        L = float(_median(lev[near]))
         if 0.2 < L < 5.0:
             out[i] = area[i] / L
     return out

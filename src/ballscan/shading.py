@@ -33,6 +33,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from .camera import LineScanCamera
+from .detection import median as _median
 from .edges import EdgeMeasurements
 from .fit import averaged_model, pixel_coverage
 from .motion import BallMotion
@@ -226,7 +227,7 @@ def fit_shading(
         lit = n @ coef[1:]
         active = lit > 0
         r = y - coef[0] - np.maximum(lit, 0.0)
-        scale = max(1.4826 * float(np.median(np.abs(r - np.median(r)))), 1e-9)
+        scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
         a = np.abs(r) / (huber_k * scale)
         w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
     return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
@@ -421,7 +422,10 @@ class LimbProfile:
         light = np.asarray(self.shading.light_dn)
         edge = np.where(sides > 0, self.left_px[lines], self.right_px[lines])
         u = edge[:, None] + sides[:, None] * np.asarray(offsets, dtype=float)
-        cols = np.clip(np.rint(np.nan_to_num(u)).astype(int), 0, width - 1)
+        # the background's column under each position (where u is not finite
+        # no ray meets the ball and the value is 0 whatever the background):
+        # clamped before rounding, the same columns as clipping after it
+        cols = np.rint(np.fmin(np.fmax(u, 0.0), width - 1.0)).astype(int)
         bg = self.background_dn[lines[:, None], cols]
         val_out, cov_out = np.empty(u.shape), np.empty(u.shape)
         # a sharp edge hardly moves during the exposure or across the
@@ -430,6 +434,9 @@ class LimbProfile:
         for rows, ts, hs in ((np.flatnonzero(sharp), np.zeros(1), np.zeros(1)), (np.flatnonzero(~sharp), tk, hk)):
             if rows.size == 0:
                 continue
+            if rows.size == lines.size:
+                # every row in one group (always so with average=False): views, not copies
+                rows = slice(None)
             t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
             hit, nx, ny, nz = _normal_components(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
             # polarity (ambient + max(n . light, 0) - bg) / contrast, in place in nx
@@ -441,8 +448,15 @@ class LimbProfile:
             nx -= bg[rows][:, None, None, :]
             nx /= self.polarity * self.contrast_dn  # the sign of +-x / c is exact either way
             nx[~hit] = 0.0
-            val_out[rows] = nx.mean(axis=(1, 2))
-            cov_out[rows] = hit.mean(axis=(1, 2))
+            n_samples = ts.size * hs.size
+            if n_samples == 1:
+                # the mean of one sample is the sample (spares two reductions)
+                val_out[rows] = nx[:, 0, 0, :]
+                cov_out[rows] = hit[:, 0, 0, :]
+            else:
+                # np.mean's sum and division, without its wrapper
+                val_out[rows] = nx.sum(axis=(1, 2)) / n_samples
+                cov_out[rows] = hit.sum(axis=(1, 2), dtype=float) / n_samples
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
 
