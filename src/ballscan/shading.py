@@ -41,6 +41,11 @@ from .motion import BallMotion
 __all__ = ["LimbProfile", "ShadingModel", "ball_limb", "fit_shading", "limb_profile", "shade_profile", "surface_normals"]
 
 
+# a last reweighting round whose robust scale is this many times the best
+# round's has diverged (see fit_shading)
+_DIVERGED = 1.5
+
+
 @dataclass(frozen=True)
 class ShadingModel:
     """``I = ambient_dn + max(0, n . light_dn)`` fitted to a ball's interior.
@@ -219,6 +224,7 @@ def fit_shading(
     active = np.ones(y.size, dtype=bool)
     coef = np.zeros(4)
     scale = 1.0
+    best = (np.inf, coef, scale)
     for _ in range(n_iterations):
         # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
         Xa = np.where(active[:, None], X, X_dark)
@@ -228,8 +234,17 @@ def fit_shading(
         active = lit > 0
         r = y - coef[0] - np.maximum(lit, 0.0)
         scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
+        if scale < best[0]:
+            best = (scale, coef, scale)
         a = np.abs(r) / (huber_k * scale)
         w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
+    if scale > _DIVERGED * best[0]:
+        # The lit / shadowed split makes the rounds a fixed-point iteration,
+        # not a descent: on a flat ball a round that calls half of it
+        # shadowed can run away to a strong light (seen: 152 DN of light and
+        # a robust scale of 40 DN where the flat law leaves 5 DN; its end
+        # levels then moved a ball's V.x by 21 sigma).  Keep the best round.
+        _, coef, scale = best
     return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
 
 
