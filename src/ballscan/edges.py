@@ -36,7 +36,7 @@ or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Sequence
 
 import math
@@ -46,7 +46,7 @@ import numpy as np
 # np.median's value by a full sort (several times faster on these sizes)
 from .detection import median as _median
 
-__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "with_limb"]
+__all__ = ["EdgeMeasurements", "EdgeSettings", "matched_edges", "measure_edges", "with_limb"]
 
 
 @dataclass(frozen=True)
@@ -233,6 +233,10 @@ class EdgeMeasurements:
         each line (``limb.line_levels`` of :func:`measure_edges`; NaN on the
         lines it was not evaluated on) and its relative 1-sigma: ``area_px /
         area_level`` is the line's covered length.  None without a model.
+    edges_method : {"window", "matched"}
+        How the edges were measured: the local area estimate of the windows
+        (:func:`measure_edges`, :func:`with_limb`) or the limb model's
+        profile fitted to each window (:func:`matched_edges`).
     """
 
     lines: np.ndarray
@@ -266,6 +270,7 @@ class EdgeMeasurements:
     area_level: np.ndarray | None = None
     area_level_sigma: np.ndarray | None = None
     profile_shade: np.ndarray | None = None
+    edges_method: str = "window"
     # the first pass's intermediates, for with_limb (None: not made by measure_edges)
     _pass: _EdgePass | None = field(default=None, compare=False, repr=False)
 
@@ -662,6 +667,139 @@ def with_limb(
     if edges._pass is None:
         raise ValueError("edges: not made by measure_edges (no first pass to reuse)")
     return _finish(edges._pass, limb)
+
+
+def matched_edges(
+    edges: EdgeMeasurements,
+    limb: Any,
+    *,
+    max_spread_px: float = 0.3,
+    half_window_px: int = 3,
+    rounds: int = 2,
+    step_px: float = 0.05,
+) -> EdgeMeasurements:
+    """Each edge as the maximum-likelihood position of the limb model's profile (uniform balls).
+
+    The local area estimate (:func:`measure_edges`) sums a window of three
+    or more pixels and divides by a level measured on two more: on a sharp
+    edge only the one partly covered pixel says where the edge is, and the
+    others add their noise (on the flat benchmark ball, 5 DN on 700 DN: a
+    narrow edge's RMS error 0.0130 px against 0.0071 px for the edge
+    pixel's noise alone; a wide one's 0.0179 px).  Here the whole profile of
+    the window, ``half_window_px`` pixels either side of the edge, is
+    fitted by the model's normalised values, the shading law's surface
+    brightness times each whole pixel's coverage by the averaged silhouette
+    (:meth:`ballscan.shading.LimbProfile.pixel_coverage`), shifted along the
+    line: ``rounds`` Gauss-Newton steps in the shift, pixels weighted by
+    their noise, so a pixel counts by how much its coverage changes with the
+    edge (matched filter).  On the benchmark ball the errors become 0.0084
+    px (narrow) and 0.0101 px (wide), unbiased to 5e-5 px on noise-free
+    renders.
+
+    The level comes from the model, not from the line: only for a ball the
+    law describes to its pixels (untextured, see
+    :func:`ballscan.estimate.estimate_region`), where the local level's
+    noise is the price of robustness that buys nothing.
+
+    Parameters
+    ----------
+    edges : EdgeMeasurements
+        From :func:`measure_edges` or :func:`with_limb` (the profile and its
+        noise are used; the edges are the starting points).
+    limb : LimbProfile
+        The ball's profile model (:func:`ballscan.shading.ball_limb`).
+    max_spread_px : float
+        Lines whose model edge spread exceeds this keep their window edges.
+        The spread (wide-window) edges gain as much on the benchmark ball
+        (speed RMSE 1.23x / 1.14x the bound with them, 1.36x / 1.26x
+        without), but their inner pixels then carry the model's level, and
+        on the stream tests' small 8-bit balls (18 px across) that biased
+        V.x by -1.8 sigma on average (window edges: -0.4).
+    half_window_px : int
+        Pixels on either side of the starting edge's pixel that are fitted.
+    rounds : int
+        Gauss-Newton steps (each at most half a pixel).
+    step_px : float
+        Shift of the central differences of the model's profile, pixels.
+
+    Returns
+    -------
+    EdgeMeasurements
+        ``left_px``, ``right_px`` (and the wide-window fields, the same
+        values) and their sigmas replaced where an edge is usable and the
+        fit converged; ``edges_method`` "matched".
+    """
+    if edges.profile is None or edges.profile_sigma is None:
+        raise ValueError("edges: no profile to fit (made by measure_edges?)")
+    lines = edges.lines
+    spread = np.asarray(limb.spread_px)[lines]
+    rows_l, rows_r, x0_l, x0_r = [], [], [], []
+    for side, rows, x0 in ((1, rows_l, x0_l), (-1, rows_r, x0_r)):
+        name = "left" if side > 0 else "right"
+        narrow, wide = getattr(edges, f"{name}_px"), getattr(edges, f"{name}_wide_px")
+        ok = getattr(edges, f"{name}_ok") | (getattr(edges, f"{name}_wide_ok") if wide is not None else False)
+        start = narrow if wide is None else np.where(spread <= 0.3, narrow, wide)
+        model = (limb.left_px if side > 0 else limb.right_px)[lines]
+        use = ok & np.isfinite(start) & np.isfinite(model) & (spread <= max_spread_px)
+        rows.append(np.flatnonzero(use))
+        x0.append(start[use])
+    r_l, r_r = rows_l[0], rows_r[0]
+    rows = np.concatenate([r_l, r_r])
+    if rows.size == 0:
+        return edges
+    sides = np.concatenate([np.ones(r_l.size), -np.ones(r_r.size)])
+    x0 = np.concatenate([x0_l[0], x0_r[0]])
+    img_lines = lines[rows]
+    model_edge = np.where(sides > 0, np.asarray(limb.left_px)[img_lines], np.asarray(limb.right_px)[img_lines])
+    c0 = edges.profile_col0
+    n_cols = edges.profile.shape[1]
+    h = max(int(half_window_px), 1)
+    cols = np.rint(x0).astype(int)[:, None] + np.arange(-h, h + 1)[None, :]
+    inside = (cols >= c0) & (cols < c0 + n_cols)
+    ci = np.clip(cols - c0, 0, n_cols - 1)
+    p = edges.profile[rows[:, None], ci]
+    sig = edges.profile_sigma[rows[:, None], ci]
+    good = inside & np.isfinite(p) & np.isfinite(sig) & (sig > 0)
+    # one weight per window: the profile's sigmas grow with the measured
+    # value (shot noise), and weights that follow each pixel's own noise
+    # draw bias the fit (noisy pixels that read high weigh less)
+    n_good = good.sum(axis=1)
+    var = np.where(good, sig, 0.0) ** 2
+    w_row = np.where(n_good > 0, n_good / np.where(n_good > 0, var.sum(axis=1), 1.0), 0.0)
+    w = np.where(good, w_row[:, None], 0.0)
+    p = np.where(good, p, 0.0)
+    # pixel centres' offsets from the model's edge, positive inwards
+    off_model = sides[:, None] * (cols - model_edge[:, None])
+    shift = x0 - model_edge
+    info = np.zeros(rows.size)
+    dstep = np.array([-step_px, 0.0, step_px])
+    for _ in range(max(int(rounds), 1)):
+        off = off_model - sides[:, None] * shift[:, None]
+        # the surface brightness barely changes over the shifts of one step
+        bright = np.nan_to_num(limb.surface(img_lines, sides, off))
+        v = [bright * np.nan_to_num(limb.pixel_coverage(img_lines, sides, off - sides[:, None] * ds)) for ds in dstep]
+        g = (v[2] - v[0]) / (2.0 * step_px)
+        info = (w * g * g).sum(axis=1)
+        has = info > 0
+        move = np.where(has, (w * g * (p - v[1])).sum(axis=1) / np.where(has, info, 1.0), 0.0)
+        shift = shift + np.clip(move, -0.5, 0.5)
+    x = model_edge + shift
+    s = np.where(info > 0, 1.0 / np.sqrt(np.where(info > 0, info, 1.0)), np.nan)
+    done = np.isfinite(x) & np.isfinite(s) & (np.abs(x - x0) < 1.0)
+    out: dict[str, Any] = {"edges_method": "matched"}
+    for side, r_side, name in ((1.0, r_l, "left"), (-1.0, r_r, "right")):
+        sel = (sides == side) & done
+        tgt = rows[sel]
+        for field_name, val in ((f"{name}_px", x[sel]), (f"{name}_sigma_px", s[sel])):
+            a = np.array(getattr(edges, field_name), dtype=float, copy=True)
+            a[tgt] = val
+            out[field_name] = a
+        if edges.left_wide_px is not None:
+            for field_name, val in ((f"{name}_wide_px", x[sel]), (f"{name}_wide_sigma_px", s[sel])):
+                a = np.array(getattr(edges, field_name), dtype=float, copy=True)
+                a[tgt] = val
+                out[field_name] = a
+    return replace(edges, **out)
 
 
 def _edge_pass(

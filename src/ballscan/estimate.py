@@ -26,7 +26,7 @@ import numpy as np
 
 from .camera import LineScanCamera, line_times
 from .detection import BallRegion, Detection, background_at, detect, median, region_background
-from .edges import measure_edges, with_limb
+from .edges import matched_edges, measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
 from .images import LineImage
@@ -110,6 +110,11 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
 
 
 _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
+# the fit of matched edges (uniform balls): their sigma is the pixel noise's,
+# and the model's own error on them is below 0.003 px (noise-free renders:
+# RMS 0.0007 px, at most 0.0025 px), not the 0.015 px that the window edges'
+# texture and level runs call for
+_MATCHED_FIT = FitSettings(edge_floor_px=0.003)
 
 
 def estimate_region(
@@ -123,6 +128,7 @@ def estimate_region(
     background_dn: np.ndarray | None = None,
     shading: bool = True,
     pixels: bool = False,
+    matched: bool = True,
 ) -> BallEstimate:
     """Estimate one detected ball's motion (see the module docstring).
 
@@ -140,7 +146,12 @@ def estimate_region(
     Where it is not used the result is that of the same call without
     ``pixels``, and ``extra["pixels"]`` says why: "off", "used",
     "not_uniform", "lateral_motion", "no_start", "no_shading_model",
-    "not_converged".
+    "not_converged".  ``matched`` (with the shading pass, on the same
+    condition as the pixel fit) measures the edges of the lines the fit
+    uses as edges by fitting the shading model's profile to their windows
+    (:func:`ballscan.edges.matched_edges`: the edge pixel's own noise, not
+    the window's and its level run's); ``extra["edges"]`` says which
+    ("window" or "matched").
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -239,22 +250,30 @@ def estimate_region(
             if limb is not None:
                 # the first pass's profile, windows and noise model are reused
                 edges2 = with_limb(edges, limb)
+                # a ball the shading law describes to its pixels: the model's
+                # profile, fitted to each edge window, places the edge
+                refusal = _pixel_fit_refusal(limb, edges2, start, camera)
+                edges_fit, fit_settings = edges2, FitSettings()
+                if matched and shading and refusal is None:
+                    edges_fit, fit_settings = matched_edges(edges2, limb), _MATCHED_FIT
                 t_shading = time.perf_counter() - t_s
                 fit2 = None
                 if pixels:
-                    pixels_state = _pixel_fit_refusal(limb, edges2, start, camera) or "used"
+                    pixels_state = refusal or "used"
                     if pixels_state == "used":
                         # the surface brightness the pixel model multiplies the coverage by
                         shaded = replace(edges2, profile_shade=shade_profile(limb, edges2))
                         fit2 = fit_motion(camera, shaded, start, FitSettings(pixels=True))
                         if not fit2.converged:
                             pixels_state, fit2 = "not_converged", None
+                        else:
+                            edges_fit = edges2
                 if fit2 is None and shading:
-                    fit2 = fit_motion(camera, edges2, start)
+                    fit2 = fit_motion(camera, edges_fit, start, fit_settings)
                 if fit2 is not None:
                     shading_pass = "not_converged"
                     if fit2.converged:
-                        edges, fit, shading_model, shading_pass = edges2, fit2, limb.shading, "used"
+                        edges, fit, shading_model, shading_pass = edges_fit, fit2, limb.shading, "used"
         if not shading and fit is None:
             # the shading model was fitted only for the pixel fit, which did not run
             shading_pass, t_shading = "off", 0.0
@@ -311,6 +330,7 @@ def estimate_region(
             "time_shading_s": t_shading,
             "shading_pass": shading_pass,
             "pixels": pixels_state,
+            "edges": edges.edges_method,
             "shading": None
             if shading_model is None
             else {
@@ -392,6 +412,7 @@ def estimate_image(
     timestamps_s: np.ndarray | None = None,
     shading: bool = True,
     pixels: bool = False,
+    matched: bool = True,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -409,6 +430,8 @@ def estimate_image(
         The fit's shading-aware second pass (see the module docstring).
     pixels : bool
         Fit the pixels of the balls' ends (see :func:`estimate_region`).
+    matched : bool
+        Matched edges on uniform balls (see :func:`estimate_region`).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -426,6 +449,9 @@ def estimate_image(
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None
-    balls = [estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels) for r in det.regions]
+    balls = [
+        estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched)
+        for r in det.regions
+    ]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls))
