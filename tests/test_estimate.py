@@ -153,3 +153,27 @@ def test_timestamps_slower_than_the_nominal_line_rate():
     r = render(cam_slow, (m, Appearance.flat(0.8)), 150, noise=SensorNoise(), seed=2, t_lines_s=ts)
     (ball,) = estimate_image(_img(r.image), CAM, 0.0335, timestamps_s=ts).balls
     assert abs(ball.speed_mps - 15.0) / 15.0 < 0.01
+
+
+@pytest.mark.slow
+def test_matched_edges_on_uniform_balls_only():
+    # A flat ball gets the matched edges (the shading law describes its
+    # pixels), a tennis ball its window edges; matched=False keeps the windows.
+    cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.0)
+    seen = {}
+    for tex in ("none", "tennis"):
+        app = Appearance(ball_level=0.8, texture=tex, seam_level=0.4, orientation_seed=3) if tex == "tennis" else Appearance.flat(0.8)
+        r = render(cam, (m, app), 200, background_level=0.1, noise=noise, seed=4)
+        img = LineImage(r.image.astype(float), float(noise.max_dn), 16, tex)
+        for matched in (True, False):
+            b = estimate_image(img, cam, 0.0335, matched=matched).balls[0]
+            seen[tex, matched] = b
+            assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
+    assert seen["none", True].extra["edges"] == "matched"
+    assert seen["none", False].extra["edges"] == "window"
+    assert seen["tennis", True].extra["edges"] == "window"
+    # matched edges: smaller sigmas on the edge-determined parameters (y0, z0, vy, vz)
+    ratio = np.asarray(seen["none", True].velocity_sigma_mps) / np.asarray(seen["none", False].velocity_sigma_mps)
+    assert np.all(ratio[1:] < 0.8), ratio
