@@ -690,9 +690,11 @@ def matched_edges(
     fitted by the model's normalised values, the shading law's surface
     brightness times each whole pixel's coverage by the averaged silhouette
     (:meth:`ballscan.shading.LimbProfile.pixel_coverage`), shifted along the
-    line: ``rounds`` Gauss-Newton steps in the shift, pixels weighted by
-    their noise, so a pixel counts by how much its coverage changes with the
-    edge (matched filter).  On the benchmark ball the errors become 0.0084
+    line: ``rounds`` Gauss-Newton steps in the shift, so a pixel counts by
+    how much its coverage changes with the edge (matched filter); one
+    weight per window, the mean of its pixels' noise (weights that follow
+    each pixel's noise estimate, which grows with the measured value, would
+    correlate with the noise itself).  On the benchmark ball the errors become 0.0084
     px (narrow) and 0.0101 px (wide), unbiased to 5e-5 px on noise-free
     renders.
 
@@ -725,9 +727,9 @@ def matched_edges(
     Returns
     -------
     EdgeMeasurements
-        ``left_px``, ``right_px`` (and the wide-window fields, the same
-        values) and their sigmas replaced where an edge is usable and the
-        fit converged; ``edges_method`` "matched".
+        ``left_px``, ``right_px`` and their sigmas replaced on the lines
+        measured (the wide-window fields are kept); ``edges_method``
+        "matched".
     """
     if edges.profile is None or edges.profile_sigma is None:
         raise ValueError("edges: no profile to fit (made by measure_edges?)")
@@ -760,9 +762,7 @@ def matched_edges(
     p = edges.profile[rows[:, None], ci]
     sig = edges.profile_sigma[rows[:, None], ci]
     good = inside & np.isfinite(p) & np.isfinite(sig) & (sig > 0)
-    # one weight per window: the profile's sigmas grow with the measured
-    # value (shot noise), and weights that follow each pixel's own noise
-    # draw bias the fit (noisy pixels that read high weigh less)
+    # one weight per window (see the docstring)
     n_good = good.sum(axis=1)
     var = np.where(good, sig, 0.0) ** 2
     w_row = np.where(n_good > 0, n_good / np.where(n_good > 0, var.sum(axis=1), 1.0), 0.0)
@@ -787,18 +787,12 @@ def matched_edges(
     s = np.where(info > 0, 1.0 / np.sqrt(np.where(info > 0, info, 1.0)), np.nan)
     done = np.isfinite(x) & np.isfinite(s) & (np.abs(x - x0) < 1.0)
     out: dict[str, Any] = {"edges_method": "matched"}
-    for side, r_side, name in ((1.0, r_l, "left"), (-1.0, r_r, "right")):
+    for side, name in ((1.0, "left"), (-1.0, "right")):
         sel = (sides == side) & done
-        tgt = rows[sel]
         for field_name, val in ((f"{name}_px", x[sel]), (f"{name}_sigma_px", s[sel])):
             a = np.array(getattr(edges, field_name), dtype=float, copy=True)
-            a[tgt] = val
+            a[rows[sel]] = val
             out[field_name] = a
-        if edges.left_wide_px is not None:
-            for field_name, val in ((f"{name}_wide_px", x[sel]), (f"{name}_wide_sigma_px", s[sel])):
-                a = np.array(getattr(edges, field_name), dtype=float, copy=True)
-                a[tgt] = val
-                out[field_name] = a
     return replace(edges, **out)
 
 
