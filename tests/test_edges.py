@@ -152,7 +152,7 @@ def test_fill_nearest_takes_the_closest_finite_value_of_the_row():
 
 # ------------------------------------------------------------ matched edges
 def _flat_ball_edges(noise_dn: float, seed: int):
-    """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, and the truth model."""
+    """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, the truth model, its narrow lines and the limb model."""
     from ballscan.camera import LineScanCamera, line_times
     from ballscan.detection import detect
     from ballscan.edges import matched_edges, with_limb
@@ -178,7 +178,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     matched = matched_edges(window, limb)
     me = averaged_model(cam, m.to_params()[None], m.radius_m, window.t_s, m.acceleration_mps2, 8)
     narrow = (me.presence[0] > 0.999) & (me.spread_px[0] <= 0.3)
-    return window, matched, me, narrow
+    return window, matched, me, narrow, limb
 
 
 def _edge_errors(e, me, narrow):
@@ -193,7 +193,7 @@ def _edge_errors(e, me, narrow):
 @pytest.mark.slow
 def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
     # noise-free, finely sampled render: measured mean 4e-5 px, RMS 0.0007 px, at most 0.0025 px
-    window, matched, me, narrow = _flat_ball_edges(1e-6, 0)
+    window, matched, me, narrow, _ = _flat_ball_edges(1e-6, 0)
     assert matched.edges_method == "matched" and window.edges_method == "window"
     err, _ = _edge_errors(matched, me, narrow)
     assert err.size >= 150 and abs(err.mean()) < 3e-4 and np.abs(err).max() < 0.005
@@ -201,7 +201,7 @@ def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
     # three draws: window edges 0.0130 px RMS, matched 0.0084 px (reported 0.0075)
     ew, em, sm = [], [], []
     for seed in (1, 2, 3):
-        window, matched, me, narrow = _flat_ball_edges(5.0, seed)
+        window, matched, me, narrow, _ = _flat_ball_edges(5.0, seed)
         ew.append(_edge_errors(window, me, narrow)[0])
         e, s = _edge_errors(matched, me, narrow)
         em.append(e)
@@ -212,3 +212,21 @@ def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
     # the lines with spread edges keep their window values
     wide = (me.presence[0] > 0.999) & (me.spread_px[0] > 0.3)
     assert np.array_equal(matched.left_wide_px[wide], window.left_wide_px[wide], equal_nan=True)
+
+
+@pytest.mark.slow
+def test_matched_edges_leave_unusable_edges_alone():
+    from dataclasses import replace
+
+    from ballscan.edges import matched_edges
+
+    window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
+    rows = np.flatnonzero(window.left_ok & narrow)[:5]
+    off = window.left_ok.copy()
+    off[rows] = False
+    m2 = matched_edges(replace(window, left_ok=off), limb)
+    assert np.array_equal(m2.left_px[rows], window.left_px[rows]) and not m2.left_matched[rows].any()
+    assert m2.left_matched.sum() == matched.left_matched.sum() - rows.size
+    # every matched edge of the rest is where matched_edges put it on the full set
+    keep = m2.left_matched
+    assert np.allclose(m2.left_px[keep], matched.left_px[keep])

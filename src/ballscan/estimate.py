@@ -29,6 +29,7 @@ from .detection import BallRegion, Detection, background_at, detect, median, reg
 from .edges import matched_edges, measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
+from .flatfield import column_gains
 from .images import LineImage
 from .initial import InitialGuess, find_keypoints, initial_guess
 from .motion import BallMotion
@@ -110,11 +111,10 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
 
 
 _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
-# the fit of matched edges (uniform balls): their sigma is the pixel noise's,
-# and the model's own error on them is below 0.003 px (noise-free renders:
-# RMS 0.0007 px, at most 0.0025 px), not the 0.015 px that the window edges'
-# texture and level runs call for
-_MATCHED_FIT = FitSettings(edge_floor_px=0.003)
+# matched edges only where the ball's interior shows no more column-gain
+# scatter than this (relative; flatfield.column_gains): a sensor with 0.8 %
+# PRNU reads 0.006-0.0085, one without it 0-0.0009
+_MATCHED_MAX_GAIN_SIGMA = 0.003
 
 
 def estimate_region(
@@ -147,11 +147,14 @@ def estimate_region(
     ``pixels``, and ``extra["pixels"]`` says why: "off", "used",
     "not_uniform", "lateral_motion", "no_start", "no_shading_model",
     "not_converged".  ``matched`` (with the shading pass, on the same
-    condition as the pixel fit) measures the edges of the lines the fit
-    uses as edges by fitting the shading model's profile to their windows
-    (:func:`ballscan.edges.matched_edges`: the edge pixel's own noise, not
-    the window's and its level run's); ``extra["edges"]`` says which
-    ("window" or "matched").
+    condition as the pixel fit, and where the ball's interior shows no
+    column-gain scatter, :func:`ballscan.flatfield.column_gains`, i.e. a
+    flat-fielded sensor) measures the narrow edges by fitting the shading
+    model's profile to their windows (:func:`ballscan.edges.matched_edges`:
+    the edge pixel's own noise, not the window's and its level run's);
+    ``extra["edges"]`` says which ("window" or "matched") and
+    ``extra["column_gain_sigma"]`` the scatter measured (None where the
+    condition failed before it was measured).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -227,6 +230,8 @@ def estimate_region(
     shading_pass = "off"
     # and of the pixel fit: "off", "used", or why not
     pixels_state = "off" if not pixels else "no_start"
+    # the columns' gain scatter, where the matched edges' condition measured it
+    gain_sigma = None
     fit = None
     if shading or pixels:
         # The shading model needs the motion only roughly (its normals and edge
@@ -253,9 +258,13 @@ def estimate_region(
                 # a ball the shading law describes to its pixels: the model's
                 # profile, fitted to each edge window, places the edge
                 refusal = _pixel_fit_refusal(limb, edges2, start, camera)
-                edges_fit, fit_settings = edges2, FitSettings()
+                edges_fit = edges2
                 if matched and shading and refusal is None:
-                    edges_fit, fit_settings = matched_edges(edges2, limb), _MATCHED_FIT
+                    # and a flat-fielded sensor (the model's level in every column)
+                    gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
+                    gain_sigma = gains.prnu_sigma
+                    if gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
+                        edges_fit = matched_edges(edges2, limb)
                 t_shading = time.perf_counter() - t_s
                 fit2 = None
                 if pixels:
@@ -269,7 +278,7 @@ def estimate_region(
                         else:
                             edges_fit = edges2
                 if fit2 is None and shading:
-                    fit2 = fit_motion(camera, edges_fit, start, fit_settings)
+                    fit2 = fit_motion(camera, edges_fit, start)
                 if fit2 is not None:
                     shading_pass = "not_converged"
                     if fit2.converged:
@@ -331,6 +340,7 @@ def estimate_region(
             "shading_pass": shading_pass,
             "pixels": pixels_state,
             "edges": edges.edges_method,
+            "column_gain_sigma": gain_sigma,
             "shading": None
             if shading_model is None
             else {

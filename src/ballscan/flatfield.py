@@ -1,0 +1,151 @@
+"""Column gains (fixed-pattern PRNU) measured on the ball's own interior.
+
+A line-scan sensor's pixels differ in gain by about a percent
+(photo-response non-uniformity, PRNU) unless the camera corrects them
+(flat-field).  The detector's per-column background absorbs each column's
+gain on the background, but not on the ball: there column ``j`` reads
+``bg_j + g_j s`` for a ball signal ``s``, an error that repeats on every
+line whose edge sits in that column.  The window edges
+(:func:`ballscan.edges.measure_edges`) take the ball's level from the line
+itself and are hurt less than the matched edges
+(:func:`ballscan.edges.matched_edges`), which take it from the shading model:
+on a sensor with 0.8 % PRNU those left the position sigmas about 2x too
+small.  :func:`column_gains` measures how much the columns' gains scatter, so
+that the estimator uses the matched edges only on a flat-fielded sensor.
+
+Each pixel well inside the ball is divided by its line's median, each
+column's gain is the median over its lines, what varies smoothly across the
+columns (shading, a texture's large-scale pattern) is removed by a running
+median, and the scatter that remains beyond the measurement noise is the
+gains' (robust method of moments).  Measured on 8-bit renders of the Fig. 5
+ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
+0-0.0009, PRNU 0.002 gives 0-0.0025, PRNU 0.008 gives 0.0060-0.0085.
+Dividing the measured gains out of the image was tried and did not help
+(docs/experiments.md): the columns a ball's edges dwell on longest are its
+outermost, which are never deep inside it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.ndimage import binary_erosion, median_filter
+
+__all__ = ["ColumnGains", "column_gains"]
+
+# a column's gain needs at least this many interior lines (a median of fewer
+# is too noisy to be worth the shrinkage estimate's help)
+_MIN_LINES = 8
+# interior pixels: at least this many ball pixels of the detector's mask on
+# each side within the line (keeps the partially covered limb and the steep
+# part of a shaded limb out)
+_INSET_PX = 2
+# running median across the columns that removes the smooth part (odd)
+_TREND_COLS = 15
+# 1.4826 MAD = sigma; the variance of a median of n normal values is pi/2 sigma^2/n
+_MAD_SIGMA = 1.4826
+_MEDIAN_VAR = np.pi / 2.0
+
+
+@dataclass(frozen=True)
+class ColumnGains:
+    """Relative gains of a ball's columns, as measured on its interior.
+
+    Attributes
+    ----------
+    col_start : int
+        Sensor pixel of ``gain[0]``.
+    gain : ndarray (n_cols,)
+        Estimated relative gain of each column (1 where not measured),
+        shrunk towards 1 by :attr:`prnu_sigma`.
+    n_lines : ndarray of int (n_cols,)
+        Interior lines that measured each column.
+    prnu_sigma : float
+        Estimated relative spread of the columns' gains about their smooth
+        trend (0 when it does not exceed the measurement noise).
+    n_columns : int
+        Columns with a measurement.
+    """
+
+    col_start: int
+    gain: np.ndarray
+    n_lines: np.ndarray
+    prnu_sigma: float
+    n_columns: int
+
+
+def column_gains(
+    data: np.ndarray,
+    background: np.ndarray,
+    mask: np.ndarray,
+    line_start: int,
+    col_start: int,
+    polarity: int,
+    saturation_dn: float | None = None,
+) -> ColumnGains:
+    """Measure the columns' gains on a ball's interior.
+
+    Parameters
+    ----------
+    data, background : ndarray (n_lines, width)
+        The image and the detector's background at every pixel, DN.
+    mask : ndarray of bool (box_lines, box_cols)
+        The detector's ball pixels of the region's box
+        (:attr:`ballscan.detection.BallRegion.mask`).
+    line_start, col_start : int
+        Image line and sensor pixel of ``mask[0, 0]``.
+    polarity : int
+        +1 for a ball brighter than the background, -1 for a darker one.
+    saturation_dn : float, optional
+        Pixels at or above it are not used.
+
+    Returns
+    -------
+    ColumnGains
+        For the box's columns.
+    """
+    n_l, n_c = mask.shape
+    ls = slice(line_start, line_start + n_l)
+    cs = slice(col_start, col_start + n_c)
+    raw = data[ls, cs]
+    s = polarity * (raw - background[ls, cs])
+    inner = binary_erosion(mask, structure=np.ones((1, 2 * _INSET_PX + 1), dtype=bool), border_value=0)
+    if saturation_dn is not None:
+        inner &= raw < saturation_dn
+    none = ColumnGains(col_start, np.ones(n_c), np.zeros(n_c, dtype=int), 0.0, 0)
+    # a line's level from its own interior: the ball's brightness changes from
+    # line to line (shading, texture, a partial exposure), the gains do not
+    n_inner = inner.sum(axis=1)
+    rows = n_inner >= 2 * _INSET_PX + 1
+    if rows.sum() < _MIN_LINES:
+        return none
+    inner = inner[rows]
+    s = s[rows]
+    level = np.nanmedian(np.where(inner, s, np.nan), axis=1)
+    ok_level = level > 0
+    inner &= ok_level[:, None]
+    r = np.where(inner, s / np.where(ok_level, level, 1.0)[:, None], np.nan)
+    n = inner.sum(axis=0)
+    cols = np.flatnonzero(n >= _MIN_LINES)
+    if cols.size < _TREND_COLS:
+        return none
+    r = r[:, cols]
+    med = np.nanmedian(r, axis=0)
+    spread = _MAD_SIGMA * np.nanmedian(np.abs(r - med), axis=0)
+    var = _MEDIAN_VAR * spread**2 / n[cols]
+    # the smooth part across the columns is the ball's, not the sensor's
+    trend = median_filter(med, size=_TREND_COLS, mode="nearest")
+    d = med / trend - 1.0
+    # method of moments, robustly (a column at the ball's end or one with a
+    # seam may be far off): what the columns' scatter exceeds their noise by
+    ok = np.isfinite(d) & np.isfinite(var) & (trend > 0)
+    if ok.sum() < _TREND_COLS:
+        return none
+    d_ok = d[ok]
+    scatter = _MAD_SIGMA * float(np.median(np.abs(d_ok - np.median(d_ok))))
+    tau2 = max(scatter**2 - float(np.median(var[ok])), 0.0)
+    gain = np.ones(n_c)
+    if tau2 > 0:
+        gain[cols[ok]] = 1.0 + d_ok * (tau2 / (tau2 + var[ok]))
+    return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(cols.size))
