@@ -135,6 +135,8 @@ def test_precision_prints_bounds(capsys):
     assert "PRNU 0.02" in o1 and s1["z0"] > s0["z0"] and all(s1[k] >= s0[k] for k in s0)
     code, _, err = run(capsys, *args, *px, "--prnu", "1.5")
     assert code != 0 and "--prnu" in err
+    code, _, err = run(capsys, *args, "--edge-noise", "0.05", "--prnu", "0.01")
+    assert code != 0 and "--prnu" in err and "--pixel-noise" in err
 
 
 def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):
@@ -191,3 +193,19 @@ def test_estimate_pixels_switch(tmp_path, capsys):
     code, out, err = run(capsys, "estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", "0.02", "--json", "--pixels")
     assert code == 0, err
     assert json.loads(out)["balls"][0]["pixels"] == "not_uniform"
+
+
+def test_estimate_matched_switch(tmp_path, capsys):
+    """Matched edges by default on a flat ball of an ideal sensor; --no-matched keeps the windows."""
+    cam = DATA / "scenes" / "pub_tennis_serve.camera.toml"
+    code, _, err = run(capsys, "simulate", "--camera", cam, "--radius", "0.0335", "--position", "0,0.01,3.0", "--velocity", "30,0,2",
+                       "--t-c", "0.0015", "--lines", "220", "--out", tmp_path / "s", "--noise", "none", "--flat")
+    assert code == 0, err
+    args = ("estimate", tmp_path / "s.png", "--camera", cam, "--radius", "0.0335", "--json")
+    code, on, err = run(capsys, *args)
+    assert code == 0, err
+    code, off, err = run(capsys, *args, "--no-matched")
+    assert code == 0, err
+    on, off = json.loads(on)["balls"][0], json.loads(off)["balls"][0]
+    assert on["edges"] == "matched" and off["edges"] == "window"
+    assert on["column_gain_sigma"] < 0.003

@@ -114,6 +114,9 @@ def estimate(
     pixels: bool = typer.Option(
         False, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
     ),
+    matched: bool = typer.Option(
+        True, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."
+    ),
 ) -> None:
     """Measure every ball in a line-scan image."""
     from .camera import line_times, load_camera
@@ -126,7 +129,7 @@ def estimate(
     cam = load_camera(camera)
     img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
     ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
-    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels)
+    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels, matched=matched)
     if as_json:
         typer.echo(report.to_json(cam))
     else:
@@ -170,6 +173,8 @@ def precision(
     motion = BallMotion(radius, t_c, pos, vel)
     if edge_noise is None and pixel_noise is None:
         raise ValueError("precision: give --edge-noise PX, or --pixel-noise DN with --contrast DN")
+    if prnu and pixel_noise is None:
+        raise ValueError("precision: --prnu is a property of the pixels: give it with --pixel-noise DN and --contrast DN")
     if edge_noise is not None:
         if not edge_noise > 0:
             raise typer.BadParameter(f"must be positive, got {edge_noise}", param_hint="--edge-noise")
