@@ -13,10 +13,11 @@ Targets and what is met (see the module's tests for the tolerances used):
   target <= 0.3 %, achieved 0.11 % (worst 0.72 %), with the shading-aware
   second pass.
 * 1-sigma coverage of the speed over noisy renders of an untextured ball
-  crossing at 30 degrees: 60-76 % (measured 70.5 % since the end lines'
-  areas are levelled by the shading model; 75.5 % before; the sensor has
-  0.8 % PRNU, so the matched edges of session 6 are not used: with them,
-  before they were restricted to flat-fielded sensors, 69.5 %).
+  crossing at 30 degrees: 60-76 % (measured 73.0 % in sessions 5 and 6,
+  70.5 % when the end lines' areas were first levelled by the shading
+  model, 75.5 % before; the sensor has 0.8 % PRNU, so the matched edges of
+  session 6 are not used: with them, before they were restricted to
+  flat-fielded sensors, 69.5 %).
 * the fit of the ends' pixels (``pixels=True``) on a flat ball rendered with
   a finely sampled exposure: noise-free perpendicular 0.0003 %; with
   Gaussian pixel noise its speed RMSE near the pixel Cramér–Rao bound.
