@@ -136,7 +136,8 @@ def column_gains(
     var = _MEDIAN_VAR * spread**2 / n[cols]
     # the smooth part across the columns is the ball's, not the sensor's
     trend = median_filter(med, size=_TREND_COLS, mode="nearest")
-    d = med / trend - 1.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        d = med / trend - 1.0
     # method of moments, robustly (a column at the ball's end or one with a
     # seam may be far off): what the columns' scatter exceeds their noise by
     ok = np.isfinite(d) & np.isfinite(var) & (trend > 0)
