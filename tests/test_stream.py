@@ -625,3 +625,17 @@ def test_stream_shading_switch_reaches_the_estimator():
         ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", shading)
         assert ref[0].velocity_mps == r.estimate.velocity_mps
         assert (r.estimate.extra["shading"] is not None) == shading
+
+
+def test_estimate_crop_passes_the_matched_switch():
+    # a flat ball on an ideal 8-bit sensor: the crop estimator uses the
+    # matched edges unless StreamConfig.matched / watch --no-matched turn them off
+    cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
+    r = render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=ideal, seed=1)
+    t = np.arange(200) / cam.line_rate_hz
+    on = estimate_crop(r.image, t, cam, 0.0335, "fit", 255.0, 8, "crop")
+    off = estimate_crop(r.image, t, cam, 0.0335, "fit", 255.0, 8, "crop", True, False)
+    assert on[0].extra["edges"] == "matched" and off[0].extra["edges"] == "window"
+    assert StreamConfig().matched and not StreamConfig(matched=False).matched

@@ -160,6 +160,9 @@ class StreamConfig:
         The fit's shading-aware second pass (see :mod:`ballscan.estimate`):
         about half of a ball's estimation time; off trades V.z accuracy for
         latency.
+    matched : bool
+        Matched edges on uniform balls of a flat-fielded sensor (``matched``
+        of :func:`ballscan.estimate.estimate_region`).
     saturation_dn : float or None
         Clipping level (DN); default the dtype's maximum.
     keep_crops : bool
@@ -191,6 +194,7 @@ class StreamConfig:
     noise_floor_dn: float = 0.5
     method: str = "fit"
     shading: bool = True
+    matched: bool = True
     saturation_dn: float | None = None
     keep_crops: bool = False
     line_offset: bool = True
@@ -810,7 +814,7 @@ class StreamEngine:
             # estimate_image sets the exposure to the median line period when
             # timestamps are given; without a timestamps file the exact period is known.
             camera = replace(camera, exposure_s=1.0 / camera.line_rate_hz)
-        args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading)
+        args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched)
         handoff = time.perf_counter() - self._chunk_arrival
         job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit)
         self._n_events += 1
@@ -883,6 +887,7 @@ def estimate_crop(
     bits: int,
     name: str,
     shading: bool = True,
+    matched: bool = True,
 ) -> tuple[BallEstimate, ...]:
     """Estimate the balls of one event crop (a top-level function: runs in worker processes too).
 
@@ -901,6 +906,8 @@ def estimate_crop(
     name : str
     shading : bool
         The fit's shading-aware second pass.
+    matched : bool
+        Matched edges where the ball and the sensor allow them.
 
     Returns
     -------
@@ -914,7 +921,7 @@ def estimate_crop(
 
     image = LineImage(crop.astype(np.float64), saturation_dn, bits, name)
     try:
-        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading).balls
+        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched).balls
     except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
         return (BallEstimate.undetermined_estimate(method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 
