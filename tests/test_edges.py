@@ -230,3 +230,43 @@ def test_matched_edges_leave_unusable_edges_alone():
     # every matched edge of the rest is where matched_edges put it on the full set
     keep = m2.left_matched
     assert np.allclose(m2.left_px[keep], matched.left_px[keep])
+
+
+
+@pytest.mark.slow
+def test_matched_edges_keep_the_window_value_where_they_do_not_converge():
+    from dataclasses import replace
+
+    from ballscan.edges import matched_edges
+
+    window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
+    rows = np.flatnonzero(window.left_ok & narrow)[:6]
+    # start 0.7 px off: the fit walks back further than the 0.5 px it may move
+    far = window.left_px.copy()
+    far[rows] += 0.7
+    m2 = matched_edges(replace(window, left_px=far), limb)
+    assert not m2.left_matched[rows].any() and np.array_equal(m2.left_px[rows], far[rows])
+    others = m2.left_matched & ~np.isin(np.arange(m2.lines.size), rows)
+    assert others.sum() == matched.left_matched.sum() - rows.size
+
+
+def test_matched_edges_get_their_own_floor_in_the_fit():
+    from dataclasses import replace
+
+    from ballscan.camera import LineScanCamera
+    from ballscan.fit import FitSettings, _weight_tables, synthetic_edges
+    from ballscan.motion import BallMotion
+
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 0.0))
+    e = synthetic_edges(cam, m, 200, edge_sigma_px=0.01, seed=0)
+    flag = np.zeros(e.lines.size, dtype=bool)
+    flag[::2] = True
+    st = FitSettings()
+    T = _weight_tables(replace(e, left_matched=flag, right_matched=~flag), st)
+    s = np.nan_to_num(e.left_sigma_px)
+    assert np.allclose(T["sl_n"][flag], np.sqrt(s[flag] ** 2 + st.matched_floor_px**2))
+    assert np.allclose(T["sl_n"][~flag], np.sqrt(s[~flag] ** 2 + st.edge_floor_px**2))
+    assert np.allclose(T["sr_n"][~flag], np.sqrt(np.nan_to_num(e.right_sigma_px)[~flag] ** 2 + st.matched_floor_px**2))
+    # without flags every edge has the window floor
+    assert np.allclose(_weight_tables(e, st)["sl_n"], np.sqrt(s**2 + st.edge_floor_px**2))

@@ -181,3 +181,14 @@ def test_matched_edges_on_uniform_balls_and_flat_fielded_sensors_only():
     assert seen[0.0, "tennis", True].extra["edges"] == "window"
     # the matched edges move the estimate (their accuracy: tests/test_edges.py)
     assert flat.velocity_mps != seen[0.0, "none", False].velocity_mps
+
+
+def test_a_ball_too_small_to_measure_its_columns_keeps_the_windows():
+    # 17 px across at 12 m: too few interior columns to measure the gains'
+    # scatter (NaN), which is not taken for a flat-fielded sensor
+    cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.001, 12.0), (30.0, 0.0, 0.0))
+    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008)
+    r = render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=noise, seed=2)
+    b = estimate_image(LineImage(r.image.astype(float), float(noise.max_dn), 16, "small"), cam, 0.0335).balls[0]
+    assert b.extra["edges"] == "window" and b.extra["column_gain_sigma"] is not None and np.isnan(b.extra["column_gain_sigma"])

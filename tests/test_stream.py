@@ -627,15 +627,18 @@ def test_stream_shading_switch_reaches_the_estimator():
         assert (r.estimate.extra["shading"] is not None) == shading
 
 
-def test_estimate_crop_passes_the_matched_switch():
-    # a flat ball on an ideal 8-bit sensor: the crop estimator uses the
-    # matched edges unless StreamConfig.matched / watch --no-matched turn them off
+def test_stream_matched_switch_reaches_the_estimator():
+    # a flat ball on an ideal 8-bit sensor: the engine's estimates use the
+    # matched edges unless StreamConfig.matched (watch --no-matched) is off
     cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
-    m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    m = BallMotion(0.0335, 300 / cam.line_rate_hz, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
-    r = render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=ideal, seed=1)
-    t = np.arange(200) / cam.line_rate_hz
-    on = estimate_crop(r.image, t, cam, 0.0335, "fit", 255.0, 8, "crop")
-    off = estimate_crop(r.image, t, cam, 0.0335, "fit", 255.0, 8, "crop", True, False)
-    assert on[0].extra["edges"] == "matched" and off[0].extra["edges"] == "window"
-    assert StreamConfig().matched and not StreamConfig(matched=False).matched
+    data = render(cam, (m, Appearance.flat(0.8)), 600, background_level=0.1, noise=ideal, seed=1).image
+    seen = {}
+    for matched in (True, False):
+        eng = StreamEngine(cam, 0.0335, StreamConfig(matched=matched))
+        res = eng.push(data) + eng.finish()
+        assert len(res) == 1
+        seen[matched] = res[0].estimate
+    assert seen[True].extra["edges"] == "matched" and seen[False].extra["edges"] == "window"
+    assert seen[True].velocity_mps != seen[False].velocity_mps

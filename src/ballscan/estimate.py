@@ -19,6 +19,7 @@ an :class:`~ballscan.results.EstimateReport` with one
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, replace
 
@@ -112,9 +113,10 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
 
 _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 # matched edges only where the ball's interior shows no more column-gain
-# scatter than this (relative; flatfield.column_gains): a sensor with 0.8 %
-# PRNU reads 0.006-0.0085, one without it 0-0.0009
-_MATCHED_MAX_GAIN_SIGMA = 0.003
+# scatter than this (relative; flatfield.column_gains): 8-bit renders read
+# 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
+# the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
+_MATCHED_MAX_GAIN_SIGMA = 0.0015
 
 
 def estimate_region(
@@ -154,7 +156,8 @@ def estimate_region(
     the edge pixel's own noise, not the window's and its level run's);
     ``extra["edges"]`` says which ("window" or "matched") and
     ``extra["column_gain_sigma"]`` the scatter measured (None where the
-    condition failed before it was measured).
+    condition failed before it was measured, NaN where the ball is too small
+    to measure it: then the windows are kept).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -263,7 +266,8 @@ def estimate_region(
                     # and a flat-fielded sensor (the model's level in every column)
                     gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
                     gain_sigma = gains.prnu_sigma
-                    if gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
+                    # NaN (a ball too small to tell) is not flat-fielded
+                    if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
                         edges_fit = matched_edges(edges2, limb)
                 t_shading = time.perf_counter() - t_s
                 fit2 = None

@@ -27,10 +27,12 @@ outermost, which are never deep inside it.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.ndimage import binary_erosion, median_filter
+from scipy.ndimage import binary_erosion
+from scipy.signal import savgol_filter
 
 __all__ = ["ColumnGains", "column_gains"]
 
@@ -41,7 +43,8 @@ _MIN_LINES = 8
 # each side within the line (keeps the partially covered limb and the steep
 # part of a shaded limb out)
 _INSET_PX = 2
-# running median across the columns that removes the smooth part (odd)
+# local quadratic across the columns that removes the smooth part (odd; a
+# running median flattens a steep smooth gradient and takes the gains with it)
 _TREND_COLS = 15
 # 1.4826 MAD = sigma; the variance of a median of n normal values is pi/2 sigma^2/n
 _MAD_SIGMA = 1.4826
@@ -63,7 +66,8 @@ class ColumnGains:
         Interior lines that measured each column.
     prnu_sigma : float
         Estimated relative spread of the columns' gains about their smooth
-        trend (0 when it does not exceed the measurement noise).
+        trend (0 when it does not exceed the measurement noise; NaN when the
+        ball shows too few interior lines or columns to measure it).
     n_columns : int
         Columns with a measurement.
     """
@@ -73,6 +77,16 @@ class ColumnGains:
     n_lines: np.ndarray
     prnu_sigma: float
     n_columns: int
+
+
+def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
+    """Median of ``values`` where ``mask`` along ``axis`` (NaN where none); np.median's value, by one sort."""
+    v = np.sort(np.where(mask, values, np.inf), axis=axis)
+    n = mask.sum(axis=axis)
+    lo = np.expand_dims(np.maximum((n - 1) // 2, 0), axis)
+    hi = np.expand_dims(np.maximum(n // 2, 0), axis)
+    med = 0.5 * (np.take_along_axis(v, lo, axis) + np.take_along_axis(v, hi, axis))
+    return np.where(n > 0, np.squeeze(med, axis), np.nan)
 
 
 def column_gains(
@@ -103,7 +117,8 @@ def column_gains(
     Returns
     -------
     ColumnGains
-        For the box's columns.
+        For the box's columns; ``prnu_sigma`` NaN when fewer than 8 lines or
+        15 columns can be measured (a small ball: not measured is not flat).
     """
     n_l, n_c = mask.shape
     ls = slice(line_start, line_start + n_l)
@@ -113,40 +128,36 @@ def column_gains(
     inner = binary_erosion(mask, structure=np.ones((1, 2 * _INSET_PX + 1), dtype=bool), border_value=0)
     if saturation_dn is not None:
         inner &= raw < saturation_dn
-    none = ColumnGains(col_start, np.ones(n_c), np.zeros(n_c, dtype=int), 0.0, 0)
+    none = ColumnGains(col_start, np.ones(n_c), np.zeros(n_c, dtype=int), math.nan, 0)
     # a line's level from its own interior: the ball's brightness changes from
     # line to line (shading, texture, a partial exposure), the gains do not
-    n_inner = inner.sum(axis=1)
-    rows = n_inner >= 2 * _INSET_PX + 1
+    rows = inner.sum(axis=1) >= 2 * _INSET_PX + 1
     if rows.sum() < _MIN_LINES:
         return none
     inner = inner[rows]
     s = s[rows]
-    level = np.nanmedian(np.where(inner, s, np.nan), axis=1)
-    ok_level = level > 0
-    inner &= ok_level[:, None]
-    r = np.where(inner, s / np.where(ok_level, level, 1.0)[:, None], np.nan)
+    level = _masked_median(s, inner, axis=1)
+    inner &= (level > 0)[:, None]
+    r = s / np.where(level > 0, level, 1.0)[:, None]
     n = inner.sum(axis=0)
     cols = np.flatnonzero(n >= _MIN_LINES)
     if cols.size < _TREND_COLS:
         return none
-    r = r[:, cols]
-    med = np.nanmedian(r, axis=0)
-    spread = _MAD_SIGMA * np.nanmedian(np.abs(r - med), axis=0)
-    var = _MEDIAN_VAR * spread**2 / n[cols]
+    r, inner_c, n_c_used = r[:, cols], inner[:, cols], n[cols]
+    med = _masked_median(r, inner_c, axis=0)
+    spread = _MAD_SIGMA * _masked_median(np.abs(r - med[None, :]), inner_c, axis=0)
+    var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's
-    trend = median_filter(med, size=_TREND_COLS, mode="nearest")
-    with np.errstate(divide="ignore", invalid="ignore"):
-        d = med / trend - 1.0
-    # method of moments, robustly (a column at the ball's end or one with a
-    # seam may be far off): what the columns' scatter exceeds their noise by
-    ok = np.isfinite(d) & np.isfinite(var) & (trend > 0)
+    trend = savgol_filter(med, _TREND_COLS, 2, mode="interp")
+    ok = trend > 0
     if ok.sum() < _TREND_COLS:
         return none
-    d_ok = d[ok]
-    scatter = _MAD_SIGMA * float(np.median(np.abs(d_ok - np.median(d_ok))))
+    d = med[ok] / trend[ok] - 1.0
+    # method of moments, robustly (a column at the ball's end or one with a
+    # seam may be far off): what the columns' scatter exceeds their noise by
+    scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
     tau2 = max(scatter**2 - float(np.median(var[ok])), 0.0)
     gain = np.ones(n_c)
     if tau2 > 0:
-        gain[cols[ok]] = 1.0 + d_ok * (tau2 / (tau2 + var[ok]))
-    return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(cols.size))
+        gain[cols[ok]] = 1.0 + d * (tau2 / (tau2 + var[ok]))
+    return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(ok.sum()))
