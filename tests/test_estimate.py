@@ -159,7 +159,7 @@ def test_timestamps_slower_than_the_nominal_line_rate():
 def test_matched_edges_on_uniform_balls_and_flat_fielded_sensors_only():
     # A flat ball on a sensor without column-gain scatter gets the matched
     # edges; the same ball with 0.8 % PRNU (the ball's interior shows it:
-    # 0.006-0.0085 measured), a tennis ball, or matched=False keep the windows.
+    # 0.0067-0.0083 measured), a tennis ball, or matched=False keep the windows.
     cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     seen = {}

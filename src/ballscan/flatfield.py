@@ -19,7 +19,9 @@ columns (shading, a texture's large-scale pattern) is removed by a running
 median, and the scatter that remains beyond the measurement noise is the
 gains' (robust method of moments).  Measured on 8-bit renders of the Fig. 5
 ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
-0-0.0009, PRNU 0.002 gives 0-0.0025, PRNU 0.008 gives 0.0060-0.0085.
+0-0.0019, PRNU 0.002 gives 0.0001-0.0024, 0.003 gives 0.0015-0.0039 and
+0.008 gives 0.0067-0.0083.  A ball with fewer than 8 interior lines or 15
+measurable columns (about 17 px across) reads NaN: not measured.
 Dividing the measured gains out of the image was tried and did not help
 (docs/experiments.md): the columns a ball's edges dwell on longest are its
 outermost, which are never deep inside it.
