@@ -15,8 +15,8 @@ that the estimator uses the matched edges only on a flat-fielded sensor.
 
 Each pixel well inside the ball is divided by its line's median, each
 column's gain is the median over its lines, what varies smoothly across the
-columns (shading, a texture's large-scale pattern) is removed by a running
-median, and the scatter that remains beyond the measurement noise is the
+columns (shading, a texture's large-scale pattern) is removed by a local
+quadratic across 15 columns, and the scatter that remains beyond the measurement noise is the
 gains' (robust method of moments).  Measured on 8-bit renders of the Fig. 5
 ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
 0-0.0019, PRNU 0.002 gives 0.0001-0.0024, 0.003 gives 0.0015-0.0039 and
