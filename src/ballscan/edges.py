@@ -233,14 +233,10 @@ class EdgeMeasurements:
         each line (``limb.line_levels`` of :func:`measure_edges`; NaN on the
         lines it was not evaluated on) and its relative 1-sigma: ``area_px /
         area_level`` is the line's covered length.  None without a model.
-    edges_method : {"window", "matched"}
-        How the edges were measured: the local area estimate of the windows
-        (:func:`measure_edges`, :func:`with_limb`) or the limb model's
-        profile fitted to each window (:func:`matched_edges`).
     left_matched, right_matched : ndarray of bool or None
         The narrow-window edges that :func:`matched_edges` measured (the fit
         gives them ``FitSettings.matched_floor_px`` instead of
-        ``edge_floor_px``); None: none.
+        ``edge_floor_px``); None: none (see :attr:`edges_method`).
     """
 
     lines: np.ndarray
@@ -274,11 +270,16 @@ class EdgeMeasurements:
     area_level: np.ndarray | None = None
     area_level_sigma: np.ndarray | None = None
     profile_shade: np.ndarray | None = None
-    edges_method: str = "window"
     left_matched: np.ndarray | None = None
     right_matched: np.ndarray | None = None
     # the first pass's intermediates, for with_limb (None: not made by measure_edges)
     _pass: _EdgePass | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def edges_method(self) -> str:
+        """``"matched"`` where :func:`matched_edges` measured any edge, else ``"window"`` (the local area estimate)."""
+        flags = [f for f in (self.left_matched, self.right_matched) if f is not None]
+        return "matched" if any(bool(f.any()) for f in flags) else "window"
 
     @property
     def n_edges(self) -> int:
@@ -745,29 +746,26 @@ def matched_edges(
         ``left_px``, ``right_px`` and their sigmas replaced where the fit
         converged (its last step below 0.01 px, within 0.5 px of the window
         estimate), ``left_matched`` / ``right_matched`` True there; usable
-        flags and the wide-window fields unchanged; ``edges_method``
-        "matched".
+        flags and the wide-window fields unchanged; the input itself where
+        no edge converged.
     """
     if edges.profile is None or edges.profile_sigma is None:
         raise ValueError("edges: no profile to fit (made by measure_edges?)")
     lines = edges.lines
     spread = np.asarray(limb.spread_px)[lines]
-    rows_l, rows_r, x0_l, x0_r = [], [], [], []
-    for side, rows, x0 in ((1, rows_l, x0_l), (-1, rows_r, x0_r)):
-        name = "left" if side > 0 else "right"
-        start = getattr(edges, f"{name}_px")
-        model = (limb.left_px if side > 0 else limb.right_px)[lines]
-        use = getattr(edges, f"{name}_ok") & np.isfinite(start) & np.isfinite(model) & (spread <= max_spread_px)
-        rows.append(np.flatnonzero(use))
+    # both sides in one batch (the limb model caches its samples per batch)
+    rows, sides, x0, model_edge = [], [], [], []
+    for side, start, ok, model in ((1.0, edges.left_px, edges.left_ok, limb.left_px), (-1.0, edges.right_px, edges.right_ok, limb.right_px)):
+        model = np.asarray(model)[lines]
+        use = np.flatnonzero(ok & np.isfinite(start) & np.isfinite(model) & (spread <= max_spread_px))
+        rows.append(use)
+        sides.append(np.full(use.size, side))
         x0.append(start[use])
-    r_l, r_r = rows_l[0], rows_r[0]
-    rows = np.concatenate([r_l, r_r])
+        model_edge.append(model[use])
+    rows, sides, x0, model_edge = (np.concatenate(a) for a in (rows, sides, x0, model_edge))
     if rows.size == 0:
         return edges
-    sides = np.concatenate([np.ones(r_l.size), -np.ones(r_r.size)])
-    x0 = np.concatenate([x0_l[0], x0_r[0]])
     img_lines = lines[rows]
-    model_edge = np.where(sides > 0, np.asarray(limb.left_px)[img_lines], np.asarray(limb.right_px)[img_lines])
     c0 = edges.profile_col0
     n_cols = edges.profile.shape[1]
     h = max(int(half_window_px), 1)
@@ -806,7 +804,7 @@ def matched_edges(
     done = np.isfinite(x) & np.isfinite(s) & (np.abs(move) < _MATCHED_STEP_TOL_PX) & (np.abs(x - x0) < 0.5)
     if not done.any():
         return edges
-    out: dict[str, Any] = {"edges_method": "matched"}
+    out: dict[str, Any] = {}
     for side, name in ((1.0, "left"), (-1.0, "right")):
         sel = (sides == side) & done
         for field_name, val in ((f"{name}_px", x[sel]), (f"{name}_sigma_px", s[sel])):

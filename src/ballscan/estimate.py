@@ -258,17 +258,10 @@ def estimate_region(
             if limb is not None:
                 # the first pass's profile, windows and noise model are reused
                 edges2 = with_limb(edges, limb)
-                # a ball the shading law describes to its pixels: the model's
-                # profile, fitted to each edge window, places the edge
+                # a ball the shading law describes to its pixels (the pixel
+                # fit's and the matched edges' condition)
                 refusal = _pixel_fit_refusal(limb, edges2, start, camera)
                 edges_fit = edges2
-                if matched and shading and refusal is None:
-                    # and a flat-fielded sensor (the model's level in every column)
-                    gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
-                    gain_sigma = gains.prnu_sigma
-                    # NaN (a ball too small to tell) is not flat-fielded
-                    if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
-                        edges_fit = matched_edges(edges2, limb)
                 t_shading = time.perf_counter() - t_s
                 fit2 = None
                 if pixels:
@@ -279,9 +272,18 @@ def estimate_region(
                         fit2 = fit_motion(camera, shaded, start, FitSettings(pixels=True))
                         if not fit2.converged:
                             pixels_state, fit2 = "not_converged", None
-                        else:
-                            edges_fit = edges2
                 if fit2 is None and shading:
+                    if matched and refusal is None:
+                        # and a flat-fielded sensor (the model's level in every
+                        # column): the model's profile, fitted to each edge
+                        # window, places the edge
+                        t_m = time.perf_counter()
+                        gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
+                        gain_sigma = gains.prnu_sigma
+                        # NaN (a ball too small to tell) is not flat-fielded
+                        if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
+                            edges_fit = matched_edges(edges2, limb)
+                        t_shading += time.perf_counter() - t_m
                     fit2 = fit_motion(camera, edges_fit, start)
                 if fit2 is not None:
                     shading_pass = "not_converged"

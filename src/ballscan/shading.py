@@ -224,7 +224,7 @@ def fit_shading(
     active = np.ones(y.size, dtype=bool)
     coef = np.zeros(4)
     scale = 1.0
-    best = (np.inf, coef, scale)
+    best = (np.inf, coef)
     for _ in range(n_iterations):
         # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
         Xa = np.where(active[:, None], X, X_dark)
@@ -235,7 +235,7 @@ def fit_shading(
         r = y - coef[0] - np.maximum(lit, 0.0)
         scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
         if scale < best[0]:
-            best = (scale, coef, scale)
+            best = (scale, coef)
         a = np.abs(r) / (huber_k * scale)
         w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
     if scale > _DIVERGED * best[0]:
@@ -244,7 +244,7 @@ def fit_shading(
         # shadowed can run away to a strong light (seen: 152 DN of light and
         # a robust scale of 40 DN where the flat law leaves 5 DN; its end
         # levels then moved a ball's V.x by 21 sigma).  Keep the best round.
-        _, coef, scale = best
+        scale, coef = best
     return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
 
 
