@@ -33,8 +33,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.ndimage import binary_erosion
-from scipy.signal import savgol_filter
+from scipy.ndimage import binary_erosion, convolve1d
+from scipy.signal import savgol_coeffs
 
 __all__ = ["ColumnGains", "column_gains"]
 
@@ -51,6 +51,29 @@ _TREND_COLS = 15
 # 1.4826 MAD = sigma; the variance of a median of n normal values is pi/2 sigma^2/n
 _MAD_SIGMA = 1.4826
 _MEDIAN_VAR = np.pi / 2.0
+
+
+def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
+    """The least-squares polynomial of ``degree`` through ``n`` points, evaluated at its first ``half`` points: a (half, n) matrix."""
+    v = np.vander(np.arange(n, dtype=float), degree + 1)
+    return v[:half] @ np.linalg.pinv(v)
+
+
+# scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp") as a fixed
+# linear filter: its coefficients and edge fits depend only on the window,
+# and computing them (two polynomial fits by scipy.linalg.lstsq per call)
+# took most of column_gains' time on a stream event's ball (~1 ms)
+_TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
+_TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
+
+
+def _trend(x: np.ndarray) -> np.ndarray:
+    """``savgol_filter(x, _TREND_COLS, 2, mode="interp")`` (the edges to rounding; ``x`` at least ``_TREND_COLS`` long)."""
+    y = convolve1d(x, _TREND_COEF, mode="constant")
+    h = _TREND_COLS // 2
+    y[:h] = _TREND_EDGE @ x[:_TREND_COLS]
+    y[-h:] = (_TREND_EDGE @ x[::-1][:_TREND_COLS])[::-1]
+    return y
 
 
 @dataclass(frozen=True)
@@ -150,7 +173,7 @@ def column_gains(
     spread = _MAD_SIGMA * _masked_median(np.abs(r - med[None, :]), inner_c, axis=0)
     var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's
-    trend = savgol_filter(med, _TREND_COLS, 2, mode="interp")
+    trend = _trend(med)
     ok = trend > 0
     if ok.sum() < _TREND_COLS:
         return none
