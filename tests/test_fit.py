@@ -211,12 +211,33 @@ def test_debiased_speed_monte_carlo(velocity, sigma_vz):
     assert abs(est.mean() - truth) <= 0.55 * abs(raw.mean() - truth) + se
     # measured: RMS 0.71-1.00 x |V|'s (1 % for the draws' noise where equal)
     assert rms(est) <= rms(raw) * 1.01
-    # sigma is the RMS error, computed at the noisy estimate, not the truth:
-    # measured 1.00-1.50 x the actual RMS (it over-states when the weak
-    # component is clipped to 0: vz = 0, sigma_vz 5-10); the error is skewed,
-    # so 1-sigma coverage is not 68 %
-    assert 0.8 < float(np.sqrt(np.mean(sig**2))) / rms(est) < 1.6
+    # sigma is the RMS distance to the speeds the noisy estimate allows, not
+    # taken at the truth: measured 1.00-1.81 x the actual RMS (it over-states
+    # where the weak direction dominates: vz = 0, sigma_vz 5-10); the error
+    # is skewed, so 1-sigma coverage is not 68 %
+    assert 0.8 < float(np.sqrt(np.mean(sig**2))) / rms(est) < 1.9
     assert np.mean(np.abs(est - truth) < 3 * sig) > 0.97
+
+
+def test_debiased_speed_sigma_when_the_weak_component_reads_near_zero():
+    """A weak V.z of about 2 sigma (a table-tennis scene): the sigma must allow for the truth a sigma out.
+
+    With the sigma taken at the plug-in component alone, draws that read V.z
+    near 0 claimed the speed to its linear term: 3-sigma coverage 0.92 here
+    (measured; now 0.965).
+    """
+    cam, _ = _serve()
+    C = np.zeros((6, 6))
+    C[3:, 3:] = np.diag([1e-3, 1e-2, 0.81])
+    C[4, 5] = C[5, 4] = 0.045
+    velocity = (11.8, 0.0, 2.08)
+    truth = float(np.linalg.norm(velocity))
+    rng = np.random.default_rng(7)
+    z = []
+    for v in rng.multivariate_normal(velocity, C[3:, 3:], size=1500):
+        u = propagate(cam, BallMotion(0.02, 0.0, (0.0, 0.0, 1.8), tuple(v)), C)
+        z.append(abs(u.speed_mps - truth) / u.speed_sigma_mps)
+    assert np.mean(np.array(z) < 3.0) > 0.95
 
 
 def test_debiased_speed_edge_cases_and_bound_at_truth():
