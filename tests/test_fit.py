@@ -374,3 +374,31 @@ def test_pixel_fit_is_exact_on_its_own_model(groups):
     fit = fit_motion(cam, e, init, st)
     assert fit.converged
     assert np.allclose(fit.motion.to_params(), m.to_params(), rtol=0, atol=[1e-9, 1e-6, 1e-5, 1e-4, 1e-4, 5e-3])
+
+
+@pytest.mark.parametrize("grid", ["shared", "compacted", "descending_fractional", "wide"])
+def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
+    """The cumulative-histogram coverage (unit-step grids) against the direct sum over samples and pixels."""
+    from ballscan.fit import _model_core, _pixel_coverage_direct, pixel_coverage
+
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 0.0, 15.0))
+    t = 0.002 + np.linspace(-1.2e-3, 1.2e-3, 40)  # the ends and beyond included
+    rng = np.random.default_rng(5)
+    thetas = m.to_params()[None] + rng.normal(size=(3, 6)) * param_scale(cam, m)
+    lo, hi, w = _model_core(cam, thetas, m.radius_m, t, (0.0, 0.0, 0.0), 8, True).samples
+    lo[1, 7, 0, 0] = np.nan  # a non-finite sample: that line's pixels are NaN
+    if grid == "shared":
+        cols = np.arange(985.0, 1062.0)
+    elif grid == "compacted":
+        cols = np.stack([np.sort(rng.choice(np.arange(985.0, 1062.0), 16, replace=False)) for _ in t])
+    elif grid == "descending_fractional":
+        cols = 1040.37 - np.arange(30.0)[None, :] + rng.integers(-20, 20, size=(t.size, 1))
+    else:
+        cols = np.arange(700.0, 1400.0)
+    new = pixel_coverage(lo, hi, w, cols)
+    ref = _pixel_coverage_direct(lo, hi, w, cols)
+    assert new.shape == ref.shape == (3, t.size, cols.shape[-1])
+    assert np.array_equal(np.isnan(new), np.isnan(ref)) and np.isnan(new[1, 7]).all()
+    assert np.nanmax(np.abs(new - ref)) < 1e-12
+    assert np.nanmax(ref) > 0.99  # fully covered pixels are in the test
