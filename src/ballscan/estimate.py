@@ -117,6 +117,7 @@ _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 # 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
 # the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
 _MATCHED_MAX_GAIN_SIGMA = 0.0015
+_HYBRID = None
 
 
 def estimate_region(
@@ -284,7 +285,11 @@ def estimate_region(
                         if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
                             edges_fit = matched_edges(edges2, limb)
                         t_shading += time.perf_counter() - t_m
-                    fit2 = fit_motion(camera, edges_fit, start)
+                    if _HYBRID is not None and edges_fit is not edges2:
+                        shaded = replace(edges_fit, profile_shade=shade_profile(limb, edges_fit))
+                        fit2 = fit_motion(camera, shaded, start, _HYBRID)
+                    else:
+                        fit2 = fit_motion(camera, edges_fit, start)
                 if fit2 is not None:
                     shading_pass = "not_converged"
                     if fit2.converged:

@@ -71,6 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
+from ._kernels import averaged_samples
 from .camera import LineScanCamera
 from .detection import median as _median
 from .edges import EdgeMeasurements
@@ -200,127 +201,35 @@ def _project(camera: LineScanCamera, n: np.ndarray) -> np.ndarray:
 def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples, full: bool = True) -> ModelEdges:
     """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,) or (P, N).
 
-    Written for few, large numpy operations (the fit calls it some ten
-    times per ball): per-line quantities are (P, N), per-sample ones
-    (P, N, S) with ``S = 3 n_nodes`` (three pieces of ``n_nodes``
-    Gauss-Legendre nodes).  ``full=False`` skips the edge spread and the
-    validity test (``spread_px`` and ``valid`` are then None).
+    Per-line quantities are (P, N); the samples (``return_samples``) are
+    (P, N, 3, n_nodes): three pieces of ``n_nodes`` Gauss-Legendre nodes
+    over the quadrature angle between the kinks of the exposure-and-height
+    density.  ``full=False`` skips the edge spread and the validity test
+    (``spread_px`` and ``valid`` are then None).  The fit calls it some ten
+    times per ball: one compiled loop over the samples
+    (:func:`ballscan._kernels.averaged_samples`).
     """
-    # (N,) times for every parameter set, or (P, N) times of their own
-    t = t_all if t_all.ndim == 2 else t_all.reshape(1, -1)
-    acc = tuple(float(a) for a in acceleration_mps2)
-    has_acc = any(a != 0.0 for a in acc)
-    y0, z0 = th[:, 1:2], th[:, 2:3]
-    vx, vy, vz = th[:, 3:4], th[:, 4:5], th[:, 5:6]
-    dt0 = t - th[:, 0:1]  # (P, N)
-    if has_acc:
-        h2 = 0.5 * dt0 * dt0
-        x0 = vx * dt0 + acc[0] * h2
-        z_line = z0 + vz * dt0 + acc[2] * h2
-        y_line = y0 + vy * dt0 + acc[1] * h2
-        a1 = vx + acc[0] * dt0
-    else:
-        x0 = vx * dt0
-        z_line = z0 + vz * dt0
-        y_line = y0 + vy * dt0
-        a1 = vx  # (P, 1): constant over the lines
-    A = np.abs(a1) * (camera.exposure / 2.0)
-    B = np.maximum(z_line, 0.0) / (2.0 * camera.focal_px)
-    AmB = np.abs(A - B)
-    ApB = A + B
-    kinks = np.empty(x0.shape + (4,))
-    np.subtract(x0, ApB, out=kinks[..., 0])
-    np.subtract(x0, AmB, out=kinks[..., 1])
-    np.add(x0, AmB, out=kinks[..., 2])
-    np.add(x0, ApB, out=kinks[..., 3])
-    np.maximum(kinks, -R, out=kinks)
-    np.minimum(kinks, R, out=kinks)
-    kinks /= R
-    theta_e = np.arcsin(kinks)  # (P, N, 4)
+    th = np.ascontiguousarray(th, dtype=float)
+    t = np.asarray(t_all, dtype=float)
+    t = np.ascontiguousarray(t if t.ndim == 2 else t.reshape(1, -1))
+    acc = np.array([float(a) for a in acceleration_mps2])
     g, gw = _gauss(n_nodes)
-    S = 3 * n_nodes
-    half = (theta_e[..., 1:] - theta_e[..., :-1]) / 2.0  # (P, N, 3)
-    ang = (theta_e[..., :-1, None] + half[..., None] * (1.0 + g)).reshape(*half.shape[:-1], S)
-    sin_a, cos_a = np.sin(ang), np.cos(ang)
-    d = R * sin_a
-    rho = R * cos_a
-    jac = rho * (half[..., None] * gw).reshape(ang.shape)
-    x0b, Ab, Bb = x0[..., None], A[..., None], B[..., None]
-    dd = d - x0b
-    dist = np.abs(dd)
-    plateau = 1.0 / np.maximum(2.0 * np.maximum(A, B), 1e-300)
-    inv4AB = 1.0 / np.maximum(4.0 * A * B, 1e-300)
-    ramp = np.maximum(ApB[..., None] - dist, 0.0) * inv4AB[..., None]
-    dens = np.where(dist > AmB[..., None], ramp, plateau[..., None])
-    if not (ApB > 0).all():
-        dens = np.where(ApB[..., None] > 0, dens, 0.0)
-    wgt = dens * jac
-    u_mean = 0.5 * (np.maximum(-Ab, dd - Bb) + np.minimum(Ab, dd + Bb))
-    inv_a1 = np.zeros(a1.shape)
-    np.divide(1.0, a1, out=inv_a1, where=a1 != 0)
-    dts = u_mean * inv_a1[..., None] + dt0[..., None]
-    vxb, vyb, vzb = vx[..., None], vy[..., None], vz[..., None]
-    xc = vxb * dts
-    yc = y0[..., None] + vyb * dts
-    zc = z0[..., None] + vzb * dts
-    if has_acc:
-        h2s = 0.5 * dts * dts
-        xc = xc + acc[0] * h2s
-        yc = yc + acc[1] * h2s
-        zc = zc + acc[2] * h2s
-    zpos = zc > 0
-    all_zpos = bool(zpos.all())
-    s = (xc - d) / (zc if all_zpos else np.where(zpos, zc, 1.0))
-    w = zc + s * xc
-    den = w * w - rho * rho
-    disc = yc * yc + den
-    ok = (w > rho) & (disc > 0)
-    all_ok = bool(ok.all())
-    if all_ok:
-        root = np.sqrt(disc)
-        inv_den = 1.0 / den
-    else:
-        root = np.sqrt(np.where(ok, disc, 1.0))
-        inv_den = np.where(ok, 1.0 / np.where(ok, den, 1.0), 0.0)
-    a_ = yc * w
-    b_ = rho * root
-    n_lo = (a_ - b_) * inv_den
-    n_hi = (a_ + b_) * inv_den
-    u_lo = _project(camera, n_lo)
-    u_hi = _project(camera, n_hi)
-    wgt_ok = wgt if all_ok else np.where(ok, wgt, 0.0)
-    mass = wgt_ok.sum(axis=-1)
-    present = mass > 0
-    inv_m = 1.0 / np.where(present, mass, 1.0)
-    s_lo = (wgt_ok * u_lo).sum(axis=-1)
-    s_hi = (wgt_ok * u_hi).sum(axis=-1)
-    left = s_lo * inv_m
-    right = s_hi * inv_m
-    area = s_hi - s_lo
-    spread = valid = None
-    if full:
-        var_l = (wgt_ok * (u_lo - left[..., None]) ** 2).sum(axis=-1) * inv_m
-        var_r = (wgt_ok * (u_hi - right[..., None]) ** 2).sum(axis=-1) * inv_m
-        spread = np.sqrt(np.maximum(var_l, var_r))
-        valid = z_line > 0
-        if not all_ok:
-            valid = valid & ~np.any((~ok) & (wgt > 0), axis=-1)
+    exposure = float(camera.exposure)
+    left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
+        th, t, float(R), exposure, float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
+        acc, np.ascontiguousarray(g, dtype=float), np.ascontiguousarray(gw, dtype=float), bool(full), bool(return_samples),
+    )
     samples = None
     if return_samples:
-        shp = ang.shape[:-1] + (3, n_nodes)
-        samples = (u_lo.reshape(shp), u_hi.reshape(shp), wgt_ok.reshape(shp))
-    if not present.all():
-        # absent lines: both edges at the centre's projection (the limit of a vanishing cap)
-        u_c = _project(camera, y_line / np.where(z_line > 0, z_line, 1.0))
-        left = np.where(present, left, u_c)
-        right = np.where(present, right, u_c)
+        shp = left.shape + (3, n_nodes)
+        samples = (u_lo.reshape(shp), u_hi.reshape(shp), wgt.reshape(shp))
     return ModelEdges(
         left_px=left,
         right_px=right,
-        presence=np.minimum(mass, 1.0),
+        presence=presence,
         area_px=area,
-        spread_px=spread,
-        valid=valid,
+        spread_px=spread if full else None,
+        valid=valid if full else None,
         samples=samples,
     )
 

@@ -1,0 +1,193 @@
+"""Compiled kernels of the averaged silhouette (numba).
+
+The fit, the shading pass and the bounds evaluate the averaged silhouette
+(:func:`ballscan.fit.averaged_model`) tens of times per ball on a few
+thousand chord samples.  As numpy expressions that is some hundred array
+operations per call, whose fixed cost (a few microseconds each) was most of
+the time on a ball's hundred lines; one loop over the samples does the same
+arithmetic in one call.  The mathematics is that of
+:func:`ballscan.silhouette.silhouette` with ``model="averaged"`` (see its
+Notes; :func:`ballscan.fit._model_core` documents the layout), which the
+tests compare it against.
+
+Compiled on first use and cached on disk (``cache=True``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, inline="always")
+def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> float:
+    """Pixel of a normalised sensor coordinate (the camera's radial distortion)."""
+    if k1 == 0.0 and k2 == 0.0:
+        return principal + focal * n
+    n2 = n * n
+    return principal + focal * (n * (1.0 + n2 * (k1 + k2 * n2)))
+
+
+@njit(cache=True)
+def averaged_samples(
+    th: np.ndarray,
+    t: np.ndarray,
+    radius_m: float,
+    exposure_s: float,
+    focal_px: float,
+    principal_px: float,
+    k1: float,
+    k2: float,
+    acc: np.ndarray,
+    g: np.ndarray,
+    gw: np.ndarray,
+    full: bool,
+    want_samples: bool,
+):
+    """The averaged silhouette of parameter sets ``th`` (P, 6) at line times ``t`` (1 or P, N).
+
+    Returns ``(left, right, presence, area, spread, valid, u_lo, u_hi,
+    wgt)``: per line (P, N), and per sample (P, N, 3 * n_nodes) when
+    ``want_samples`` (else arrays of size 0).  ``spread`` and ``valid``
+    are computed only with ``full`` (else 0 and True).
+    """
+    P = th.shape[0]
+    N = t.shape[1]
+    nn = g.shape[0]
+    S = 3 * nn
+    R = radius_m
+    ax, ay, az = acc[0], acc[1], acc[2]
+    has_acc = ax != 0.0 or ay != 0.0 or az != 0.0
+    left = np.empty((P, N))
+    right = np.empty((P, N))
+    presence = np.empty((P, N))
+    area = np.empty((P, N))
+    spread = np.zeros((P, N))
+    valid = np.ones((P, N), dtype=np.bool_)
+    if want_samples:
+        s_lo = np.empty((P, N, S))
+        s_hi = np.empty((P, N, S))
+        s_w = np.empty((P, N, S))
+    else:
+        s_lo = np.empty((0, 0, 0))
+        s_hi = np.empty((0, 0, 0))
+        s_w = np.empty((0, 0, 0))
+    ulo = np.empty(S)
+    uhi = np.empty(S)
+    wok = np.empty(S)
+    te = np.empty(4)
+    for p in range(P):
+        tc, y0, z0, vx, vy, vz = th[p, 0], th[p, 1], th[p, 2], th[p, 3], th[p, 4], th[p, 5]
+        tp = 0 if t.shape[0] == 1 else p
+        for n in range(N):
+            dt0 = t[tp, n] - tc
+            if has_acc:
+                h2 = 0.5 * dt0 * dt0
+                x0 = vx * dt0 + ax * h2
+                z_line = z0 + vz * dt0 + az * h2
+                y_line = y0 + vy * dt0 + ay * h2
+                a1 = vx + ax * dt0
+            else:
+                x0 = vx * dt0
+                z_line = z0 + vz * dt0
+                y_line = y0 + vy * dt0
+                a1 = vx
+            A = abs(a1) * (exposure_s / 2.0)
+            B = max(z_line, 0.0) / (2.0 * focal_px)
+            AmB = abs(A - B)
+            ApB = A + B
+            te[0] = x0 - ApB
+            te[1] = x0 - AmB
+            te[2] = x0 + AmB
+            te[3] = x0 + ApB
+            for k in range(4):
+                te[k] = math.asin(min(max(te[k], -R), R) / R)
+            plateau = 1.0 / max(2.0 * max(A, B), 1e-300)
+            inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
+            inv_a1 = 1.0 / a1 if a1 != 0.0 else 0.0
+            mass = 0.0
+            sum_lo = 0.0
+            sum_hi = 0.0
+            invalid = False
+            for q in range(3):
+                half = (te[q + 1] - te[q]) / 2.0
+                for i in range(nn):
+                    ang = te[q] + half * (1.0 + g[i])
+                    d = R * math.sin(ang)
+                    rho = R * math.cos(ang)
+                    jac = rho * (half * gw[i])
+                    dd = d - x0
+                    dist = abs(dd)
+                    if dist > AmB:
+                        dens = max(ApB - dist, 0.0) * inv4AB
+                    else:
+                        dens = plateau
+                    if not ApB > 0.0:
+                        dens = 0.0
+                    wgt = dens * jac
+                    u_mean = 0.5 * (max(-A, dd - B) + min(A, dd + B))
+                    dts = u_mean * inv_a1 + dt0
+                    xc = vx * dts
+                    yc = y0 + vy * dts
+                    zc = z0 + vz * dts
+                    if has_acc:
+                        h2s = 0.5 * dts * dts
+                        xc = xc + ax * h2s
+                        yc = yc + ay * h2s
+                        zc = zc + az * h2s
+                    s = (xc - d) / (zc if zc > 0.0 else 1.0)
+                    w = zc + s * xc
+                    den = w * w - rho * rho
+                    disc = yc * yc + den
+                    ok = (w > rho) and (disc > 0.0)
+                    j = q * nn + i
+                    if ok:
+                        root = math.sqrt(disc)
+                        inv_den = 1.0 / den
+                    else:
+                        root = 1.0
+                        inv_den = 0.0
+                        if wgt > 0.0:
+                            invalid = True
+                    a_ = yc * w
+                    b_ = rho * root
+                    lo = _project((a_ - b_) * inv_den, principal_px, focal_px, k1, k2)
+                    hi = _project((a_ + b_) * inv_den, principal_px, focal_px, k1, k2)
+                    wk = wgt if ok else 0.0
+                    ulo[j] = lo
+                    uhi[j] = hi
+                    wok[j] = wk
+                    mass += wk
+                    sum_lo += wk * lo
+                    sum_hi += wk * hi
+            present = mass > 0.0
+            inv_m = 1.0 / mass if present else 1.0
+            lft = sum_lo * inv_m
+            rgt = sum_hi * inv_m
+            area[p, n] = sum_hi - sum_lo
+            presence[p, n] = min(mass, 1.0)
+            if full:
+                var_l = 0.0
+                var_r = 0.0
+                for j in range(S):
+                    dl = ulo[j] - lft
+                    dr = uhi[j] - rgt
+                    var_l += wok[j] * dl * dl
+                    var_r += wok[j] * dr * dr
+                spread[p, n] = math.sqrt(max(var_l * inv_m, var_r * inv_m))
+                valid[p, n] = (z_line > 0.0) and not invalid
+            if not present:
+                # absent lines: both edges at the centre's projection (the limit of a vanishing cap)
+                u_c = _project(y_line / (z_line if z_line > 0.0 else 1.0), principal_px, focal_px, k1, k2)
+                lft = u_c
+                rgt = u_c
+            left[p, n] = lft
+            right[p, n] = rgt
+            if want_samples:
+                for j in range(S):
+                    s_lo[p, n, j] = ulo[j]
+                    s_hi[p, n, j] = uhi[j]
+                    s_w[p, n, j] = wok[j]
+    return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
