@@ -191,3 +191,71 @@ def averaged_samples(
                     s_hi[p, n, j] = uhi[j]
                     s_w[p, n, j] = wok[j]
     return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
+
+
+@njit(cache=True)
+def pixel_residuals(
+    s_lo: np.ndarray,
+    s_hi: np.ndarray,
+    s_w: np.ndarray,
+    cols: np.ndarray,
+    mask: np.ndarray,
+    shade: np.ndarray,
+    w: np.ndarray,
+    p: np.ndarray,
+    group: np.ndarray,
+    n_groups: int,
+    n_out: int,
+) -> np.ndarray:
+    """Whitened pixel residuals ``(B_g s cov - p) w`` of ``P`` parameter sets (:func:`ballscan.fit._pixel_residuals`).
+
+    ``s_lo, s_hi, s_w`` (P, Np, S) are the chord samples of the fitted
+    lines; ``cols, mask, shade, w, p, group`` (Np, K) the pixels' centres,
+    use, relative surface brightness, weight, value and brightness group.
+    ``cov`` is the sum over the samples of weight times the overlap of the
+    chord with ``[col - 1/2, col + 1/2]``; ``B_g`` the least-squares
+    brightness of group ``g`` (variable projection).  Residuals in the
+    row-major order of ``mask`` (``n_out`` of them), (P, n_out).
+    """
+    P = s_lo.shape[0]
+    Np, K = cols.shape
+    S = s_lo.shape[2]
+    out = np.empty((P, n_out))
+    c = np.empty(n_out)
+    num = np.empty(n_groups)
+    den = np.empty(n_groups)
+    for q in range(P):
+        num[:] = 0.0
+        den[:] = 0.0
+        m = 0
+        for r in range(Np):
+            for k in range(K):
+                if not mask[r, k]:
+                    continue
+                a = cols[r, k] - 0.5
+                acc = 0.0
+                for j in range(S):
+                    ov = min(s_hi[q, r, j], a + 1.0) - max(s_lo[q, r, j], a)
+                    if ov > 1.0:
+                        ov = 1.0
+                    if ov > 0.0:
+                        acc += ov * s_w[q, r, j]
+                    elif ov != ov:
+                        acc += ov  # NaN stays NaN
+                ck = acc * shade[r, k]
+                c[m] = ck
+                ww = w[r, k] * w[r, k]
+                gi = group[r, k]
+                num[gi] += ck * p[r, k] * ww
+                den[gi] += ck * ck * ww
+                m += 1
+        m = 0
+        for r in range(Np):
+            for k in range(K):
+                if not mask[r, k]:
+                    continue
+                gi = group[r, k]
+                B = num[gi] / den[gi] if den[gi] > 0.0 else 0.0
+                out[q, m] = (B * c[m] - p[r, k]) * w[r, k]
+                m += 1
+    return out

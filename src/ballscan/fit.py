@@ -72,6 +72,7 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from ._kernels import averaged_samples
+from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from .camera import LineScanCamera
 from .detection import median as _median
 from .edges import EdgeMeasurements
@@ -1548,12 +1549,7 @@ def _pixel_spec(
     _, g_dense = np.unique(g[m], return_inverse=True)
     groups = np.full(m.shape, -1)
     groups[m] = g_dense
-    # rows in two blocks by width (the end lines' windows are several times
-    # wider than the edge windows): the coverage is computed per block
-    narrow = n_col <= max(int(np.median(n_col) * 1.5), 1)
-    blocks = [(np.flatnonzero(b), int(n_col[b].max())) for b in (narrow, ~narrow) if b.any()]
     return dict(
-        blocks=blocks,
         t=edges.t_s[idx],
         cols=np.where(m, cols[order], cols[order[:, :1]]),
         mask=m,
@@ -1680,23 +1676,11 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
     local level comes from the pixels.
     """
     me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True)
-    u_lo, u_hi, wgt = me.samples
-    cov = np.zeros((thetas.shape[0],) + pix["cols"].shape)  # (P, Np, K)
-    for rows, width in pix["blocks"]:
-        cov[:, rows, :width] = pixel_coverage(u_lo[:, rows], u_hi[:, rows], wgt[:, rows], pix["cols"][rows, :width])
-    c = cov * pix["shade"]
-    m = pix["mask"]
-    g = pix["group"][m]
-    w2 = pix["w"][m] ** 2
-    pm = pix["p"][m]
-    out = np.empty((thetas.shape[0], pix["n"]))
-    for k in range(thetas.shape[0]):
-        ck = c[k][m]
-        num = np.bincount(g, weights=ck * pm * w2, minlength=pix["n_groups"])
-        den = np.bincount(g, weights=ck * ck * w2, minlength=pix["n_groups"])
-        B = np.where(den > 0, num / np.where(den > 0, den, 1.0), 0.0)
-        out[k] = (B[g] * ck - pm) * pix["w"][m]
-    return out
+    P, n_rows = thetas.shape[0], pix["cols"].shape[0]
+    u_lo, u_hi, wgt = (np.ascontiguousarray(a.reshape(P, n_rows, -1)) for a in me.samples)
+    return _kernel_pixel_residuals(
+        u_lo, u_hi, wgt, pix["cols"], pix["mask"], pix["shade"], pix["w"], pix["p"], pix["group"], pix["n_groups"], pix["n"]
+    )
 
 
 def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:
