@@ -175,7 +175,10 @@ def test_matched_edges_on_uniform_balls_and_flat_fielded_sensors_only():
                 assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
     flat = seen[0.0, "none", True]
     assert flat.extra["edges"] == "matched" and flat.extra["column_gain_sigma"] < 0.003
-    assert seen[0.0, "none", False].extra["edges"] == "window"
+    # and the final fit takes the ends' and the spread edges' pixels
+    assert flat.extra["pixels"] == "spread"
+    assert seen[0.0, "none", False].extra["edges"] == "window" and seen[0.0, "none", False].extra["pixels"] == "off"
+    assert all(seen[k].extra["pixels"] == "off" for k in seen if k != (0.0, "none", True))
     prnu = seen[0.008, "none", True]
     assert prnu.extra["edges"] == "window" and prnu.extra["column_gain_sigma"] > 0.005
     assert seen[0.0, "tennis", True].extra["edges"] == "window"

@@ -117,7 +117,10 @@ _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 # 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
 # the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
 _MATCHED_MAX_GAIN_SIGMA = 0.0015
-_HYBRID = None
+# with the matched edges, the pixels of the ball's ends and of the lines whose
+# edges spread over 0.3 px or more (the sharp lines keep their matched edges):
+# bench_fit's images, fit 1.35x / 1.25x -> about 0.9x / 1.1x the pixel bound
+_SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3)
 
 
 def estimate_region(
@@ -147,7 +150,7 @@ def estimate_region(
     shading model, which is then fitted even with ``shading`` off but kept
     only for the pixel fit): for untextured balls and a continuous exposure.
     Where it is not used the result is that of the same call without
-    ``pixels``, and ``extra["pixels"]`` says why: "off", "used",
+    ``pixels``, and ``extra["pixels"]`` says why: "off", "used", "spread" (see ``matched``),
     "not_uniform", "lateral_motion", "no_start", "no_shading_model",
     "not_converged".  ``matched`` (with the shading pass, on the same
     condition as the pixel fit, and where the ball's interior shows no
@@ -158,7 +161,11 @@ def estimate_region(
     ``extra["edges"]`` says which ("window" or "matched") and
     ``extra["column_gain_sigma"]`` the scatter measured (None where the
     condition failed before it was measured, NaN where the ball is too small
-    to measure it: then the windows are kept).
+    to measure it: then the windows are kept).  With the matched edges the
+    final fit takes the pixels of the ball's ends and of the lines whose
+    edges spread over 0.3 px in place of their areas and edges
+    (``extra["pixels"]`` "spread"; the matched-edge fit where it does not
+    converge).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -285,10 +292,16 @@ def estimate_region(
                         if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
                             edges_fit = matched_edges(edges2, limb)
                         t_shading += time.perf_counter() - t_m
-                    if _HYBRID is not None and edges_fit is not edges2:
+                    if edges_fit is not edges2:
+                        # the narrow edges matched: the ends' and the spread
+                        # edges' pixels in their place
                         shaded = replace(edges_fit, profile_shade=shade_profile(limb, edges_fit))
-                        fit2 = fit_motion(camera, shaded, start, _HYBRID)
-                    else:
+                        fit2 = fit_motion(camera, shaded, start, _SPREAD_PIXELS)
+                        if fit2.converged:
+                            pixels_state = "spread"
+                        else:
+                            fit2 = None
+                    if fit2 is None:
                         fit2 = fit_motion(camera, edges_fit, start)
                 if fit2 is not None:
                     shading_pass = "not_converged"
