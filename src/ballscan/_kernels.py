@@ -297,3 +297,19 @@ def pixel_residuals(
                 out[q, m] = (B * c[m] - p[r, k]) * w[r, k]
                 m += 1
     return out
+
+
+def warm_up() -> None:
+    """Load (or compile) the kernels now, on tiny inputs.
+
+    The first call in a process otherwise carries it (about 0.2 s from the
+    on-disk cache, seconds to compile): a stream calls this before its
+    first ball so that the ball's latency does not.
+    """
+    th = np.array([[0.0, 0.0, 3.0, 30.0, 0.0, 0.0]])
+    t = np.zeros((1, 1))
+    g = np.zeros(1)
+    gw = np.full(1, 2.0)
+    _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
+    one = np.ones((1, 1))
+    pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)

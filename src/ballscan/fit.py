@@ -1178,7 +1178,11 @@ def fit_motion(
                     memo=fd_memo, reuse_px=settings.jacobian_reuse_px, base=base,
                 )
                 h = settings_rel_step * scale
-                pr = pixel_res(np.vstack([th, th + np.diag(h)])) if pix is not None else np.zeros((7, 0))
+                if pix is not None:
+                    # the base set's pixel residuals are the tail of r
+                    pr = np.vstack([r[r.size - n_pix :][None, :], pixel_res(th + np.diag(h))])
+                else:
+                    pr = np.zeros((7, 0))
             else:
                 me, dl, dr, da = model_jacobian(camera, th, R, t, scale, acc, n_nodes=settings.jacobian_nodes)
                 if settings.jacobian_nodes != nn:
