@@ -313,3 +313,73 @@ def warm_up() -> None:
     _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
     one = np.ones((1, 1))
     pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
+
+
+@njit(cache=True)
+def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
+    """The chord model's edges and their analytic derivatives (:func:`ballscan.fit.chord_jacobian`).
+
+    Returns ``(u (2, N), J (2, N, 6), ok (N,), x (N,), w (N,), tau (N,))``:
+    left (row 0) and right (row 1) edges in pixels and their derivatives
+    with respect to ``(t_c, y0, z0, vx, vy, vz)``, finite garbage where
+    ``ok`` is False; the centre's offset ``x`` from the viewing plane and
+    depth ``w`` (m) and ``tau = t - t_c`` (s) of each line.
+    """
+    tc, y0, z0, vx, vy, vz = theta[0], theta[1], theta[2], theta[3], theta[4], theta[5]
+    ax, ay, az = acc[0], acc[1], acc[2]
+    has_acc = ax != 0.0 or ay != 0.0 or az != 0.0
+    R = radius_m
+    N = t.shape[0]
+    u = np.empty((2, N))
+    J = np.empty((2, N, 6))
+    ok = np.empty(N, dtype=np.bool_)
+    xs = np.empty(N)
+    ws = np.empty(N)
+    taus = np.empty(N)
+    for i in range(N):
+        tau = t[i] - tc
+        if has_acc:
+            h2 = 0.5 * tau * tau
+            x = vx * tau + ax * h2
+            y = y0 + vy * tau + ay * h2
+            w = z0 + vz * tau + az * h2
+        else:
+            x = vx * tau
+            y = y0 + vy * tau
+            w = z0 + vz * tau
+        r2 = R * R - x * x
+        D = w * w - r2
+        disc = y * y + D
+        good = (r2 > 0.0) and (w > 0.0) and (D > 0.0) and (disc > 0.0)
+        if good:
+            rho = math.sqrt(r2)
+            s = math.sqrt(disc)
+            inv_D = 1.0 / D
+        else:
+            rho = 1.0
+            s = 1.0
+            inv_D = 1.0
+        ok[i] = good
+        xs[i] = x
+        ws[i] = w
+        taus[i] = tau
+        rho_s = rho / s
+        for side in range(2):
+            sg = -1.0 if side == 0 else 1.0
+            n = (y * w + sg * (rho * s)) * inv_D
+            dn_dy = (w + sg * (rho_s * y)) * inv_D
+            dn_dw = (y + sg * (rho_s * w) - 2.0 * n * w) * inv_D
+            dn_dx = (sg * (x * (rho_s - s / rho)) - 2.0 * n * x) * inv_D
+            n2 = n * n
+            gain = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+            gx = dn_dx * gain
+            gy = dn_dy * gain
+            gw = dn_dw * gain
+            J[side, i, 0] = -(gx * (vx + ax * tau) + gy * (vy + ay * tau) + gw * (vz + az * tau))
+            J[side, i, 1] = gy
+            J[side, i, 2] = gw
+            J[side, i, 3] = gx * tau
+            J[side, i, 4] = gy * tau
+            J[side, i, 5] = gw * tau
+            u[side, i] = _project(n, principal_px, focal_px, k1, k2)
+    return u, J, ok, xs, ws, taus

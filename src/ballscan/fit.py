@@ -71,7 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import averaged_samples
+from ._kernels import averaged_samples, chord_edges
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from .camera import LineScanCamera
 from .detection import median as _median
@@ -327,51 +327,14 @@ def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
     ``u`` and ``J`` hold the left (row 0) and right (row 1) edges and their
     derivatives, finite garbage where ``ok`` is False; ``x, w`` are the
     centre's offset from the viewing plane and its depth at each line, m,
-    ``tau = t - t_c``, s.
+    ``tau = t - t_c``, s.  One compiled loop over the lines
+    (:func:`ballscan._kernels.chord_edges`).
     """
-    tc, y0, z0, vx, vy, vz = (float(v) for v in theta)
-    ax, ay, az = (float(v) for v in acceleration_mps2)
-    R = float(radius_m)
-    tau = t - tc
-    if ax or ay or az:
-        h2 = 0.5 * tau * tau
-        x = vx * tau + ax * h2
-        y = y0 + vy * tau + ay * h2
-        w = z0 + vz * tau + az * h2
-    else:
-        x = vx * tau
-        y = y0 + vy * tau
-        w = z0 + vz * tau
-    r2 = R * R - x * x
-    D = w * w - r2
-    disc = y * y + D
-    ok = (r2 > 0) & (w > 0) & (D > 0) & (disc > 0)
-    all_ok = bool(ok.all())
-    if all_ok:
-        rho, s, inv_D = np.sqrt(r2), np.sqrt(disc), 1.0 / D
-    else:
-        rho = np.sqrt(np.where(ok, r2, 1.0))
-        s = np.sqrt(np.where(ok, disc, 1.0))
-        inv_D = 1.0 / np.where(ok, D, 1.0)
-    sg = np.array([[-1.0], [1.0]])  # (2, 1): left, right
-    n = (y * w + sg * (rho * s)) * inv_D  # (2, N)
-    rho_s = rho / s
-    dn_dy = (w + sg * (rho_s * y)) * inv_D
-    dn_dw = (y + sg * (rho_s * w) - 2.0 * n * w) * inv_D
-    dn_dx = (sg * (x * (rho_s - s / rho)) - 2.0 * n * x) * inv_D
-    k1, k2 = camera.k1, camera.k2
-    n2 = n * n
-    gain = camera.focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
-    gx, gy, gw = dn_dx * gain, dn_dy * gain, dn_dw * gain
-    J = np.empty((2, t.size, 6))
-    # d(x, y, w)/d t_c = -(velocity at t); d/d(y0, z0) = 1; d/d(vx, vy, vz) = tau
-    J[..., 0] = -(gx * (vx + ax * tau) + gy * (vy + ay * tau) + gw * (vz + az * tau))
-    J[..., 1] = gy
-    J[..., 2] = gw
-    J[..., 3] = gx * tau
-    J[..., 4] = gy * tau
-    J[..., 5] = gw * tau
-    return _project(camera, n), J, ok, x, w, tau
+    return chord_edges(
+        np.ascontiguousarray(theta, dtype=float), np.ascontiguousarray(t, dtype=float), float(radius_m),
+        float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
+        np.array([float(a) for a in acceleration_mps2]),
+    )
 
 
 def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes, base=None):
