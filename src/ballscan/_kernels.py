@@ -383,3 +383,80 @@ def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: flo
             J[side, i, 5] = gw * tau
             u[side, i] = _project(n, principal_px, focal_px, k1, k2)
     return u, J, ok, xs, ws, taus
+
+
+@njit(cache=True)
+def limb_values(
+    t_rows: np.ndarray,
+    n_u: np.ndarray,
+    bg: np.ndarray,
+    sharp: np.ndarray,
+    tk: np.ndarray,
+    hk: np.ndarray,
+    focal_px: float,
+    pos: np.ndarray,
+    vel: np.ndarray,
+    acc: np.ndarray,
+    t_c: float,
+    radius_m: float,
+    light: np.ndarray,
+    ambient: float,
+    scale: float,
+):
+    """The shading law's normalised brightness and the ball's coverage at sensor positions (:meth:`ballscan.shading.LimbProfile.__call__`).
+
+    Row ``r`` (an edge of line time ``t_rows[r]``) has positions of
+    normalised coordinate ``n_u[r]`` over the background ``bg[r]`` (DN); a
+    ``sharp`` row takes one sample at the line's centre time and in the
+    viewing plane, the others the mean over the exposure's instants ``tk``
+    (s, from the centre time) and the heights ``hk`` (pixels) across the
+    line.  Each sample's ray meets the sphere (centre ``pos + vel dt + acc
+    dt^2 / 2``, ``dt = t - t_c``) or not; where it does, its value is
+    ``(max(n . light, 0) + ambient - bg) / scale`` (``scale`` = polarity x
+    contrast, DN), else 0.  Returns ``(value, coverage)`` (R, K): means
+    over the samples.
+    """
+    R2 = radius_m * radius_m
+    n_rows, K = n_u.shape
+    val = np.empty((n_rows, K))
+    cov = np.empty((n_rows, K))
+    has_acc = acc[0] != 0.0 or acc[1] != 0.0 or acc[2] != 0.0
+    for r in range(n_rows):
+        nt = 1 if sharp[r] else tk.shape[0]
+        nh = 1 if sharp[r] else hk.shape[0]
+        n_samples = float(nt * nh)
+        for k in range(K):
+            nu = n_u[r, k]
+            s_val = 0.0
+            s_hit = 0.0
+            for i in range(nt):
+                dt = (t_rows[r] + (0.0 if sharp[r] else tk[i])) - t_c
+                cx = pos[0] + vel[0] * dt
+                cy = pos[1] + vel[1] * dt
+                cz = pos[2] + vel[2] * dt
+                if has_acc:
+                    cx = cx + 0.5 * acc[0] * dt * dt
+                    cy = cy + 0.5 * acc[1] * dt * dt
+                    cz = cz + 0.5 * acc[2] * dt * dt
+                c2 = cx * cx + cy * cy + cz * cz
+                for j in range(nh):
+                    h = (0.0 if sharp[r] else hk[j]) / focal_px
+                    inv = 1.0 / math.sqrt(h * h + nu * nu + 1.0)
+                    dx = h * inv
+                    dy = nu * inv
+                    dz = inv
+                    dc = dx * cx + dy * cy + dz * cz
+                    b = dc * dc - c2 + R2
+                    if b >= 0.0:
+                        s = dc - math.sqrt(b)
+                        nx = s * dx - cx
+                        ny = s * dy - cy
+                        nz = s * dz - cz
+                        a = max(math.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+                        a = 1.0 / a
+                        lam = nx * a * light[0] + ny * a * light[1] + nz * a * light[2]
+                        s_val += (max(lam, 0.0) + ambient - bg[r, k]) / scale
+                        s_hit += 1.0
+            val[r, k] = s_val / n_samples
+            cov[r, k] = s_hit / n_samples
+    return val, cov

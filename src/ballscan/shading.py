@@ -32,6 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
+from ._kernels import limb_values
 from .camera import LineScanCamera
 from .detection import median as _median
 from .edges import EdgeMeasurements
@@ -442,36 +443,27 @@ class LimbProfile:
         # clamped before rounding, the same columns as clipping after it
         cols = np.rint(np.fmin(np.fmax(u, 0.0), width - 1.0)).astype(int)
         bg = self.background_dn[lines[:, None], cols]
-        val_out, cov_out = np.empty(u.shape), np.empty(u.shape)
         # a sharp edge hardly moves during the exposure or across the
         # pixel's height: one sample at the line's centre time will do
         sharp = ~(self.spread_px[lines] >= self.sharp_px) | (not average)
-        for rows, ts, hs in ((np.flatnonzero(sharp), np.zeros(1), np.zeros(1)), (np.flatnonzero(~sharp), tk, hk)):
-            if rows.size == 0:
-                continue
-            if rows.size == lines.size:
-                # every row in one group (always so with average=False): views, not copies
-                rows = slice(None)
-            t = self.t_lines_s[lines[rows]][:, None, None, None] + ts[None, :, None, None]
-            hit, nx, ny, nz = _normal_components(self.camera, self.motion, t, u[rows][:, None, None, :], hs[None, None, :, None])
-            # polarity (ambient + max(n . light, 0) - bg) / contrast, in place in nx
-            nx *= light[0]
-            nx += np.multiply(ny, light[1], out=ny)
-            nx += np.multiply(nz, light[2], out=nz)
-            np.maximum(nx, 0.0, out=nx)
-            nx += self.shading.ambient_dn
-            nx -= bg[rows][:, None, None, :]
-            nx /= self.polarity * self.contrast_dn  # the sign of +-x / c is exact either way
-            nx[~hit] = 0.0
-            n_samples = ts.size * hs.size
-            if n_samples == 1:
-                # the mean of one sample is the sample (spares two reductions)
-                val_out[rows] = nx[:, 0, 0, :]
-                cov_out[rows] = hit[:, 0, 0, :]
-            else:
-                # np.mean's sum and division, without its wrapper
-                val_out[rows] = nx.sum(axis=(1, 2)) / n_samples
-                cov_out[rows] = hit.sum(axis=(1, 2), dtype=float) / n_samples
+        m = self.motion
+        val_out, cov_out = limb_values(
+            np.ascontiguousarray(self.t_lines_s[lines], dtype=float),
+            np.ascontiguousarray(self.camera.backproject(u), dtype=float),
+            np.ascontiguousarray(bg, dtype=float),
+            np.ascontiguousarray(sharp, dtype=np.bool_),
+            tk,
+            np.asarray(hk, dtype=float),
+            float(self.camera.focal_px),
+            np.asarray(m.position_m, dtype=float),
+            np.asarray(m.velocity_mps, dtype=float),
+            np.asarray(m.acceleration_mps2, dtype=float),
+            float(m.t_c_s),
+            float(m.radius_m),
+            np.ascontiguousarray(light, dtype=float),
+            float(self.shading.ambient_dn),
+            float(self.polarity * self.contrast_dn),
+        )
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
 
