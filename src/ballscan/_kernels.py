@@ -460,3 +460,33 @@ def limb_values(
             val[r, k] = s_val / n_samples
             cov[r, k] = s_hit / n_samples
     return val, cov
+
+
+@njit(cache=True)
+def coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Direct sum over samples and pixels of :func:`ballscan.fit.pixel_coverage`.
+
+    ``u_lo, u_hi, wgt`` (P, N, S) chord samples, ``cols`` (N, C) pixel
+    centres; returns (P, N, C): for each pixel the samples' weights times
+    the overlap of ``[lo, hi]`` with ``[col - 1/2, col + 1/2]``, summed in
+    sample order (NaN where a sample is).
+    """
+    P, N, S = u_lo.shape
+    C = cols.shape[1]
+    out = np.empty((P, N, C))
+    for q in range(P):
+        for n in range(N):
+            for c in range(C):
+                a = cols[n, c] - 0.5
+                acc = 0.0
+                for j in range(S):
+                    lo = u_lo[q, n, j]
+                    hi = u_hi[q, n, j]
+                    if lo != lo or hi != hi:
+                        ov = np.nan
+                    else:
+                        ov = (hi if hi < a + 1.0 else a + 1.0) - (lo if lo > a else a)
+                        ov = min(max(ov, 0.0), 1.0)
+                    acc = acc + ov * wgt[q, n, j] if j > 0 else ov * wgt[q, n, j]
+                out[q, n, c] = acc
+    return out

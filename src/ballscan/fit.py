@@ -71,7 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import averaged_samples, chord_edges
+from ._kernels import averaged_samples, chord_edges, coverage_direct
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from .camera import LineScanCamera
 from .detection import median as _median
@@ -1611,25 +1611,19 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
 
 
 def _pixel_coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """:func:`pixel_coverage` as the direct sum over samples and pixels (any pixel centres)."""
-    a = np.asarray(cols, dtype=float) - 0.5
-    if a.ndim == 2:
-        a = a[:, None, None, :]
-    # in place: the arrays are tens of thousands of entries, called several
-    # times per ball
-    ov = np.minimum(u_hi[..., None], a + 1.0)
-    ov -= np.maximum(u_lo[..., None], a)
-    np.clip(ov, 0.0, 1.0, out=ov)
-    ov *= wgt[..., None]
-    if ov.shape[-1] == 1:
-        return ov.sum(axis=(-3, -2))
-    # the sum over the samples one after the other: the order of numpy's
-    # reduction over these two outer axes (the same bits), at half its cost
-    flat = ov.reshape(ov.shape[:-3] + (-1, ov.shape[-1]))
-    out = flat[..., 0, :].copy()
-    for j in range(1, flat.shape[-2]):
-        out += flat[..., j, :]
-    return out
+    """:func:`pixel_coverage` as the direct sum over samples and pixels (any pixel centres; :func:`ballscan._kernels.coverage_direct`)."""
+    lead = u_lo.shape[:-2]
+    P, N = (int(np.prod(lead[:-1])), lead[-1]) if lead else (1, 1)
+    c = np.asarray(cols, dtype=float)
+    c2 = np.ascontiguousarray(np.broadcast_to(c, (N, c.shape[-1])))
+    shp = (P, N, -1)
+    out = coverage_direct(
+        np.ascontiguousarray(u_lo.reshape(shp), dtype=float),
+        np.ascontiguousarray(u_hi.reshape(shp), dtype=float),
+        np.ascontiguousarray(wgt.reshape(shp), dtype=float),
+        c2,
+    )
+    return out.reshape(lead + (c2.shape[-1],))
 
 
 def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
