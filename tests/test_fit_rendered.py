@@ -18,6 +18,9 @@ Targets and what is met (see the module's tests for the tolerances used):
   model, 75.5 % before; the sensor has 0.8 % PRNU, so the matched edges of
   session 6 are not used: with them, before they were restricted to
   flat-fielded sensors, 69.5 %).
+* the default on a flat-fielded sensor (no PRNU, Gaussian noise): matched
+  edges and the pixels of the ends and spread lines, speed RMSE 1.05x the
+  pixel bound over 40 oblique renders (bench_fit, 100: 1.03x / 1.06x).
 * the fit of the ends' pixels (``pixels=True``) on a flat ball rendered with
   a finely sampled exposure: noise-free perpendicular 0.0003 %; with
   Gaussian pixel noise its speed RMSE near the pixel Cramér–Rao bound.
