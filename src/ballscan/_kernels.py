@@ -299,22 +299,6 @@ def pixel_residuals(
     return out
 
 
-def warm_up() -> None:
-    """Load (or compile) the kernels now, on tiny inputs.
-
-    The first call in a process otherwise carries it (about 0.2 s from the
-    on-disk cache, seconds to compile): a stream calls this before its
-    first ball so that the ball's latency does not.
-    """
-    th = np.array([[0.0, 0.0, 3.0, 30.0, 0.0, 0.0]])
-    t = np.zeros((1, 1))
-    g = np.zeros(1)
-    gw = np.full(1, 2.0)
-    _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
-    one = np.ones((1, 1))
-    pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
-
-
 @njit(cache=True)
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
     """The chord model's edges and their analytic derivatives (:func:`ballscan.fit.chord_jacobian`).
@@ -490,3 +474,25 @@ def coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: n
                     acc = acc + ov * wgt[q, n, j] if j > 0 else ov * wgt[q, n, j]
                 out[q, n, c] = acc
     return out
+
+
+def warm_up() -> None:
+    """Load (or compile) every kernel now, on tiny inputs.
+
+    The first call in a process otherwise carries it (about 0.2 s from the
+    on-disk cache, seconds to compile): a stream calls this before its
+    first ball so that the ball's latency does not.
+    """
+    th = np.array([[0.0, 0.0, 3.0, 30.0, 0.0, 0.0]])
+    t = np.zeros((1, 1))
+    g = np.zeros(1)
+    gw = np.full(1, 2.0)
+    _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
+    one = np.ones((1, 1))
+    pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
+    coverage_direct(lo, hi, w, np.zeros((1, 1)))
+    chord_edges(th[0], np.zeros(1), 0.03, 3000.0, 0.0, 0.0, 0.0, np.zeros(3))
+    limb_values(
+        np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
+        3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,
+    )

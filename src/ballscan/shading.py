@@ -447,20 +447,21 @@ class LimbProfile:
         # pixel's height: one sample at the line's centre time will do
         sharp = ~(self.spread_px[lines] >= self.sharp_px) | (not average)
         m = self.motion
+        # contiguous and writeable arrays: the kernel's one compiled signature
         val_out, cov_out = limb_values(
-            np.ascontiguousarray(self.t_lines_s[lines], dtype=float),
-            np.ascontiguousarray(self.camera.backproject(u), dtype=float),
-            np.ascontiguousarray(bg, dtype=float),
-            np.ascontiguousarray(sharp, dtype=np.bool_),
-            tk,
-            np.asarray(hk, dtype=float),
+            np.require(self.t_lines_s[lines], float, ("C", "W")),
+            np.require(self.camera.backproject(u), float, ("C", "W")),
+            np.require(bg, float, ("C", "W")),
+            np.require(np.broadcast_to(sharp, lines.shape), np.bool_, ("C", "W")),
+            np.require(tk, float, ("C", "W")),
+            np.require(hk, float, ("C", "W")),
             float(self.camera.focal_px),
-            np.asarray(m.position_m, dtype=float),
-            np.asarray(m.velocity_mps, dtype=float),
-            np.asarray(m.acceleration_mps2, dtype=float),
+            np.array(m.position_m, dtype=float),
+            np.array(m.velocity_mps, dtype=float),
+            np.array(m.acceleration_mps2, dtype=float),
             float(m.t_c_s),
             float(m.radius_m),
-            np.ascontiguousarray(light, dtype=float),
+            np.array(light, dtype=float),
             float(self.shading.ambient_dn),
             float(self.polarity * self.contrast_dn),
         )
