@@ -98,6 +98,18 @@ def averaged_samples(
             B = max(z_line, 0.0) / (2.0 * focal_px)
             AmB = abs(A - B)
             ApB = A + B
+            if not want_samples and (x0 - ApB >= R or x0 + ApB <= -R):
+                # the line misses the ball: every kink clips to the same pole,
+                # every sample weighs 0 (the loop below gives these values)
+                u_c = _project(y_line / (z_line if z_line > 0.0 else 1.0), principal_px, focal_px, k1, k2)
+                left[p, n] = u_c
+                right[p, n] = u_c
+                area[p, n] = 0.0
+                presence[p, n] = 0.0
+                if full:
+                    spread[p, n] = 0.0
+                    valid[p, n] = z_line > 0.0
+                continue
             te[0] = x0 - ApB
             te[1] = x0 - AmB
             te[2] = x0 + AmB
