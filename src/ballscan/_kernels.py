@@ -21,6 +21,19 @@ import numpy as np
 from numba import njit
 
 
+def as_arg(a, dtype=np.float64) -> np.ndarray:
+    """``a`` as a C-contiguous, writeable array of ``dtype`` (a copy only where it is not one).
+
+    Every kernel has one compiled signature, for such arrays; a read-only
+    (broadcast) or strided argument would compile another on first sight.
+    ``np.require`` does the same at several times the cost (a kernel's
+    arguments are converted some fifty times per ball).
+    """
+    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous and a.flags.writeable:
+        return a
+    return np.array(a, dtype=dtype, order="C")
+
+
 @njit(cache=True, inline="always")
 def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> float:
     """Pixel of a normalised sensor coordinate (the camera's radial distortion)."""

@@ -71,7 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import averaged_samples, chord_edges, coverage_direct
+from ._kernels import as_arg, averaged_samples, chord_edges, coverage_direct
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from .camera import LineScanCamera
 from .detection import median as _median
@@ -211,15 +211,15 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     (:func:`ballscan._kernels.averaged_samples`).
     """
     # contiguous and writeable: the kernel's one compiled signature
-    th = np.require(th, float, ("C", "W"))
+    th = as_arg(th)
     t = np.asarray(t_all, dtype=float)
-    t = np.require(t if t.ndim == 2 else t.reshape(1, -1), float, ("C", "W"))
+    t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
     acc = np.array([float(a) for a in acceleration_mps2])
     g, gw = _gauss(n_nodes)
     exposure = float(camera.exposure)
     left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
         th, t, float(R), exposure, float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
-        acc, np.require(g, float, ("C", "W")), np.require(gw, float, ("C", "W")), bool(full), bool(return_samples),
+        acc, as_arg(g), as_arg(gw), bool(full), bool(return_samples),
     )
     samples = None
     if return_samples:
@@ -332,7 +332,7 @@ def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
     (:func:`ballscan._kernels.chord_edges`).
     """
     return chord_edges(
-        np.require(theta, float, ("C", "W")), np.require(t, float, ("C", "W")), float(radius_m),
+        as_arg(theta), as_arg(t), float(radius_m),
         float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
         np.array([float(a) for a in acceleration_mps2]),
     )
@@ -1617,9 +1617,9 @@ def _pixel_coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, 
     P, N = (int(np.prod(lead[:-1])), lead[-1]) if lead else (1, 1)
     c = np.asarray(cols, dtype=float)
     # contiguous and writeable (a broadcast view is read-only): the kernel's one compiled signature
-    c2 = np.require(np.broadcast_to(c, (N, c.shape[-1])), float, ("C", "W"))
+    c2 = as_arg(np.broadcast_to(c, (N, c.shape[-1])))
     shp = (P, N, -1)
-    out = coverage_direct(*(np.require(a.reshape(shp), float, ("C", "W")) for a in (u_lo, u_hi, wgt)), c2)
+    out = coverage_direct(*(as_arg(a.reshape(shp)) for a in (u_lo, u_hi, wgt)), c2)
     return out.reshape(lead + (c2.shape[-1],))
 
 
@@ -1635,7 +1635,7 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
     """
     me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True)
     P, n_rows = thetas.shape[0], pix["cols"].shape[0]
-    u_lo, u_hi, wgt = (np.require(a.reshape(P, n_rows, -1), float, ("C", "W")) for a in me.samples)
+    u_lo, u_hi, wgt = (as_arg(a.reshape(P, n_rows, -1)) for a in me.samples)
     return _kernel_pixel_residuals(
         u_lo, u_hi, wgt, pix["cols"], pix["mask"], pix["shade"], pix["w"], pix["p"], pix["group"], pix["n_groups"], pix["n"]
     )

@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import limb_values
+from ._kernels import as_arg, limb_values
 from .camera import LineScanCamera
 from .detection import median as _median
 from .edges import EdgeMeasurements
@@ -449,12 +449,12 @@ class LimbProfile:
         m = self.motion
         # contiguous and writeable arrays: the kernel's one compiled signature
         val_out, cov_out = limb_values(
-            np.require(self.t_lines_s[lines], float, ("C", "W")),
-            np.require(self.camera.backproject(u), float, ("C", "W")),
-            np.require(bg, float, ("C", "W")),
-            np.require(np.broadcast_to(sharp, lines.shape), np.bool_, ("C", "W")),
-            np.require(tk, float, ("C", "W")),
-            np.require(hk, float, ("C", "W")),
+            as_arg(self.t_lines_s[lines]),
+            as_arg(self.camera.backproject(u)),
+            as_arg(bg),
+            as_arg(np.broadcast_to(sharp, lines.shape), np.bool_),
+            as_arg(tk),
+            as_arg(hk),
             float(self.camera.focal_px),
             np.array(m.position_m, dtype=float),
             np.array(m.velocity_mps, dtype=float),
