@@ -240,7 +240,8 @@ def test_default_fit_near_the_cramer_rao_bound_on_a_flat_fielded_sensor():
     # 1.06x the bound (the window edges and levelled areas: 1.25x); these
     # 40 runs: 1.05x, 1-sigma coverage 0.72 (40 runs scatter by about 20 %)
     assert sum(used) >= 36
-    assert rmse < 1.5 * bound.speed_sigma_mps
+    # seeded: 1.05x measured; the matched-edge fit alone on these images 1.25x
+    assert rmse < 1.2 * bound.speed_sigma_mps
     assert 0.4 <= np.mean(np.abs(err) <= sig) <= 0.95
 
 

@@ -10,7 +10,8 @@ arithmetic in one call.  The mathematics is that of
 Notes; :func:`ballscan.fit._model_core` documents the layout), which the
 tests compare it against.
 
-Compiled on first use and cached on disk (``cache=True``).
+Compiled on first use and cached on disk (``cache=True``, where numba finds
+a writable location; else compiled in each process).
 """
 
 from __future__ import annotations
@@ -19,6 +20,23 @@ import math
 
 import numpy as np
 from numba import njit
+
+
+def _jit(**options):
+    """``numba.njit`` cached on disk where numba finds a writable cache location, else compiled per process.
+
+    With ``cache=True`` numba raises at decoration when it has nowhere to
+    write (a read-only install without a writable home or
+    ``NUMBA_CACHE_DIR``); the estimator must still import there.
+    """
+
+    def decorate(func):
+        try:
+            return njit(cache=True, **options)(func)
+        except RuntimeError:
+            return njit(cache=False, **options)(func)
+
+    return decorate
 
 
 def as_arg(a, dtype=np.float64) -> np.ndarray:
@@ -34,7 +52,7 @@ def as_arg(a, dtype=np.float64) -> np.ndarray:
     return np.array(a, dtype=dtype, order="C")
 
 
-@njit(cache=True, inline="always")
+@_jit(inline="always")
 def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> float:
     """Pixel of a normalised sensor coordinate (the camera's radial distortion)."""
     if k1 == 0.0 and k2 == 0.0:
@@ -43,7 +61,7 @@ def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> 
     return principal + focal * (n * (1.0 + n2 * (k1 + k2 * n2)))
 
 
-@njit(cache=True)
+@_jit()
 def averaged_samples(
     th: np.ndarray,
     t: np.ndarray,
@@ -218,7 +236,7 @@ def averaged_samples(
     return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
 
 
-@njit(cache=True)
+@_jit()
 def pixel_residuals(
     s_lo: np.ndarray,
     s_hi: np.ndarray,
@@ -324,7 +342,7 @@ def pixel_residuals(
     return out
 
 
-@njit(cache=True)
+@_jit()
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
     """The chord model's edges and their analytic derivatives (:func:`ballscan.fit.chord_jacobian`).
 
@@ -394,7 +412,7 @@ def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: flo
     return u, J, ok, xs, ws, taus
 
 
-@njit(cache=True)
+@_jit()
 def limb_values(
     t_rows: np.ndarray,
     n_u: np.ndarray,
@@ -471,7 +489,7 @@ def limb_values(
     return val, cov
 
 
-@njit(cache=True)
+@_jit()
 def coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
     """Direct sum over samples and pixels of :func:`ballscan.fit.pixel_coverage`.
 
