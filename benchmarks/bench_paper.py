@@ -19,7 +19,6 @@ import argparse
 import statistics
 import time
 
-import numpy as np
 
 from ballscan.camera import LineScanCamera
 from ballscan.estimate import estimate_image

@@ -186,14 +186,19 @@ def test_matched_edges_on_uniform_balls_and_flat_fielded_sensors_only():
     assert flat.velocity_mps != seen[0.0, "none", False].velocity_mps
 
 
+def _flat_16bit_ball(m: BallMotion, line_rate_hz: float, n_lines: int, prnu: float, seed: int):
+    """The default estimate of a flat ball on a 240-px 16-bit sensor (5 DN read noise, ``prnu`` column gains)."""
+    cam = LineScanCamera(240, 3000.0, 119.5, line_rate_hz, None)
+    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=prnu)
+    r = render(cam, (m, Appearance.flat(0.8)), n_lines, background_level=0.1, noise=noise, seed=seed)
+    return estimate_image(LineImage(r.image.astype(float), float(noise.max_dn), 16, "flat"), cam, 0.0335).balls[0]
+
+
 def test_a_ball_on_few_lines_keeps_the_matched_edge_fit():
     # 60 m/s at 10 kHz: about 11 lines; the spread lines' pixels are not
     # used there (a review measured their speed errors 1.45 sigma RMS)
-    cam = LineScanCamera(240, 3000.0, 119.5, 10000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (60.0, 0.0, 0.0))
-    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.0)
-    r = render(cam, (m, Appearance.flat(0.8)), 40, background_level=0.1, noise=noise, seed=3)
-    b = estimate_image(LineImage(r.image.astype(float), float(noise.max_dn), 16, "few"), cam, 0.0335).balls[0]
+    b = _flat_16bit_ball(m, line_rate_hz=10000.0, n_lines=40, prnu=0.0, seed=3)
     assert b.extra["edges"] == "matched" and b.extra["pixels"] == "off"
     assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
 
@@ -201,9 +206,6 @@ def test_a_ball_on_few_lines_keeps_the_matched_edge_fit():
 def test_a_ball_too_small_to_measure_its_columns_keeps_the_windows():
     # 17 px across at 12 m: too few interior columns to measure the gains'
     # scatter (NaN), which is not taken for a flat-fielded sensor
-    cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 12.0), (30.0, 0.0, 0.0))
-    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008)
-    r = render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=noise, seed=2)
-    b = estimate_image(LineImage(r.image.astype(float), float(noise.max_dn), 16, "small"), cam, 0.0335).balls[0]
+    b = _flat_16bit_ball(m, line_rate_hz=50000.0, n_lines=200, prnu=0.008, seed=2)
     assert b.extra["edges"] == "window" and b.extra["column_gain_sigma"] is not None and np.isnan(b.extra["column_gain_sigma"])

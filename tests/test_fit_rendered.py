@@ -174,11 +174,25 @@ def test_speed_sigma_is_honest_over_noisy_renders():
     assert 0.60 <= frac <= 0.76, frac
 
 
+def _noisy_flat_runs(m: BallMotion, seed: int, pixels: bool = False, runs: int = 40):
+    """Speed errors, reported sigmas and estimates over ``runs`` noisy copies (5 DN on 700) of a finely rendered flat ball."""
+    from ballscan.detection import detect
+    from ballscan.estimate import estimate_region
+
+    clean = render(CAM, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
+    t = np.arange(200) / CAM.line_rate_hz
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(runs):
+        img = LineImage(clean * 1000.0 + 5.0 * rng.standard_normal(clean.shape), 1e12, 16, "fine")
+        det = detect(img)
+        out.append(estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t, "fit", pixels=pixels))
+    return np.array([b.speed_mps - m.speed_mps for b in out]), np.array([b.speed_sigma_mps for b in out]), out
+
+
 @pytest.mark.slow
 def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     """pixels=True: exact on a noise-free render, near the pixel bound with noise, sigma not too small."""
-    from ballscan.detection import detect
-    from ballscan.estimate import estimate_region
     from ballscan.precision import pixel_crlb
 
     m0 = _oblique(0.0)
@@ -190,19 +204,9 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     assert abs(b.velocity_mps[2]) < 0.01
 
     m = _oblique(30.0)
-    clean = render(CAM, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
     bound = pixel_crlb(CAM, m, 5.0, 700.0)
-    t = np.arange(200) / CAM.line_rate_hz
-    rng = np.random.default_rng(7)
-    err, sig, used = [], [], []
-    for _ in range(40):
-        img = LineImage(clean * 1000.0 + 5.0 * rng.standard_normal(clean.shape), 1e12, 16, "fine")
-        det = detect(img)
-        b = estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t, "fit", pixels=True)
-        used.append(b.extra["pixels"] == "used")
-        err.append(b.speed_mps - m.speed_mps)
-        sig.append(b.speed_sigma_mps)
-    err, sig = np.array(err), np.array(sig)
+    err, sig, runs = _noisy_flat_runs(m, seed=7, pixels=True)
+    used = [b.extra["pixels"] == "used" for b in runs]
     rmse = float(np.sqrt(np.mean(err**2)))
     # measured over 100 runs of benchmarks/bench_fit.py at this geometry:
     # 1.10x the bound (edges and levelled areas: 1.94x); 40 runs scatter by
@@ -217,24 +221,12 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
 @pytest.mark.slow
 def test_default_fit_near_the_cramer_rao_bound_on_a_flat_fielded_sensor():
     """The default on a uniform ball and a sensor without PRNU: matched edges and the spread lines' pixels."""
-    from ballscan.detection import detect
-    from ballscan.estimate import estimate_region
     from ballscan.precision import pixel_crlb
 
     m = _oblique(30.0)
-    clean = render(CAM, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
     bound = pixel_crlb(CAM, m, 5.0, 700.0)
-    t = np.arange(200) / CAM.line_rate_hz
-    rng = np.random.default_rng(11)
-    err, sig, used = [], [], []
-    for _ in range(40):
-        img = LineImage(clean * 1000.0 + 5.0 * rng.standard_normal(clean.shape), 1e12, 16, "fine")
-        det = detect(img)
-        b = estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t)
-        used.append(b.extra["pixels"] == "spread" and b.extra["edges"] == "matched")
-        err.append(b.speed_mps - m.speed_mps)
-        sig.append(b.speed_sigma_mps)
-    err, sig = np.array(err), np.array(sig)
+    err, sig, runs = _noisy_flat_runs(m, seed=11)
+    used = [b.extra["pixels"] == "spread" and b.extra["edges"] == "matched" for b in runs]
     rmse = float(np.sqrt(np.mean(err**2)))
     # measured over 100 runs of benchmarks/bench_fit.py at this geometry:
     # 1.06x the bound (the window edges and levelled areas: 1.25x); these

@@ -7,7 +7,6 @@ stderr with exit status 2; nothing prints a traceback.
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 from typing import Optional

@@ -1222,7 +1222,7 @@ def summary_markdown(res: ExperimentResult, command: str | None = None, quick: b
         f"- levels: ball {sc.ball_level:g}, background {sc.background_level:g} (linear), shading {'on' if sc.shading else 'off'}",
         f"- sensor: {sc.noise.bits} bit, white {sc.noise.white_dn:g} DN, read noise {sc.noise.read_dn:g} DN, full well "
         f"{sc.noise.full_well_e} e-, PRNU {sc.noise.prnu_sigma:g}",
-        f"- sweeps: " + "; ".join(f"{s.factor} in {list(s.values)}" for s in cfg.sweeps),
+        "- sweeps: " + "; ".join(f"{s.factor} in {list(s.values)}" for s in cfg.sweeps),
         f"- {cfg.trials} trials per point and texture ({', '.join(cfg.textures)}), seed {cfg.seed}; methods {', '.join(cfg.methods)}"
         + ("; Cramér–Rao bound of the pixels" if cfg.bound else ""),
         "",
