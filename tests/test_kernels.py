@@ -7,7 +7,7 @@ import pytest
 
 from ballscan import _kernels as K
 from ballscan.camera import LineScanCamera
-from ballscan.fit import _model_core, _pixel_coverage_direct, param_scale, pixel_coverage
+from ballscan.fit import _model_core, param_scale, pixel_coverage
 from ballscan.motion import BallMotion
 from ballscan.shading import surface_normals
 
@@ -22,14 +22,19 @@ def _samples(n_sets: int = 3, n_lines: int = 30, nodes: int = 8, seed: int = 0):
     return t, _model_core(CAM, thetas, MOTION.radius_m, t, (0.0, 0.0, 0.0), nodes, True).samples
 
 
-def test_coverage_direct_equals_the_overlap_sum():
+def test_coverage_grid_equals_the_overlap_sum():
+    # shared columns, each line its own fractional offsets in descending order, and ends beyond the grid
     _, (lo, hi, w) = _samples()
-    cols = np.arange(985.0, 1062.0)
-    a = cols[None, None, None, None, :] - 0.5
-    ref = (np.clip(np.minimum(hi[..., None], a + 1.0) - np.maximum(lo[..., None], a), 0.0, 1.0) * w[..., None]).sum(axis=(2, 3))
-    got = _pixel_coverage_direct(lo, hi, w, cols)
-    assert np.abs(got - ref).max() < 1e-12
-    assert ref.max() > 0.99
+    lo = lo.copy()
+    lo[0, 3, 0, 0] = -np.inf
+    rng = np.random.default_rng(1)
+    for cols in (np.arange(985.0, 1062.0), 1040.3 - np.arange(30.0)[None, :] + rng.integers(-20, 20, size=(lo.shape[1], 1))):
+        a = (cols[None, :, None, None, :] if cols.ndim == 2 else cols[None, None, None, None, :]) - 0.5
+        ref = (np.clip(np.minimum(hi[..., None], a + 1.0) - np.maximum(lo[..., None], a), 0.0, 1.0) * w[..., None]).sum(axis=(2, 3))
+        got = pixel_coverage(lo, hi, w, cols)
+        assert np.abs(got - ref).max() < 1e-12
+        assert np.array_equal(got == 0.0, ref == 0.0)  # uncovered pixels exactly 0
+        assert ref.max() > 0.99
 
 
 def test_pixel_residuals_equal_coverage_times_shade_and_group_brightness():
@@ -99,5 +104,5 @@ def test_every_kernel_compiles_one_signature_only():
         img = LineImage(r.image.astype(float), float(noise.max_dn), 16, "k")
         for pixels in (False, True):
             estimate_image(img, cam, 0.0335, pixels=pixels)
-    for kernel in (K.averaged_samples, K.pixel_residuals, K.coverage_direct, K.chord_edges, K.limb_values):
+    for kernel in (K.averaged_samples, K.pixel_residuals, K.coverage_grid, K.chord_edges, K.limb_values):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)

@@ -236,6 +236,55 @@ def averaged_samples(
     return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
 
 
+@_jit(inline="always")
+def _ramp_histogram(lo: np.ndarray, hi: np.ndarray, w: np.ndarray, a0: float, span: int, hw: np.ndarray, hwf: np.ndarray) -> bool:
+    """One line's chord samples as a histogram over a unit grid of ``span`` pixels from ``a0`` (pixels).
+
+    The overlap of ``[lo, hi]`` with pixel ``k`` (``[a0 + k, a0 + k + 1]``)
+    is ``ramp(hi - a) - ramp(lo - a)``, ``ramp = clip(., 0, 1)``; the sum
+    of the ramps over the samples is, for all the grid's pixels at once, a
+    histogram of the samples' ends by pixel (``hw``: weights, ``hwf``:
+    weights times the fractional position) and its cumulative sum.  On
+    return pixel ``k``'s coverage is ``hw[k + 2] + hwf[k + 1]`` (``hw``
+    holds the sums over the bins from each bin up).  An infinite end lies
+    beyond the grid; ``hi < lo`` covers nothing.  Returns False (the line's
+    coverage undefined) where a sample is NaN.
+    """
+    hw[:] = 0.0
+    hwf[:] = 0.0
+    for j in range(lo.shape[0]):
+        lj = lo[j]
+        hj = hi[j]
+        wj = w[j]
+        if lj != lj or hj != hj or wj != wj:
+            return False
+        if hj < lj:
+            hj = lj
+        for side in range(2):
+            x = hj if side == 0 else lj
+            sw = wj if side == 0 else -wj
+            t = x - a0
+            if t >= span:
+                # beyond the grid: every pixel's ramp at 1
+                hw[span + 1] += sw
+            elif t >= -1.0:
+                b = math.floor(t)
+                bi = int(b) + 1
+                hw[bi] += sw
+                hwf[bi] += sw * (t - b)
+            # else before the grid: no pixel's ramp
+    for b in range(span, -1, -1):
+        hw[b] += hw[b + 1]
+    return True
+
+
+@_jit(inline="always")
+def _grid_coverage(hw: np.ndarray, hwf: np.ndarray, k: int) -> float:
+    """Pixel ``k``'s coverage from :func:`_ramp_histogram` (exactly 0 where the two ramps of every sample cancel)."""
+    cov = hw[k + 2] + hwf[k + 1]
+    return 0.0 if abs(cov) < 1e-14 else cov
+
+
 @_jit()
 def pixel_residuals(
     s_lo: np.ndarray,
@@ -267,11 +316,7 @@ def pixel_residuals(
     c = np.empty(n_out)
     num = np.empty(n_groups)
     den = np.empty(n_groups)
-    # each row's pixels on a unit grid from its first column: the overlap of
-    # [lo, hi] with a pixel is ramp(hi - a) - ramp(lo - a), ramp = clip(., 0,
-    # 1), and the sum of the ramps over the samples is, for all the row's
-    # pixels at once, a histogram of the samples by pixel and its cumulative
-    # sum (as in ballscan.fit.pixel_coverage): O(samples + pixels) per row
+    # each row's pixels on a unit grid from its first column (_ramp_histogram)
     base = np.empty(Np)
     span = 0
     for r in range(Np):
@@ -291,38 +336,11 @@ def pixel_residuals(
         den[:] = 0.0
         m = 0
         for r in range(Np):
-            hw[:] = 0.0
-            hwf[:] = 0.0
-            a0 = base[r] - 0.5
-            nan_row = False
-            for j in range(S):
-                wj = s_w[q, r, j]
-                for side in range(2):
-                    x = s_hi[q, r, j] if side == 0 else s_lo[q, r, j]
-                    sw = wj if side == 0 else -wj
-                    if not (x == x and sw == sw):
-                        nan_row = True
-                        continue
-                    t = x - a0
-                    b = math.floor(t)
-                    f = t - b
-                    if b < -1.0:
-                        b = -1.0
-                    elif b > span:
-                        b = float(span)
-                    bi = int(b) + 1
-                    hw[bi] += sw
-                    hwf[bi] += sw * f
-            # suffix sums: hw[b] becomes the sum over the bins >= b
-            for b in range(span, -1, -1):
-                hw[b] += hw[b + 1]
+            ok = _ramp_histogram(s_lo[q, r], s_hi[q, r], s_w[q, r], base[r] - 0.5, span, hw, hwf)
             for k in range(K):
                 if not mask[r, k]:
                     continue
-                ix = int(round(cols[r, k] - base[r]))
-                cov = hw[ix + 2] + hwf[ix + 1]
-                if nan_row:
-                    cov = np.nan
+                cov = _grid_coverage(hw, hwf, int(round(cols[r, k] - base[r]))) if ok else np.nan
                 ck = cov * shade[r, k]
                 c[m] = ck
                 ww = w[r, k] * w[r, k]
@@ -490,32 +508,25 @@ def limb_values(
 
 
 @_jit()
-def coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """Direct sum over samples and pixels of :func:`ballscan.fit.pixel_coverage`.
+def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.ndarray, base: np.ndarray, span: int) -> np.ndarray:
+    """Averaged pixel coverage on unit grids (:func:`ballscan.fit.pixel_coverage`).
 
-    ``u_lo, u_hi, wgt`` (P, N, S) chord samples, ``cols`` (N, C) pixel
-    centres; returns (P, N, C): for each pixel the samples' weights times
-    the overlap of ``[lo, hi]`` with ``[col - 1/2, col + 1/2]``, summed in
-    sample order (NaN where a sample is).
+    ``u_lo, u_hi, wgt`` (P, N, S) chord samples; line ``n``'s pixels are
+    ``base[n] + idx[n]`` (pixel centres, ``idx`` (N, C) integers from 0 to
+    ``span - 1``).  Returns (P, N, C): for each pixel the samples' weights
+    times the overlap of ``[lo, hi]`` with ``[col - 1/2, col + 1/2]``,
+    summed (:func:`_ramp_histogram`); NaN on a line with a NaN sample.
     """
-    P, N, S = u_lo.shape
-    C = cols.shape[1]
+    P, N, _ = u_lo.shape
+    C = idx.shape[1]
     out = np.empty((P, N, C))
+    hw = np.empty(span + 2)
+    hwf = np.empty(span + 2)
     for q in range(P):
         for n in range(N):
+            ok = _ramp_histogram(u_lo[q, n], u_hi[q, n], wgt[q, n], base[n] - 0.5, span, hw, hwf)
             for c in range(C):
-                a = cols[n, c] - 0.5
-                acc = 0.0
-                for j in range(S):
-                    lo = u_lo[q, n, j]
-                    hi = u_hi[q, n, j]
-                    if lo != lo or hi != hi:
-                        ov = np.nan
-                    else:
-                        ov = (hi if hi < a + 1.0 else a + 1.0) - (lo if lo > a else a)
-                        ov = min(max(ov, 0.0), 1.0)
-                    acc = acc + ov * wgt[q, n, j] if j > 0 else ov * wgt[q, n, j]
-                out[q, n, c] = acc
+                out[q, n, c] = _grid_coverage(hw, hwf, idx[n, c]) if ok else np.nan
     return out
 
 
@@ -533,7 +544,7 @@ def warm_up() -> None:
     _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
     one = np.ones((1, 1))
     pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
-    coverage_direct(lo, hi, w, np.zeros((1, 1)))
+    coverage_grid(lo, hi, w, np.zeros((1, 1), dtype=np.int64), np.zeros(1), 1)
     chord_edges(th[0], np.zeros(1), 0.03, 3000.0, 0.0, 0.0, 0.0, np.zeros(3))
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),

@@ -119,7 +119,7 @@ _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 _MATCHED_MAX_GAIN_SIGMA = 0.0015
 # with the matched edges, the pixels of the ball's ends and of the lines whose
 # edges spread over 0.3 px or more (the sharp lines keep their matched edges):
-# bench_fit's images, fit 1.35x / 1.25x -> about 0.9x / 1.1x the pixel bound
+# bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound
 _SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3)
 # ... on balls of at least this many lines with both edges: on ~11 lines (60
 # m/s at 10 kHz) a review measured its speed errors 1.45 sigma RMS (the

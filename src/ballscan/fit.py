@@ -71,7 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import as_arg, averaged_samples, chord_edges, coverage_direct
+from ._kernels import as_arg, averaged_samples, chord_edges, coverage_grid
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from .camera import LineScanCamera
 from .detection import median as _median
@@ -188,15 +188,6 @@ def _edges_model(camera, th, R, t, acc, n_nodes) -> ModelEdges:
     if n_nodes <= 3 or np.ndim(t) == 2:
         return _model_core(camera, th, float(R), t, acc, n_nodes, False, False)
     return averaged_model(camera, th, R, t, acc, n_nodes)
-
-
-def _project(camera: LineScanCamera, n: np.ndarray) -> np.ndarray:
-    """``camera.project_normalised(n)`` for float arrays, without its checks (pixels)."""
-    k1, k2 = camera.k1, camera.k2
-    if k1 == 0.0 and k2 == 0.0:
-        return camera.principal_px + camera.focal_px * n
-    n2 = n * n
-    return camera.principal_px + camera.focal_px * (n * (1.0 + n2 * (k1 + k2 * n2)))
 
 
 def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples, full: bool = True) -> ModelEdges:
@@ -1534,10 +1525,6 @@ def _pixel_spec(
     )
 
 
-# samples x pixels per line up to which pixel_coverage sums directly
-_DIRECT_COVERAGE_MAX = 160
-
-
 def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
     """Averaged coverage of pixels by the model's chord samples.
 
@@ -1554,81 +1541,41 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
     -------
     ndarray (P, N, C)
         Sum over the samples of weight times the overlap of ``[lo, hi]``
-        with the pixel; NaN on a line with a non-finite sample.
+        with the pixel; NaN on a line with a NaN sample.
 
     Notes
     -----
-    The overlap of ``[lo, hi]`` (``lo <= hi``) with ``[a, a + 1]`` is
-    ``ramp(hi - a) - ramp(lo - a)``, ``ramp = clip(., 0, 1)``.  Where a
-    line's pixel centres lie on a grid of unit step (any order, gaps
-    allowed: an edge's offsets, the fit's compacted windows), the sum of the
-    ramps over the samples is, for every pixel of the grid at once, a
-    histogram of the samples by pixel (weights, and weights times the
-    fractional part) and its cumulative sum: O(samples + pixels) per line
-    instead of O(samples x pixels).  Other centres, and lines of few
-    pixels (an edge's window), take the direct sum.
+    Where a line's pixel centres lie on a grid of unit step (any order, gaps
+    allowed: an edge's offsets, the fit's compacted windows, a bound's
+    columns) the sum is a histogram of the samples' ends by pixel and its
+    cumulative sum (:func:`ballscan._kernels.coverage_grid`): O(samples +
+    pixels) per line.  Other centres take the direct sum over samples and
+    pixels.
     """
     c = np.asarray(cols, dtype=float)
     lead = u_lo.shape[:-2]
-    n_lines = lead[-1] if lead else 1
-    c2 = np.broadcast_to(c, (n_lines, c.shape[-1])) if c.ndim == 1 else c
-    n_samples = u_lo.shape[-2] * u_lo.shape[-1]
-    # a few pixels per line (an edge's window): the direct sum has fewer calls
-    if c2.shape[-1] * n_samples <= _DIRECT_COVERAGE_MAX or not np.all(np.isfinite(c2)):
+    P, N = int(np.prod(lead[:-1])), lead[-1]
+    c2 = np.broadcast_to(c, (N, c.shape[-1]))
+    if c2.shape[-1] == 0 or not np.all(np.isfinite(c2)):
         return _pixel_coverage_direct(u_lo, u_hi, wgt, c)
     base = c2.min(axis=1)
     rel = c2 - base[:, None]
     idx = np.rint(rel)
     if not np.all(np.abs(rel - idx) < 1e-9):
         return _pixel_coverage_direct(u_lo, u_hi, wgt, c)
-    idx = idx.astype(np.intp)
-    span = int(idx.max()) + 1
-    shp = lead + (-1,)
-    lo, hi, w = u_lo.reshape(shp), u_hi.reshape(shp), wgt.reshape(shp)
-    # NaN poisons a line (as in the direct sum); an infinite end is just far away
-    ok = ~(np.isnan(lo) | np.isnan(hi) | np.isnan(w))
-    # a chord never covers less than nothing
-    hi = np.maximum(hi, lo)
-    # both ends in one histogram: +w at hi, -w at lo
-    x = np.concatenate([hi, lo], axis=-1)
-    wx = np.concatenate([w, -w], axis=-1)
-    okx = np.concatenate([ok, ok], axis=-1)
-    x = np.where(okx, x, 0.0)
-    wx = np.where(okx, wx, 0.0)
-    t = x - (base - 0.5)[:, None]  # from the left end of the line's first pixel
-    j = np.floor(np.clip(t, -2.0, span + 1.0))
-    # bin b = j + 1: 0 below the grid (no pixel's ramp), span + 1 beyond it
-    # (every pixel's ramp at 1); the fraction counts only on the grid
-    f = np.where((j >= 0.0) & (j < span), t - j, 0.0)
-    np.clip(j, -1.0, float(span), out=j)
-    nb = span + 2
-    n_rows = int(np.prod(lead)) if lead else 1
-    flat = (j.astype(np.intp) + 1).reshape(n_rows, -1) + (np.arange(n_rows) * nb)[:, None]
-    flat = flat.ravel()
-    hw = np.bincount(flat, weights=wx.ravel(), minlength=n_rows * nb).reshape(n_rows, nb)
-    hwf = np.bincount(flat, weights=(wx * f).ravel(), minlength=n_rows * nb).reshape(n_rows, nb)
-    # pixel k (left end at bin k + 1): ramp 1 for the samples of bins > k + 1, f for those of bin k + 1
-    suf = np.cumsum(hw[:, ::-1], axis=1)[:, ::-1]
-    grid = (suf[:, 2:] + hwf[:, 1:-1]).reshape(lead + (span,))
-    out = np.take_along_axis(grid, np.broadcast_to(idx, lead + idx.shape[-1:]), axis=-1)
-    # the sums' rounding where every sample's two ramps cancel: exactly 0 (uncovered), as the direct sum
-    out[np.abs(out) < 1e-14] = 0.0
-    bad = ~ok.all(axis=-1)
-    if bad.any():
-        out[bad] = np.nan
-    return out
+    idx = as_arg(idx, np.int64)
+    shp = (P, N, -1)
+    out = coverage_grid(*(as_arg(a.reshape(shp)) for a in (u_lo, u_hi, wgt)), idx, as_arg(base), int(idx.max()) + 1)
+    return out.reshape(lead + (c2.shape[-1],))
 
 
 def _pixel_coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """:func:`pixel_coverage` as the direct sum over samples and pixels (any pixel centres; :func:`ballscan._kernels.coverage_direct`)."""
-    lead = u_lo.shape[:-2]
-    P, N = (int(np.prod(lead[:-1])), lead[-1]) if lead else (1, 1)
-    c = np.asarray(cols, dtype=float)
-    # contiguous and writeable (a broadcast view is read-only): the kernel's one compiled signature
-    c2 = as_arg(np.broadcast_to(c, (N, c.shape[-1])))
-    shp = (P, N, -1)
-    out = coverage_direct(*(as_arg(a.reshape(shp)) for a in (u_lo, u_hi, wgt)), c2)
-    return out.reshape(lead + (c2.shape[-1],))
+    """:func:`pixel_coverage` as the direct sum over samples and pixels (any pixel centres; the reference of the grid's)."""
+    a = np.asarray(cols, dtype=float) - 0.5
+    if a.ndim == 2:
+        a = a[:, None, None, :]
+    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
+    return (wgt[..., None] * ov).sum(axis=(-3, -2))
 
 
 def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:

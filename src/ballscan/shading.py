@@ -71,53 +71,6 @@ class ShadingModel:
     n_pixels: int
 
 
-def _normal_components(camera: LineScanCamera, motion: BallMotion, t_s, u_px, h_px=0.0):
-    """:func:`surface_normals` as separate components ``hit, nx, ny, nz`` (arrays of the broadcast shape).
-
-    The samples' arithmetic runs in place in five buffers of the broadcast
-    shape (the limb profile evaluates tens of thousands of samples per ball,
-    where the plain expressions' two dozen temporaries are a good part of
-    the cost); the operations and their order are those of the plain
-    expressions, so the results are the same to the bit.
-    """
-    n_u = camera.backproject(np.asarray(u_px, dtype=float))
-    h = np.asarray(h_px, dtype=float) / camera.focal_px
-    inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
-    dx, dy, dz = h * inv, n_u * inv, inv
-    c = motion.centre(np.asarray(t_s, dtype=float))
-    cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
-    shape = np.broadcast_shapes(np.shape(dx), np.shape(dy), cx.shape)
-    nx, ny, nz, a, b = (np.empty(shape) for _ in range(5))
-    # the ray's parameter at the centre's foot: dc = d . c (in nz)
-    np.multiply(dx, cx, out=nz)
-    nz += np.multiply(dy, cy, out=a)
-    nz += np.multiply(dz, cz, out=a)
-    # disc = dc^2 - |c|^2 + r^2 (in b); the first intersection s = dc - sqrt(disc) (in nz)
-    np.multiply(nz, nz, out=b)
-    b -= cx * cx + cy * cy + cz * cz
-    b += motion.radius_m**2
-    hit = b >= 0.0
-    np.maximum(b, 0.0, out=b)
-    nz -= np.sqrt(b, out=b)
-    # n = s d - c, normalised
-    np.multiply(nz, dx, out=nx)
-    nx -= cx
-    np.multiply(nz, dy, out=ny)
-    ny -= cy
-    nz *= dz
-    nz -= cz
-    np.multiply(nx, nx, out=a)
-    a += np.multiply(ny, ny, out=b)
-    a += np.multiply(nz, nz, out=b)
-    np.sqrt(a, out=a)
-    np.maximum(a, 1e-12, out=a)
-    np.divide(1.0, a, out=a)
-    nx *= a
-    ny *= a
-    nz *= a
-    return hit, nx, ny, nz
-
-
 def surface_normals(
     camera: LineScanCamera, motion: BallMotion, t_s: np.ndarray, u_px: np.ndarray, h_px: np.ndarray | float = 0.0
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -140,9 +93,25 @@ def surface_normals(
     normals : ndarray (..., 3)
         Outward unit normals at the first intersection (where ``hit``; the
         closest point of the ray otherwise).
+
+    See Also
+    --------
+    ballscan._kernels.limb_values : the same rays, compiled, for the limb profile.
     """
-    hit, nx, ny, nz = _normal_components(camera, motion, t_s, u_px, h_px)
-    normals = np.stack(np.broadcast_arrays(nx, ny, nz), axis=-1)
+    n_u = camera.backproject(np.asarray(u_px, dtype=float))
+    h = np.asarray(h_px, dtype=float) / camera.focal_px
+    inv = 1.0 / np.sqrt(h * h + n_u * n_u + 1.0)
+    dx, dy, dz = h * inv, n_u * inv, inv
+    c = motion.centre(np.asarray(t_s, dtype=float))
+    cx, cy, cz = c[..., 0], c[..., 1], c[..., 2]
+    # the ray's parameter at the centre's foot, and the first intersection
+    dc = dx * cx + dy * cy + dz * cz
+    disc = dc * dc - (cx * cx + cy * cy + cz * cz) + motion.radius_m**2
+    hit = disc >= 0.0
+    s = dc - np.sqrt(np.maximum(disc, 0.0))
+    nx, ny, nz = s * dx - cx, s * dy - cy, s * dz - cz
+    a = 1.0 / np.maximum(np.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+    normals = np.stack(np.broadcast_arrays(nx * a, ny * a, nz * a), axis=-1)
     return np.broadcast_to(hit, normals.shape[:-1]), normals
 
 
@@ -452,7 +421,7 @@ class LimbProfile:
             as_arg(self.t_lines_s[lines]),
             as_arg(self.camera.backproject(u)),
             as_arg(bg),
-            as_arg(np.broadcast_to(sharp, lines.shape), np.bool_),
+            as_arg(sharp, np.bool_),
             as_arg(tk),
             as_arg(hk),
             float(self.camera.focal_px),
