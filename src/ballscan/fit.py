@@ -1474,8 +1474,9 @@ def _pixel_spec(
     C = prof.shape[1]
     c0 = edges.profile_col0
     cols = c0 + np.arange(C, dtype=float)
-    L, Rr, sp = me.left_px[idx], me.right_px[idx], np.nan_to_num(me.spread_px[idx])
-    sig_px = np.nan_to_num(prof) > 3.0 * psig
+    L, Rr, sp = me.left_px[idx], me.right_px[idx], me.spread_px[idx]
+    sp = _nan_to_zero(sp)
+    sig_px = prof > 3.0 * psig  # (False where NaN)
     seg_lo = np.minimum(L, np.where(sig_px.any(1), cols[np.argmax(sig_px, axis=1)], np.inf)) - 4.0
     seg_hi = np.maximum(Rr, np.where(sig_px.any(1), cols[C - 1 - np.argmax(sig_px[:, ::-1], axis=1)], -np.inf)) + 4.0
     reach = sp / 2.0 + settings.pixel_window_px
@@ -1485,41 +1486,53 @@ def _pixel_spec(
     in_right = np.abs(cc - Rr[:, None]) <= reach[:, None]
     mask = np.where(is_end, (cc >= seg_lo[:, None]) & (cc <= seg_hi[:, None]), in_left | in_right)
     mask &= np.isfinite(prof) & (psig > 0)
-    # windows: 0 the left (or only) one of a line, 1 the right one where the two are apart
-    apart = (L + reach) < (Rr - reach)
-    side = np.where(is_end[:, 0:1] | ~apart[:, None], 0, np.where(cc > 0.5 * (L + Rr)[:, None], 1, 0))
-    if settings.pixel_groups == "end":
-        group = np.broadcast_to((edges.t_s[idx] > t_c).astype(int)[:, None], mask.shape)
-    else:
-        group = 2 * np.arange(idx.size)[:, None] + side
-    # compact: the usable columns of each line, left-aligned
+    # compact: the usable columns of each line, left-aligned (row-major
+    # nonzero keeps each line's columns in order)
     n_col = mask.sum(axis=1)
     keep = n_col > 0
     if not keep.any():
         return None
-    idx, mask, prof, psig, group = idx[keep], mask[keep], prof[keep], psig[keep], group[keep]
+    idx, mask, prof, psig = idx[keep], mask[keep], prof[keep], psig[keep]
     n_col = n_col[keep]
     K = int(n_col.max())
-    order = np.argsort(~mask, axis=1, kind="stable")[:, :K]
-    m = np.take_along_axis(mask, order, axis=1)
-    shade = edges.profile_shade[idx] if edges.profile_shade is not None else np.ones_like(prof)
-    shade = np.take_along_axis(shade, order, axis=1)
+    rows, ci = np.nonzero(mask)
+    pos = np.arange(rows.size) - np.repeat(np.cumsum(n_col) - n_col, n_col)
+    m = np.zeros((idx.size, K), dtype=bool)
+    m[rows, pos] = True
+
+    def packed(values, fill):
+        out = np.full((idx.size, K), fill, dtype=values.dtype)
+        out[rows, pos] = values
+        return out
+
+    # the unused slots: the line's first usable column, no weight, no value
+    cols_k = packed(cols[ci], 0.0)
+    cols_k = np.where(m, cols_k, cols_k[:, :1])
+    shade = edges.profile_shade[idx][rows, ci] if edges.profile_shade is not None else np.ones(rows.size)
     shade = np.where(np.isfinite(shade) & (shade > 0), shade, 1.0)
-    w = 1.0 / np.sqrt(np.where(psig > 0, psig, 1.0) ** 2 + settings.pixel_floor**2)
-    g = np.where(m, np.take_along_axis(group, order, axis=1), -1)
-    _, g_dense = np.unique(g[m], return_inverse=True)
-    groups = np.full(m.shape, -1, dtype=np.int64)
-    groups[m] = g_dense
+    s_u = psig[rows, ci]
+    w = 1.0 / np.sqrt(np.where(s_u > 0, s_u, 1.0) ** 2 + settings.pixel_floor**2)
+    if settings.pixel_groups == "end":
+        g = (edges.t_s[idx] > t_c).astype(np.int64)[rows]
+    else:
+        # windows: 0 the left (or only) one of a line, 1 the right one where the two are apart
+        L, Rr, reach, is_end = L[keep], Rr[keep], reach[keep], is_end[keep, 0]
+        apart = ((L + reach) < (Rr - reach)) & ~is_end
+        g = 2 * rows + (apart[rows] & (cols[ci] > 0.5 * (L + Rr)[rows]))
+    # dense group numbers in the order of the groups' labels
+    present = np.zeros(int(g.max()) + 1, dtype=np.int64)
+    present[g] = 1
+    g_dense = (np.cumsum(present) - 1)[g]
     return dict(
         t=edges.t_s[idx],
-        cols=np.where(m, cols[order], cols[order[:, :1]]),
+        cols=cols_k,
         mask=m,
-        p=np.where(m, np.nan_to_num(np.take_along_axis(prof, order, axis=1)), 0.0),
-        w=np.where(m, np.take_along_axis(w, order, axis=1), 0.0),
-        shade=shade,
-        group=groups,
+        p=packed(prof[rows, ci], 0.0),  # finite (the mask)
+        w=packed(w, 0.0),
+        shade=packed(shade, 1.0),
+        group=packed(g_dense.astype(np.int64), np.int64(-1)),
         n_groups=int(g_dense.max()) + 1,
-        n=int(m.sum()),
+        n=int(rows.size),
         n_spread=int(spread_p[idx].sum()),
         nodes=settings.pixel_nodes,
     )
@@ -1588,7 +1601,8 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
     parameter set (variable projection): the coverage's shape counts, the
     local level comes from the pixels.
     """
-    me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True)
+    # (the samples only: no edge spread or validity)
+    me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True, full=False)
     P, n_rows = thetas.shape[0], pix["cols"].shape[0]
     u_lo, u_hi, wgt = (as_arg(a.reshape(P, n_rows, -1)) for a in me.samples)
     return _kernel_pixel_residuals(
@@ -1657,6 +1671,11 @@ def _weights_masked(
     )
 
 
+def _nan_to_zero(a: np.ndarray) -> np.ndarray:
+    """``a`` with NaN as 0 (``np.nan_to_num`` without its infinities' clipping, at a third of its cost)."""
+    return np.where(np.isnan(a), 0.0, a)
+
+
 def _weight_tables(edges: EdgeMeasurements, settings: FitSettings) -> dict:
     """Per-line measurements and 1-sigma of :func:`_weights_masked`, for both windows (pixels).
 
@@ -1671,22 +1690,22 @@ def _weight_tables(edges: EdgeMeasurements, settings: FitSettings) -> dict:
     g = settings.texture_gain
     tl = edges.left_texture_px if edges.left_texture_px is not None else np.zeros(n)
     tr = edges.right_texture_px if edges.right_texture_px is not None else np.zeros(n)
-    tex_l = (g * np.nan_to_num(tl)) ** 2
-    tex_r = (g * np.nan_to_num(tr)) ** 2
+    tex_l = (g * _nan_to_zero(tl)) ** 2
+    tex_r = (g * _nan_to_zero(tr)) ** 2
     has_wide = edges.left_wide_px is not None
     T = dict(
         has_wide=has_wide,
         el_n=edges.left_px,
         er_n=edges.right_px,
-        sl_n=np.sqrt(np.nan_to_num(edges.left_sigma_px) ** 2 + floor2_l + tex_l),
-        sr_n=np.sqrt(np.nan_to_num(edges.right_sigma_px) ** 2 + floor2_r + tex_r),
+        sl_n=np.sqrt(_nan_to_zero(edges.left_sigma_px) ** 2 + floor2_l + tex_l),
+        sr_n=np.sqrt(_nan_to_zero(edges.right_sigma_px) ** 2 + floor2_r + tex_r),
     )
     if has_wide:
         T.update(
             el_w=edges.left_wide_px,
             er_w=edges.right_wide_px,
-            sl_w=np.sqrt(np.nan_to_num(edges.left_wide_sigma_px) ** 2 + floor2 + tex_l),
-            sr_w=np.sqrt(np.nan_to_num(edges.right_wide_sigma_px) ** 2 + floor2 + tex_r),
+            sl_w=np.sqrt(_nan_to_zero(edges.left_wide_sigma_px) ** 2 + floor2 + tex_l),
+            sr_w=np.sqrt(_nan_to_zero(edges.right_wide_sigma_px) ** 2 + floor2 + tex_r),
         )
     else:
         T.update(el_w=T["el_n"], er_w=T["er_n"], sl_w=T["sl_n"], sr_w=T["sr_n"])
