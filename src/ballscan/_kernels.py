@@ -361,6 +361,354 @@ def pixel_residuals(
 
 
 @_jit()
+def pixel_residuals_jacobian(
+    th: np.ndarray,
+    t: np.ndarray,
+    radius_m: float,
+    exposure_s: float,
+    focal_px: float,
+    principal_px: float,
+    k1: float,
+    k2: float,
+    g: np.ndarray,
+    gw: np.ndarray,
+    cols: np.ndarray,
+    mask: np.ndarray,
+    shade: np.ndarray,
+    w: np.ndarray,
+    p: np.ndarray,
+    group: np.ndarray,
+    n_groups: int,
+    n_out: int,
+):
+    """:func:`pixel_residuals` of one parameter set ``th`` (6,) and their exact derivatives (no acceleration).
+
+    The same arithmetic as :func:`averaged_samples` (with samples) followed
+    by :func:`pixel_residuals`, carried forward with the derivatives of
+    every intermediate with respect to ``(t_c, y0, z0, vx, vy, vz)``
+    (forward-mode differentiation by hand): the quadrature's kink angles,
+    nodes and weights, each sample's chord ends, each pixel's coverage (an
+    end moves the coverage of the pixel that holds it), the groups'
+    least-squares brightness and the whitened residuals.  Where a clip or
+    a branch holds, its derivative is that of the branch taken, as the
+    finite differences of the same computation see it away from the kinks.
+    ``t`` (Np,) are the fitted lines' times.  Returns ``(r (n_out,), J
+    (n_out, 6))``.
+    """
+    Np, K = cols.shape
+    nn = g.shape[0]
+    S = 3 * nn
+    R = radius_m
+    tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
+    lo = np.empty(S)
+    hi = np.empty(S)
+    wk = np.empty(S)
+    dlo = np.zeros((S, 6))
+    dhi = np.zeros((S, 6))
+    dwk = np.zeros((6, S))
+    te = np.empty(4)
+    dte = np.zeros((4, 6))
+    dc = np.zeros(6)
+    dA = np.zeros(6)
+    dB = np.zeros(6)
+    dAmB = np.zeros(6)
+    dang = np.zeros(6)
+    dhalf = np.zeros(6)
+    dx0v = np.zeros(6)
+    dmaxv = np.zeros(6)
+    # each row's pixels on a unit grid from its first column (as pixel_residuals)
+    base = np.empty(Np)
+    span = 0
+    for r in range(Np):
+        lo_c = np.inf
+        hi_c = -np.inf
+        for k in range(K):
+            if mask[r, k]:
+                lo_c = min(lo_c, cols[r, k])
+                hi_c = max(hi_c, cols[r, k])
+        base[r] = lo_c if lo_c <= hi_c else 0.0
+        if lo_c <= hi_c:
+            span = max(span, int(round(hi_c - lo_c)) + 1)
+    hw = np.empty(span + 2)
+    hwf = np.empty(span + 2)
+    hwd = np.empty((6, span + 2))
+    hwfd = np.empty((6, span + 2))
+    dend = np.zeros((span, 6))
+    c = np.empty(n_out)
+    cd = np.empty((n_out, 6))
+    num = np.zeros(n_groups)
+    den_g = np.zeros(n_groups)
+    dnum = np.zeros((n_groups, 6))
+    dden = np.zeros((n_groups, 6))
+    m = 0
+    for r in range(Np):
+        # ---- the line's samples and their derivatives (averaged_samples' loop)
+        dt0 = t[r] - tc
+        x0 = vx * dt0
+        z_line = z0 + vz * dt0
+        # d dt0 = -e0; d x0 = vx d dt0 + dt0 e3; d z_line = e2 - vz e0 + dt0 e5
+        A = abs(vx) * (exposure_s / 2.0)
+        sgn_vx = 1.0 if vx > 0.0 else (-1.0 if vx < 0.0 else 0.0)
+        dA[:] = 0.0
+        dA[3] = sgn_vx * (exposure_s / 2.0)
+        B = max(z_line, 0.0) / (2.0 * focal_px)
+        dB[:] = 0.0
+        if z_line > 0.0:
+            dB[0] = -vz / (2.0 * focal_px)
+            dB[2] = 1.0 / (2.0 * focal_px)
+            dB[5] = dt0 / (2.0 * focal_px)
+        AmB = abs(A - B)
+        s_ab = 1.0 if A - B > 0.0 else (-1.0 if A - B < 0.0 else 0.0)
+        for j in range(6):
+            dAmB[j] = s_ab * (dA[j] - dB[j])
+        ApB = A + B
+        for k in range(4):
+            if k == 0:
+                ck = x0 - ApB
+            elif k == 1:
+                ck = x0 - AmB
+            elif k == 2:
+                ck = x0 + AmB
+            else:
+                ck = x0 + ApB
+            # d x0
+            dc[:] = 0.0
+            dc[0] = -vx
+            dc[3] = dt0
+            for j in range(6):
+                if k == 0:
+                    dc[j] -= dA[j] + dB[j]
+                elif k == 1:
+                    dc[j] -= dAmB[j]
+                elif k == 2:
+                    dc[j] += dAmB[j]
+                else:
+                    dc[j] += dA[j] + dB[j]
+            cl = min(max(ck, -R), R)
+            te[k] = math.asin(cl / R)
+            if -R < ck < R:
+                inv = 1.0 / math.sqrt((R - ck) * (R + ck))
+                for j in range(6):
+                    dte[k, j] = dc[j] * inv
+            else:
+                for j in range(6):
+                    dte[k, j] = 0.0
+        mAB = max(A, B)
+        plateau = 1.0 / max(2.0 * mAB, 1e-300)
+        inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
+        inv_a1 = 1.0 / vx if vx != 0.0 else 0.0
+        c_inva1 = -inv_a1 * inv_a1
+        for j in range(6):
+            dx0v[j] = 0.0
+            dmaxv[j] = dA[j] if A >= B else dB[j]
+        dx0v[0] = -vx
+        dx0v[3] = dt0
+        for q in range(3):
+            half = (te[q + 1] - te[q]) / 2.0
+            for j in range(6):
+                dhalf[j] = (dte[q + 1, j] - dte[q, j]) / 2.0
+            for i in range(nn):
+                ang = te[q] + half * (1.0 + g[i])
+                for j in range(6):
+                    dang[j] = dte[q, j] + dhalf[j] * (1.0 + g[i])
+                d = R * math.sin(ang)
+                rho = R * math.cos(ang)
+                jac = rho * (half * gw[i])
+                dd = d - x0
+                dist = abs(dd)
+                s_dd = 1.0 if dd > 0.0 else (-1.0 if dd < 0.0 else 0.0)
+                # which branch of the density
+                if not ApB > 0.0:
+                    branch = 0
+                    dens = 0.0
+                elif dist > AmB:
+                    if ApB - dist > 0.0:
+                        branch = 1
+                        dens = (ApB - dist) * inv4AB
+                    else:
+                        branch = 0
+                        dens = 0.0
+                else:
+                    branch = 2
+                    dens = plateau
+                wgt = dens * jac
+                lo_m = dd - B
+                hi_m = dd + B
+                u_mean = 0.5 * (max(-A, lo_m) + min(A, hi_m))
+                dts = u_mean * inv_a1 + dt0
+                xc = vx * dts
+                yc = y0 + vy * dts
+                zc = z0 + vz * dts
+                zpos = zc > 0.0
+                zz = zc if zpos else 1.0
+                s = (xc - d) / zz
+                ww = zc + s * xc
+                den = ww * ww - rho * rho
+                disc = yc * yc + den
+                ok = (ww > rho) and (disc > 0.0)
+                if ok:
+                    root = math.sqrt(disc)
+                    inv_den = 1.0 / den
+                else:
+                    root = 1.0
+                    inv_den = 0.0
+                a_ = yc * ww
+                b_ = rho * root
+                n_lo = (a_ - b_) * inv_den
+                n_hi = (a_ + b_) * inv_den
+                jj = q * nn + i
+                if k1 == 0.0 and k2 == 0.0:
+                    lo[jj] = principal_px + focal_px * n_lo
+                    hi[jj] = principal_px + focal_px * n_hi
+                    fp_lo = focal_px
+                    fp_hi = focal_px
+                else:
+                    n2 = n_lo * n_lo
+                    lo[jj] = principal_px + focal_px * (n_lo * (1.0 + n2 * (k1 + k2 * n2)))
+                    fp_lo = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+                    n2 = n_hi * n_hi
+                    hi[jj] = principal_px + focal_px * (n_hi * (1.0 + n2 * (k1 + k2 * n2)))
+                    fp_hi = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+                wk[jj] = wgt if ok else 0.0
+                # the branches taken, as coefficients (a branch-free loop over the parameters)
+                okf = 1.0 if ok else 0.0
+                c_ab = 0.0
+                c_prod = 0.0
+                c_dd = 0.0
+                c_max = 0.0
+                if branch == 1:
+                    c_ab = inv4AB
+                    c_prod = -(ApB - dist) * inv4AB * inv4AB * 4.0
+                    c_dd = -s_dd * inv4AB
+                elif branch == 2 and 2.0 * mAB > 1e-300:
+                    c_max = -plateau * plateau * 2.0
+                sel_lo = 1.0 if -A >= lo_m else 0.0
+                sel_hi = 1.0 if A <= hi_m else 0.0
+                zf = 1.0 if zpos else 0.0
+                inv_zz = 1.0 / zz
+                inv2root = okf / (2.0 * root)
+                dinv_c = -inv_den * inv_den * okf
+                gwi = gw[i]
+                # y0 and vy move only the chord's height yc (by 1 and by dts)
+                dy_lo = okf * (ww - rho * yc / root) * inv_den
+                dy_hi = okf * (ww + rho * yc / root) * inv_den
+                dlo[jj, 1] = fp_lo * dy_lo
+                dhi[jj, 1] = fp_hi * dy_hi
+                dlo[jj, 4] = fp_lo * dy_lo * dts
+                dhi[jj, 4] = fp_hi * dy_hi * dts
+                dwk[1, jj] = 0.0
+                dwk[4, jj] = 0.0
+                # t_c, z0, vx, vz (unit seeds as constants: the compiler folds them)
+                for j, e_t, e_z, e_x, e_v in ((0, 1.0, 0.0, 0.0, 0.0), (2, 0.0, 1.0, 0.0, 0.0), (3, 0.0, 0.0, 1.0, 0.0), (5, 0.0, 0.0, 0.0, 1.0)):
+                    d_d = rho * dang[j]
+                    d_rho = -d * dang[j]
+                    d_jac = gwi * (d_rho * half + rho * dhalf[j])
+                    d_dd = d_d - dx0v[j]
+                    d_dens = c_ab * (dA[j] + dB[j]) + c_prod * (dA[j] * B + A * dB[j]) + c_dd * d_dd + c_max * dmaxv[j]
+                    dwk[j, jj] = okf * (d_dens * jac + dens * d_jac)
+                    d_u = 0.5 * (sel_lo * (-dA[j]) + (1.0 - sel_lo) * (d_dd - dB[j]) + sel_hi * dA[j] + (1.0 - sel_hi) * (d_dd + dB[j]))
+                    d_dts = d_u * inv_a1 + u_mean * c_inva1 * e_x - e_t
+                    d_xc = dts * e_x + vx * d_dts
+                    d_yc = vy * d_dts
+                    d_zc = e_z + dts * e_v + vz * d_dts
+                    d_s = (d_xc - d_d) * inv_zz - s * zf * d_zc * inv_zz
+                    d_ww = d_zc + d_s * xc + s * d_xc
+                    d_den = 2.0 * (ww * d_ww - rho * d_rho)
+                    d_root = (2.0 * yc * d_yc + d_den) * inv2root
+                    d_inv = dinv_c * d_den
+                    d_a = d_yc * ww + yc * d_ww
+                    d_b = d_rho * root + rho * d_root
+                    dlo[jj, j] = fp_lo * ((d_a - d_b) * inv_den + (a_ - b_) * d_inv)
+                    dhi[jj, j] = fp_hi * ((d_a + d_b) * inv_den + (a_ + b_) * d_inv)
+        # ---- the line's pixel coverage and its derivatives
+        a0 = base[r] - 0.5
+        okh = _ramp_histogram(lo, hi, wk, a0, span, hw, hwf)
+        # an end moves the coverage of the pixel that holds it (a sample with
+        # hi < lo covers nothing and moves nothing)
+        dend[:, :] = 0.0
+        for jj in range(S):
+            wj = wk[jj]
+            if wj == 0.0 or hi[jj] < lo[jj]:
+                continue
+            tt = hi[jj] - a0
+            if 0.0 <= tt < span:
+                kk = int(math.floor(tt))
+                for j in range(6):
+                    dend[kk, j] += wj * dhi[jj, j]
+            tt = lo[jj] - a0
+            if 0.0 <= tt < span:
+                kk = int(math.floor(tt))
+                for j in range(6):
+                    dend[kk, j] -= wj * dlo[jj, j]
+        # the weights' part: the coverage with the weights' derivatives (y0
+        # and vy leave the weights alone), four histograms in one pass
+        hwd[:, :] = 0.0
+        hwfd[:, :] = 0.0
+        for jj in range(S):
+            lj = lo[jj]
+            hj = hi[jj]
+            if hj < lj:
+                hj = lj
+            for side in range(2):
+                x = hj if side == 0 else lj
+                sg = 1.0 if side == 0 else -1.0
+                tt = x - a0
+                if tt >= span:
+                    for j in (0, 2, 3, 5):
+                        hwd[j, span + 1] += sg * dwk[j, jj]
+                elif tt >= -1.0:
+                    fb = math.floor(tt)
+                    bi = int(fb) + 1
+                    fr = tt - fb
+                    for j in (0, 2, 3, 5):
+                        hwd[j, bi] += sg * dwk[j, jj]
+                        hwfd[j, bi] += sg * dwk[j, jj] * fr
+        for j in (0, 2, 3, 5):
+            for bb in range(span, -1, -1):
+                hwd[j, bb] += hwd[j, bb + 1]
+        for k in range(K):
+            if not mask[r, k]:
+                continue
+            kk = int(round(cols[r, k] - base[r]))
+            cov = _grid_coverage(hw, hwf, kk) if okh else np.nan
+            sh = shade[r, k]
+            ck = cov * sh
+            c[m] = ck
+            ws = w[r, k] * w[r, k]
+            gi = group[r, k]
+            num[gi] += ck * p[r, k] * ws
+            den_g[gi] += ck * ck * ws
+            for j in range(6):
+                dck = (dend[kk, j] + hwd[j, kk + 2] + hwfd[j, kk + 1]) * sh if okh else np.nan
+                cd[m, j] = dck
+                dnum[gi, j] += dck * p[r, k] * ws
+                dden[gi, j] += 2.0 * ck * dck * ws
+            m += 1
+    # ---- the groups' least-squares brightness (variable projection) and the residuals
+    res = np.empty(n_out)
+    jac_out = np.empty((n_out, 6))
+    m = 0
+    for r in range(Np):
+        for k in range(K):
+            if not mask[r, k]:
+                continue
+            gi = group[r, k]
+            wr = w[r, k]
+            if den_g[gi] > 0.0:
+                Bg = num[gi] / den_g[gi]
+                res[m] = (Bg * c[m] - p[r, k]) * wr
+                for j in range(6):
+                    dBg = (dnum[gi, j] - Bg * dden[gi, j]) / den_g[gi]
+                    jac_out[m, j] = (dBg * c[m] + Bg * cd[m, j]) * wr
+            else:
+                res[m] = -p[r, k] * wr
+                for j in range(6):
+                    jac_out[m, j] = 0.0
+            m += 1
+    return res, jac_out
+
+
+@_jit()
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
     """The chord model's edges and their analytic derivatives (:func:`ballscan.fit.chord_jacobian`).
 
@@ -544,6 +892,10 @@ def warm_up() -> None:
     _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
     one = np.ones((1, 1))
     pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
+    pixel_residuals_jacobian(
+        th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw,
+        np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1,
+    )
     coverage_grid(lo, hi, w, np.zeros((1, 1), dtype=np.int64), np.zeros(1), 1)
     chord_edges(th[0], np.zeros(1), 0.03, 3000.0, 0.0, 0.0, 0.0, np.zeros(3))
     limb_values(
