@@ -939,17 +939,22 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     lam = 1e-3
     broyden = settings.broyden
     n_fresh = 0
+    normal_of = None  # the weighted Jacobian whose normal matrix A and column norms cn are at hand
     while n_eval < settings.max_nfev:
         if linear:
             Jw, rw = J, r
         else:
             w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
             Jw, rw = J * w[:, None], r * w
-        cn = np.linalg.norm(Jw, axis=0)
-        cn = np.where(cn > 0, cn, 1.0)
-        Jn = Jw / cn
-        A = Jn.T @ Jn
-        g = Jn.T @ rw
+        if Jw is not normal_of:
+            # the column-equilibrated normal matrix from J^T J (a chord step
+            # with the same Jacobian reuses it)
+            AJ = Jw.T @ Jw
+            cn = np.sqrt(np.diag(AJ))
+            cn = np.where(cn > 0, cn, 1.0)
+            A = AJ / np.outer(cn, cn)
+            normal_of = Jw
+        g = (Jw.T @ rw) / cn
         try:
             step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
         except np.linalg.LinAlgError:
