@@ -902,3 +902,377 @@ def warm_up() -> None:
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,
     )
+    # the detection's and the edges' loops (section at the end of the module)
+    mode_seek(np.zeros((1, 2), dtype=np.float32), np.zeros(1), np.ones(1), 0.5)
+    running_median(np.zeros(3), 3)
+    prof = np.zeros((1, 8))
+    k0 = np.zeros(1, dtype=np.int64)
+    k1 = np.full(1, 7, dtype=np.int64)
+    yes = np.ones(1, dtype=np.bool_)
+    walk_edges(prof, k0, k1, yes, np.zeros(1), 0.25, 1)
+    inner_differences(prof, prof, k0, k1, yes)
+    flags = np.zeros((1, 8), dtype=np.bool_)
+    edge_windows(prof, prof, flags, flags, k0, k1, k0, k0, 1)
+
+
+# ---------------------------------------------------------------------------
+# Detection and edge measurement: compiled loops of a ball's crop
+# ---------------------------------------------------------------------------
+# A stream measures each ball on a crop of about 150 x 200 pixels, within a
+# latency budget of 10 ms (benchmarks/bench_stream.py).  On arrays that small
+# the numpy versions of these loops spent most of their time in the fixed
+# cost of some hundred whole-array operations (the mode seeking of the
+# detector's background 0.75 ms per crop, its masked line medians 0.25 ms,
+# the edges' running medians 0.3 ms); one pass over the data does the same.
+
+
+@_jit()
+def _search_keys(s: np.ndarray, i: int, shift: float, x: float, right: bool) -> int:
+    """Number of ``float64(s[i, j]) - shift`` (ascending in ``j``) below ``x`` (``right``: at most ``x``)."""
+    lo = 0
+    hi = s.shape[1]
+    while lo < hi:
+        mid = (lo + hi) // 2
+        key = np.float64(s[i, mid]) - shift
+        if key < x or (right and key == x):
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+@_jit()
+def _window_spread(s: np.ndarray, i: int, m: float, half: float):
+    """Spread, count and mean offset of the values of row ``i`` of ``s`` within ``half`` of ``m``.
+
+    In ``s``'s float32 like :func:`ballscan.detection._mode_seek`'s numpy
+    form (offsets ``s - m`` and the window test in float32), the sums in
+    float64 (one running sum, where numpy sums pairwise: the same to
+    round-off).
+    """
+    m32 = np.float32(m)
+    h32 = np.float32(half)
+    k = 0
+    t1 = 0.0
+    t2 = 0.0
+    for j in range(s.shape[1]):
+        d = s[i, j] - m32
+        if abs(d) <= h32:
+            k += 1
+            dd = np.float64(d)
+            t1 += dd
+            t2 += dd * dd
+    kk = max(k, 1)
+    mean = t1 / kk
+    var = t2 / kk - mean * mean
+    return math.sqrt(max(var, 0.0) * kk / max(kk - 1, 1)), k, mean
+
+
+@_jit()
+def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float):
+    """Mode, noise sigma and final window count of each row of the row-sorted float32 ``s`` (:func:`ballscan.detection._mode_seek`).
+
+    The windows are found as there, by a search among the keys
+    ``s - (s[:, 0] - row * span)`` (``span`` one more than the largest
+    row's range), here row by row on the same float64 keys, so the windows
+    and medians are those of the numpy form; the window means and spreads
+    agree to round-off (summation order).
+    """
+    w, n = s.shape
+    centre = np.empty(w)
+    sig_out = np.empty(w)
+    cnt = np.zeros(w, dtype=np.int64)
+    if w == 0 or n == 0:
+        return centre, sig_out, cnt
+    span = -np.inf
+    for i in range(w):
+        span = max(span, np.float64(s[i, n - 1]) - np.float64(s[i, 0]))
+    span += 1.0
+    for i in range(w):
+        base = np.float64(s[i, 0])
+        top = (np.float64(s[i, n - 1]) - base) + 0.25
+        row_shift = i * span
+        shift = base - row_shift
+        m = start[i]
+        sg = max(sigma[i], floor)
+        c = 0
+        for it in range(4):
+            if it == 2:
+                sd, k, _ = _window_spread(s, i, m, 4.5 * sg)
+                # the spread of a window of fewer than ~8 values is meaningless
+                if k >= 8:
+                    sg = max(sd, floor)
+            half = 4.5 * sg
+            lo = min(max(m - half - base, -0.25), top) + row_shift
+            hi = min(max(m + half - base, -0.25), top) + row_shift
+            a = _search_keys(s, i, shift, lo, False)
+            c = _search_keys(s, i, shift, hi, True) - a
+            if c >= 1:
+                i0 = min(max(a + (c - 1) // 2, 0), n - 1)
+                i1 = min(max(a + c // 2, 0), n - 1)
+                m = 0.5 * (np.float64(s[i, i0]) + np.float64(s[i, i1]))
+        sd, k, mean = _window_spread(s, i, m, 4.5 * sg)
+        if k >= 8:
+            sg = max(sd, floor)
+        # the window's mean, not its median (a median of integer data is an integer)
+        if k >= 1:
+            m = m + mean
+        centre[i] = m
+        sig_out[i] = sg
+        cnt[i] = c
+    return centre, sig_out, cnt
+
+
+@_jit(inline="always")
+def _nan_last_less(a: float, b: float) -> bool:
+    """``a`` sorts before ``b`` in numpy's order (NaN last)."""
+    return a < b or (b != b and a == a)
+
+
+@_jit()
+def running_median(x: np.ndarray, n: int) -> np.ndarray:
+    """Median of the finite entries of ``x`` over centred windows of ``2 (n // 2) + 1`` entries (:func:`ballscan.edges._running_median`).
+
+    Each window (NaN beyond the ends) sorted in numpy's order (NaN last) and
+    its middle finite ranks averaged, as the numpy form does: the same
+    values.  NaN where a window has no finite entry.
+    """
+    size = x.shape[0]
+    h = n // 2
+    wl = 2 * h + 1
+    out = np.empty(size)
+    buf = np.empty(wl)
+    for i in range(size):
+        cnt = 0
+        for q in range(wl):
+            j = i - h + q
+            v = x[j] if 0 <= j < size else np.nan
+            if math.isfinite(v):
+                cnt += 1
+            # insertion sort: windows of a few entries
+            p = q
+            while p > 0 and _nan_last_less(v, buf[p - 1]):
+                buf[p] = buf[p - 1]
+                p -= 1
+            buf[p] = v
+        if cnt == 0:
+            out[i] = np.nan
+        else:
+            lo = max(cnt - 1, 0) // 2
+            hi = min(cnt // 2, wl - 1)
+            out[i] = 0.5 * (buf[lo] + buf[hi])
+    return out
+
+
+@_jit()
+def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, floor_p: np.ndarray, fraction: float, max_walk: int):
+    """The rough edges of :func:`ballscan.edges._edge_pass` walked outwards towards a darker (shaded) limb.
+
+    On each line with signal, the left edge ``k`` moves to ``k - 1`` while
+    that pixel holds ``fraction`` of its inner neighbour's value (``k + 1``)
+    and at least ``floor_p``, at most ``max_walk`` times; the right edge
+    likewise.  Returns new ``(k_left, k_right)``.
+    """
+    n, w = p.shape
+    kl = k_left.copy()
+    kr = k_right.copy()
+    for r in range(n):
+        if not has_signal[r]:
+            continue
+        for _ in range(max_walk):
+            cand = kl[r] - 1
+            inner = p[r, min(max(kl[r] + 1, 0), w - 1)]
+            pc = p[r, min(max(cand, 0), w - 1)]
+            if cand >= 0 and pc >= fraction * inner and pc >= floor_p[r]:
+                kl[r] = cand
+            else:
+                break
+        for _ in range(max_walk):
+            cand = kr[r] + 1
+            inner = p[r, min(max(kr[r] - 1, 0), w - 1)]
+            pc = p[r, min(max(cand, 0), w - 1)]
+            if cand <= w - 1 and pc >= fraction * inner and pc >= floor_p[r]:
+                kr[r] = cand
+            else:
+                break
+    return kl, kr
+
+
+@_jit()
+def inner_differences(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray):
+    """Second differences inside the segments of :func:`ballscan.edges._edge_pass` (the ball's own noise).
+
+    The pixels at least 3 inside both rough edges of a line with signal
+    whose neighbours are such pixels too (not the box's first or last
+    column): their second differences ``p[j-1] - 2 p[j] + p[j+1]``, values
+    ``p`` and noise ``sp`` in row-major order (numpy's boolean indexing),
+    and their count per column.
+    """
+    n, w = p.shape
+    total = 0
+    for r in range(n):
+        if has_signal[r]:
+            total += max(min(k_right[r] - 3, w - 2) - max(k_left[r] + 3, 1) - 1, 0)
+    d2 = np.empty(total)
+    pv = np.empty(total)
+    sv = np.empty(total)
+    per_col = np.zeros(w, dtype=np.int64)
+    m = 0
+    for r in range(n):
+        if not has_signal[r]:
+            continue
+        # inner pixels j0..j1 (columns 1..w-2); "both" needs j-1 and j+1 inner too
+        j0 = max(k_left[r] + 3, 1)
+        j1 = min(k_right[r] - 3, w - 2)
+        for j in range(j0 + 1, j1):
+            d2[m] = (p[r, j - 1] - 2.0 * p[r, j]) + p[r, j + 1]
+            pv[m] = p[r, j]
+            sv[m] = sp[r, j]
+            per_col[j] += 1
+            m += 1
+    return d2, pv, sv, per_col
+
+
+@_jit()
+def edge_windows(
+    p: np.ndarray,
+    sp: np.ndarray,
+    sat: np.ndarray,
+    other: np.ndarray,
+    k_left: np.ndarray,
+    k_right: np.ndarray,
+    n_out: np.ndarray,
+    n_in: np.ndarray,
+    n_level: int,
+):
+    """The window and level-run sums of every edge estimate of :func:`ballscan.edges._edge_pass`.
+
+    Rows ``4 n``: for each window variant ``v`` (``n_out[v]`` pixels outside
+    the rough edge pixel besides the one next to it, ``n_in[v]`` inside) the
+    left edges (sign +1) of the ``n`` lines, then the right ones (-1).  A
+    window runs from ``k - (n_out + 1) s`` to ``k + n_in s`` (``s`` the
+    sign), its level run the ``n_level`` pixels inside it, the deep run the
+    next ``n_level`` and the deeper run the next (clipped to the box).  Sums
+    in index order (numpy's for fewer than 8 terms: the same values).
+
+    Returns
+    -------
+    tuple
+        ``S`` (window sums), ``sw`` (4n, n_len: window pixels' sigmas, 0
+        beyond a shorter window), ``sw2`` (their sums of squares),
+        ``L_run``, ``sl2`` (mean and variance of the level run), ``pl0``,
+        ``pl1``, ``sl0``, ``sl1`` (its first and last pixels' values and
+        sigmas), ``pd``, ``sd2``, ``pdd``, ``sdd2`` (the deep and deeper
+        runs' means and variances), ``win_first``, ``win_last``, ``n_win``,
+        ``lev``, ``deep`` (4n, n_level: unclipped), ``sgn``, ``lo``, ``hi``
+        (the extreme pixels of window and level run), ``inside_box``,
+        ``saturated``, ``overlapping`` (a window or level pixel saturated or
+        another ball's).
+    """
+    n, w = p.shape
+    nv = n_out.shape[0]
+    R = 2 * nv * n
+    n_len = 0
+    for v in range(nv):
+        n_len = max(n_len, n_out[v] + n_in[v] + 2)
+    S = np.empty(R)
+    sw = np.zeros((R, n_len))
+    sw2 = np.empty(R)
+    L_run = np.empty(R)
+    sl2 = np.empty(R)
+    pl0 = np.empty(R)
+    pl1 = np.empty(R)
+    sl0 = np.empty(R)
+    sl1 = np.empty(R)
+    pd = np.empty(R)
+    sd2 = np.empty(R)
+    pdd = np.empty(R)
+    sdd2 = np.empty(R)
+    win_first = np.empty(R, dtype=np.int64)
+    win_last = np.empty(R, dtype=np.int64)
+    n_win = np.empty(R, dtype=np.int64)
+    lev = np.empty((R, n_level), dtype=np.int64)
+    deep = np.empty((R, n_level), dtype=np.int64)
+    sgn = np.empty(R, dtype=np.int64)
+    lo_px = np.empty(R, dtype=np.int64)
+    hi_px = np.empty(R, dtype=np.int64)
+    inside_box = np.empty(R, dtype=np.bool_)
+    saturated = np.empty(R, dtype=np.bool_)
+    overlapping = np.empty(R, dtype=np.bool_)
+    nl2 = float(n_level * n_level)
+    for i in range(R):
+        q = i // n
+        r = i - q * n
+        v = q // 2
+        s = 1 if q % 2 == 0 else -1
+        k = k_left[r] if s > 0 else k_right[r]
+        no = n_out[v]
+        ni = n_in[v]
+        length = no + ni + 2
+        sgn[i] = s
+        n_win[i] = length
+        win_first[i] = k - (no + 1) * s
+        win_last[i] = k + ni * s
+        wmin = min(win_first[i], win_last[i])
+        wmax = max(win_first[i], win_last[i])
+        lv_a = k + (ni + 1) * s
+        lv_b = k + (ni + n_level) * s
+        lmin = min(lv_a, lv_b)
+        lmax = max(lv_a, lv_b)
+        inside_box[i] = wmin >= 0 and wmax < w and lmin >= 0 and lmax < w
+        lo_px[i] = min(wmin, lmin)
+        hi_px[i] = max(wmax, lmax)
+        sat_any = False
+        oth_any = False
+        tS = 0.0
+        tw2 = 0.0
+        for j in range(n_len):
+            # a shorter window is padded with its last pixel, out of the sums
+            off = -(no + 1) + min(j, length - 1)
+            c = min(max(k + off * s, 0), w - 1)
+            sat_any = sat_any or sat[r, c]
+            oth_any = oth_any or other[r, c]
+            if j < length:
+                tS += p[r, c]
+                sw[i, j] = sp[r, c]
+            tw2 += sw[i, j] * sw[i, j]
+        S[i] = tS
+        sw2[i] = tw2
+        tl = 0.0
+        tl2 = 0.0
+        td = 0.0
+        td2 = 0.0
+        tdd = 0.0
+        tdd2 = 0.0
+        for j in range(n_level):
+            a = k + (ni + 1 + j) * s
+            lev[i, j] = a
+            c = min(max(a, 0), w - 1)
+            sat_any = sat_any or sat[r, c]
+            oth_any = oth_any or other[r, c]
+            if j == 0:
+                pl0[i] = p[r, c]
+                sl0[i] = sp[r, c]
+            if j == n_level - 1:
+                pl1[i] = p[r, c]
+                sl1[i] = sp[r, c]
+            tl += p[r, c]
+            tl2 += sp[r, c] * sp[r, c]
+            d = k + (ni + 1 + n_level + j) * s
+            deep[i, j] = d
+            c = min(max(d, 0), w - 1)
+            td += p[r, c]
+            td2 += sp[r, c] * sp[r, c]
+            c = min(max(d + n_level * s, 0), w - 1)
+            tdd += p[r, c]
+            tdd2 += sp[r, c] * sp[r, c]
+        L_run[i] = tl / n_level
+        sl2[i] = tl2 / nl2
+        pd[i] = td / n_level
+        sd2[i] = td2 / nl2
+        pdd[i] = tdd / n_level
+        sdd2[i] = tdd2 / nl2
+        saturated[i] = sat_any
+        overlapping[i] = oth_any
+    return (S, sw, sw2, L_run, sl2, pl0, pl1, sl0, sl1, pd, sd2, pdd, sdd2, win_first, win_last, n_win, lev, deep, sgn, lo_px, hi_px,
+            inside_box, saturated, overlapping)
