@@ -376,6 +376,44 @@ def test_pixel_fit_is_exact_on_its_own_model(groups):
     assert np.allclose(fit.motion.to_params(), m.to_params(), rtol=0, atol=[1e-9, 1e-6, 1e-5, 1e-4, 1e-4, 5e-3])
 
 
+@pytest.mark.parametrize("distorted, deg", [(False, 30.0), (True, 60.0), (False, 0.0)])
+def test_averaged_edges_jacobian_equals_central_differences(distorted, deg):
+    """The compiled derivatives of the averaged edges and area (the Jacobian rows of the ball's ends) against central differences.
+
+    Over 170 lines from before the ball to after it.  Edges: 5e-9 to
+    1.6e-6 relative per column with steps of 1e-5 of the parameter scale
+    (1e-3 for y0, vy and vz, whose columns a small step leaves to
+    round-off); the area's y0 / vy columns are perspective only (a
+    hundred times smaller than its other columns), 1e-4 relative.
+    """
+    from ballscan._kernels import averaged_edges_jacobian
+    from ballscan.silhouette import _gauss
+
+    a = np.radians(deg)
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0 * np.cos(a), 1.5, 30.0 * np.sin(a)))
+    t = 0.002 + np.linspace(-1.3, 1.3, 170) * m.radius_m / m.velocity_mps[0]
+    th = m.to_params()
+    g, gw = _gauss(3)
+    L, Rr, A, dl, dr, da = averaged_edges_jacobian(th, t, m.radius_m, cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2, g, gw)
+    me = averaged_model(cam, th[None], m.radius_m, t, n_nodes=3)
+    assert np.array_equal(L, me.left_px[0]) and np.array_equal(Rr, me.right_px[0]) and np.array_equal(A, me.area_px[0])
+    assert (me.presence[0] == 0).sum() > 10  # lines without the ball included
+    h = np.array([1e-5, 1e-3, 1e-5, 1e-5, 1e-3, 1e-3]) * param_scale(cam, m)
+    J = np.stack([dl, dr, da])
+    Jc = np.empty_like(J)
+    for j in range(6):
+        d = np.zeros(6)
+        d[j] = h[j]
+        p = averaged_model(cam, (th + d)[None], m.radius_m, t, n_nodes=3)
+        q = averaged_model(cam, (th - d)[None], m.radius_m, t, n_nodes=3)
+        for i, k in enumerate(("left_px", "right_px", "area_px")):
+            Jc[i, :, j] = (getattr(p, k)[0] - getattr(q, k)[0]) / (2 * h[j])
+    err = np.linalg.norm(J - Jc, axis=1) / np.linalg.norm(Jc, axis=1)
+    assert np.all(err[:2] < 1e-5), err
+    assert np.all(err[2, [0, 2, 3, 5]] < 1e-5) and np.all(err[2, [1, 4]] < 1e-3), err
+
+
 @pytest.mark.parametrize("groups, distorted, deg", [("end", False, 30.0), ("window", False, 0.0), ("end", True, 60.0)])
 def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     """The compiled forward-mode Jacobian of the pixel residuals against central differences of the residuals.

@@ -361,6 +361,304 @@ def pixel_residuals(
 
 
 @_jit()
+def _line_samples_jacobian(
+    t_s, tc, y0, z0, vx, vy, vz, R, exposure_s, focal_px, principal_px, k1, k2, g, gw,
+    lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
+):
+    """One line's chord samples (``lo, hi, wk``: :func:`averaged_samples` with samples) and their derivatives.
+
+    ``dlo, dhi`` (S, 6) and ``dwk`` (6, S) with respect to ``(t_c, y0, z0,
+    vx, vy, vz)`` by forward-mode differentiation by hand (no
+    acceleration); the other arrays are scratch.  Where a clip or a branch
+    holds, the derivative is that of the branch taken.
+    """
+    nn = g.shape[0]
+    # ---- the line's samples and their derivatives (averaged_samples' loop)
+    dt0 = t_s - tc
+    x0 = vx * dt0
+    z_line = z0 + vz * dt0
+    # d dt0 = -e0; d x0 = vx d dt0 + dt0 e3; d z_line = e2 - vz e0 + dt0 e5
+    A = abs(vx) * (exposure_s / 2.0)
+    sgn_vx = 1.0 if vx > 0.0 else (-1.0 if vx < 0.0 else 0.0)
+    dA[:] = 0.0
+    dA[3] = sgn_vx * (exposure_s / 2.0)
+    B = max(z_line, 0.0) / (2.0 * focal_px)
+    dB[:] = 0.0
+    if z_line > 0.0:
+        dB[0] = -vz / (2.0 * focal_px)
+        dB[2] = 1.0 / (2.0 * focal_px)
+        dB[5] = dt0 / (2.0 * focal_px)
+    AmB = abs(A - B)
+    s_ab = 1.0 if A - B > 0.0 else (-1.0 if A - B < 0.0 else 0.0)
+    for j in range(6):
+        dAmB[j] = s_ab * (dA[j] - dB[j])
+    ApB = A + B
+    for k in range(4):
+        if k == 0:
+            ck = x0 - ApB
+        elif k == 1:
+            ck = x0 - AmB
+        elif k == 2:
+            ck = x0 + AmB
+        else:
+            ck = x0 + ApB
+        # d x0
+        dc[:] = 0.0
+        dc[0] = -vx
+        dc[3] = dt0
+        for j in range(6):
+            if k == 0:
+                dc[j] -= dA[j] + dB[j]
+            elif k == 1:
+                dc[j] -= dAmB[j]
+            elif k == 2:
+                dc[j] += dAmB[j]
+            else:
+                dc[j] += dA[j] + dB[j]
+        cl = min(max(ck, -R), R)
+        te[k] = math.asin(cl / R)
+        if -R < ck < R:
+            inv = 1.0 / math.sqrt((R - ck) * (R + ck))
+            for j in range(6):
+                dte[k, j] = dc[j] * inv
+        else:
+            for j in range(6):
+                dte[k, j] = 0.0
+    mAB = max(A, B)
+    plateau = 1.0 / max(2.0 * mAB, 1e-300)
+    inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
+    inv_a1 = 1.0 / vx if vx != 0.0 else 0.0
+    c_inva1 = -inv_a1 * inv_a1
+    for j in range(6):
+        dx0v[j] = 0.0
+        dmaxv[j] = dA[j] if A >= B else dB[j]
+    dx0v[0] = -vx
+    dx0v[3] = dt0
+    for q in range(3):
+        half = (te[q + 1] - te[q]) / 2.0
+        for j in range(6):
+            dhalf[j] = (dte[q + 1, j] - dte[q, j]) / 2.0
+        for i in range(nn):
+            ang = te[q] + half * (1.0 + g[i])
+            for j in range(6):
+                dang[j] = dte[q, j] + dhalf[j] * (1.0 + g[i])
+            d = R * math.sin(ang)
+            rho = R * math.cos(ang)
+            jac = rho * (half * gw[i])
+            dd = d - x0
+            dist = abs(dd)
+            s_dd = 1.0 if dd > 0.0 else (-1.0 if dd < 0.0 else 0.0)
+            # which branch of the density
+            if not ApB > 0.0:
+                branch = 0
+                dens = 0.0
+            elif dist > AmB:
+                if ApB - dist > 0.0:
+                    branch = 1
+                    dens = (ApB - dist) * inv4AB
+                else:
+                    branch = 0
+                    dens = 0.0
+            else:
+                branch = 2
+                dens = plateau
+            wgt = dens * jac
+            lo_m = dd - B
+            hi_m = dd + B
+            u_mean = 0.5 * (max(-A, lo_m) + min(A, hi_m))
+            dts = u_mean * inv_a1 + dt0
+            xc = vx * dts
+            yc = y0 + vy * dts
+            zc = z0 + vz * dts
+            zpos = zc > 0.0
+            zz = zc if zpos else 1.0
+            s = (xc - d) / zz
+            ww = zc + s * xc
+            den = ww * ww - rho * rho
+            disc = yc * yc + den
+            ok = (ww > rho) and (disc > 0.0)
+            if ok:
+                root = math.sqrt(disc)
+                inv_den = 1.0 / den
+            else:
+                root = 1.0
+                inv_den = 0.0
+            a_ = yc * ww
+            b_ = rho * root
+            n_lo = (a_ - b_) * inv_den
+            n_hi = (a_ + b_) * inv_den
+            jj = q * nn + i
+            if k1 == 0.0 and k2 == 0.0:
+                lo[jj] = principal_px + focal_px * n_lo
+                hi[jj] = principal_px + focal_px * n_hi
+                fp_lo = focal_px
+                fp_hi = focal_px
+            else:
+                n2 = n_lo * n_lo
+                lo[jj] = principal_px + focal_px * (n_lo * (1.0 + n2 * (k1 + k2 * n2)))
+                fp_lo = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+                n2 = n_hi * n_hi
+                hi[jj] = principal_px + focal_px * (n_hi * (1.0 + n2 * (k1 + k2 * n2)))
+                fp_hi = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+            wk[jj] = wgt if ok else 0.0
+            # the branches taken, as coefficients (a branch-free loop over the parameters)
+            okf = 1.0 if ok else 0.0
+            c_ab = 0.0
+            c_prod = 0.0
+            c_dd = 0.0
+            c_max = 0.0
+            if branch == 1:
+                c_ab = inv4AB
+                c_prod = -(ApB - dist) * inv4AB * inv4AB * 4.0
+                c_dd = -s_dd * inv4AB
+            elif branch == 2 and 2.0 * mAB > 1e-300:
+                c_max = -plateau * plateau * 2.0
+            sel_lo = 1.0 if -A >= lo_m else 0.0
+            sel_hi = 1.0 if A <= hi_m else 0.0
+            zf = 1.0 if zpos else 0.0
+            inv_zz = 1.0 / zz
+            inv2root = okf / (2.0 * root)
+            dinv_c = -inv_den * inv_den * okf
+            gwi = gw[i]
+            # y0 and vy move only the chord's height yc (by 1 and by dts)
+            dy_lo = okf * (ww - rho * yc / root) * inv_den
+            dy_hi = okf * (ww + rho * yc / root) * inv_den
+            dlo[jj, 1] = fp_lo * dy_lo
+            dhi[jj, 1] = fp_hi * dy_hi
+            dlo[jj, 4] = fp_lo * dy_lo * dts
+            dhi[jj, 4] = fp_hi * dy_hi * dts
+            dwk[1, jj] = 0.0
+            dwk[4, jj] = 0.0
+            # t_c, z0, vx, vz (unit seeds as constants: the compiler folds them)
+            for j, e_t, e_z, e_x, e_v in ((0, 1.0, 0.0, 0.0, 0.0), (2, 0.0, 1.0, 0.0, 0.0), (3, 0.0, 0.0, 1.0, 0.0), (5, 0.0, 0.0, 0.0, 1.0)):
+                d_d = rho * dang[j]
+                d_rho = -d * dang[j]
+                d_jac = gwi * (d_rho * half + rho * dhalf[j])
+                d_dd = d_d - dx0v[j]
+                d_dens = c_ab * (dA[j] + dB[j]) + c_prod * (dA[j] * B + A * dB[j]) + c_dd * d_dd + c_max * dmaxv[j]
+                dwk[j, jj] = okf * (d_dens * jac + dens * d_jac)
+                d_u = 0.5 * (sel_lo * (-dA[j]) + (1.0 - sel_lo) * (d_dd - dB[j]) + sel_hi * dA[j] + (1.0 - sel_hi) * (d_dd + dB[j]))
+                d_dts = d_u * inv_a1 + u_mean * c_inva1 * e_x - e_t
+                d_xc = dts * e_x + vx * d_dts
+                d_yc = vy * d_dts
+                d_zc = e_z + dts * e_v + vz * d_dts
+                d_s = (d_xc - d_d) * inv_zz - s * zf * d_zc * inv_zz
+                d_ww = d_zc + d_s * xc + s * d_xc
+                d_den = 2.0 * (ww * d_ww - rho * d_rho)
+                d_root = (2.0 * yc * d_yc + d_den) * inv2root
+                d_inv = dinv_c * d_den
+                d_a = d_yc * ww + yc * d_ww
+                d_b = d_rho * root + rho * d_root
+                dlo[jj, j] = fp_lo * ((d_a - d_b) * inv_den + (a_ - b_) * d_inv)
+                dhi[jj, j] = fp_hi * ((d_a + d_b) * inv_den + (a_ + b_) * d_inv)
+
+
+@_jit()
+def averaged_edges_jacobian(
+    th: np.ndarray,
+    t: np.ndarray,
+    radius_m: float,
+    exposure_s: float,
+    focal_px: float,
+    principal_px: float,
+    k1: float,
+    k2: float,
+    g: np.ndarray,
+    gw: np.ndarray,
+):
+    """The averaged silhouette's edges and area at lines ``t`` (N,) and their exact derivatives (no acceleration).
+
+    ``left = sum(w lo) / sum(w)``, ``right = sum(w hi) / sum(w)``, ``area =
+    sum(w (hi - lo))`` over the line's samples (:func:`averaged_samples`),
+    differentiated through the samples (:func:`_line_samples_jacobian`).
+    Where the ball is absent both edges sit at the centre's projection, as
+    there.  Returns ``(left, right, area)`` (N,) and their derivatives
+    ``(dl, dr, da)`` (N, 6) with respect to ``(t_c, y0, z0, vx, vy, vz)``.
+    """
+    N = t.shape[0]
+    nn = g.shape[0]
+    S = 3 * nn
+    tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
+    lo = np.empty(S)
+    hi = np.empty(S)
+    wk = np.empty(S)
+    dlo = np.zeros((S, 6))
+    dhi = np.zeros((S, 6))
+    dwk = np.zeros((6, S))
+    te = np.empty(4)
+    dte = np.zeros((4, 6))
+    dc = np.zeros(6)
+    dA = np.zeros(6)
+    dB = np.zeros(6)
+    dAmB = np.zeros(6)
+    dang = np.zeros(6)
+    dhalf = np.zeros(6)
+    dx0v = np.zeros(6)
+    dmaxv = np.zeros(6)
+    left = np.empty(N)
+    right = np.empty(N)
+    area = np.empty(N)
+    dl = np.zeros((N, 6))
+    dr = np.zeros((N, 6))
+    da = np.zeros((N, 6))
+    sl = np.empty(6)
+    sh = np.empty(6)
+    sm = np.empty(6)
+    for n in range(N):
+        _line_samples_jacobian(
+            t[n], tc, y0, z0, vx, vy, vz, radius_m, exposure_s, focal_px, principal_px, k1, k2, g, gw,
+            lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
+        )
+        mass = 0.0
+        sum_lo = 0.0
+        sum_hi = 0.0
+        for j in range(6):
+            sl[j] = 0.0
+            sh[j] = 0.0
+            sm[j] = 0.0
+        for q in range(S):
+            w = wk[q]
+            mass += w
+            sum_lo += w * lo[q]
+            sum_hi += w * hi[q]
+            for j in range(6):
+                sm[j] += dwk[j, q]
+                sl[j] += dwk[j, q] * lo[q] + w * dlo[q, j]
+                sh[j] += dwk[j, q] * hi[q] + w * dhi[q, j]
+        area[n] = sum_hi - sum_lo
+        for j in range(6):
+            da[n, j] = sh[j] - sl[j]
+        if mass > 0.0:
+            inv_m = 1.0 / mass
+            left[n] = sum_lo * inv_m
+            right[n] = sum_hi * inv_m
+            for j in range(6):
+                dl[n, j] = (sl[j] - left[n] * sm[j]) * inv_m
+                dr[n, j] = (sh[j] - right[n] * sm[j]) * inv_m
+        else:
+            # absent: both edges at the centre's projection
+            dt0 = t[n] - tc
+            z_line = z0 + vz * dt0
+            y_line = y0 + vy * dt0
+            zz = z_line if z_line > 0.0 else 1.0
+            nc = y_line / zz
+            u_c = _project(nc, principal_px, focal_px, k1, k2)
+            n2 = nc * nc
+            fp = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
+            zf = 1.0 if z_line > 0.0 else 0.0
+            # d y_line = (-vy, 1, 0, 0, dt0, 0); d z_line = (-vz, 0, 1, 0, 0, dt0)
+            dyl = (-vy, 1.0, 0.0, 0.0, dt0, 0.0)
+            dzl = (-vz, 0.0, 1.0, 0.0, 0.0, dt0)
+            left[n] = u_c
+            right[n] = u_c
+            for j in range(6):
+                dn = (dyl[j] - nc * zf * dzl[j]) / zz
+                dl[n, j] = fp * dn
+                dr[n, j] = fp * dn
+    return left, right, area, dl, dr, da
+
+
+@_jit()
 def pixel_residuals_jacobian(
     th: np.ndarray,
     t: np.ndarray,
@@ -442,184 +740,10 @@ def pixel_residuals_jacobian(
     dden = np.zeros((n_groups, 6))
     m = 0
     for r in range(Np):
-        # ---- the line's samples and their derivatives (averaged_samples' loop)
-        dt0 = t[r] - tc
-        x0 = vx * dt0
-        z_line = z0 + vz * dt0
-        # d dt0 = -e0; d x0 = vx d dt0 + dt0 e3; d z_line = e2 - vz e0 + dt0 e5
-        A = abs(vx) * (exposure_s / 2.0)
-        sgn_vx = 1.0 if vx > 0.0 else (-1.0 if vx < 0.0 else 0.0)
-        dA[:] = 0.0
-        dA[3] = sgn_vx * (exposure_s / 2.0)
-        B = max(z_line, 0.0) / (2.0 * focal_px)
-        dB[:] = 0.0
-        if z_line > 0.0:
-            dB[0] = -vz / (2.0 * focal_px)
-            dB[2] = 1.0 / (2.0 * focal_px)
-            dB[5] = dt0 / (2.0 * focal_px)
-        AmB = abs(A - B)
-        s_ab = 1.0 if A - B > 0.0 else (-1.0 if A - B < 0.0 else 0.0)
-        for j in range(6):
-            dAmB[j] = s_ab * (dA[j] - dB[j])
-        ApB = A + B
-        for k in range(4):
-            if k == 0:
-                ck = x0 - ApB
-            elif k == 1:
-                ck = x0 - AmB
-            elif k == 2:
-                ck = x0 + AmB
-            else:
-                ck = x0 + ApB
-            # d x0
-            dc[:] = 0.0
-            dc[0] = -vx
-            dc[3] = dt0
-            for j in range(6):
-                if k == 0:
-                    dc[j] -= dA[j] + dB[j]
-                elif k == 1:
-                    dc[j] -= dAmB[j]
-                elif k == 2:
-                    dc[j] += dAmB[j]
-                else:
-                    dc[j] += dA[j] + dB[j]
-            cl = min(max(ck, -R), R)
-            te[k] = math.asin(cl / R)
-            if -R < ck < R:
-                inv = 1.0 / math.sqrt((R - ck) * (R + ck))
-                for j in range(6):
-                    dte[k, j] = dc[j] * inv
-            else:
-                for j in range(6):
-                    dte[k, j] = 0.0
-        mAB = max(A, B)
-        plateau = 1.0 / max(2.0 * mAB, 1e-300)
-        inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
-        inv_a1 = 1.0 / vx if vx != 0.0 else 0.0
-        c_inva1 = -inv_a1 * inv_a1
-        for j in range(6):
-            dx0v[j] = 0.0
-            dmaxv[j] = dA[j] if A >= B else dB[j]
-        dx0v[0] = -vx
-        dx0v[3] = dt0
-        for q in range(3):
-            half = (te[q + 1] - te[q]) / 2.0
-            for j in range(6):
-                dhalf[j] = (dte[q + 1, j] - dte[q, j]) / 2.0
-            for i in range(nn):
-                ang = te[q] + half * (1.0 + g[i])
-                for j in range(6):
-                    dang[j] = dte[q, j] + dhalf[j] * (1.0 + g[i])
-                d = R * math.sin(ang)
-                rho = R * math.cos(ang)
-                jac = rho * (half * gw[i])
-                dd = d - x0
-                dist = abs(dd)
-                s_dd = 1.0 if dd > 0.0 else (-1.0 if dd < 0.0 else 0.0)
-                # which branch of the density
-                if not ApB > 0.0:
-                    branch = 0
-                    dens = 0.0
-                elif dist > AmB:
-                    if ApB - dist > 0.0:
-                        branch = 1
-                        dens = (ApB - dist) * inv4AB
-                    else:
-                        branch = 0
-                        dens = 0.0
-                else:
-                    branch = 2
-                    dens = plateau
-                wgt = dens * jac
-                lo_m = dd - B
-                hi_m = dd + B
-                u_mean = 0.5 * (max(-A, lo_m) + min(A, hi_m))
-                dts = u_mean * inv_a1 + dt0
-                xc = vx * dts
-                yc = y0 + vy * dts
-                zc = z0 + vz * dts
-                zpos = zc > 0.0
-                zz = zc if zpos else 1.0
-                s = (xc - d) / zz
-                ww = zc + s * xc
-                den = ww * ww - rho * rho
-                disc = yc * yc + den
-                ok = (ww > rho) and (disc > 0.0)
-                if ok:
-                    root = math.sqrt(disc)
-                    inv_den = 1.0 / den
-                else:
-                    root = 1.0
-                    inv_den = 0.0
-                a_ = yc * ww
-                b_ = rho * root
-                n_lo = (a_ - b_) * inv_den
-                n_hi = (a_ + b_) * inv_den
-                jj = q * nn + i
-                if k1 == 0.0 and k2 == 0.0:
-                    lo[jj] = principal_px + focal_px * n_lo
-                    hi[jj] = principal_px + focal_px * n_hi
-                    fp_lo = focal_px
-                    fp_hi = focal_px
-                else:
-                    n2 = n_lo * n_lo
-                    lo[jj] = principal_px + focal_px * (n_lo * (1.0 + n2 * (k1 + k2 * n2)))
-                    fp_lo = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
-                    n2 = n_hi * n_hi
-                    hi[jj] = principal_px + focal_px * (n_hi * (1.0 + n2 * (k1 + k2 * n2)))
-                    fp_hi = focal_px * (1.0 + n2 * (3.0 * k1 + 5.0 * k2 * n2))
-                wk[jj] = wgt if ok else 0.0
-                # the branches taken, as coefficients (a branch-free loop over the parameters)
-                okf = 1.0 if ok else 0.0
-                c_ab = 0.0
-                c_prod = 0.0
-                c_dd = 0.0
-                c_max = 0.0
-                if branch == 1:
-                    c_ab = inv4AB
-                    c_prod = -(ApB - dist) * inv4AB * inv4AB * 4.0
-                    c_dd = -s_dd * inv4AB
-                elif branch == 2 and 2.0 * mAB > 1e-300:
-                    c_max = -plateau * plateau * 2.0
-                sel_lo = 1.0 if -A >= lo_m else 0.0
-                sel_hi = 1.0 if A <= hi_m else 0.0
-                zf = 1.0 if zpos else 0.0
-                inv_zz = 1.0 / zz
-                inv2root = okf / (2.0 * root)
-                dinv_c = -inv_den * inv_den * okf
-                gwi = gw[i]
-                # y0 and vy move only the chord's height yc (by 1 and by dts)
-                dy_lo = okf * (ww - rho * yc / root) * inv_den
-                dy_hi = okf * (ww + rho * yc / root) * inv_den
-                dlo[jj, 1] = fp_lo * dy_lo
-                dhi[jj, 1] = fp_hi * dy_hi
-                dlo[jj, 4] = fp_lo * dy_lo * dts
-                dhi[jj, 4] = fp_hi * dy_hi * dts
-                dwk[1, jj] = 0.0
-                dwk[4, jj] = 0.0
-                # t_c, z0, vx, vz (unit seeds as constants: the compiler folds them)
-                for j, e_t, e_z, e_x, e_v in ((0, 1.0, 0.0, 0.0, 0.0), (2, 0.0, 1.0, 0.0, 0.0), (3, 0.0, 0.0, 1.0, 0.0), (5, 0.0, 0.0, 0.0, 1.0)):
-                    d_d = rho * dang[j]
-                    d_rho = -d * dang[j]
-                    d_jac = gwi * (d_rho * half + rho * dhalf[j])
-                    d_dd = d_d - dx0v[j]
-                    d_dens = c_ab * (dA[j] + dB[j]) + c_prod * (dA[j] * B + A * dB[j]) + c_dd * d_dd + c_max * dmaxv[j]
-                    dwk[j, jj] = okf * (d_dens * jac + dens * d_jac)
-                    d_u = 0.5 * (sel_lo * (-dA[j]) + (1.0 - sel_lo) * (d_dd - dB[j]) + sel_hi * dA[j] + (1.0 - sel_hi) * (d_dd + dB[j]))
-                    d_dts = d_u * inv_a1 + u_mean * c_inva1 * e_x - e_t
-                    d_xc = dts * e_x + vx * d_dts
-                    d_yc = vy * d_dts
-                    d_zc = e_z + dts * e_v + vz * d_dts
-                    d_s = (d_xc - d_d) * inv_zz - s * zf * d_zc * inv_zz
-                    d_ww = d_zc + d_s * xc + s * d_xc
-                    d_den = 2.0 * (ww * d_ww - rho * d_rho)
-                    d_root = (2.0 * yc * d_yc + d_den) * inv2root
-                    d_inv = dinv_c * d_den
-                    d_a = d_yc * ww + yc * d_ww
-                    d_b = d_rho * root + rho * d_root
-                    dlo[jj, j] = fp_lo * ((d_a - d_b) * inv_den + (a_ - b_) * d_inv)
-                    dhi[jj, j] = fp_hi * ((d_a + d_b) * inv_den + (a_ + b_) * d_inv)
+        _line_samples_jacobian(
+            t[r], tc, y0, z0, vx, vy, vz, R, exposure_s, focal_px, principal_px, k1, k2, g, gw,
+            lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
+        )
         # ---- the line's pixel coverage and its derivatives
         a0 = base[r] - 0.5
         okh = _ramp_histogram(lo, hi, wk, a0, span, hw, hwf)
@@ -892,6 +1016,7 @@ def warm_up() -> None:
     _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
     one = np.ones((1, 1))
     pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
+    averaged_edges_jacobian(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw)
     pixel_residuals_jacobian(
         th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw,
         np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1,

@@ -71,7 +71,7 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import as_arg, averaged_samples, chord_edges, coverage_grid
+from ._kernels import as_arg, averaged_edges_jacobian, averaged_samples, chord_edges, coverage_grid
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from .camera import LineScanCamera
@@ -410,6 +410,7 @@ def hybrid_jacobian(
     memo: dict | None = None,
     reuse_px: float = 0.1,
     base: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    analytic: bool = False,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Jacobian of the averaged model: analytic chord derivatives inside, finite differences at the ends.
 
@@ -455,6 +456,11 @@ def hybrid_jacobian(
         ``(left, right, area)`` of the averaged model at ``theta`` with
         ``n_nodes`` nodes on every line, when the caller has them: the
         finite differences then evaluate only the perturbed sets.
+    analytic : bool
+        On the lines that would get finite differences, the averaged
+        model's exact derivatives instead
+        (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
+        acceleration); ``memo`` is then only told the lines.
 
     Returns
     -------
@@ -481,6 +487,16 @@ def hybrid_jacobian(
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
+    if analytic and not np.any(acceleration_mps2):
+        # exact derivatives of the averaged model on those lines (one
+        # compiled pass; no finite differences to reuse)
+        g, gw = _gauss(n_nodes)
+        _, _, _, fl, fr, fa = averaged_edges_jacobian(
+            as_arg(theta), as_arg(t[fd]), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
+            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw),
+        )
+        dl[fd], dr[fd], da[fd] = fl, fr, fa
+        return dl, dr, da
     if memo is not None and memo.get("theta") is not None and memo["n"] == t.size and memo["have"][fd].all():
         # how far the model moved on those lines since (pixels, first order)
         step = theta - memo["theta"]
@@ -706,6 +722,13 @@ class FitSettings:
         (finite-difference) Jacobians (see :func:`_levenberg_marquardt`).
         Off by default: on the serve it took more steps (15 against 9 model
         evaluations) and stopped 0.005 m/s off in ``vz`` on noise-free edges.
+    edge_jacobian : {"analytic", "fd"}
+        The Jacobian rows of the lines where the chord's derivative does not
+        hold (the ball's ends, the area lines; see ``jacobian_reach``):
+        exact, by forward-mode derivatives of the averaged model in one
+        compiled pass (:func:`ballscan._kernels.averaged_edges_jacobian`;
+        without a known acceleration), or its forward differences
+        (``"fd"``, with ``jacobian_nodes`` and the reuse of ``jacobian_reuse_px``).
     jacobian_reach : float
         Lines whose section offsets stay within this fraction of the radius
         get the analytic derivatives of the chord model in the Jacobian
@@ -770,6 +793,7 @@ class FitSettings:
     broyden: bool = False
     robust_first: bool = False
     jacobian_reach: float = 0.8
+    edge_jacobian: str = "analytic"
     jacobian_reuse_px: float = 0.1
 
 
@@ -1158,6 +1182,7 @@ def fit_motion(
                     camera, th, R, t, scale, acc, fd_lines=use_a, needed=used,
                     reach_limit=settings.jacobian_reach, rel_step=settings_rel_step, n_nodes=settings.jacobian_nodes,
                     memo=fd_memo, reuse_px=settings.jacobian_reuse_px, base=base,
+                    analytic=settings.edge_jacobian == "analytic",
                 )
                 # the base set's pixel residuals are the tail of r
                 jp = pixel_jac(th, r[r.size - n_pix :])
