@@ -286,6 +286,25 @@ def _grid_coverage(hw: np.ndarray, hwf: np.ndarray, k: int) -> float:
 
 
 @_jit()
+def _row_grids(cols: np.ndarray, mask: np.ndarray):
+    """Each row's first used column (its unit grid's origin, pixels) and the widest row's span (pixels) of ``cols, mask`` (Np, K)."""
+    Np, K = cols.shape
+    base = np.empty(Np)
+    span = 0
+    for r in range(Np):
+        lo_c = np.inf
+        hi_c = -np.inf
+        for k in range(K):
+            if mask[r, k]:
+                lo_c = min(lo_c, cols[r, k])
+                hi_c = max(hi_c, cols[r, k])
+        base[r] = lo_c if lo_c <= hi_c else 0.0
+        if lo_c <= hi_c:
+            span = max(span, int(round(hi_c - lo_c)) + 1)
+    return base, span
+
+
+@_jit()
 def pixel_residuals(
     s_lo: np.ndarray,
     s_hi: np.ndarray,
@@ -317,18 +336,7 @@ def pixel_residuals(
     num = np.empty(n_groups)
     den = np.empty(n_groups)
     # each row's pixels on a unit grid from its first column (_ramp_histogram)
-    base = np.empty(Np)
-    span = 0
-    for r in range(Np):
-        lo_c = np.inf
-        hi_c = -np.inf
-        for k in range(K):
-            if mask[r, k]:
-                lo_c = min(lo_c, cols[r, k])
-                hi_c = max(hi_c, cols[r, k])
-        base[r] = lo_c if lo_c <= hi_c else 0.0
-        if lo_c <= hi_c:
-            span = max(span, int(round(hi_c - lo_c)) + 1)
+    base, span = _row_grids(cols, mask)
     hw = np.empty(span + 2)
     hwf = np.empty(span + 2)
     for q in range(P):
@@ -361,17 +369,26 @@ def pixel_residuals(
 
 
 @_jit()
-def _line_samples_jacobian(
-    t_s, tc, y0, z0, vx, vy, vz, R, exposure_s, focal_px, principal_px, k1, k2, g, gw,
-    lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
-):
-    """One line's chord samples (``lo, hi, wk``: :func:`averaged_samples` with samples) and their derivatives.
+def _sample_buffers(S: int):
+    """Output and scratch arrays of :func:`_line_samples_jacobian` for ``S`` samples per line."""
+    return (
+        np.empty(S), np.empty(S), np.empty(S), np.zeros((S, 6)), np.zeros((S, 6)), np.zeros((6, S)),
+        np.empty(4), np.zeros((4, 6)), np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6),
+    )
 
-    ``dlo, dhi`` (S, 6) and ``dwk`` (6, S) with respect to ``(t_c, y0, z0,
-    vx, vy, vz)`` by forward-mode differentiation by hand (no
-    acceleration); the other arrays are scratch.  Where a clip or a branch
-    holds, the derivative is that of the branch taken.
+
+@_jit()
+def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf):
+    """One line's chord samples (:func:`averaged_samples` with samples) and their derivatives, into ``buf``.
+
+    ``buf`` (:func:`_sample_buffers`) receives ``lo, hi, wk`` (S,) and
+    ``dlo, dhi`` (S, 6), ``dwk`` (6, S): their derivatives with respect to
+    ``th = (t_c, y0, z0, vx, vy, vz)`` by forward-mode differentiation by
+    hand (no acceleration); its other arrays are scratch.  Where a clip or
+    a branch holds, the derivative is that of the branch taken.
     """
+    lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv = buf
+    tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
     nn = g.shape[0]
     # ---- the line's samples and their derivatives (averaged_samples' loop)
     dt0 = t_s - tc
@@ -579,22 +596,8 @@ def averaged_edges_jacobian(
     nn = g.shape[0]
     S = 3 * nn
     tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
-    lo = np.empty(S)
-    hi = np.empty(S)
-    wk = np.empty(S)
-    dlo = np.zeros((S, 6))
-    dhi = np.zeros((S, 6))
-    dwk = np.zeros((6, S))
-    te = np.empty(4)
-    dte = np.zeros((4, 6))
-    dc = np.zeros(6)
-    dA = np.zeros(6)
-    dB = np.zeros(6)
-    dAmB = np.zeros(6)
-    dang = np.zeros(6)
-    dhalf = np.zeros(6)
-    dx0v = np.zeros(6)
-    dmaxv = np.zeros(6)
+    buf = _sample_buffers(S)
+    lo, hi, wk, dlo, dhi, dwk = buf[:6]
     left = np.empty(N)
     right = np.empty(N)
     area = np.empty(N)
@@ -605,10 +608,7 @@ def averaged_edges_jacobian(
     sh = np.empty(6)
     sm = np.empty(6)
     for n in range(N):
-        _line_samples_jacobian(
-            t[n], tc, y0, z0, vx, vy, vz, radius_m, exposure_s, focal_px, principal_px, k1, k2, g, gw,
-            lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
-        )
+        _line_samples_jacobian(t[n], th, radius_m, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf)
         mass = 0.0
         sum_lo = 0.0
         sum_hi = 0.0
@@ -698,35 +698,9 @@ def pixel_residuals_jacobian(
     S = 3 * nn
     R = radius_m
     tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
-    lo = np.empty(S)
-    hi = np.empty(S)
-    wk = np.empty(S)
-    dlo = np.zeros((S, 6))
-    dhi = np.zeros((S, 6))
-    dwk = np.zeros((6, S))
-    te = np.empty(4)
-    dte = np.zeros((4, 6))
-    dc = np.zeros(6)
-    dA = np.zeros(6)
-    dB = np.zeros(6)
-    dAmB = np.zeros(6)
-    dang = np.zeros(6)
-    dhalf = np.zeros(6)
-    dx0v = np.zeros(6)
-    dmaxv = np.zeros(6)
-    # each row's pixels on a unit grid from its first column (as pixel_residuals)
-    base = np.empty(Np)
-    span = 0
-    for r in range(Np):
-        lo_c = np.inf
-        hi_c = -np.inf
-        for k in range(K):
-            if mask[r, k]:
-                lo_c = min(lo_c, cols[r, k])
-                hi_c = max(hi_c, cols[r, k])
-        base[r] = lo_c if lo_c <= hi_c else 0.0
-        if lo_c <= hi_c:
-            span = max(span, int(round(hi_c - lo_c)) + 1)
+    buf = _sample_buffers(S)
+    lo, hi, wk, dlo, dhi, dwk = buf[:6]
+    base, span = _row_grids(cols, mask)
     hw = np.empty(span + 2)
     hwf = np.empty(span + 2)
     hwd = np.empty((6, span + 2))
@@ -740,10 +714,7 @@ def pixel_residuals_jacobian(
     dden = np.zeros((n_groups, 6))
     m = 0
     for r in range(Np):
-        _line_samples_jacobian(
-            t[r], tc, y0, z0, vx, vy, vz, R, exposure_s, focal_px, principal_px, k1, k2, g, gw,
-            lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv,
-        )
+        _line_samples_jacobian(t[r], th, R, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf)
         # ---- the line's pixel coverage and its derivatives
         a0 = base[r] - 0.5
         okh = _ramp_histogram(lo, hi, wk, a0, span, hw, hwf)
