@@ -155,10 +155,11 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # (shading._level_margin).  Now 1.56x at 140 000 lines/s, 1.70x at
 # R = 0.11 m, within 1.5x at the other six (0.12x R = 0.02 m, 0.70x
 # 4.7 m/s, 0.26x 60 m/s, 0.47x 0 deg, 1.31x 60 deg, 0.48x 5 800 lines/s).
-# What remains: a noise-induced speed bias of about +0.5 sigma of the bound
-# at R = 0.11 m and 140 000 lines/s (noise-free renders: +0.2-0.3 sigma),
-# and the 8-trial medians' own scatter (an efficient estimator's median is
-# 1.5x the bound's with a few per cent chance at each point).
+# What remains: a mean speed error of +0.7-0.8 sigma of the bound at
+# R = 0.11 m and 140 000 lines/s (noise-free renders: +0.2-0.3 sigma; the
+# rest grows with the noise), and the 8-trial medians' own scatter (an
+# efficient unbiased estimator's median exceeds 1.5x the bound's with
+# about 10 % chance at each point).
 # Remove the marker when it passes
 # (strict: the quick sweep is seeded, so an unexpected pass fails CI and says so).
 @pytest.mark.slow
