@@ -30,7 +30,7 @@ from .detection import BallRegion, Detection, background_at, detect, median, reg
 from .edges import matched_edges, measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
-from .flatfield import column_gains
+from .flatfield import column_gains, flat_fielded
 from .images import LineImage
 from .initial import InitialGuess, find_keypoints, initial_guess
 from .motion import BallMotion
@@ -117,6 +117,12 @@ _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 # 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
 # the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
 _MATCHED_MAX_GAIN_SIGMA = 0.0015
+# where the interior shows more scatter (PRNU), the matched edges on the
+# crop with the measured gains divided out (_flat_fielded_matched), on balls
+# with at least this many measured columns: at R = 0.02 m (50 columns, 8-bit)
+# the quick sweep's y0 and z0 errors were 1.9-2.0x their sigmas RMS there (the
+# window edges' 0.9-1.0x) and the speed no better (0.15x vs 0.12x the bound)
+_FLAT_FIELD_MIN_COLUMNS = 64
 # with the matched edges, the pixels of the ball's ends and of the lines whose
 # edges spread over 0.3 px or more (the sharp lines keep their matched edges):
 # bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound
@@ -157,15 +163,20 @@ def estimate_region(
     ``pixels``, and ``extra["pixels"]`` says why: "off", "used", "spread" (see ``matched``),
     "not_uniform", "lateral_motion", "no_start", "no_shading_model",
     "not_converged".  ``matched`` (with the shading pass, on the same
-    condition as the pixel fit, and where the ball's interior shows no
-    column-gain scatter, :func:`ballscan.flatfield.column_gains`, i.e. a
-    flat-fielded sensor) measures the narrow edges by fitting the shading
-    model's profile to their windows (:func:`ballscan.edges.matched_edges`:
-    the edge pixel's own noise, not the window's and its level run's);
-    ``extra["edges"]`` says which ("window" or "matched") and
-    ``extra["column_gain_sigma"]`` the scatter measured (None where the
-    condition failed before it was measured, NaN where the ball is too small
-    to measure it: then the windows are kept).  With the matched edges the
+    condition as the pixel fit) measures the narrow edges by fitting the
+    shading model's profile to their windows
+    (:func:`ballscan.edges.matched_edges`: the edge pixel's own noise, not
+    the window's and its level run's): as they are where the ball's
+    interior shows no column-gain scatter
+    (:func:`ballscan.flatfield.column_gains`, a flat-fielded sensor), and
+    where it shows some (PRNU) on the image with the measured gains divided
+    out of the ball's lines, the background of its columns measured away
+    from it (:func:`refine_background`) and each matched edge's sigma
+    carrying the gain error that remains (``extra["flat_fielded"]``; balls
+    with at least 64 measured columns).  ``extra["edges"]`` says which
+    ("window" or "matched") and ``extra["column_gain_sigma"]`` the scatter
+    measured (None where the condition failed before it was measured, NaN
+    where the ball is too small to measure it: then the windows are kept).  With the matched edges the
     final fit takes the pixels of the ball's ends and of the lines whose
     edges spread over 0.3 px in place of their areas and edges
     (``extra["pixels"]`` "spread"; on balls of at least 20 lines with both
@@ -247,6 +258,8 @@ def estimate_region(
     pixels_state = "off" if not pixels else "no_start"
     # the columns' gain scatter, where the matched edges' condition measured it
     gain_sigma = None
+    # whether the matched edges were measured on the crop with the measured gains divided out
+    flat_field = False
     fit = None
     if shading or pixels:
         # The shading model needs the motion only roughly (its normals and edge
@@ -295,6 +308,13 @@ def estimate_region(
                         # NaN (a ball too small to tell) is not flat-fielded
                         if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
                             edges_fit = matched_edges(edges2, limb)
+                        elif math.isfinite(gain_sigma) and gains.n_columns >= _FLAT_FIELD_MIN_COLUMNS:
+                            # the measured gains divided out, and the
+                            # remaining gain error in the edges' sigmas
+                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera)
+                            if ff is not None:
+                                edges_fit, limb = ff
+                                flat_field = True
                         t_shading += time.perf_counter() - t_m
                     if edges_fit is not edges2 and int(np.sum(edges_fit.left_ok & edges_fit.right_ok)) >= _SPREAD_MIN_LINES:
                         # the narrow edges matched: the ends' and the spread
@@ -370,6 +390,7 @@ def estimate_region(
             "pixels": pixels_state,
             "edges": edges.edges_method,
             "column_gain_sigma": gain_sigma,
+            "flat_fielded": flat_field and edges.edges_method == "matched",
             "shading": None
             if shading_model is None
             else {
@@ -379,6 +400,70 @@ def estimate_region(
             },
         },
     )
+
+
+def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera):
+    """Matched edges measured on the image with the ball's measured column gains divided out, or None.
+
+    Where the ball's interior shows column-gain scatter (PRNU, not
+    flat-fielded): the gains of :func:`ballscan.flatfield.column_gains`
+    are divided out of the ball's lines (:func:`ballscan.flatfield.flat_fielded`),
+    the edges, the shading model and the matched edges are measured again
+    on that image, and each matched edge's sigma gets the gain error that
+    remains in its edge pixel (:func:`_with_gain_errors`).  None where the
+    flat-fielded ball fails the pixel fit's condition or no edge matched.
+
+    Returns
+    -------
+    (EdgeMeasurements, LimbProfile) or None
+    """
+    # the background of the ball's columns away from it (refine_background),
+    # and the gains on that background
+    n, w = detection.shape
+    bg = background_at(refine_background(image.data, detection, region), slice(0, n), slice(0, w))
+    gains = column_gains(image.data, bg, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
+    if not math.isfinite(gains.prnu_sigma):
+        return None
+    data = flat_fielded(image.data, bg, gains, region.lines, detection.saturation_dn)
+    edges = measure_edges(data, region, bg, detection.noise_dn, t_lines_s, saturation_dn=detection.saturation_dn, others=others)
+    limb = ball_limb(camera, start, data, edges, t_lines_s, bg)
+    if limb is None:
+        return None
+    edges = with_limb(edges, limb)
+    if _pixel_fit_refusal(limb, edges, start, camera) is not None:
+        return None
+    m = matched_edges(edges, limb)
+    if m is edges:
+        return None
+    return _with_gain_errors(m, gains), limb
+
+
+def _with_gain_errors(edges, gains):
+    """The matched edges' sigmas with their edge pixels' remaining column-gain error.
+
+    An edge in pixel ``j`` covering it by ``c`` moves by about ``dg_j c``
+    pixels for a gain error ``dg_j`` (:attr:`ColumnGains.gain_sigma`: the
+    measurement's posterior sigma, the gains' spread where the column was
+    not measured).  The error repeats on every line whose edge (same side)
+    sits in that pixel, which independent sigmas would average away: each
+    of those ``n_j`` lines gets ``n_j (sigma_g,j c)^2`` added to its
+    variance, so that their mean carries the whole error.
+    """
+    out = {}
+    for name, side in (("left", 1.0), ("right", -1.0)):
+        flag = getattr(edges, f"{name}_matched")
+        if flag is None or not flag.any():
+            continue
+        x = np.asarray(getattr(edges, f"{name}_px"), dtype=float)[flag]
+        j = np.rint(x).astype(int)
+        # covered fraction of the edge pixel (the ball inwards of the edge)
+        c = np.clip(0.5 + side * (j - x), 0.0, 1.0)
+        sg = np.nan_to_num(gains.residual_sigma(j))
+        _, inv, count = np.unique(j, return_inverse=True, return_counts=True)
+        sig = np.array(getattr(edges, f"{name}_sigma_px"), dtype=float, copy=True)
+        sig[flag] = np.sqrt(sig[flag] ** 2 + count[inv] * (sg * c) ** 2)
+        out[f"{name}_sigma_px"] = sig
+    return replace(edges, **out) if out else edges
 
 
 # the pixel fit's conditions: the fitted light at most this fraction of the
@@ -429,6 +514,74 @@ def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
             if i is not None and j is not None:
                 out[a, b] = cov[i, j]
     return out
+
+
+# the balls' neighbourhood left out of their columns' background: this many
+# lines and pixels around each region's mask (its partly covered pixels
+# below the detection threshold), and a column's level from at least this
+# many remaining lines
+_BG_GUARD_LINES = 3
+_BG_GUARD_PX = 3
+_BG_MIN_LINES = 8
+# clipping window of the level's mean, noise sigmas (the detector's mode seeking)
+_BG_WINDOW_SIGMA = 4.5
+
+
+def refine_background(data: np.ndarray, detection: Detection, region: BallRegion | None = None) -> Detection:
+    """The detection with its balls' (or ``region``'s) columns' background levels measured away from the balls.
+
+    The detector's per-column level (:mod:`ballscan.detection`: the mean of
+    a +-4.5 sigma window about the column's mode) takes in the pixels a
+    ball covers by less than 4.5 sigma of the contrast, next to its mask: on
+    the quick sweep's R = 0.11 m ball (8-bit, 1.8 % noise) the level of its
+    columns was 0.1 sigma high, its edges and ends read inwards and the
+    speed 1.5-2 sigma of the pixel bound high, in proportion to the noise
+    (noise-free 0.2 sigma).  Here each column of a region's box (plus
+    ``_BG_GUARD_PX``) is re-levelled from its lines outside every region's
+    mask grown by ``_BG_GUARD_LINES`` lines and ``_BG_GUARD_PX`` pixels:
+    the mean, in the detector's drift model, of the values within +-4.5
+    noise sigmas of its level (two rounds); columns with fewer than
+    ``_BG_MIN_LINES`` such lines keep the detector's level.
+    """
+    if not detection.regions:
+        return detection
+    n, w = detection.shape
+    gl, gp = _BG_GUARD_LINES, _BG_GUARD_PX
+    c_lo = max(min(r.col_start for r in detection.regions) - gp, 0)
+    c_hi = min(max(r.col_stop for r in detection.regions) + gp, w)
+    near = np.zeros((n, c_hi - c_lo), dtype=bool)
+    for r in detection.regions:
+        m = np.asarray(r.mask, dtype=bool)
+        # grown by a box (a separable maximum: rows, then columns)
+        grown = np.zeros((m.shape[0] + 2 * gl, m.shape[1] + 2 * gp), dtype=bool)
+        rows = np.zeros((m.shape[0] + 2 * gl, m.shape[1]), dtype=bool)
+        for d in range(2 * gl + 1):
+            rows[d : d + m.shape[0]] |= m
+        for d in range(2 * gp + 1):
+            grown[:, d : d + m.shape[1]] |= rows
+        l0, k0 = r.line_start - gl, r.col_start - gp - c_lo
+        a0, b0 = max(l0, 0), max(k0, 0)
+        a1, b1 = min(l0 + grown.shape[0], n), min(k0 + grown.shape[1], c_hi - c_lo)
+        near[a0:a1, b0:b1] |= grown[a0 - l0 : a1 - l0, b0 - k0 : b1 - k0]
+    cols = np.zeros(c_hi - c_lo, dtype=bool)
+    for r in detection.regions if region is None else (region,):
+        cols[max(r.col_start - gp, c_lo) - c_lo : min(r.col_stop + gp, c_hi) - c_lo] = True
+    idx = np.flatnonzero(cols)
+    x = np.asarray(data[:, c_lo:c_hi][:, idx], dtype=float)
+    g = detection.line_gain[:, None]
+    o = detection.line_offset_dn[:, None]
+    v = (x - o) / np.where(g != 0, g, 1.0)
+    far = ~near[:, idx]
+    level = detection.background_dn[c_lo:c_hi][idx].astype(float)
+    half = _BG_WINDOW_SIGMA * detection.noise_dn[c_lo:c_hi][idx]
+    for _ in range(2):
+        keep = far & (np.abs(v - level[None, :]) <= half[None, :])
+        cnt = keep.sum(axis=0)
+        mean = np.where(keep, v, 0.0).sum(axis=0) / np.maximum(cnt, 1)
+        level = np.where(cnt >= _BG_MIN_LINES, mean, level)
+    b = detection.background_dn.astype(float, copy=True)
+    b[c_lo + idx] = level
+    return replace(detection, background_dn=b)
 
 
 def _full_background(detection: Detection) -> np.ndarray:

@@ -22,9 +22,12 @@ ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
 0-0.0019, PRNU 0.002 gives 0.0001-0.0024, 0.003 gives 0.0015-0.0039 and
 0.008 gives 0.0067-0.0083.  A ball with fewer than 8 interior lines or 15
 measurable columns (about 17 px across) reads NaN: not measured.
-Dividing the measured gains out of the image was tried and did not help
+Dividing the measured gains out of the image did not help the window edges
 (docs/experiments.md): the columns a ball's edges dwell on longest are its
-outermost, which are never deep inside it.
+outermost, which are never deep inside it.  The matched edges are measured
+on the image with the gains divided out (:func:`flat_fielded`, session 8),
+each carrying the gain error that remains in its edge pixel
+(:attr:`ColumnGains.gain_sigma`).
 """
 
 from __future__ import annotations
@@ -36,7 +39,7 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
-__all__ = ["ColumnGains", "column_gains"]
+__all__ = ["ColumnGains", "column_gains", "flat_fielded"]
 
 # a column's gain needs at least this many interior lines (a median of fewer
 # is too noisy to be worth the shrinkage estimate's help)
@@ -65,6 +68,8 @@ def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
 # took most of column_gains' time on a stream event's ball (~1 ms)
 _TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
 _TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
+# the fraction of a white (column-independent) gain pattern's variance that the trend takes
+_TREND_LEAK = float(np.sum(_TREND_COEF**2))
 
 
 def _trend(x: np.ndarray) -> np.ndarray:
@@ -95,6 +100,10 @@ class ColumnGains:
         ball shows too few interior lines or columns to measure it).
     n_columns : int
         Columns with a measurement.
+    gain_sigma : ndarray (n_cols,) or None
+        1-sigma of each column's gain about ``gain`` (the shrinkage
+        estimate's posterior: ``prnu_sigma`` where not measured); None where
+        ``prnu_sigma`` is NaN.
     """
 
     col_start: int
@@ -102,6 +111,16 @@ class ColumnGains:
     n_lines: np.ndarray
     prnu_sigma: float
     n_columns: int
+    gain_sigma: np.ndarray | None = None
+
+    def residual_sigma(self, cols: np.ndarray) -> np.ndarray:
+        """``gain_sigma`` at sensor pixels ``cols`` (``prnu_sigma`` outside the box; NaN if not measured)."""
+        cols = np.asarray(cols, dtype=int)
+        if self.gain_sigma is None:
+            return np.full(cols.shape, math.nan)
+        k = cols - self.col_start
+        inside = (k >= 0) & (k < self.gain_sigma.size)
+        return np.where(inside, self.gain_sigma[np.clip(k, 0, self.gain_sigma.size - 1)], self.prnu_sigma)
 
 
 def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
@@ -199,6 +218,31 @@ def column_gains(
     scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
     tau2 = max(scatter**2 - float(np.median(var[ok])), 0.0)
     gain = np.ones(n_c)
+    sigma = np.full(n_c, math.sqrt(tau2))
     if tau2 > 0:
         gain[cols[ok]] = 1.0 + d * (tau2 / (tau2 + var[ok]))
-    return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(ok.sum()))
+        # the measurement's posterior, and the part of the gains the smooth
+        # trend takes with the ball's shading (a white gain pattern leaves
+        # sum(coef^2) = 0.2 of its variance in a 15-column quadratic: the
+        # quick sweep's balls measured 0.0030-0.0049 RMS off for a posterior
+        # of 0.0013-0.0030 alone)
+        sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _TREND_LEAK)
+    return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(ok.sum()), sigma)
+
+
+def flat_fielded(data: np.ndarray, background: np.ndarray, gains: ColumnGains, lines: slice, saturation_dn: float | None = None) -> np.ndarray:
+    """A copy of ``data`` with the gains divided out of the ball's signal on ``lines`` of the gains' columns.
+
+    ``background + (data - background) / gain``: the detector's per-column
+    background already holds each column's gain on the background.  Pixels
+    at or above ``saturation_dn`` keep their value (still saturated).
+    """
+    out = np.array(data, dtype=float, copy=True)
+    cs = slice(gains.col_start, gains.col_start + gains.gain.size)
+    raw = out[lines, cs]
+    bg = background[lines, cs]
+    ff = bg + (raw - bg) / gains.gain[None, :]
+    if saturation_dn is not None:
+        ff = np.where(raw >= saturation_dn, raw, ff)
+    out[lines, cs] = ff
+    return out
