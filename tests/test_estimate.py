@@ -156,11 +156,12 @@ def test_timestamps_slower_than_the_nominal_line_rate():
 
 
 @pytest.mark.slow
-def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
+def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
     # A flat ball on a sensor without column-gain scatter gets the matched
     # edges; the same ball with 0.8 % PRNU (the ball's interior shows it:
     # 0.0063 measured) gets them on the crop with the measured gains divided
-    # out; a tennis ball, or matched=False keep the windows.
+    # out only with flat_field and a long ball (this one has ~110 lines: the
+    # windows by default); a tennis ball, or matched=False keep the windows.
     cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     seen = {}
@@ -174,18 +175,25 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
                 b = estimate_image(img, cam, 0.0335, matched=matched).balls[0]
                 seen[prnu, tex, matched] = b
                 assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
+    # the length gate off: the short PRNU ball flat-fielded
+    from ballscan import estimate as est
+
+    img_prnu = LineImage(
+        render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008), seed=4).image.astype(float),
+        65535.0, 16, "none",
+    )
+    monkeypatch.setattr(est, "_FLAT_FIELD_MIN_LINES", 0)
+    forced = estimate_image(img_prnu, cam, 0.0335).balls[0]
+    assert forced.extra["edges"] == "matched" and forced.extra["pixels"] == "spread" and forced.extra["flat_fielded"]
+    assert abs(forced.speed_mps - m.speed_mps) < 3.0 * forced.speed_sigma_mps
     flat = seen[0.0, "none", True]
     assert flat.extra["edges"] == "matched" and flat.extra["column_gain_sigma"] < 0.003
     # and the final fit takes the ends' and the spread edges' pixels
     assert flat.extra["pixels"] == "spread"
     assert seen[0.0, "none", False].extra["edges"] == "window" and seen[0.0, "none", False].extra["pixels"] == "off"
-    matched = {(0.0, "none", True), (0.008, "none", True)}
-    assert all(seen[k].extra["pixels"] == "off" and seen[k].extra["edges"] == "window" for k in seen if k not in matched)
-    assert not flat.extra["flat_fielded"]
-    prnu = seen[0.008, "none", True]
-    assert prnu.extra["edges"] == "matched" and prnu.extra["pixels"] == "spread" and prnu.extra["column_gain_sigma"] > 0.005
-    assert prnu.extra["flat_fielded"]
-    assert not any(seen[k].extra["flat_fielded"] for k in seen if k not in matched)
+    assert all(seen[k].extra["pixels"] == "off" and seen[k].extra["edges"] == "window" for k in seen if k != (0.0, "none", True))
+    assert not any(b.extra["flat_fielded"] for b in seen.values())
+    assert seen[0.008, "none", True].extra["column_gain_sigma"] > 0.005
     # the matched edges move the estimate (their accuracy: tests/test_edges.py)
     assert flat.velocity_mps != seen[0.0, "none", False].velocity_mps
 

@@ -116,6 +116,9 @@ def estimate(
     matched: bool = typer.Option(
         True, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."
     ),
+    flat_field: bool = typer.Option(
+        True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
+    ),
 ) -> None:
     """Measure every ball in a line-scan image."""
     from .camera import line_times, load_camera
@@ -128,7 +131,7 @@ def estimate(
     cam = load_camera(camera)
     img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
     ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
-    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels, matched=matched)
+    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
     if as_json:
         typer.echo(report.to_json(cam))
     else:

@@ -117,12 +117,20 @@ _FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
 # 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
 # the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
 _MATCHED_MAX_GAIN_SIGMA = 0.0015
-# where the interior shows more scatter (PRNU), the matched edges on the
+# where the interior shows more scatter (PRNU), with flat_field, the matched edges on the
 # crop with the measured gains divided out (_flat_fielded_matched), on balls
 # with at least this many measured columns: at R = 0.02 m (50 columns, 8-bit)
 # the quick sweep's y0 and z0 errors were 1.9-2.0x their sigmas RMS there (the
 # window edges' 0.9-1.0x) and the speed no better (0.15x vs 0.12x the bound)
 _FLAT_FIELD_MIN_COLUMNS = 64
+# ... and at least this many lines with both edges: a column's gain error
+# repeats on every line whose edge sits in it, so the window edges' PRNU
+# error grows with the ball's length (a 5 m/s ball of 900 lines: V.x 5.5x
+# its sigma RMS, speed 1-sigma covering 8 %; flat-fielded 1.39x, 83 %),
+# while on short balls the flat-fielded edges' sigmas come out small (the
+# stream bench's 8-bit balls of 109 lines, 0.8 % PRNU: speed errors 1.45x
+# their sigma RMS over 9 balls, the window edges' 0.67x, at 2.6x the time)
+_FLAT_FIELD_MIN_LINES = 250
 # with the matched edges, the pixels of the ball's ends and of the lines whose
 # edges spread over 0.3 px or more (the sharp lines keep their matched edges):
 # bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound
@@ -145,6 +153,7 @@ def estimate_region(
     shading: bool = True,
     pixels: bool = False,
     matched: bool = True,
+    flat_field: bool = True,
 ) -> BallEstimate:
     """Estimate one detected ball's motion (see the module docstring).
 
@@ -169,11 +178,13 @@ def estimate_region(
     the window's and its level run's): as they are where the ball's
     interior shows no column-gain scatter
     (:func:`ballscan.flatfield.column_gains`, a flat-fielded sensor), and
-    where it shows some (PRNU) on the image with the measured gains divided
-    out of the ball's lines, the background of its columns measured away
-    from it (:func:`refine_background`) and each matched edge's sigma
-    carrying the gain error that remains (``extra["flat_fielded"]``; balls
-    with at least 64 measured columns).  ``extra["edges"]`` says which
+    with ``flat_field`` where it shows some (PRNU) on the image with the
+    measured gains divided out of the ball's lines, the background of its
+    columns measured away from it (:func:`refine_background`) and each
+    matched edge's sigma carrying the gain error that remains
+    (``extra["flat_fielded"]``; balls with at least 64 measured columns and
+    250 lines with both edges: on shorter balls the window edges' sigmas
+    are the honest ones, see ``_FLAT_FIELD_MIN_LINES``).  ``extra["edges"]`` says which
     ("window" or "matched") and ``extra["column_gain_sigma"]`` the scatter
     measured (None where the condition failed before it was measured, NaN
     where the ball is too small to measure it: then the windows are kept).  With the matched edges the
@@ -259,7 +270,7 @@ def estimate_region(
     # the columns' gain scatter, where the matched edges' condition measured it
     gain_sigma = None
     # whether the matched edges were measured on the crop with the measured gains divided out
-    flat_field = False
+    ff_used = False
     fit = None
     if shading or pixels:
         # The shading model needs the motion only roughly (its normals and edge
@@ -308,13 +319,18 @@ def estimate_region(
                         # NaN (a ball too small to tell) is not flat-fielded
                         if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
                             edges_fit = matched_edges(edges2, limb)
-                        elif math.isfinite(gain_sigma) and gains.n_columns >= _FLAT_FIELD_MIN_COLUMNS:
+                        elif (
+                            flat_field
+                            and math.isfinite(gain_sigma)
+                            and gains.n_columns >= _FLAT_FIELD_MIN_COLUMNS
+                            and int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES
+                        ):
                             # the measured gains divided out, and the
                             # remaining gain error in the edges' sigmas
                             ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera)
                             if ff is not None:
                                 edges_fit, limb = ff
-                                flat_field = True
+                                ff_used = True
                         t_shading += time.perf_counter() - t_m
                     if edges_fit is not edges2 and int(np.sum(edges_fit.left_ok & edges_fit.right_ok)) >= _SPREAD_MIN_LINES:
                         # the narrow edges matched: the ends' and the spread
@@ -390,7 +406,7 @@ def estimate_region(
             "pixels": pixels_state,
             "edges": edges.edges_method,
             "column_gain_sigma": gain_sigma,
-            "flat_fielded": flat_field and edges.edges_method == "matched",
+            "flat_fielded": ff_used and edges.edges_method == "matched",
             "shading": None
             if shading_model is None
             else {
@@ -605,6 +621,7 @@ def estimate_image(
     shading: bool = True,
     pixels: bool = False,
     matched: bool = True,
+    flat_field: bool = True,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -624,6 +641,10 @@ def estimate_image(
         Fit the pixels of the balls' ends (see :func:`estimate_region`).
     matched : bool
         Matched edges on uniform balls (see :func:`estimate_region`).
+    flat_field : bool
+        On a sensor whose column gains scatter (PRNU), the matched edges on
+        the image with the measured gains divided out, on long balls (see
+        :func:`estimate_region`).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -642,7 +663,7 @@ def estimate_image(
     det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None
     balls = [
-        estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched)
+        estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
         for r in det.regions
     ]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
