@@ -8,8 +8,9 @@ Pipeline per chunk
 ------------------
 1. **Ring buffer.** Lines (and their timestamps) are copied into a ring of
    ``buffer_lines`` lines: memory is fixed however long the stream runs.
-2. **Per-line test, vectorised over pieces** of at most ``test_lines`` lines
-   (ending at block boundaries). With the current background
+2. **Per-line test**, one compiled pass per line in the ring
+   (:func:`ballscan._kernels.stream_line_test_u8`), over pieces of at most
+   ``test_lines`` lines (ending at block boundaries). With the current background
    ``b[j]`` and noise ``s[j]`` (DN) each column has an integer band
    ``[lo, hi] = [floor(b - k s), ceil(b + k s)]``. A pixel is outside the band
    iff ``(x - lo) mod 2**bits > hi - lo`` (one unsigned subtraction and one
@@ -52,6 +53,7 @@ noise); the per-line gain and offset used by the precise estimate are those
 
 from __future__ import annotations
 
+import copy
 import math
 import time
 from collections import deque
@@ -61,6 +63,7 @@ from typing import Any
 
 import numpy as np
 
+from . import _kernels
 from .camera import LineScanCamera
 from .detection import detect, median
 from .errors import BallscanError
@@ -393,6 +396,9 @@ class StreamEngine:
         if executor is None:
             # Import the estimator now, not when the first ball leaves.
             preload_estimator()
+        else:
+            # the engine's own kernels (the estimator's load in the workers)
+            _kernels.warm_up_stream()
 
     # ------------------------------------------------------------------ public
     @property
@@ -584,7 +590,7 @@ class StreamEngine:
                 self._init_model(block)
                 self._test(0, self._n, out)
             return False
-        self._test_piece(piece, start, out)
+        self._test(start, self._n, out)
         return self._n % block == 0
 
     def _check_overflow(self, new_n: int, out: list[StreamResult]) -> None:
@@ -661,19 +667,17 @@ class StreamEngine:
         rows = rows[~near[rows]]
         if rows.size < 2:
             return
-        # float32 sums of 8-bit values and their squares are exact integers
-        # below 2**24 (n <= 240 lines, |values| <= 255 + offset); 16-bit data need float64.
-        ft = np.float32 if self.dtype.itemsize == 1 and rows.size <= 240 else np.float64
+        # The per-column sums of x - offset and its square over the sampled
+        # lines, in one compiled pass: exact integers (the former float32 /
+        # float64 sums of the same integers, bit for bit), without the
+        # (lines, W) float copy. Fast per-line offsets (flicker) are not
+        # noise: they are removed before the variance, their mean kept in the
+        # level (slow drift).
         idx = (lo + rows) % self._cap
-        s = self._ring[idx].astype(ft)
+        sums = _kernels.stream_block_sums_u8 if self.dtype.itemsize == 1 else _kernels.stream_block_sums_u16
+        total, total2 = sums(self._ring, self._off, idx)
         off = self._off[idx].astype(np.float64)
-        if np.any(off):
-            # fast per-line offsets (flicker) are not noise: remove them
-            # before the variance, keep their mean in the level (slow drift)
-            s -= off.astype(ft)[:, None]
         n = rows.size
-        total = s.sum(axis=0, dtype=ft).astype(np.float64)
-        total2 = np.einsum("ij,ij->j", s, s).astype(np.float64)
         mean = total / n
         var = np.maximum(total2 - n * mean * mean, 0.0) / (n - 1)
         mean += off.mean()
@@ -682,75 +686,30 @@ class StreamEngine:
         self._var += a * (var - self._var)
         self._set_band()
 
-    def _test_piece(self, piece: np.ndarray, start: int, out: list[StreamResult]) -> None:
-        hit_lines, counts, cmin, cmax = self._line_test(piece, start)
-        self._record(start, piece.shape[0], hit_lines, counts, cmin, cmax, out)
-
     def _test(self, lo: int, hi: int, out: list[StreamResult]) -> None:
-        """Test stored lines ``[lo, hi)`` (after the model is initialised)."""
-        step = self.config.block_lines
-        for a in range(lo, hi, step):
-            b = min(a + step, hi)
-            data = self._read(a, b)
-            hit_lines, counts, cmin, cmax = self._line_test(data, a)
-            self._record(a, b - a, hit_lines, counts, cmin, cmax, out)
+        """Test stored lines ``[lo, hi)`` with the current band, in place in the ring, and record their hits."""
+        hit_lines, counts, cmin, cmax = self._line_test(lo, hi - lo)
+        self._record(lo, hi - lo, hit_lines, counts, cmin, cmax, out)
 
-    def _line_offsets(self, x: np.ndarray) -> np.ndarray:
-        """Per-line offset (whole DN) of ``x`` from the background, clipped."""
-        # Fixed point with 4 fractional bits against the (non-integer)
-        # background: a rounded background would bias the median by up to
-        # 0.5 DN and give many steady lines an offset of 1. 8-bit data fit
-        # int16 (255 * 16), which also sorts twice as fast as int32.
-        wide = np.int16 if self.dtype.itemsize == 1 else np.int64
-        sub = x[:, self._ocols].astype(wide)
-        sub <<= 4
-        sub -= self._bg_ocols16.astype(wide)
-        sub.sort(axis=1)
-        m = sub.shape[1]
-        # median: the mean of the middle one or two values (sorting 64 values
-        # per line is 2x faster than numpy.median's partition here)
-        med = (sub[:, (m - 1) // 2].astype(np.float64) + sub[:, m // 2]) / 32.0
-        return np.clip(np.rint(med), -self._max_off, self._max_off).astype(np.int32)
+    def _line_test(self, start: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Stream lines ``[start, start + n)`` (in the ring) holding ball pixels: indices (from ``start``), counts, first and last column.
 
-    def _line_test(self, x: np.ndarray, start: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Lines of ``x`` (stream lines from ``start``) holding ball pixels: indices, counts, first and last column."""
-        # (x - lo) wraps modulo 2**bits: x < lo gives a value > hi - lo.
-        d = np.subtract(x, self._lo)
-        if self.config.line_offset:
-            off = self._line_offsets(x)
-            self._off[np.arange(start, start + x.shape[0]) % self._cap] = off
-            moved = np.flatnonzero(off)
-            if moved.size:
-                # the band of line i is [lo + o_i, hi + o_i]: the same modular
-                # test on x - lo - o_i (on the lines whose offset is not 0)
-                shift = (off % (self._max_dn + 1)).astype(self.dtype)
-                if moved.size > x.shape[0] // 4:
-                    d -= shift[:, None]
-                else:
-                    d[moved] -= shift[moved, None]
-        h = np.greater(d, self._span)
-        # Most lines have no outside pixel at all: run the run-length rule
-        # only on the lines that have one.
-        cand = np.flatnonzero(h.any(axis=1))
-        if cand.size == 0:
-            return cand, cand, cand, cand
-        r = h[cand]
-        for _ in range(self.config.min_run_px - 1):
-            r = r[:, 1:] & r[:, :-1]
-        keep = r.any(axis=1)
-        idx = cand[keep]
-        if idx.size == 0:
-            return idx, idx, idx, idx
-        sub = r[keep]
-        counts = sub.sum(axis=1)
-        cmin = np.argmax(sub, axis=1)
-        cmax = sub.shape[1] - 1 - np.argmax(sub[:, ::-1], axis=1) + (self.config.min_run_px - 1)
-        return idx, counts, cmin, cmax
+        One compiled pass per line (:func:`ballscan._kernels.stream_line_test_u8`):
+        the line's offset (stored in the ring's ``_off``), the band test
+        ``(x - lo - offset) mod 2**bits > hi - lo`` and the run rule; the hit
+        flags go to the ring's ``_hit``. Counts are the positions starting
+        ``min_run_px`` adjacent outside pixels; the last column is the last
+        such position plus ``min_run_px - 1``.
+        """
+        cfg = self.config
+        kernel = _kernels.stream_line_test_u8 if self.dtype.itemsize == 1 else _kernels.stream_line_test_u16
+        return kernel(
+            self._ring, start % self._cap, n, self._lo, self._span, self._ocols, self._bg_ocols16, self._max_off,
+            int(cfg.min_run_px), bool(cfg.line_offset), self._off, self._hit,
+        )
 
     def _record(self, start: int, n: int, idx: np.ndarray, counts: np.ndarray, cmin: np.ndarray, cmax: np.ndarray, out: list[StreamResult]) -> None:
-        self._hit[np.arange(start, start + n) % self._cap] = False
-        if idx.size:
-            self._hit[(start + idx) % self._cap] = True
+        # (the ring's hit flags of these lines are set by the line test)
         m = self.config.margin_lines
         for i, c, a, b in zip(idx.tolist(), counts.tolist(), cmin.tolist(), cmax.tolist()):
             line = start + i
@@ -809,11 +768,12 @@ class StreamEngine:
         crop = self._ring[np.arange(l0, l1) % self._cap, c0:c1]
         times = self._read_times(l0, l1)
         sat = cfg.saturation_dn if cfg.saturation_dn is not None else float(self._max_dn)
-        camera = crop_camera(self.camera, c0, c1)
-        if not self._has_timestamps and camera.exposure_s is None:
+        exposure = None
+        if not self._has_timestamps and self.camera.exposure_s is None:
             # estimate_image sets the exposure to the median line period when
             # timestamps are given; without a timestamps file the exact period is known.
-            camera = replace(camera, exposure_s=1.0 / camera.line_rate_hz)
+            exposure = 1.0 / self.camera.line_rate_hz
+        camera = crop_camera(self.camera, c0, c1, exposure_s=exposure)
         args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched)
         handoff = time.perf_counter() - self._chunk_arrival
         job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit)
@@ -937,17 +897,49 @@ def preload_estimator() -> None:
     _kernels.warm_up()
 
 
-def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int) -> LineScanCamera:
+def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int, *, exposure_s: float | None = None) -> LineScanCamera:
     """The camera of sensor pixels ``[col_start, col_stop)`` only.
 
     The same camera frame and optics; pixel ``j`` of the crop is pixel
     ``col_start + j`` of the sensor, so ``u' = u - col_start`` and the
     principal point moves by ``-col_start`` (pixels). Positions and
     velocities measured with it need no correction.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    col_start, col_stop : int
+        The crop's sensor pixels, ``0 <= col_start < col_stop <= width``.
+    exposure_s : float, optional
+        Also set the exposure (s).
+
+    Returns
+    -------
+    LineScanCamera
+        Equal to ``dataclasses.replace(camera, width=..., principal_px=...,
+        exposure_s=...)``, made without validating it again: a crop of a
+        valid camera is valid (its distortion is monotonic over a part of
+        the sensor's range), and the validation (~50 us, a distortion
+        check on 257 points) lay on every ball's latency path. An exposure
+        outside ``(0, 1 / line_rate_hz]`` or an empty or outside range is
+        validated (and refused) as by ``replace``.
     """
-    if col_start == 0 and col_stop == camera.width:
+    changes: dict[str, Any] = {}
+    if not (col_start == 0 and col_stop == camera.width):
+        changes.update(width=int(col_stop - col_start), principal_px=camera.principal_px - col_start)
+    if exposure_s is not None:
+        changes["exposure_s"] = exposure_s
+    if not changes:
         return camera
-    return replace(camera, width=int(col_stop - col_start), principal_px=camera.principal_px - col_start)
+    valid = 0 <= col_start and col_start + 2 <= col_stop <= camera.width
+    if exposure_s is not None:
+        valid = valid and isinstance(exposure_s, float) and 0.0 < exposure_s <= 1.0 / camera.line_rate_hz
+    if not valid:
+        return replace(camera, **changes)
+    crop = copy.copy(camera)  # no __init__, no validation
+    for key, value in changes.items():
+        object.__setattr__(crop, key, value)
+    return crop
 
 
 def process_stream(
