@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.flatfield import column_gains
+from ballscan.flatfield import column_gains, flat_fielded
 
 
 def _disc(n_lines: int, n_cols: int, prnu: float, noise: float, seed: int, shade: float = 0.0):
@@ -75,3 +75,24 @@ def test_gain_sigma_describes_the_remaining_gain_error():
         # outside the box and where not measured: the gains' spread
         assert np.all(g.residual_sigma(np.array([-5, 500])) == g.prnu_sigma)
     assert 0.6 < np.median(z) < 1.8, z
+
+
+def test_a_stuck_column_is_no_gain_and_flat_fielding_stays_below_saturation():
+    # A column stuck at the background inside the ball reads a ratio of ~0
+    # to the trend: taken for a gain it would scale its signal by hundreds
+    # (review, session 8: gain -0.0045).  It keeps gain 1 and its whole
+    # deviation as its error; the other columns' gains are untouched.
+    data, bg, mask, gain = _disc(300, 120, 0.008, 2.0, 0)
+    stuck = 60
+    data[:, stuck] = bg[:, stuck]
+    g = column_gains(data, bg, mask, 0, 0, +1)
+    assert g.gain[stuck] == 1.0 and g.gain_sigma[stuck] > 0.5
+    assert np.all((g.gain > 0.9) & (g.gain < 1.1))
+    others = np.flatnonzero(g.n_lines >= 20)
+    others = others[others != stuck]
+    clean = column_gains(_disc(300, 120, 0.008, 2.0, 0)[0], bg, mask, 0, 0, +1)
+    assert np.abs(g.gain[others] - clean.gain[others]).max() < 0.1 * 0.008
+    # pixels below saturation stay below it after a gain under 1 is divided out
+    sat = float(data.max()) + 0.5
+    ff = flat_fielded(data, bg, g, slice(0, data.shape[0]), saturation_dn=sat)
+    assert np.all(ff[data < sat] < sat) and np.all(np.isfinite(ff))

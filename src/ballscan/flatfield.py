@@ -70,6 +70,11 @@ _TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
 _TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
 # the fraction of a white (column-independent) gain pattern's variance that the trend takes
 _TREND_LEAK = float(np.sum(_TREND_COEF**2))
+# a column whose ratio to the trend is off by more than this many sigmas
+# (the gains' scatter and its measurement's noise) is defective, not a gain
+_DEFECT_SIGMAS = 5.0
+# at most this many of them per ball
+_MAX_DEFECTS = 8
 
 
 def _trend(x: np.ndarray) -> np.ndarray:
@@ -207,15 +212,29 @@ def column_gains(
     med = _masked_median(r, inner_c, axis=0)
     spread = _MAD_SIGMA * _masked_median(np.abs(r - med[None, :]), inner_c, axis=0)
     var = _MEDIAN_VAR * spread**2 / n_c_used
-    # the smooth part across the columns is the ball's, not the sensor's
-    trend = _trend(med)
-    ok = trend > 0
-    if ok.sum() < _TREND_COLS:
-        return none
-    d = med[ok] / trend[ok] - 1.0
-    # method of moments, robustly (a column at the ball's end or one with a
-    # seam may be far off): what the columns' scatter exceeds their noise by
-    scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
+    # the smooth part across the columns is the ball's, not the sensor's.  A
+    # defective (stuck, dead, hot) column is no gain: dividing by its value
+    # (a stuck column read -0.0045) would scale its signal by hundreds, and
+    # it bends its neighbours' trend (by 0.04); such columns are taken out
+    # one by one, the worst first, their value interpolated for the trend
+    k = np.arange(med.size)
+    far_all = np.zeros(med.size, dtype=bool)
+    for _ in range(_MAX_DEFECTS + 1):
+        base = np.where(far_all, np.interp(k, k[~far_all], med[~far_all]), med) if far_all.any() else med
+        trend = _trend(base)
+        ok = (trend > 0) & ~far_all
+        if ok.sum() < _TREND_COLS:
+            return none
+        d = med[ok] / trend[ok] - 1.0
+        # method of moments, robustly (a column at the ball's end or one with a
+        # seam may be far off): what the columns' scatter exceeds their noise by
+        scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
+        z = np.abs(d - np.median(d)) / np.sqrt(scatter**2 + var[ok])
+        worst = int(np.argmax(z))
+        if z[worst] <= _DEFECT_SIGMAS or far_all.sum() == _MAX_DEFECTS:
+            break
+        far_all[np.flatnonzero(ok)[worst]] = True
+    d_far = np.abs(med[far_all] / np.where(trend[far_all] > 0, trend[far_all], 1.0) - 1.0)
     tau2 = max(scatter**2 - float(np.median(var[ok])), 0.0)
     gain = np.ones(n_c)
     sigma = np.full(n_c, math.sqrt(tau2))
@@ -227,6 +246,8 @@ def column_gains(
         # quick sweep's balls measured 0.0030-0.0049 RMS off for a posterior
         # of 0.0013-0.0030 alone)
         sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _TREND_LEAK)
+    # the defective columns keep gain 1 and their whole deviation as their error
+    sigma[cols[far_all]] = np.maximum(d_far, math.sqrt(tau2))
     return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(ok.sum()), sigma)
 
 
@@ -243,6 +264,7 @@ def flat_fielded(data: np.ndarray, background: np.ndarray, gains: ColumnGains, l
     bg = background[lines, cs]
     ff = bg + (raw - bg) / gains.gain[None, :]
     if saturation_dn is not None:
-        ff = np.where(raw >= saturation_dn, raw, ff)
+        # saturated pixels stay saturated, the others stay below it
+        ff = np.where(raw >= saturation_dn, raw, np.minimum(ff, np.nextafter(saturation_dn, -np.inf)))
     out[lines, cs] = ff
     return out
