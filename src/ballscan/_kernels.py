@@ -526,7 +526,8 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
             c_max = 0.0
             if branch == 1:
                 c_ab = inv4AB
-                c_prod = -(ApB - dist) * inv4AB * inv4AB * 4.0
+                # (not inv4AB squared: it overflows for A B below 1e-154)
+                c_prod = -dens * inv4AB * 4.0
                 c_dd = -s_dd * inv4AB
             elif branch == 2 and 2.0 * mAB > 1e-300:
                 c_max = -plateau * plateau * 2.0
