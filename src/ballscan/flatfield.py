@@ -75,6 +75,8 @@ _TREND_LEAK = float(np.sum(_TREND_COEF**2))
 _DEFECT_SIGMAS = 5.0
 # at most this many of them per ball
 _MAX_DEFECTS = 8
+# the sigma of that test at least this (relative gain)
+_DEFECT_FLOOR = 1e-3
 
 
 def _trend(x: np.ndarray) -> np.ndarray:
@@ -229,7 +231,8 @@ def column_gains(
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
         scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
-        z = np.abs(d - np.median(d)) / np.sqrt(scatter**2 + var[ok])
+        # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
+        z = np.abs(d - np.median(d)) / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
         if z[worst] <= _DEFECT_SIGMAS or far_all.sum() == _MAX_DEFECTS:
             break
