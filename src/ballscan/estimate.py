@@ -24,6 +24,7 @@ import time
 from dataclasses import dataclass, replace
 
 import numpy as np
+from scipy import ndimage as ndi
 
 from .camera import LineScanCamera, line_times
 from .detection import BallRegion, Detection, background_at, detect, median, region_background
@@ -435,8 +436,7 @@ def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, ca
     """
     # the background of the ball's columns away from it (refine_background),
     # and the gains on that background
-    n, w = detection.shape
-    bg = background_at(refine_background(image.data, detection, region), slice(0, n), slice(0, w))
+    bg = _full_background(refine_background(image.data, detection, region))
     gains = column_gains(image.data, bg, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
     if not math.isfinite(gains.prnu_sigma):
         return None
@@ -566,15 +566,10 @@ def refine_background(data: np.ndarray, detection: Detection, region: BallRegion
     c_lo = max(min(r.col_start for r in detection.regions) - gp, 0)
     c_hi = min(max(r.col_stop for r in detection.regions) + gp, w)
     near = np.zeros((n, c_hi - c_lo), dtype=bool)
+    box = np.ones((2 * gl + 1, 2 * gp + 1), dtype=bool)
     for r in detection.regions:
-        m = np.asarray(r.mask, dtype=bool)
-        # grown by a box (a separable maximum: rows, then columns)
-        grown = np.zeros((m.shape[0] + 2 * gl, m.shape[1] + 2 * gp), dtype=bool)
-        rows = np.zeros((m.shape[0] + 2 * gl, m.shape[1]), dtype=bool)
-        for d in range(2 * gl + 1):
-            rows[d : d + m.shape[0]] |= m
-        for d in range(2 * gp + 1):
-            grown[:, d : d + m.shape[1]] |= rows
+        # the mask grown by the guard box
+        grown = ndi.binary_dilation(np.pad(np.asarray(r.mask, dtype=bool), ((gl, gl), (gp, gp))), structure=box)
         l0, k0 = r.line_start - gl, r.col_start - gp - c_lo
         a0, b0 = max(l0, 0), max(k0, 0)
         a1, b1 = min(l0 + grown.shape[0], n), min(k0 + grown.shape[1], c_hi - c_lo)

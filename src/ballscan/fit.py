@@ -1152,6 +1152,7 @@ def fit_motion(
             if pix is None:
                 return np.zeros((thetas.shape[0], 0))
             return _pixel_residuals(camera, thetas, R, pix, acc, nn)
+
         def pixel_jac(th, base_r):
             # the pixel residuals' Jacobian (M, 6) at th, whose residuals are base_r
             if pix is None:

@@ -205,12 +205,9 @@ def fit_shading(
         coef = np.linalg.lstsq(Xa * sw[:, None], y * sw, rcond=None)[0]
         lit = n @ coef[1:]
         active = lit > 0
-        r = y - coef[0] - np.maximum(lit, 0.0)
-        scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
+        scale, w = _huber_round(y - coef[0] - np.maximum(lit, 0.0), huber_k)
         if scale < best[0]:
             best = (scale, coef)
-        a = np.abs(r) / (huber_k * scale)
-        w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
     if scale > _DIVERGED * best[0]:
         # The lit / shadowed split makes the rounds a fixed-point iteration,
         # not a descent: on a flat ball a round that calls half of it
@@ -234,11 +231,15 @@ def _flat_level(y: np.ndarray, huber_k: float, n_iterations: int) -> tuple[float
     level, scale = float(np.mean(y)), 1.0
     for _ in range(n_iterations):
         level = float(np.sum(w * y) / np.sum(w))
-        r = y - level
-        scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
-        a = np.abs(r) / (huber_k * scale)
-        w = np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
+        scale, w = _huber_round(y - level, huber_k)
     return level, scale
+
+
+def _huber_round(r: np.ndarray, huber_k: float) -> tuple[float, np.ndarray]:
+    """The robust scale (MAD) of residuals ``r`` and their Huber weights at ``huber_k`` of it (one reweighting round)."""
+    scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
+    a = np.abs(r) / (huber_k * scale)
+    return scale, np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
 
 
 @dataclass(frozen=True, eq=False)
