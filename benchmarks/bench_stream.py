@@ -13,8 +13,10 @@
   ends the event, event cut, hand-off), ``detect()`` on the crop, and the
   estimator's key points, edges and fit;
 * the same latency with the fit's shading pass off (``watch --no-shading``);
-* a baseline in the same run: :func:`ballscan.detection.detect` on each
-  chunk as a whole image (what a naive stream would do).
+* baselines in the same run: :func:`ballscan.detection.detect` on each
+  chunk as a whole image (what a naive stream would do) for the rate, and
+  :func:`ballscan.estimate.estimate_image` on the whole chunk that holds a
+  ball for the latency.
 
 Targets: >= 140 000 lines/s, latency <= 10 ms. Rates are given per wall
 second and per CPU second of this process (the latter is what "one core"
@@ -28,6 +30,7 @@ import os
 for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS"):
     os.environ[_v] = "1"
 
+import argparse  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
 
@@ -118,9 +121,29 @@ def baseline(n_chunks: int) -> tuple[float, float]:
     return n_chunks * CHUNK / (time.perf_counter() - t0), n_chunks * CHUNK / (time.process_time() - c0)
 
 
+def naive_latency(n_balls: int = 8) -> float:
+    """Median seconds of :func:`ballscan.estimate.estimate_image` on a whole 1024-line chunk holding a ball.
+
+    The latency of a stream without an engine: detect and estimate on every
+    chunk as one image (the baseline of the engine's latency, in the same run).
+    """
+    from ballscan.estimate import estimate_image
+
+    times = []
+    for k in range(n_balls):
+        chunk, _ = ball_chunk(400.0 + 37 * (k % 7), seed=k)
+        c = time.perf_counter()
+        estimate_image(LineImage(chunk.astype(np.float64), 255.0, 8, "chunk"), CAMERA, 0.0335)
+        times.append(time.perf_counter() - c)
+    return float(np.median(times))
+
+
 def main(argv: list[str] | None = None) -> int:
-    args = sys.argv[1:] if argv is None else argv
-    n = int(args[0]) if args else 400
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("chunks", nargs="?", type=int, default=400, help="chunks of 1024 lines per run (default 400)")
+    n = ap.parse_args(argv).chunks
+    if n < 20:
+        ap.error("chunks: at least 20 (a ball every 10 chunks)")
     # Warm-up (imports, first model).
     run(8, None)
     empty = run(n, None)
@@ -133,6 +156,7 @@ def main(argv: list[str] | None = None) -> int:
         ex.submit(int, 0).result()  # start the worker (and its imports) outside the timing
         offloaded = run(n, 10_000, executor=ex)
     base = baseline(max(n // 20, 5))
+    naive = naive_latency()
 
     def met(ok: bool) -> str:
         return "yes" if ok else "NO"
@@ -160,6 +184,8 @@ def main(argv: list[str] | None = None) -> int:
             met(fast["latency_ms"][1] <= 10),
         ),
         ("  of which: key points + edges + fit (ms)", f"{fast['estimate_ms'][0]:.1f} / {fast['estimate_ms'][1]:.1f}", "", "", ""),
+        ("baseline: estimate_image on the ball's chunk (ms)", f"{naive * 1e3:.1f}", "", "", ""),
+        ("  latency: engine / baseline", f"{lat[0] / (naive * 1e3):.2f} x", "", "", ""),
         ("balls found / rendered", f"{with_balls['balls']} / {with_balls['expected']}", "", "all", met(with_balls["balls"] == with_balls["expected"])),
         ("baseline: detect() per chunk, lines/s", f"{base[0]:,.0f}", f"{base[1]:,.0f}", "", ""),
         ("speed-up over the baseline (no ball)", f"{empty['lines_per_s'] / base[0]:.0f} x", f"{empty['lines_per_cpu_s'] / base[1]:.0f} x", "", ""),
