@@ -1,0 +1,127 @@
+"""Are the reported 1-sigma honest?  z-scores of the precise fit against the truth (run on demand, not a test).
+
+    python benchmarks/bench_calibration.py [--balls N] [--jobs J] [--cases NAME,...]
+
+For each case (a camera, a ball length in lines, flat or Lambertian-shaded
+ball) it renders ``--balls`` single images of one ball on the default
+8-bit sensor (read and shot noise, 0.8 % PRNU) with random lateral
+position, sub-line phase and velocity components along the sensor and in
+depth, at the renderer's finest sampling (16 x 64 per edge pixel on every
+line: the truth of a continuous exposure), runs ``estimate_image`` and
+prints, per estimated quantity, the RMS and the mean of
+``z = (estimate - truth) / sigma``.  An honest sigma gives RMS z = 1 and a
+mean within ``1 / sqrt(N)`` of 0; RMS z = 2 means the reported sigma is half
+the actual error.  Also the edges used (``extra["edges"]``).
+
+Cases: ``stream-38`` / ``stream-112`` / ``stream-268`` are the stream
+tests' camera (512 px, f = 1100 px, 20 kHz, z = 4 m: an 18-px-wide tennis
+ball) at 35 / 12 / 5 m/s; ``wide-117`` the stream benchmark's (2048 px,
+f = 4000 px, 70 kHz, z = 4 m, 40 m/s: 67 px wide, 117 lines, 109 with both edges).  Each with
+``-flat`` or ``-shaded``.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMEXPR_NUM_THREADS"):
+    os.environ[_var] = "1"
+
+import argparse  # noqa: E402
+from collections import Counter  # noqa: E402
+from dataclasses import dataclass  # noqa: E402
+
+import numpy as np  # noqa: E402
+from joblib import Parallel, delayed  # noqa: E402
+
+from ballscan.camera import LineScanCamera  # noqa: E402
+from ballscan.estimate import estimate_image  # noqa: E402
+from ballscan.images import LineImage  # noqa: E402
+from ballscan.motion import BallMotion  # noqa: E402
+from ballscan.render import Appearance, RenderSettings, SensorNoise, render  # noqa: E402
+
+RADIUS_M = 0.0335
+FINE = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
+NAMES = ("t_c", "y0", "z0", "vx", "vy", "vz")
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    camera: LineScanCamera
+    speed_mps: float
+    z_m: float
+    shaded: bool
+
+    @property
+    def lines(self) -> float:
+        return 2 * RADIUS_M / self.speed_mps * self.camera.line_rate_hz
+
+
+STREAM_CAM = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+WIDE_CAM = LineScanCamera(width=2048, focal_px=4000.0, principal_px=1023.5, line_rate_hz=70000.0)
+CASES = {
+    f"{base}-{look}": Case(f"{base}-{look}", cam, v, 4.0, look == "shaded")
+    for base, cam, v in (("stream-38", STREAM_CAM, 35.0), ("stream-112", STREAM_CAM, 12.0), ("stream-268", STREAM_CAM, 5.0), ("wide-117", WIDE_CAM, 40.0))
+    for look in ("flat", "shaded")
+}
+
+
+def one_ball(case: Case, k: int) -> tuple[np.ndarray, str]:
+    """z-scores of ball ``k`` of ``case`` and the edges it used."""
+    rng = np.random.default_rng(1000 + k)
+    cam = case.camera
+    n_img = int(case.lines * 1.6) + 20
+    # lateral position within the middle half of the field, velocity 6 % of the speed along y and 9 % in depth
+    half_field = 0.25 * cam.width / cam.focal_px * case.z_m
+    v = case.speed_mps
+    m = BallMotion(
+        RADIUS_M,
+        (n_img / 2 + rng.uniform(-0.5, 0.5)) / cam.line_rate_hz,
+        (0.0, rng.uniform(-half_field, half_field), case.z_m),
+        (v, rng.uniform(-0.06, 0.06) * v, rng.uniform(-0.09, 0.09) * v),
+    )
+    app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
+    r = render(cam, [(m, app)], n_img, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
+    balls = estimate_image(LineImage(r.image.astype(float), 255.0, 8, case.name), cam, RADIUS_M).balls
+    if len(balls) != 1 or balls[0].t_c_s is None:
+        return np.full(6, np.nan), "none"
+    e = balls[0]
+    est = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
+    sig = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
+    true = np.r_[m.t_c_s, m.position_m[1:], m.velocity_mps]
+    return (est - true) / sig, str(e.extra.get("edges"))
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--balls", type=int, default=60, help="balls per case (default 60)")
+    ap.add_argument("--jobs", type=int, default=1, help="worker processes (default 1)")
+    ap.add_argument("--cases", default=",".join(CASES), help="comma-separated case names (default all)")
+    args = ap.parse_args(argv)
+    names = [c for c in args.cases.split(",") if c]
+    unknown = [c for c in names if c not in CASES]
+    if unknown:
+        ap.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(CASES)}")
+    if args.balls < 2:
+        ap.error("--balls: at least 2")
+    print(f"z = (estimate - truth) / sigma over {args.balls} balls per case; an honest sigma: RMS 1, |mean| < {2 / np.sqrt(args.balls):.2f} (2 s.e.)")
+    header = f"{'case':18s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
+    print(header)
+    print(f"{'':18s} {'':5s}  " + "  ".join(f"{'RMS  mean':>11s}" for _ in NAMES))
+    for name in names:
+        case = CASES[name]
+        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k) for k in range(args.balls))
+        z = np.array([o[0] for o in out])
+        ok = np.all(np.isfinite(z), axis=1)
+        z = z[ok]
+        rms = np.sqrt(np.mean(z**2, axis=0))
+        mean = z.mean(axis=0)
+        kinds = Counter(o[1] for o in out)
+        cells = "  ".join(f"{r:5.2f} {m:+5.2f}" for r, m in zip(rms, mean))
+        print(f"{name:18s} {case.lines:5.0f}  {cells}  {dict(kinds)}" + (f"  ({(~ok).sum()} not measured)" if (~ok).any() else ""))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
