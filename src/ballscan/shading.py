@@ -390,10 +390,19 @@ class LimbProfile:
         off = np.asarray(offsets, dtype=float)
         if lines.size == 0:
             return np.zeros(off.shape)
+        lo, hi, wgt = self._chords(lines, sg, n_nodes)
+        cov = pixel_coverage(lo[None], hi[None], wgt[None], off)[0]
+        bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
+        return np.where(bad, np.nan, cov)
+
+    def _chords(self, lines: np.ndarray, sg: np.ndarray, n_nodes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The averaged silhouette's chord samples of each row as intervals of offsets inwards from its edge, pixels, and their weights (R, 3, n).
+
+        Computed once per line (a line's two edges and windows share them)
+        and kept for the next call on the same rows.
+        """
         key = (int(n_nodes), lines.tobytes(), sg.tobytes())
         if key not in self._samples:
-            # once per line (a line's two edges and windows share them), and
-            # kept for the next call on the same rows
             uniq, inv = np.unique(lines, return_inverse=True)
             me = averaged_model(
                 self.camera, self.motion.to_params()[None], self.motion.radius_m, self.t_lines_s[uniq],
@@ -402,15 +411,47 @@ class LimbProfile:
             u_lo, u_hi, wgt = (a[0][inv] for a in me.samples)  # (R, 3, n)
             left, right = me.left_px[0][inv][:, None, None], me.right_px[0][inv][:, None, None]
             s3 = sg[:, None, None]
-            # each sample's covered interval in the offsets of its row's edge
             lo = np.where(s3 > 0, u_lo - left, right - u_hi)
             hi = np.where(s3 > 0, u_hi - left, right - u_lo)
             self._samples.clear()
-            self._samples[key] = (lo[None], hi[None], wgt[None])
-        lo, hi, wgt = self._samples[key]
-        cov = pixel_coverage(lo, hi, wgt, off)[0]
-        bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
-        return np.where(bad, np.nan, cov)
+            self._samples[key] = (lo, hi, wgt)
+        return self._samples[key]
+
+    def rows(self, lines: np.ndarray, sides: np.ndarray, n_nodes: int = 4) -> tuple:
+        """The model of edges ``(lines, sides)`` as the model arguments of :func:`ballscan._kernels.limb_levels`.
+
+        Each row's chord samples (:meth:`pixel_coverage`'s, ``n_nodes``
+        nodes) flattened to (R, 3 n), its line time, mean edge (NaN where
+        the model has none), whether its edge is sharp (one point sample,
+        see the attributes), its line, the background, the samples over the
+        exposure and the pixel's height, the camera's focal length,
+        principal point and distortion and the shading law (the arguments
+        of :func:`ballscan._kernels.limb_values` from ``pos`` on).
+        """
+        lines = np.asarray(lines, dtype=int)
+        sg = np.asarray(sides, dtype=float)
+        lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes))
+        cam = self.camera
+        return (
+            lo, hi, wgt, as_arg(self.t_lines_s[lines]), as_arg(np.where(sg > 0, self.left_px[lines], self.right_px[lines])),
+            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), as_arg(self.background_dn),
+            *self._samples_tk_hk(), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2), *self._law(),
+        )
+
+    def _samples_tk_hk(self) -> tuple[np.ndarray, np.ndarray]:
+        """The instants over the exposure (s, from the line's centre time) and heights across the pixel (pixels) an unsharp edge is sampled at."""
+        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * self.camera.exposure
+        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
+        return tk, hk
+
+    def _law(self) -> tuple:
+        """The motion and the shading law as the last arguments of :func:`ballscan._kernels.limb_values`."""
+        m = self.motion
+        return (
+            np.array(m.position_m, dtype=float), np.array(m.velocity_mps, dtype=float), np.array(m.acceleration_mps2, dtype=float),
+            float(m.t_c_s), float(m.radius_m), np.array(self.shading.light_dn, dtype=float), float(self.shading.ambient_dn),
+            float(self.polarity * self.contrast_dn),
+        )
 
     def surface(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray) -> np.ndarray:
         """The shading law's normalised brightness of the surface at ``offsets`` (at least a quarter pixel inside the edge).
@@ -425,10 +466,6 @@ class LimbProfile:
         lines = np.asarray(lines, dtype=int)
         sides = np.asarray(sides)
         width = self.background_dn.shape[1]
-        tau = self.camera.exposure
-        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * tau
-        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
-        light = np.asarray(self.shading.light_dn)
         edge = np.where(sides > 0, self.left_px[lines], self.right_px[lines])
         u = edge[:, None] + sides[:, None] * np.asarray(offsets, dtype=float)
         # the background's column under each position (where u is not finite
@@ -439,24 +476,10 @@ class LimbProfile:
         # a sharp edge hardly moves during the exposure or across the
         # pixel's height: one sample at the line's centre time will do
         sharp = ~(self.spread_px[lines] >= self.sharp_px) | (not average)
-        m = self.motion
         # contiguous and writeable arrays: the kernel's one compiled signature
         val_out, cov_out = limb_values(
-            as_arg(self.t_lines_s[lines]),
-            as_arg(self.camera.backproject(u)),
-            as_arg(bg),
-            as_arg(sharp, np.bool_),
-            as_arg(tk),
-            as_arg(hk),
-            float(self.camera.focal_px),
-            np.array(m.position_m, dtype=float),
-            np.array(m.velocity_mps, dtype=float),
-            np.array(m.acceleration_mps2, dtype=float),
-            float(m.t_c_s),
-            float(m.radius_m),
-            np.array(light, dtype=float),
-            float(self.shading.ambient_dn),
-            float(self.polarity * self.contrast_dn),
+            as_arg(self.t_lines_s[lines]), as_arg(self.camera.backproject(u)), as_arg(bg), as_arg(sharp, np.bool_),
+            *self._samples_tk_hk(), float(self.camera.focal_px), *self._law(),
         )
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)

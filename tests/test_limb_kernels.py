@@ -1,0 +1,247 @@
+"""The compiled limb and shading kernels against the numpy code they replace (ballscan.edges, ballscan.shading)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from ballscan import edges as E
+from ballscan.camera import LineScanCamera, line_times
+from ballscan.detection import detect
+from ballscan.errors import GeometryError
+from ballscan.estimate import _full_background
+from ballscan.images import LineImage
+from ballscan.motion import BallMotion
+from ballscan.render import Appearance, SensorNoise, render
+from ballscan.shading import ball_limb
+
+MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 8.0))
+
+
+# ------------------------------------------------------- numpy references
+def _reference_limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol, stats):
+    """The numpy form of :func:`ballscan.edges._limb_levels` (same arguments; ``stats["missing"]``: pixels the nearest-pixel fill was asked for)."""
+    stats["missing"] = 0
+    edge, var, L = e.copy(), var0.copy(), L0.copy()
+    rows = np.flatnonzero(valid & np.isfinite(e))
+    if rows.size == 0:
+        return edge, var, L
+    sg = sgn[rows].astype(float)
+    lines_r = lines_abs[rows]
+    e0 = e[rows]
+    frac = (np.arange(m) + 0.5) / m
+    # whole pixels (LimbProfile.pixel_coverage) times the surface's
+    # brightness: the window from its outermost pixel inwards, then the
+    # level run and the run inside it, in one array
+    k = np.arange(int(n_win[rows].max()))
+    first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
+    px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+    kw = k.size
+    in_win = k[None, :] < n_win[rows][:, None]
+    nlu = lev.shape[1]
+
+    def profile(edge_at, point=None):
+        """Model values and coverage of the rows' pixels with the mean edge at ``edge_at``, and ``point``.
+
+        The surface's mean brightness where the ball covers each pixel:
+        inside the limb the centre's at the line's centre time; on the partly
+        covered pixels ``point``, the point model's, averaged over the
+        exposure and the pixel's height (a shaded limb darkens steeply
+        towards the edge and moves with it during the exposure), computed
+        here when not given (it is the costly part; later placements move the
+        edge by hundredths of a pixel); where neither is finite (a spread
+        edge's tail, none of whose points is covered) the nearest pixel's.
+        """
+        off = sg[:, None] * (px - edge_at[:, None])
+        cov = limb.pixel_coverage(lines_r, sg, off)
+        partial = (cov > 0) & (cov < 1.0 - 1e-9)
+        if point is None:
+            point = np.full(cov.shape, np.nan)
+            ri, ki = np.nonzero(partial)
+            if ri.size:
+                pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
+                v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
+                v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
+                with np.errstate(invalid="ignore", divide="ignore"):
+                    point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
+        shade = np.where(partial & np.isfinite(point), point, limb.surface(lines_r, sg, off))
+        missing = ~np.isfinite(shade) & (cov > 0)
+        stats["missing"] += int(missing.sum())
+        shade = _fill_nearest(shade, missing)
+        return np.where(cov > 0, shade * cov, 0.0), cov, point
+
+    # Two rounds: a level run in the tail of a spread edge's coverage is
+    # more or less covered as the edge moves, so the ratio again at the new edge.
+    er, point = e0, None
+    for _ in range(2):
+        at = er
+        val, cov, point = profile(at, point)
+        s_model = np.where(in_win, val[:, :kw], 0.0).sum(axis=1)
+        # the model's covered length in the window, with its mean edge at `at`
+        c_model = np.where(in_win, cov[:, :kw], 0.0).sum(axis=1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratio = s_model / c_model / val[:, kw : kw + nlu].mean(axis=1)
+        usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
+        ratio = np.where(usable, ratio, 1.0)
+        Lr = L_run[rows] * ratio
+        covered = S[rows] / np.where(Lr > 0, Lr, 1.0)
+        # The data's covered length S / L_eff against the model's: the mean
+        # edge moves by their difference.  (``inner - S / L_eff`` alone is
+        # the mean edge only when the window holds the whole ramp; a spread
+        # edge's inner tail reaches past it, by 0.02-0.04 px of coverage
+        # next to a ball's ends.)
+        er = np.where(usable, at + sg * (c_model - covered), e0)
+    # texture test with the model at the new edge: at the biased model-free
+    # edge the model's runs sit a few tenths of a pixel off and a strongly
+    # shaded limb would look like texture
+    runs1 = profile(er, point)[0][:, kw:]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
+        q_data = pd[rows] / L_run[rows]
+        q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
+        smooth = np.abs(q_data - q_model) <= 3.0 * q_sig + tol
+    good = usable & smooth
+    Ls = np.where(Lr > 0, Lr, 1.0)
+    # L = ratio * L_run: the level run's noise enters scaled by the ratio
+    v = (sw[rows] ** 2).sum(axis=1) / Ls**2 + (S[rows] / Ls**2) ** 2 * sl2[rows] * ratio**2
+    edge[rows] = np.where(good, er, e0)
+    var[rows] = np.where(good, v, var0[rows])
+    L[rows] = np.where(good, Lr, L0[rows])
+    return edge, var, L
+
+
+def _fill_nearest(a: np.ndarray, missing: np.ndarray) -> np.ndarray:
+    """``a`` (rows, K) with its ``missing`` entries replaced by the nearest finite, not missing entry of their row (left on ties).
+
+    Entries of rows without any such value stay as they are.
+    """
+    if not missing.any():
+        return a
+    k = a.shape[1]
+    col = np.arange(k)[None, :]
+    have = np.isfinite(a) & ~missing
+    left = np.maximum.accumulate(np.where(have, col, -1), axis=1)  # nearest on the left, -1 if none
+    right = np.flip(np.minimum.accumulate(np.flip(np.where(have, col, k), axis=1), axis=1), axis=1)  # k if none
+    pick = np.where((left >= 0) & ((right >= k) | (col - left <= right - col)), left, right)
+    found = (pick >= 0) & (pick < k)
+    filled = np.take_along_axis(a, np.clip(pick, 0, k - 1), axis=1)
+    return np.where(missing & found, filled, a)
+
+
+def test_fill_nearest_takes_the_closest_finite_value_of_the_row():
+    a = np.array([[np.nan, 2.0, np.nan, np.nan, 5.0, np.nan], [np.nan, np.nan, np.nan, np.nan, np.nan, np.nan]])
+    out = _fill_nearest(a, ~np.isfinite(a))
+    assert out[0].tolist() == [2.0, 2.0, 2.0, 5.0, 5.0, 5.0]  # ties go left
+    assert np.all(np.isnan(out[1]))  # nothing to take
+    # only the entries asked for are filled
+    keep = np.array([[True, False, False, False, False, False], [False] * 6])
+    out = _fill_nearest(a, keep)
+    assert out[0, 0] == 2.0 and np.isnan(out[0, 2])
+
+
+# ---------------------------------------------------------------- fixtures
+def _camera(k1: float = 0.0) -> LineScanCamera:
+    return LineScanCamera(240, 3000.0, 119.5, 50000.0, None, k1=k1)
+
+
+def _ball(k1: float = 0.0, texture: str = "tennis", seed: int = 4):
+    """A shaded, textured, noisy ball on a 240-pixel sensor: its first-pass edges and limb model."""
+    cam = _camera(k1)
+    app = Appearance(ball_level=0.8, shading=True, light_dir=(-0.35, -0.45, -0.82), ambient=0.35, texture=texture, orientation_seed=1)
+    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=3.0, full_well_e=None, prnu_sigma=0.0)
+    r = render(cam, (MOTION, app), 200, background_level=0.1, noise=noise, seed=seed)
+    image = LineImage(r.image.astype(float), float(noise.max_dn), 16, "shaded ball")
+    t = line_times(cam, image.data.shape[0])
+    det = detect(image)
+    bg = _full_background(det)
+    edges = E.measure_edges(image.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
+    limb = ball_limb(cam, MOTION, image.data, edges, t, bg)
+    assert limb is not None
+    return edges, limb
+
+
+def _level_args(ps, valid=None, tol=0.002):
+    return (
+        ps.e, ps.var, ps.L, ps.S, ps.L_run, ps.sl2, ps.sw, ps.n_win, ps.win_first, ps.win_last, ps.lev, ps.deep, ps.pd, ps.sd2, ps.sgn,
+        ps.limb_rows if valid is None else valid, ps.lines_abs, 3, tol,
+    )
+
+
+@pytest.fixture(scope="module")
+def shaded_ball():
+    return _ball()
+
+
+# ------------------------------------------------------------ limb levels
+def test_limb_levels_equal_the_numpy_form(shaded_ball):
+    edges, limb = shaded_ball
+    args = _level_args(edges._pass)
+    stats = {}
+    ref = _reference_limb_levels(limb, *args, stats)
+    got = E._limb_levels(limb, *args)
+    for a, b in zip(got, ref):
+        assert np.array_equal(a, b, equal_nan=True)  # the same arithmetic in the same order
+    rows = edges._pass.limb_rows
+    assert np.mean(got[0][rows] != args[0][rows]) > 0.5  # most edges corrected
+    assert stats["missing"] > 0  # the nearest-pixel fill ran
+
+
+def test_limb_levels_without_a_model_edge_or_coverage_keep_the_model_free_edge(shaded_ball):
+    edges, limb = shaded_ball
+    ps = edges._pass
+    rows = np.flatnonzero(ps.limb_rows & np.isfinite(ps.e))
+    # a line without a model edge (NaN: the model does not see the ball there)
+    gone = ps.lines_abs[rows[len(rows) // 3]]
+    left = limb.left_px.copy()
+    left[gone] = np.nan
+    no_edge = replace(limb, left_px=left)
+    # and a NaN chord sample (the coverage undefined) on another row
+    sg = ps.sgn[rows].astype(float)
+    lo, _, _ = no_edge._chords(ps.lines_abs[rows], sg, 4)
+    lo[len(rows) // 2, 1, 0] = np.nan
+    args = _level_args(ps)
+    got = E._limb_levels(no_edge, *args)
+    ref = _reference_limb_levels(no_edge, *args, {})
+    for a, b in zip(got, ref):
+        assert np.array_equal(a, b, equal_nan=True)
+    hit = (ps.lines_abs == gone) & (ps.sgn > 0) & ps.limb_rows
+    hit[rows[len(rows) // 2]] = True
+    for a, a0 in zip(got, (ps.e, ps.var, ps.L)):
+        assert np.array_equal(a[hit], a0[hit])
+
+
+def test_limb_levels_without_rows(shaded_ball):
+    edges, limb = shaded_ball
+    args = _level_args(edges._pass, valid=np.zeros_like(edges._pass.limb_rows))
+    got = E._limb_levels(limb, *args)
+    for a, a0 in zip(got, (args[0], args[1], args[2])):
+        assert np.array_equal(a, a0, equal_nan=True) and a is not a0
+
+
+def test_limb_levels_through_a_distorted_lens():
+    edges, limb = _ball(k1=-0.4)
+    args = _level_args(edges._pass)
+    got = E._limb_levels(limb, *args)
+    ref = _reference_limb_levels(limb, *args, {})
+    # each ray's Newton iteration stops on its own (numpy's when all have): 1e-12 px
+    for a, b in zip(got, ref):
+        assert np.array_equal(np.isnan(a), np.isnan(b))
+        assert np.nanmax(np.abs(a - b) / np.maximum(np.abs(b), 1.0)) < 1e-9
+
+
+def test_normalised_coordinate_equals_the_camera_and_reports_divergence():
+    from ballscan._kernels import _normalised
+
+    cam = _camera(k1=-0.4)
+    u = np.linspace(-800.0, 1000.0, 41)
+    ref = cam.backproject(u)
+    got = np.array([_normalised(x, cam.principal_px, cam.focal_px, cam.k1, cam.k2) for x in u], dtype=object)
+    assert all(ok for _, ok in got)
+    assert np.abs(np.array([n for n, _ in got]) - ref).max() * cam.focal_px < 1e-9
+    assert _normalised(5.0, 0.0, 1.0, 0.0, 0.0) == (5.0, True)
+    # beyond the monotonic range of the distortion (n_d above its maximum 0.609)
+    with pytest.raises(GeometryError):
+        cam.undistort(np.array([0.7]))
+    assert not _normalised(0.7 * cam.focal_px + cam.principal_px, cam.principal_px, cam.focal_px, cam.k1, cam.k2)[1]
