@@ -1046,13 +1046,14 @@ def warm_up() -> None:
     inner_differences(prof, prof, k0, k1, yes)
     flags = np.zeros((1, 8), dtype=np.bool_)
     edge_windows(prof, prof, flags, flags, k0, k1, k0, k0, 1)
-    # the limb levels (section at the end of the module)
+    # the limb levels and the shading fit (sections at the end of the module)
     z1 = np.zeros(1)
     limb_levels(
         np.ones(1), np.zeros((1, 3)), np.ones(1, dtype=np.int64), 1, 1, z1, z1, z1, z1, np.ones(1), z1, np.zeros((1, 1)), z1, z1, 1,
         np.zeros((1, 1)), np.ones((1, 1)), np.ones((1, 1)), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1,
         3000.0, 0.0, 0.0, 0.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,
     )
+    shading_fit(np.arange(8.0), np.tile(np.array([0.6, 0.0, -0.8]), (8, 1)), 1.5, 1, 1.5, 0.01)
     warm_up_stream()
 
 
@@ -2073,3 +2074,131 @@ def limb_levels(
             var[r] = s_w2 / Ls**2 + (S[r] / Ls**2) ** 2 * sl2[r] * ratio**2
             L[r] = Lr
     return edge, var, L, rays_ok
+
+
+# ---------------------------------------------------------------------------
+# Limb and shading: the shading law's robust fit
+# ---------------------------------------------------------------------------
+# ballscan.shading.fit_shading reweights a four-parameter least-squares fit
+# of some 800 interior pixels four times, then the flat law four times: as
+# numpy that was some hundred and fifty calls (the rounds' lstsq, two full
+# sorts for each round's median and MAD, the weights), 0.6 ms a ball.  The
+# loop below makes the same calls into LAPACK (gelsd) and BLAS (gemv) and
+# sums as numpy does (pairwise), so the law is the same to the last bit.
+
+
+@_jit()
+def _pairwise_sum(a: np.ndarray) -> float:
+    """``np.sum`` of a contiguous float64 array: numpy's pairwise summation (blocks of 128 in eight lanes)."""
+    n = a.shape[0]
+    if n < 8:
+        res = 0.0
+        for i in range(n):
+            res += a[i]
+        return res
+    if n <= 128:
+        r0, r1, r2, r3, r4, r5, r6, r7 = a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]
+        m = n - n % 8
+        for i in range(8, m, 8):
+            r0 += a[i]
+            r1 += a[i + 1]
+            r2 += a[i + 2]
+            r3 += a[i + 3]
+            r4 += a[i + 4]
+            r5 += a[i + 5]
+            r6 += a[i + 6]
+            r7 += a[i + 7]
+        res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
+        for i in range(m, n):
+            res += a[i]
+        return res
+    n2 = n // 2
+    n2 -= n2 % 8
+    return _pairwise_sum(a[:n2]) + _pairwise_sum(a[n2:])
+
+
+@_jit(inline="always")
+def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray) -> float:
+    """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (:func:`ballscan.shading._huber_round`)."""
+    med = np.median(r)
+    for i in range(r.shape[0]):
+        buf[i] = abs(r[i] - med)
+    scale = max(1.4826 * np.median(buf), 1e-9)
+    ks = huber_k * scale
+    for i in range(r.shape[0]):
+        a = abs(r[i]) / ks
+        w[i] = 1.0 if a <= 1.0 else 1.0 / max(a, 1e-12)
+    return scale
+
+
+@_jit()
+def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations: int, diverged: float, flat_tol: float):
+    """The robust fit of ``I = A + max(0, n . b)`` to interior pixels (:func:`ballscan.shading.fit_shading`).
+
+    ``y`` (N,) the pixels (DN), ``normals`` (N, 3) the unit surface normals
+    they see.  Each of ``n_iterations`` rounds solves the weighted least
+    squares of the law, linear in ``(A, b)`` on the pixels the last round
+    lit (``n . b > 0``; the others see ``A`` only), and reweights by Huber at
+    ``huber_k`` robust sigmas (1.4826 x the MAD) of the residuals; the best
+    round (least robust scale) is kept when the last one's scale exceeds
+    ``diverged`` times it.  The flat law (Huber mean, the same rounds)
+    replaces it unless the light lowers the robust scale by more than
+    ``flat_tol`` below the flat law's.
+
+    Returns
+    -------
+    coef : ndarray (4,)
+        ``(A, b_x, b_y, b_z)``, DN.
+    scale : float
+        Robust scale of the residuals, DN.
+    """
+    N = y.shape[0]
+    w = np.ones(N)
+    active = np.ones(N, dtype=np.bool_)
+    coef = np.zeros(4)
+    scale = 1.0
+    best_scale = np.inf
+    best_coef = coef
+    A = np.empty((N, 4))
+    b = np.empty(N)
+    r = np.empty(N)
+    buf = np.empty(N)
+    # numpy's lstsq cut-off (rcond=None)
+    rcond = np.finfo(np.float64).eps * max(N, 4)
+    for _ in range(n_iterations):
+        for i in range(N):
+            sw = math.sqrt(w[i])
+            A[i, 0] = sw
+            for j in range(3):
+                A[i, j + 1] = normals[i, j] * sw if active[i] else 0.0
+            b[i] = y[i] * sw
+        coef = np.linalg.lstsq(A, b, rcond)[0]
+        lit = np.dot(normals, coef[1:].copy())
+        for i in range(N):
+            active[i] = lit[i] > 0.0
+            r[i] = y[i] - coef[0] - max(lit[i], 0.0)
+        scale = _huber_weights(r, huber_k, w, buf)
+        if scale < best_scale:
+            best_scale = scale
+            best_coef = coef
+    if scale > diverged * best_scale:
+        # the rounds are a fixed-point iteration, not a descent: keep the best
+        scale = best_scale
+        coef = best_coef
+    # the flat law: a Huber mean
+    for i in range(N):
+        w[i] = 1.0
+    level = _pairwise_sum(y) / N
+    flat_scale = 1.0
+    for _ in range(n_iterations):
+        for i in range(N):
+            b[i] = w[i] * y[i]
+        level = _pairwise_sum(b) / _pairwise_sum(w)
+        for i in range(N):
+            r[i] = y[i] - level
+        flat_scale = _huber_weights(r, huber_k, w, buf)
+    if flat_scale <= (1.0 + flat_tol) * scale:
+        coef = np.zeros(4)
+        coef[0] = level
+        scale = flat_scale
+    return coef, scale

@@ -32,9 +32,8 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, limb_values
+from ._kernels import as_arg, limb_values, shading_fit
 from .camera import LineScanCamera
-from .detection import median as _median
 from .edges import EdgeMeasurements
 from .fit import averaged_model, pixel_coverage
 from .motion import BallMotion
@@ -190,56 +189,19 @@ def fit_shading(
     n = n[hit]
     if y.size < 50:
         return None
-    X = np.column_stack([np.ones(y.size), n])
-    X_dark = np.zeros((1, 4))
-    X_dark[0, 0] = 1.0
-    w = np.ones(y.size)
-    active = np.ones(y.size, dtype=bool)
-    coef = np.zeros(4)
-    scale = 1.0
-    best = (np.inf, coef)
-    for _ in range(n_iterations):
-        # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
-        Xa = np.where(active[:, None], X, X_dark)
-        sw = np.sqrt(w)
-        coef = np.linalg.lstsq(Xa * sw[:, None], y * sw, rcond=None)[0]
-        lit = n @ coef[1:]
-        active = lit > 0
-        scale, w = _huber_round(y - coef[0] - np.maximum(lit, 0.0), huber_k)
-        if scale < best[0]:
-            best = (scale, coef)
-    if scale > _DIVERGED * best[0]:
-        # The lit / shadowed split makes the rounds a fixed-point iteration,
-        # not a descent: on a flat ball a round that calls half of it
-        # shadowed can run away to a strong light (seen: 152 DN of light and
-        # a robust scale of 40 DN where the flat law leaves 5 DN; its end
-        # levels then moved a ball's V.x by 21 sigma).  Keep the best round.
-        scale, coef = best
-    # A light that lights hardly any of the pixels (behind the ball: seen on
-    # flat 8-bit renders, 19-117 DN of light on a 138 DN contrast at the
-    # same robust scale as no light) is not measured: the flat law, unless
-    # the light lowers the robust scale by more than _FLAT_TOL.
-    amb, flat_scale = _flat_level(y, huber_k, n_iterations)
-    if flat_scale <= (1.0 + _FLAT_TOL) * scale:
-        coef, scale = np.array([amb, 0.0, 0.0, 0.0]), flat_scale
-    return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
-
-
-def _flat_level(y: np.ndarray, huber_k: float, n_iterations: int) -> tuple[float, float]:
-    """Huber mean of ``y`` (reweighted as in :func:`fit_shading`) and the robust scale about it."""
-    w = np.ones(y.size)
-    level, scale = float(np.mean(y)), 1.0
-    for _ in range(n_iterations):
-        level = float(np.sum(w * y) / np.sum(w))
-        scale, w = _huber_round(y - level, huber_k)
-    return level, scale
-
-
-def _huber_round(r: np.ndarray, huber_k: float) -> tuple[float, np.ndarray]:
-    """The robust scale (MAD) of residuals ``r`` and their Huber weights at ``huber_k`` of it (one reweighting round)."""
-    scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
-    a = np.abs(r) / (huber_k * scale)
-    return scale, np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
+    # The rounds (compiled): the law is linear in (A, b) on the lit pixels,
+    # shadowed ones see A only, and the lit / shadowed split makes the rounds
+    # a fixed-point iteration, not a descent: on a flat ball a round that
+    # calls half of it shadowed can run away to a strong light (seen: 152 DN
+    # of light and a robust scale of 40 DN where the flat law leaves 5 DN;
+    # its end levels then moved a ball's V.x by 21 sigma), so the best round
+    # is kept when the last one's scale is _DIVERGED times worse.  A light
+    # that lights hardly any of the pixels (behind the ball: seen on flat
+    # 8-bit renders, 19-117 DN of light on a 138 DN contrast at the same
+    # robust scale as no light) is not measured: the flat law, unless the
+    # light lowers the robust scale by more than _FLAT_TOL.
+    coef, scale = shading_fit(as_arg(y), as_arg(n), float(huber_k), int(n_iterations), float(_DIVERGED), float(_FLAT_TOL))
+    return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), float(scale), int(y.size))
 
 
 @dataclass(frozen=True, eq=False)
