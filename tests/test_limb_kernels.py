@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -367,3 +368,111 @@ def test_shading_fit_on_few_and_odd_pixels():
         coef, scale = shading_fit(y, n, 1.5, 4, 1.5, 0.01)
         ref_coef, ref_scale = _reference_shading_fit(y, n, 1.5, 4, 1.5, 0.01)
         assert np.array_equal(coef, ref_coef) and scale == ref_scale, size
+
+
+# ------------------------------------------------- line levels and scatter
+def _reference_line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
+    """The numpy form of :meth:`ballscan.shading.LimbProfile.line_levels` (``self`` the profile)."""
+    lines = np.asarray(lines, dtype=int)
+    if lines.size == 0:
+        return np.zeros(0), np.zeros(0)
+    left, right, spread = self.left_px[lines], self.right_px[lines], self.spread_px[lines]
+    pad = np.nan_to_num(spread) / 2.0 + 1.5
+    span = np.nan_to_num(right - left) + 2.0 * pad
+    m = max(int(samples_per_px), 1)
+    n_pos = int(np.ceil(np.max(span) * m)) if np.all(np.isfinite(span)) else 1
+    offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
+    inside = offsets <= (span - pad)[:, None]
+    val, cov = self(lines, np.ones(lines.size), offsets)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        covered = np.where(inside, cov, 0.0).sum(axis=1)
+        level = np.where(inside, val, 0.0).sum(axis=1) / covered
+        level = np.where((covered > 0) & np.isfinite(left) & np.isfinite(right), level, np.nan)
+        rel = self.level_rel_sigma * np.sqrt(self.level_ref_px / np.maximum(covered / m, 1.0))
+    return level, np.where(np.isfinite(level), rel, np.nan)
+
+
+def _reference_line_level_scatter(
+    limb, edges, lines_ok: np.ndarray, spread_px: np.ndarray, left_px: np.ndarray, right_px: np.ndarray, max_lines: int = 40
+) -> tuple[float, float]:
+    """The numpy form of :func:`ballscan.shading._line_level_scatter` (its arguments)."""
+    if edges.profile is None or edges.profile_sigma is None:
+        return math.nan, 1.0
+    idx = np.flatnonzero(lines_ok)
+    if idx.size > max_lines:
+        idx = idx[np.linspace(0, idx.size - 1, max_lines).astype(int)]
+    inset = 1.5 + np.nan_to_num(spread_px[idx])
+    c0 = edges.profile_col0
+    lo = np.ceil(left_px[idx] + inset).astype(int) - c0
+    hi = np.floor(right_px[idx] - inset).astype(int) - c0
+    lo, hi = np.clip(lo, 0, edges.profile.shape[1]), np.clip(hi, -1, edges.profile.shape[1] - 1)
+    count = hi - lo + 1
+    keep = count >= 3
+    if keep.sum() < 3:
+        return math.nan, 1.0
+    idx, lo, count = idx[keep], lo[keep], count[keep]
+    k = np.arange(count.max())[None, :]
+    inside = k < count[:, None]
+    cols = np.where(inside, lo[:, None] + k, lo[:, None])
+    p = edges.profile[idx[:, None], cols]
+    sp = edges.profile_sigma[idx[:, None], cols]
+    lines_img = edges.lines[idx]
+    model, hit = limb(lines_img, np.ones(idx.size), cols + c0 - limb.left_px[lines_img][:, None], average=False)
+    # only where the model's surface is seen too (the model sits at a rough
+    # motion: a pixel inside the measured ball may lie outside its silhouette)
+    inside &= np.isfinite(p) & (np.nan_to_num(hit) > 0)
+    n = inside.sum(axis=1)
+    good = n >= 3
+    with np.errstate(invalid="ignore", divide="ignore"):
+        p_mean = np.where(inside, p, 0.0).sum(axis=1) / n
+        m_mean = np.where(inside, model, 0.0).sum(axis=1) / n
+        noise2 = np.where(inside, sp**2, 0.0).sum(axis=1) / n**2
+        d = p_mean / m_mean - 1.0
+        v = noise2 / m_mean**2
+    good &= np.isfinite(d) & np.isfinite(v) & (m_mean > 0.05)
+    if good.sum() < 3:
+        return math.nan, 1.0
+    return float(np.sqrt(max(float(np.mean(d[good] ** 2) - np.mean(v[good])), 0.0))), float(np.mean(n[good]))
+
+
+def test_line_levels_equal_the_numpy_form(shaded_ball):
+    edges, limb = shaded_ball
+    lines = edges.lines[edges.signal]
+    for ls in (lines, lines[:1], lines[:0], np.concatenate([lines[:3], [0]])):  # [0]: a line the model does not see
+        for m in (2, 3, 1):
+            got = limb.line_levels(ls, m)
+            ref = _reference_line_levels(limb, ls, m)
+            for a, b in zip(got, ref):
+                assert np.array_equal(a, b, equal_nan=True)
+    # the ends' levels differ from the middle's (the cap is lit or shaded unlike it)
+    lev = limb.line_levels(lines)[0]
+    assert np.nanmax(lev) - np.nanmin(lev) > 0.05
+    # a spread-less model (every line sharp: one sample per position)
+    sharp = replace(limb, sharp_px=np.inf)
+    for a, b in zip(sharp.line_levels(lines), _reference_line_levels(sharp, lines)):
+        assert np.array_equal(a, b, equal_nan=True)
+
+
+def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
+    from ballscan.fit import averaged_model
+    from ballscan.shading import _line_level_scatter
+
+    edges, limb = shaded_ball
+    me = averaged_model(limb.camera, MOTION.to_params()[None], MOTION.radius_m, edges.t_s, MOTION.acceleration_mps2)
+    full = edges.left_ok & edges.right_ok & (me.presence[0] > 0.999)
+    inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+    # saturated (NaN) pixels, a line without a model edge, few lines
+    prof = edges.profile.copy()
+    prof[edges.profile.shape[0] // 2, ::3] = np.nan
+    left = limb.left_px.copy()
+    left[edges.lines[np.flatnonzero(full)[5]]] = np.nan
+    cases = [(edges, limb, full), (replace(edges, profile=prof), replace(limb, left_px=left), full)]
+    few = np.zeros_like(full)
+    few[np.flatnonzero(full)[:3]] = True
+    cases += [(edges, limb, few), (edges, limb, np.zeros_like(full))]
+    for e, lp, ok in cases:
+        for max_lines in (40, 7, 1000):
+            got = _line_level_scatter(lp, e, ok, me.spread_px[0], *inner, max_lines=max_lines)
+            ref = _reference_line_level_scatter(lp, e, ok, me.spread_px[0], *inner, max_lines=max_lines)
+            assert got == ref or (np.isnan(got[0]) and np.isnan(ref[0]) and got[1] == ref[1]), (got, ref)
+    assert np.isfinite(_line_level_scatter(limb, edges, full, me.spread_px[0], *inner)[0])

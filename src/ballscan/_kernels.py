@@ -1046,7 +1046,7 @@ def warm_up() -> None:
     inner_differences(prof, prof, k0, k1, yes)
     flags = np.zeros((1, 8), dtype=np.bool_)
     edge_windows(prof, prof, flags, flags, k0, k1, k0, k0, 1)
-    # the limb levels and the shading fit (sections at the end of the module)
+    # the limb levels, the shading fit, the line levels and their scatter (sections at the end of the module)
     z1 = np.zeros(1)
     limb_levels(
         np.ones(1), np.zeros((1, 3)), np.ones(1, dtype=np.int64), 1, 1, z1, z1, z1, z1, np.ones(1), z1, np.zeros((1, 1)), z1, z1, 1,
@@ -1054,6 +1054,9 @@ def warm_up() -> None:
         3000.0, 0.0, 0.0, 0.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,
     )
     shading_fit(np.arange(8.0), np.tile(np.array([0.6, 0.0, -0.8]), (8, 1)), 1.5, 1, 1.5, 0.01)
+    law = (3000.0, 0.0, 0.0, 0.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0)
+    line_level_sums(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1, *law)
+    level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
     warm_up_stream()
 
 
@@ -2202,3 +2205,193 @@ def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations
         coef[0] = level
         scale = flat_scale
     return coef, scale
+
+
+# ---------------------------------------------------------------------------
+# Limb and shading: the model's line levels and their measured scatter
+# ---------------------------------------------------------------------------
+# The ends' line levels (LimbProfile.line_levels) and their scatter on the
+# plateau lines (ballscan.shading._line_level_scatter) evaluate the model on
+# some forty lines each; as numpy they were some sixty operations on arrays
+# of a few thousand entries (0.5 ms a ball together).  The rows' sums are
+# numpy's pairwise sums (_pairwise_sum), so the results are its bits.
+
+
+@_jit(error_model="numpy")
+def line_level_sums(
+    offsets: np.ndarray,
+    inside: np.ndarray,
+    edge_m: np.ndarray,
+    t_rows: np.ndarray,
+    sharp: np.ndarray,
+    line_rows: np.ndarray,
+    background: np.ndarray,
+    tk: np.ndarray,
+    hk: np.ndarray,
+    focal: float,
+    principal: float,
+    k1: float,
+    k2: float,
+    pos: np.ndarray,
+    vel: np.ndarray,
+    acc: np.ndarray,
+    t_c: float,
+    radius_m: float,
+    light: np.ndarray,
+    ambient: float,
+    scale: float,
+):
+    """Sums of the model's normalised value and coverage over the ``inside`` positions of each row (:meth:`ballscan.shading.LimbProfile.line_levels`).
+
+    Row ``r`` is the left edge of image line ``line_rows[r]`` (mean edge
+    ``edge_m[r]``, pixels; NaN: the model does not see the ball, the sums
+    NaN where a position is inside), its positions ``offsets[r]`` pixels
+    inwards from it; each position's value and coverage are the means over
+    the samples of :func:`limb_values` (one at the line's centre time where
+    ``sharp``); the model's arguments are those of :func:`limb_levels` from
+    ``background`` on.
+
+    Returns
+    -------
+    val_sum, cov_sum : ndarray (R,)
+    rays_ok : bool
+        False when the inverse distortion of a ray did not converge.
+    """
+    R, C = offsets.shape
+    val_sum = np.empty(R)
+    cov_sum = np.empty(R)
+    bv = np.empty(C)
+    bc = np.empty(C)
+    cen = np.empty((max(tk.shape[0], 1), 4))
+    hs = np.empty(max(hk.shape[0], 1))
+    R2 = radius_m * radius_m
+    has_acc = acc[0] != 0.0 or acc[1] != 0.0 or acc[2] != 0.0
+    width = background.shape[1]
+    rays_ok = True
+    for r in range(R):
+        if not np.isfinite(edge_m[r]):
+            any_in = False
+            for k in range(C):
+                any_in = any_in or inside[r, k]
+            val_sum[r] = np.nan if any_in else 0.0
+            cov_sum[r] = val_sum[r]
+            continue
+        bg_row = background[line_rows[r]]
+        nt = _centres(t_rows[r], sharp[r], tk, pos, vel, acc, has_acc, t_c, cen)
+        nh = _heights(sharp[r], hk, focal, hs)
+        for k in range(C):
+            bv[k] = 0.0
+            bc[k] = 0.0
+            if inside[r, k]:
+                v, c, ok = _limb_point(offsets[r, k], 1.0, edge_m[r], bg_row, width, cen, nt, hs, nh, focal, principal, k1, k2, R2, light, ambient, scale)
+                rays_ok = rays_ok and ok
+                bv[k] = v
+                bc[k] = c
+        val_sum[r] = _pairwise_sum(bv)
+        cov_sum[r] = _pairwise_sum(bc)
+    return val_sum, cov_sum, rays_ok
+
+
+@_jit(error_model="numpy")
+def level_scatter(
+    lines_img: np.ndarray,
+    lo: np.ndarray,
+    count: np.ndarray,
+    rows: np.ndarray,
+    profile: np.ndarray,
+    profile_sigma: np.ndarray,
+    c0: int,
+    edge_m: np.ndarray,
+    t_rows: np.ndarray,
+    background: np.ndarray,
+    tk: np.ndarray,
+    hk: np.ndarray,
+    focal: float,
+    principal: float,
+    k1: float,
+    k2: float,
+    pos: np.ndarray,
+    vel: np.ndarray,
+    acc: np.ndarray,
+    t_c: float,
+    radius_m: float,
+    light: np.ndarray,
+    ambient: float,
+    scale: float,
+):
+    """The relative scatter of lines' mean brightness about the model's, pixel noise removed (:func:`ballscan.shading._line_level_scatter`).
+
+    Line ``i`` (image line ``lines_img[i]``, row ``rows[i]`` of the edges'
+    normalised ``profile`` and its sigmas, whose column 0 is sensor pixel
+    ``c0``) is measured over the ``count[i]`` columns from ``lo[i]``, where
+    the profile is finite and the model (its surface at the line's centre
+    time, mean left edge ``edge_m[i]``: offsets ``u - edge_m``) sees the
+    ball: ``d = mean(p) / mean(model) - 1`` and its noise ``v = sum(sigma^2)
+    / n^2 / mean(model)^2``, on lines with at least 3 such pixels, finite
+    ``d, v`` and a model mean above 0.05.  Model arguments as for
+    :func:`limb_levels` from ``background`` on.
+
+    Returns
+    -------
+    scatter : float
+        ``sqrt(max(mean(d^2) - mean(v), 0))``; NaN when fewer than 3 lines
+        qualify.
+    length : float
+        Mean number of pixels per line it was measured over (1 with NaN).
+    rays_ok : bool
+        False when the inverse distortion of a ray did not converge.
+    """
+    L = lo.shape[0]
+    C = 0
+    for i in range(L):
+        C = max(C, count[i])
+    bp = np.empty(C)
+    bm = np.empty(C)
+    bs = np.empty(C)
+    d = np.empty(L)
+    v = np.empty(L)
+    n_px = np.empty(L)
+    cen = np.empty((1, 4))
+    hs = np.empty(1)
+    R2 = radius_m * radius_m
+    has_acc = acc[0] != 0.0 or acc[1] != 0.0 or acc[2] != 0.0
+    width = background.shape[1]
+    rays_ok = True
+    n_good = 0
+    for i in range(L):
+        for k in range(C):
+            bp[k] = 0.0
+            bm[k] = 0.0
+            bs[k] = 0.0
+        n = 0
+        if np.isfinite(edge_m[i]):
+            bg_row = background[lines_img[i]]
+            _centres(t_rows[i], True, tk, pos, vel, acc, has_acc, t_c, cen)
+            _heights(True, hk, focal, hs)
+            for k in range(count[i]):
+                col = lo[i] + k
+                p = profile[rows[i], col]
+                if not np.isfinite(p):
+                    continue
+                val, hit, ok = _limb_point(
+                    float(col + c0) - edge_m[i], 1.0, edge_m[i], bg_row, width, cen, 1, hs, 1, focal, principal, k1, k2, R2, light, ambient, scale
+                )
+                rays_ok = rays_ok and ok
+                if hit > 0.0:
+                    bp[k] = p
+                    bm[k] = val
+                    bs[k] = profile_sigma[rows[i], col] ** 2
+                    n += 1
+        if n < 3:
+            continue
+        m_mean = _pairwise_sum(bm) / n
+        di = _pairwise_sum(bp) / n / m_mean - 1.0
+        vi = _pairwise_sum(bs) / (n * n) / m_mean**2
+        if np.isfinite(di) and np.isfinite(vi) and m_mean > 0.05:
+            d[n_good] = di * di
+            v[n_good] = vi
+            n_px[n_good] = n
+            n_good += 1
+    if n_good < 3:
+        return np.nan, 1.0, rays_ok
+    return math.sqrt(max(_pairwise_sum(d[:n_good]) / n_good - _pairwise_sum(v[:n_good]) / n_good, 0.0)), _pairwise_sum(n_px[:n_good]) / n_good, rays_ok

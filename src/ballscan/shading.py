@@ -32,9 +32,10 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, limb_values, shading_fit
+from ._kernels import as_arg, level_scatter, limb_values, line_level_sums, shading_fit
 from .camera import LineScanCamera
 from .edges import EdgeMeasurements
+from .errors import GeometryError
 from .fit import averaged_model, pixel_coverage
 from .motion import BallMotion
 
@@ -305,10 +306,15 @@ class LimbProfile:
         n_pos = int(np.ceil(np.max(span) * m)) if np.all(np.isfinite(span)) else 1
         offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
         inside = offsets <= (span - pad)[:, None]
-        val, cov = self(lines, np.ones(lines.size), offsets)
+        # the sums over the inside positions (compiled: the points' model and its sums in one pass)
+        val_sum, covered, rays_ok = line_level_sums(
+            offsets, inside, as_arg(left), as_arg(self.t_lines_s[lines]), as_arg(~(spread >= self.sharp_px), np.bool_), as_arg(lines, np.int64),
+            *self._model(),
+        )
+        if not rays_ok:
+            raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
         with np.errstate(invalid="ignore", divide="ignore"):
-            covered = np.where(inside, cov, 0.0).sum(axis=1)
-            level = np.where(inside, val, 0.0).sum(axis=1) / covered
+            level = val_sum / covered
             level = np.where((covered > 0) & np.isfinite(left) & np.isfinite(right), level, np.nan)
             rel = self.level_rel_sigma * np.sqrt(self.level_ref_px / np.maximum(covered / m, 1.0))
         return level, np.where(np.isfinite(level), rel, np.nan)
@@ -393,11 +399,17 @@ class LimbProfile:
         lines = np.asarray(lines, dtype=int)
         sg = np.asarray(sides, dtype=float)
         lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes))
-        cam = self.camera
         return (
             lo, hi, wgt, as_arg(self.t_lines_s[lines]), as_arg(np.where(sg > 0, self.left_px[lines], self.right_px[lines])),
-            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), as_arg(self.background_dn),
-            *self._samples_tk_hk(), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2), *self._law(),
+            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(),
+        )
+
+    def _model(self) -> tuple:
+        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan._kernels.limb_levels`)."""
+        cam = self.camera
+        return (
+            as_arg(self.background_dn), *self._samples_tk_hk(), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2),
+            *self._law(),
         )
 
     def _samples_tk_hk(self) -> tuple[np.ndarray, np.ndarray]:
@@ -619,28 +631,17 @@ def _line_level_scatter(
     if keep.sum() < 3:
         return math.nan, 1.0
     idx, lo, count = idx[keep], lo[keep], count[keep]
-    k = np.arange(count.max())[None, :]
-    inside = k < count[:, None]
-    cols = np.where(inside, lo[:, None] + k, lo[:, None])
-    p = edges.profile[idx[:, None], cols]
-    sp = edges.profile_sigma[idx[:, None], cols]
     lines_img = edges.lines[idx]
-    model, hit = limb(lines_img, np.ones(idx.size), cols + c0 - limb.left_px[lines_img][:, None], average=False)
-    # only where the model's surface is seen too (the model sits at a rough
-    # motion: a pixel inside the measured ball may lie outside its silhouette)
-    inside &= np.isfinite(p) & (np.nan_to_num(hit) > 0)
-    n = inside.sum(axis=1)
-    good = n >= 3
-    with np.errstate(invalid="ignore", divide="ignore"):
-        p_mean = np.where(inside, p, 0.0).sum(axis=1) / n
-        m_mean = np.where(inside, model, 0.0).sum(axis=1) / n
-        noise2 = np.where(inside, sp**2, 0.0).sum(axis=1) / n**2
-        d = p_mean / m_mean - 1.0
-        v = noise2 / m_mean**2
-    good &= np.isfinite(d) & np.isfinite(v) & (m_mean > 0.05)
-    if good.sum() < 3:
-        return math.nan, 1.0
-    return float(np.sqrt(max(float(np.mean(d[good] ** 2) - np.mean(v[good])), 0.0))), float(np.mean(n[good]))
+    # (compiled) the lines' means where the model's surface is seen too (the
+    # model sits at a rough motion: a pixel inside the measured ball may lie
+    # outside its silhouette), their scatter and its noise
+    scatter, length, rays_ok = level_scatter(
+        as_arg(lines_img, np.int64), as_arg(lo, np.int64), as_arg(count, np.int64), as_arg(idx, np.int64), as_arg(edges.profile),
+        as_arg(edges.profile_sigma), int(c0), as_arg(limb.left_px[lines_img]), as_arg(limb.t_lines_s[lines_img]), *limb._model(),
+    )
+    if not rays_ok:
+        raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
+    return float(scatter), float(length)
 
 
 def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: float = 0.2) -> np.ndarray | None:
