@@ -476,3 +476,32 @@ def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
             ref = _reference_line_level_scatter(lp, e, ok, me.spread_px[0], *inner, max_lines=max_lines)
             assert got == ref or (np.isnan(got[0]) and np.isnan(ref[0]) and got[1] == ref[1]), (got, ref)
     assert np.isfinite(_line_level_scatter(limb, edges, full, me.spread_px[0], *inner)[0])
+
+
+# ------------------------------------------------------- interior normals
+@pytest.mark.parametrize("k1", [0.0, -0.4])
+def test_interior_normals_equal_the_surface_normals_and_the_usable_box(k1):
+    from ballscan._kernels import interior_normals
+    from ballscan.shading import surface_normals
+
+    cam = _camera(k1)
+    rng = np.random.default_rng(7)
+    lines = rng.integers(0, 200, 3000)
+    t = line_times(cam, 200)[lines]
+    cols = rng.integers(0, 240, 3000)
+    usable = rng.random((150, 120)) > 0.2
+    origin = (30, 60)
+    m = MOTION
+    law = (cam.focal_px, cam.principal_px, cam.k1, cam.k2, np.array(m.position_m), np.array(m.velocity_mps), np.zeros(3), m.t_c_s, m.radius_m)
+    ref_hit, ref_n = surface_normals(cam, m, t, cols)
+    r_box, c_box = lines - origin[0], cols - origin[1]
+    inside = (r_box >= 0) & (r_box < usable.shape[0]) & (c_box >= 0) & (c_box < usable.shape[1])
+    in_box = inside & usable[np.clip(r_box, 0, usable.shape[0] - 1), np.clip(c_box, 0, usable.shape[1] - 1)]
+    for box, want in ((np.zeros((0, 0), dtype=bool), ref_hit), (usable, ref_hit & in_box)):
+        hit, n, ok = interior_normals(t, cols, lines, box, *origin, *law)
+        assert ok and np.array_equal(hit, want) and 100 < hit.sum() < hit.size
+        if k1 == 0.0:
+            assert np.array_equal(n[hit], ref_n[hit])
+        else:
+            # each ray's Newton iteration stops on its own
+            assert np.abs(n[hit] - ref_n[hit]).max() < 1e-9

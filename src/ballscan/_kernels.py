@@ -1056,6 +1056,7 @@ def warm_up() -> None:
     shading_fit(np.arange(8.0), np.tile(np.array([0.6, 0.0, -0.8]), (8, 1)), 1.5, 1, 1.5, 0.01)
     law = (3000.0, 0.0, 0.0, 0.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0)
     line_level_sums(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1, *law)
+    interior_normals(z1, k0, k0, np.zeros((0, 0), dtype=np.bool_), 0, 0, *law[:4], *law[4:9])
     level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
     warm_up_stream()
 
@@ -2395,3 +2396,76 @@ def level_scatter(
     if n_good < 3:
         return np.nan, 1.0, rays_ok
     return math.sqrt(max(_pairwise_sum(d[:n_good]) / n_good - _pairwise_sum(v[:n_good]) / n_good, 0.0)), _pairwise_sum(n_px[:n_good]) / n_good, rays_ok
+
+
+@_jit()
+def interior_normals(
+    t_rows: np.ndarray,
+    cols: np.ndarray,
+    lines: np.ndarray,
+    usable: np.ndarray,
+    origin_line: int,
+    origin_col: int,
+    focal: float,
+    principal: float,
+    k1: float,
+    k2: float,
+    pos: np.ndarray,
+    vel: np.ndarray,
+    acc: np.ndarray,
+    t_c: float,
+    radius_m: float,
+):
+    """Which pixels see the ball and its unit normals there (:func:`ballscan.shading.surface_normals` at the pixels' centres, for :func:`ballscan.shading.fit_shading`).
+
+    Pixel ``i`` is column ``cols[i]`` of image line ``lines[i]`` at time
+    ``t_rows[i]`` (s); its ray through the pixel's centre meets the sphere
+    (the same arithmetic as :func:`_limb_rays`) and it is ``usable``
+    (``usable[line - origin_line, col - origin_col]``, False outside the box;
+    an empty ``usable`` allows every pixel).
+
+    Returns
+    -------
+    hit : ndarray of bool (P,)
+    normals : ndarray (P, 3)
+        Outward unit normals where ``hit``.
+    rays_ok : bool
+        False when the inverse distortion of a ray did not converge.
+    """
+    P = cols.shape[0]
+    hit = np.zeros(P, dtype=np.bool_)
+    normals = np.zeros((P, 3))
+    R2 = radius_m * radius_m
+    has_acc = acc[0] != 0.0 or acc[1] != 0.0 or acc[2] != 0.0
+    check = usable.shape[0] > 0
+    cen = np.empty((1, 4))
+    no_instants = np.zeros(0)
+    rays_ok = True
+    for i in range(P):
+        if check:
+            rb = lines[i] - origin_line
+            cb = cols[i] - origin_col
+            if rb < 0 or rb >= usable.shape[0] or cb < 0 or cb >= usable.shape[1] or not usable[rb, cb]:
+                continue
+        nu, ok = _normalised(float(cols[i]), principal, focal, k1, k2)
+        rays_ok = rays_ok and ok
+        _centres(t_rows[i], True, no_instants, pos, vel, acc, has_acc, t_c, cen)
+        cx, cy, cz, c2 = cen[0, 0], cen[0, 1], cen[0, 2], cen[0, 3]
+        h = 0.0 / focal
+        inv = 1.0 / math.sqrt(h * h + nu * nu + 1.0)
+        dx = h * inv
+        dy = nu * inv
+        dz = inv
+        dc = dx * cx + dy * cy + dz * cz
+        b = dc * dc - c2 + R2
+        if b >= 0.0:
+            s = dc - math.sqrt(b)
+            nx = s * dx - cx
+            ny = s * dy - cy
+            nz = s * dz - cz
+            a = 1.0 / max(math.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+            hit[i] = True
+            normals[i, 0] = nx * a
+            normals[i, 1] = ny * a
+            normals[i, 2] = nz * a
+    return hit, normals, rays_ok

@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, level_scatter, limb_values, line_level_sums, shading_fit
+from ._kernels import as_arg, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit
 from .camera import LineScanCamera
 from .edges import EdgeMeasurements
 from .errors import GeometryError
@@ -181,11 +181,16 @@ def fit_shading(
     if total > max_pixels:
         pick = np.linspace(0, total - 1, max_pixels).astype(int)
         row, col = row[pick], col[pick]
-    hit, n = surface_normals(camera, motion, t_lines_s[row], col)
-    if usable is not None:
-        r_box, c_box = lines[row] - usable_origin[0], col - usable_origin[1]
-        inside = (r_box >= 0) & (r_box < usable.shape[0]) & (c_box >= 0) & (c_box < usable.shape[1])
-        hit = hit & inside & usable[np.clip(r_box, 0, usable.shape[0] - 1), np.clip(c_box, 0, usable.shape[1] - 1)]
+    # (compiled: surface_normals at the pixels' centres and the usable box)
+    m = motion
+    hit, n, rays_ok = interior_normals(
+        as_arg(t_lines_s[row]), as_arg(col, np.int64), as_arg(lines[row], np.int64),
+        as_arg(np.zeros((0, 0), dtype=bool) if usable is None else usable, np.bool_), int(usable_origin[0]), int(usable_origin[1]),
+        float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2), np.array(m.position_m, dtype=float),
+        np.array(m.velocity_mps, dtype=float), np.array(m.acceleration_mps2, dtype=float), float(m.t_c_s), float(m.radius_m),
+    )
+    if not rays_ok:
+        raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
     y = data_dn[lines[row[hit]], col[hit]].astype(float)
     n = n[hit]
     if y.size < 50:
