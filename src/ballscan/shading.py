@@ -100,6 +100,7 @@ def surface_normals(
     See Also
     --------
     ballscan._kernels.limb_values : the same rays, compiled, for the limb profile.
+    ballscan._kernels.interior_normals : the same normals, compiled, for :func:`fit_shading`.
     """
     n_u = camera.backproject(np.asarray(u_px, dtype=float))
     h = np.asarray(h_px, dtype=float) / camera.focal_px
