@@ -136,19 +136,6 @@ def test_edge_bias_on_reference_scenes():
     assert np.median(b) < 0.08
 
 
-def test_fill_nearest_takes_the_closest_finite_value_of_the_row():
-    from ballscan.edges import _fill_nearest
-
-    a = np.array([[np.nan, 2.0, np.nan, np.nan, 5.0, np.nan], [np.nan, np.nan, np.nan, np.nan, np.nan, np.nan]])
-    out = _fill_nearest(a, ~np.isfinite(a))
-    assert out[0].tolist() == [2.0, 2.0, 2.0, 5.0, 5.0, 5.0]  # ties go left
-    assert np.all(np.isnan(out[1]))  # nothing to take
-    # only the entries asked for are filled
-    keep = np.array([[True, False, False, False, False, False], [False] * 6])
-    out = _fill_nearest(a, keep)
-    assert out[0, 0] == 2.0 and np.isnan(out[0, 2])
-
-
 # ------------------------------------------------------------ matched edges
 def _flat_ball_edges(noise_dn: float, seed: int):
     """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, the truth model, its narrow lines and the limb model."""

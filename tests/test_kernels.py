@@ -105,7 +105,8 @@ def test_every_kernel_compiles_one_signature_only():
         for pixels in (False, True):
             estimate_image(img, cam, 0.0335, pixels=pixels)
     for kernel in (K.averaged_samples, K.averaged_edges_jacobian, K.pixel_residuals, K.pixel_residuals_jacobian, K.coverage_grid, K.chord_edges, K.limb_values,
-                   K.mode_seek, K.running_median, K.walk_edges, K.inner_differences, K.edge_windows):
+                   K.mode_seek, K.running_median, K.walk_edges, K.inner_differences, K.edge_windows,
+                   K.limb_levels, K.shading_fit, K.line_level_sums, K.level_scatter, K.interior_normals):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)
 
 

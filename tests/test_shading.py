@@ -95,46 +95,31 @@ def test_limb_model_removes_the_lit_side_bias():
 
 def test_texture_next_to_the_edge_keeps_the_model_free_value():
     """Where the data follow the model's limb the edge follows the model; a seam inside keeps the plain estimate."""
-    W, n = 60, 12
-    # model: the limb 20 % darker, brightening linearly over 3 px
-    def shape(d):
-        return np.where(d > 0, 0.8 + 0.2 * np.minimum(d / 3.0, 1.0), 0.0)
-
-    img = np.full((n, W), 100.0)
-    img[:, 20:40] = 600.0  # ball from 19.5 to 39.5
-    for j, mean in ((39, 0.8 + 0.2 * 0.5 / 3), (38, 0.9), (37, 0.8 + 0.2 * 2.5 / 3)):
-        img[:, j] = 100.0 + 500.0 * mean  # the right limb shaded as the model says
-    img[:, 23:25] = 900.0  # a seam just inside the left edge's level run
-    region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
-    t = np.arange(n) * 1e-5
-
-    class Limb:
-        """A sharp edge whose limb the model says is shaded like ``shape``."""
-
-        spread_px = np.zeros(n)
-
-        def __call__(self, lines, sides, offsets, average=True):
-            d = np.asarray(offsets, dtype=float)
-            return shape(d), (d > 0).astype(float)
-
-        def pixel_coverage(self, lines, sides, offsets):
-            return np.clip(np.asarray(offsets, dtype=float) + 0.5, 0.0, 1.0)
-
-        def surface(self, lines, sides, offsets):
-            return shape(np.maximum(np.asarray(offsets, dtype=float), 0.25))
-
-    limb = Limb()
-    plain = measure_edges(img, region, 100.0, 1.0, t)
-    with_limb = measure_edges(img, region, 100.0, 1.0, t, limb=limb)
-    okl = plain.left_ok & with_limb.left_ok
-    okr = plain.right_ok & with_limb.right_ok
-    assert okl.sum() >= 8 and okr.sum() >= 8
-    # left: the seam makes the level run disagree with the model -> unchanged
-    assert np.allclose(with_limb.left_px[okl], plain.left_px[okl])
-    # right: the data follow the model's limb -> the exact edge (the plain
-    # estimator, which assumes a flat level, is off)
-    assert np.allclose(with_limb.right_px[okr], 39.5, atol=1e-6)
-    assert np.all(np.abs(plain.right_px[okr] - 39.5) > 0.01)
+    r, img, _ = _shaded()
+    e, reg, t = _edges(img, False)
+    image = LineImage(img, 1e9, 16, "render")
+    bg = _full_background(detect(image))
+    limb = ball_limb(CAM, MOTION, img, e, t, bg)
+    # the left edges the model corrects without a seam, and a seam on the run
+    # just inside the level run on ten of them
+    ps = e._pass
+    e_limb = with_limb(e, limb)
+    mid = np.flatnonzero(e.left_ok & e.right_ok & e_limb.left_ok & (e_limb.left_px != e.left_px))
+    assert mid.size > 60
+    seam = mid[mid.size // 2 - 5 : mid.size // 2 + 5]
+    seamed = img.copy()
+    for i in seam:
+        seamed[e.lines[i], ps.deep[i] + ps.c0] += 300.0
+    plain = measure_edges(seamed, reg, bg, 0.5, t)
+    shaded = measure_edges(seamed, reg, bg, 0.5, t, limb=limb)
+    assert np.all(plain.left_ok[seam] & shaded.left_ok[seam])
+    # the level run disagrees with the model there: the plain edge
+    assert np.array_equal(shaded.left_px[seam], plain.left_px[seam])
+    # elsewhere the data follow the model's limb: the model's edge (the
+    # plain estimator, which extrapolates the level linearly, is off)
+    rest = np.setdiff1d(mid, seam)
+    assert np.all(shaded.left_px[rest] != plain.left_px[rest])
+    assert np.all(shaded.right_px[seam] != plain.right_px[seam])
 
 
 def test_estimate_reports_the_shading_and_can_skip_it():
@@ -341,7 +326,8 @@ def test_spread_edges_next_to_the_ends_are_not_biased(flat_noise_free):
     assert np.abs(shaded).max() < 0.01 and abs(shaded.mean()) < 0.002
 
 
-def test_a_limb_model_without_whole_pixels_is_refused():
+def test_a_limb_model_without_its_rows_is_refused():
+    # the levels evaluate the model compiled, from LimbProfile.rows
     img = np.full((12, 60), 100.0)
     img[:, 20:40] = 600.0
     region = SimpleNamespace(line_start=2, line_stop=10, col_start=20, col_stop=40, polarity=1, contrast_dn=500.0)
@@ -351,7 +337,7 @@ def test_a_limb_model_without_whole_pixels_is_refused():
         return (d > 0).astype(float), (d > 0).astype(float)
 
     limb.spread_px = np.zeros(12)
-    with pytest.raises(ValueError, match="pixel_coverage and surface"):
+    with pytest.raises(ValueError, match="needs rows"):
         measure_edges(img, region, 100.0, 1.0, np.arange(12) * 1e-5, limb=limb)
 
 

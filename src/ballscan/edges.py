@@ -43,7 +43,8 @@ import math
 
 import numpy as np
 
-from ._kernels import as_arg, edge_windows, inner_differences, running_median, walk_edges
+from ._kernels import as_arg, edge_windows, inner_differences, limb_levels, running_median, walk_edges
+from .errors import GeometryError
 
 # np.median's value by a full sort (several times faster on these sizes)
 from .detection import median as _median
@@ -428,7 +429,10 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     Parameters
     ----------
     limb : LimbProfile-like
-        See :func:`measure_edges`.
+        See :func:`measure_edges`; its ``rows`` give the model to the
+        compiled loop (:func:`ballscan._kernels.limb_levels`), which
+        evaluates the model as its ``pixel_coverage``, ``surface`` and
+        ``__call__`` do.
     e, var0, L0 : ndarray (R,)
         Model-free edges (box pixels), their variances (px^2) and levels.
     S, L_run, sl2 : ndarray (R,)
@@ -457,109 +461,34 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     Returns
     -------
     edge, var, L : ndarray (R,)
+
+    Raises
+    ------
+    GeometryError
+        If the inverse distortion of a model ray does not converge.
     """
     edge, var, L = e.copy(), var0.copy(), L0.copy()
     rows = np.flatnonzero(valid & np.isfinite(e))
     if rows.size == 0:
         return edge, var, L
     sg = sgn[rows].astype(float)
-    lines_r = lines_abs[rows]
-    e0 = e[rows]
-    frac = (np.arange(m) + 0.5) / m
-    # whole pixels (LimbProfile.pixel_coverage) times the surface's
-    # brightness: the window from its outermost pixel inwards, then the
-    # level run and the run inside it, in one array
+    # the window from its outermost pixel inwards, then the level run and
+    # the run inside it, in one array
     k = np.arange(int(n_win[rows].max()))
     first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
     px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
-    kw = k.size
-    in_win = k[None, :] < n_win[rows][:, None]
-    nlu = lev.shape[1]
-
-    def profile(edge_at, point=None):
-        """Model values and coverage of the rows' pixels with the mean edge at ``edge_at``, and ``point``.
-
-        The surface's mean brightness where the ball covers each pixel:
-        inside the limb the centre's at the line's centre time; on the partly
-        covered pixels ``point``, the point model's, averaged over the
-        exposure and the pixel's height (a shaded limb darkens steeply
-        towards the edge and moves with it during the exposure), computed
-        here when not given (it is the costly part; later placements move the
-        edge by hundredths of a pixel); where neither is finite (a spread
-        edge's tail, none of whose points is covered) the nearest pixel's.
-        """
-        off = sg[:, None] * (px - edge_at[:, None])
-        cov = limb.pixel_coverage(lines_r, sg, off)
-        partial = (cov > 0) & (cov < 1.0 - 1e-9)
-        if point is None:
-            point = np.full(cov.shape, np.nan)
-            ri, ki = np.nonzero(partial)
-            if ri.size:
-                pts = px[ri, ki][:, None] - 0.5 + frac[None, :]
-                v_pt, c_pt = limb(lines_r[ri], sg[ri], sg[ri, None] * (pts - edge_at[ri, None]))
-                v_pt, c_pt = np.nan_to_num(v_pt).sum(axis=1), np.nan_to_num(c_pt).sum(axis=1)
-                with np.errstate(invalid="ignore", divide="ignore"):
-                    point[ri, ki] = np.where(c_pt > 0, v_pt / c_pt, np.nan)
-        shade = np.where(partial & np.isfinite(point), point, limb.surface(lines_r, sg, off))
-        shade = _fill_nearest(shade, ~np.isfinite(shade) & (cov > 0))
-        return np.where(cov > 0, shade * cov, 0.0), cov, point
-
-    # Two rounds: a level run in the tail of a spread edge's coverage is
-    # more or less covered as the edge moves, so the ratio again at the new edge.
-    er, point = e0, None
-    for _ in range(2):
-        at = er
-        val, cov, point = profile(at, point)
-        s_model = np.where(in_win, val[:, :kw], 0.0).sum(axis=1)
-        # the model's covered length in the window, with its mean edge at `at`
-        c_model = np.where(in_win, cov[:, :kw], 0.0).sum(axis=1)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            ratio = s_model / c_model / val[:, kw : kw + nlu].mean(axis=1)
-        usable = np.isfinite(ratio) & (c_model > 0.05) & (ratio >= 0.5) & (ratio <= 2.0)
-        ratio = np.where(usable, ratio, 1.0)
-        Lr = L_run[rows] * ratio
-        covered = S[rows] / np.where(Lr > 0, Lr, 1.0)
-        # The data's covered length S / L_eff against the model's: the mean
-        # edge moves by their difference.  (``inner - S / L_eff`` alone is
-        # the mean edge only when the window holds the whole ramp; a spread
-        # edge's inner tail reaches past it, by 0.02-0.04 px of coverage
-        # next to a ball's ends.)
-        er = np.where(usable, at + sg * (c_model - covered), e0)
-    # texture test with the model at the new edge: at the biased model-free
-    # edge the model's runs sit a few tenths of a pixel off and a strongly
-    # shaded limb would look like texture
-    runs1 = profile(er, point)[0][:, kw:]
+    # the data's ratio of the run inside the level run to the level run, and
+    # how far the model's may differ (texture, not shading, beyond)
     with np.errstate(invalid="ignore", divide="ignore"):
-        q_model = runs1[:, nlu:].mean(axis=1) / runs1[:, :nlu].mean(axis=1)
         q_data = pd[rows] / L_run[rows]
         q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
-        smooth = np.abs(q_data - q_model) <= 3.0 * q_sig + tol
-    good = usable & smooth
-    Ls = np.where(Lr > 0, Lr, 1.0)
-    # L = ratio * L_run: the level run's noise enters scaled by the ratio
-    v = (sw[rows] ** 2).sum(axis=1) / Ls**2 + (S[rows] / Ls**2) ** 2 * sl2[rows] * ratio**2
-    edge[rows] = np.where(good, er, e0)
-    var[rows] = np.where(good, v, var0[rows])
-    L[rows] = np.where(good, Lr, L0[rows])
+    edge[rows], var[rows], L[rows], rays_ok = limb_levels(
+        sg, px, as_arg(n_win[rows], np.int64), k.size, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_run[rows], sl2[rows],
+        as_arg(sw[rows]), q_data, 3.0 * q_sig + tol, int(m), *limb.rows(lines_abs[rows], sg),
+    )
+    if not rays_ok:
+        raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
     return edge, var, L
-
-
-def _fill_nearest(a: np.ndarray, missing: np.ndarray) -> np.ndarray:
-    """``a`` (rows, K) with its ``missing`` entries replaced by the nearest finite, not missing entry of their row (left on ties).
-
-    Entries of rows without any such value stay as they are.
-    """
-    if not missing.any():
-        return a
-    k = a.shape[1]
-    col = np.arange(k)[None, :]
-    have = np.isfinite(a) & ~missing
-    left = np.maximum.accumulate(np.where(have, col, -1), axis=1)  # nearest on the left, -1 if none
-    right = np.flip(np.minimum.accumulate(np.flip(np.where(have, col, k), axis=1), axis=1), axis=1)  # k if none
-    pick = np.where((left >= 0) & ((right >= k) | (col - left <= right - col)), left, right)
-    found = (pick >= 0) & (pick < k)
-    filled = np.take_along_axis(a, np.clip(pick, 0, k - 1), axis=1)
-    return np.where(missing & found, filled, a)
 
 
 def _running_median(x: np.ndarray, n: int) -> np.ndarray:
@@ -616,9 +545,12 @@ def measure_edges(
         one sample per position), ``limb.pixel_coverage(lines, sides,
         offsets)`` each whole pixel's covered fraction (pixels centred on
         ``offsets``), ``limb.surface(lines, sides, offsets)`` the surface's
-        brightness, and ``limb.spread_px`` the model's edge spread per image
-        line (pixels), which selects the narrow and wide windows to correct
-        (``limb_narrow_max_px``, ``limb_wide_px``).  When given, each
+        brightness, ``limb.rows(lines, sides)`` the same model as the
+        arguments of the compiled levels
+        (:func:`ballscan._kernels.limb_levels`), and ``limb.spread_px`` the
+        model's edge spread per image line (pixels), which selects the
+        narrow and wide windows to correct (``limb_narrow_max_px``,
+        ``limb_wide_px``).  When given, each
         edge's inner level is the level run times the model's ratio of the
         mean level over the covered part of the window to the level run's,
         and the edge is the model's mean edge moved by the difference
@@ -1041,7 +973,7 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
     area_level = area_level_sigma = None
     if limb is not None:
-        missing = [name for name in ("pixel_coverage", "surface") if not callable(getattr(limb, name, None))]
+        missing = [name for name in ("rows",) if not callable(getattr(limb, name, None))]
         if missing:
             raise ValueError(f"limb: needs {' and '.join(missing)} (see measure_edges; e.g. a ballscan.shading.LimbProfile)")
         spread = getattr(limb, "spread_px", None)

@@ -32,10 +32,10 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, limb_values
+from ._kernels import as_arg, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit
 from .camera import LineScanCamera
-from .detection import median as _median
 from .edges import EdgeMeasurements
+from .errors import GeometryError
 from .fit import averaged_model, pixel_coverage
 from .motion import BallMotion
 
@@ -100,6 +100,7 @@ def surface_normals(
     See Also
     --------
     ballscan._kernels.limb_values : the same rays, compiled, for the limb profile.
+    ballscan._kernels.interior_normals : the same normals, compiled, for :func:`fit_shading`.
     """
     n_u = camera.backproject(np.asarray(u_px, dtype=float))
     h = np.asarray(h_px, dtype=float) / camera.focal_px
@@ -181,65 +182,33 @@ def fit_shading(
     if total > max_pixels:
         pick = np.linspace(0, total - 1, max_pixels).astype(int)
         row, col = row[pick], col[pick]
-    hit, n = surface_normals(camera, motion, t_lines_s[row], col)
-    if usable is not None:
-        r_box, c_box = lines[row] - usable_origin[0], col - usable_origin[1]
-        inside = (r_box >= 0) & (r_box < usable.shape[0]) & (c_box >= 0) & (c_box < usable.shape[1])
-        hit = hit & inside & usable[np.clip(r_box, 0, usable.shape[0] - 1), np.clip(c_box, 0, usable.shape[1] - 1)]
+    # (compiled: surface_normals at the pixels' centres and the usable box)
+    m = motion
+    hit, n, rays_ok = interior_normals(
+        as_arg(t_lines_s[row]), as_arg(col, np.int64), as_arg(lines[row], np.int64),
+        as_arg(np.zeros((0, 0), dtype=bool) if usable is None else usable, np.bool_), int(usable_origin[0]), int(usable_origin[1]),
+        float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2), np.array(m.position_m, dtype=float),
+        np.array(m.velocity_mps, dtype=float), np.array(m.acceleration_mps2, dtype=float), float(m.t_c_s), float(m.radius_m),
+    )
+    if not rays_ok:
+        raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
     y = data_dn[lines[row[hit]], col[hit]].astype(float)
     n = n[hit]
     if y.size < 50:
         return None
-    X = np.column_stack([np.ones(y.size), n])
-    X_dark = np.zeros((1, 4))
-    X_dark[0, 0] = 1.0
-    w = np.ones(y.size)
-    active = np.ones(y.size, dtype=bool)
-    coef = np.zeros(4)
-    scale = 1.0
-    best = (np.inf, coef)
-    for _ in range(n_iterations):
-        # the law is linear in (A, b) on the lit pixels; shadowed ones see A only
-        Xa = np.where(active[:, None], X, X_dark)
-        sw = np.sqrt(w)
-        coef = np.linalg.lstsq(Xa * sw[:, None], y * sw, rcond=None)[0]
-        lit = n @ coef[1:]
-        active = lit > 0
-        scale, w = _huber_round(y - coef[0] - np.maximum(lit, 0.0), huber_k)
-        if scale < best[0]:
-            best = (scale, coef)
-    if scale > _DIVERGED * best[0]:
-        # The lit / shadowed split makes the rounds a fixed-point iteration,
-        # not a descent: on a flat ball a round that calls half of it
-        # shadowed can run away to a strong light (seen: 152 DN of light and
-        # a robust scale of 40 DN where the flat law leaves 5 DN; its end
-        # levels then moved a ball's V.x by 21 sigma).  Keep the best round.
-        scale, coef = best
-    # A light that lights hardly any of the pixels (behind the ball: seen on
-    # flat 8-bit renders, 19-117 DN of light on a 138 DN contrast at the
-    # same robust scale as no light) is not measured: the flat law, unless
-    # the light lowers the robust scale by more than _FLAT_TOL.
-    amb, flat_scale = _flat_level(y, huber_k, n_iterations)
-    if flat_scale <= (1.0 + _FLAT_TOL) * scale:
-        coef, scale = np.array([amb, 0.0, 0.0, 0.0]), flat_scale
-    return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), scale, int(y.size))
-
-
-def _flat_level(y: np.ndarray, huber_k: float, n_iterations: int) -> tuple[float, float]:
-    """Huber mean of ``y`` (reweighted as in :func:`fit_shading`) and the robust scale about it."""
-    w = np.ones(y.size)
-    level, scale = float(np.mean(y)), 1.0
-    for _ in range(n_iterations):
-        level = float(np.sum(w * y) / np.sum(w))
-        scale, w = _huber_round(y - level, huber_k)
-    return level, scale
-
-
-def _huber_round(r: np.ndarray, huber_k: float) -> tuple[float, np.ndarray]:
-    """The robust scale (MAD) of residuals ``r`` and their Huber weights at ``huber_k`` of it (one reweighting round)."""
-    scale = max(1.4826 * float(_median(np.abs(r - _median(r)))), 1e-9)
-    a = np.abs(r) / (huber_k * scale)
-    return scale, np.where(a <= 1.0, 1.0, 1.0 / np.maximum(a, 1e-12))
+    # The rounds (compiled): the law is linear in (A, b) on the lit pixels,
+    # shadowed ones see A only, and the lit / shadowed split makes the rounds
+    # a fixed-point iteration, not a descent: on a flat ball a round that
+    # calls half of it shadowed can run away to a strong light (seen: 152 DN
+    # of light and a robust scale of 40 DN where the flat law leaves 5 DN;
+    # its end levels then moved a ball's V.x by 21 sigma), so the best round
+    # is kept when the last one's scale is _DIVERGED times worse.  A light
+    # that lights hardly any of the pixels (behind the ball: seen on flat
+    # 8-bit renders, 19-117 DN of light on a 138 DN contrast at the same
+    # robust scale as no light) is not measured: the flat law, unless the
+    # light lowers the robust scale by more than _FLAT_TOL.
+    coef, scale = shading_fit(as_arg(y), as_arg(n), float(huber_k), int(n_iterations), float(_DIVERGED), float(_FLAT_TOL))
+    return ShadingModel(float(coef[0]), (float(coef[1]), float(coef[2]), float(coef[3])), float(scale), int(y.size))
 
 
 @dataclass(frozen=True, eq=False)
@@ -343,10 +312,15 @@ class LimbProfile:
         n_pos = int(np.ceil(np.max(span) * m)) if np.all(np.isfinite(span)) else 1
         offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
         inside = offsets <= (span - pad)[:, None]
-        val, cov = self(lines, np.ones(lines.size), offsets)
+        # the sums over the inside positions (compiled: the points' model and its sums in one pass)
+        val_sum, covered, rays_ok = line_level_sums(
+            offsets, inside, as_arg(left), as_arg(self.t_lines_s[lines]), as_arg(~(spread >= self.sharp_px), np.bool_), as_arg(lines, np.int64),
+            *self._model(),
+        )
+        if not rays_ok:
+            raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
         with np.errstate(invalid="ignore", divide="ignore"):
-            covered = np.where(inside, cov, 0.0).sum(axis=1)
-            level = np.where(inside, val, 0.0).sum(axis=1) / covered
+            level = val_sum / covered
             level = np.where((covered > 0) & np.isfinite(left) & np.isfinite(right), level, np.nan)
             rel = self.level_rel_sigma * np.sqrt(self.level_ref_px / np.maximum(covered / m, 1.0))
         return level, np.where(np.isfinite(level), rel, np.nan)
@@ -390,10 +364,19 @@ class LimbProfile:
         off = np.asarray(offsets, dtype=float)
         if lines.size == 0:
             return np.zeros(off.shape)
+        lo, hi, wgt = self._chords(lines, sg, n_nodes)
+        cov = pixel_coverage(lo[None], hi[None], wgt[None], off)[0]
+        bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
+        return np.where(bad, np.nan, cov)
+
+    def _chords(self, lines: np.ndarray, sg: np.ndarray, n_nodes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The averaged silhouette's chord samples of each row as intervals of offsets inwards from its edge, pixels, and their weights (R, 3, n).
+
+        Computed once per line (a line's two edges and windows share them)
+        and kept for the next call on the same rows.
+        """
         key = (int(n_nodes), lines.tobytes(), sg.tobytes())
         if key not in self._samples:
-            # once per line (a line's two edges and windows share them), and
-            # kept for the next call on the same rows
             uniq, inv = np.unique(lines, return_inverse=True)
             me = averaged_model(
                 self.camera, self.motion.to_params()[None], self.motion.radius_m, self.t_lines_s[uniq],
@@ -402,15 +385,53 @@ class LimbProfile:
             u_lo, u_hi, wgt = (a[0][inv] for a in me.samples)  # (R, 3, n)
             left, right = me.left_px[0][inv][:, None, None], me.right_px[0][inv][:, None, None]
             s3 = sg[:, None, None]
-            # each sample's covered interval in the offsets of its row's edge
             lo = np.where(s3 > 0, u_lo - left, right - u_hi)
             hi = np.where(s3 > 0, u_hi - left, right - u_lo)
             self._samples.clear()
-            self._samples[key] = (lo[None], hi[None], wgt[None])
-        lo, hi, wgt = self._samples[key]
-        cov = pixel_coverage(lo, hi, wgt, off)[0]
-        bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
-        return np.where(bad, np.nan, cov)
+            self._samples[key] = (lo, hi, wgt)
+        return self._samples[key]
+
+    def rows(self, lines: np.ndarray, sides: np.ndarray, n_nodes: int = 4) -> tuple:
+        """The model of edges ``(lines, sides)`` as the model arguments of :func:`ballscan._kernels.limb_levels`.
+
+        Each row's chord samples (:meth:`pixel_coverage`'s, ``n_nodes``
+        nodes) flattened to (R, 3 n), its line time, mean edge (NaN where
+        the model has none), whether its edge is sharp (one point sample,
+        see the attributes), its line, the background, the samples over the
+        exposure and the pixel's height, the camera's focal length,
+        principal point and distortion and the shading law (the arguments
+        of :func:`ballscan._kernels.limb_values` from ``pos`` on).
+        """
+        lines = np.asarray(lines, dtype=int)
+        sg = np.asarray(sides, dtype=float)
+        lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes))
+        return (
+            lo, hi, wgt, as_arg(self.t_lines_s[lines]), as_arg(np.where(sg > 0, self.left_px[lines], self.right_px[lines])),
+            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(),
+        )
+
+    def _model(self) -> tuple:
+        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan._kernels.limb_levels`)."""
+        cam = self.camera
+        return (
+            as_arg(self.background_dn), *self._samples_tk_hk(), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2),
+            *self._law(),
+        )
+
+    def _samples_tk_hk(self) -> tuple[np.ndarray, np.ndarray]:
+        """The instants over the exposure (s, from the line's centre time) and heights across the pixel (pixels) an unsharp edge is sampled at."""
+        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * self.camera.exposure
+        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
+        return tk, hk
+
+    def _law(self) -> tuple:
+        """The motion and the shading law as the last arguments of :func:`ballscan._kernels.limb_values`."""
+        m = self.motion
+        return (
+            np.array(m.position_m, dtype=float), np.array(m.velocity_mps, dtype=float), np.array(m.acceleration_mps2, dtype=float),
+            float(m.t_c_s), float(m.radius_m), np.array(self.shading.light_dn, dtype=float), float(self.shading.ambient_dn),
+            float(self.polarity * self.contrast_dn),
+        )
 
     def surface(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray) -> np.ndarray:
         """The shading law's normalised brightness of the surface at ``offsets`` (at least a quarter pixel inside the edge).
@@ -425,10 +446,6 @@ class LimbProfile:
         lines = np.asarray(lines, dtype=int)
         sides = np.asarray(sides)
         width = self.background_dn.shape[1]
-        tau = self.camera.exposure
-        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * tau
-        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
-        light = np.asarray(self.shading.light_dn)
         edge = np.where(sides > 0, self.left_px[lines], self.right_px[lines])
         u = edge[:, None] + sides[:, None] * np.asarray(offsets, dtype=float)
         # the background's column under each position (where u is not finite
@@ -439,24 +456,10 @@ class LimbProfile:
         # a sharp edge hardly moves during the exposure or across the
         # pixel's height: one sample at the line's centre time will do
         sharp = ~(self.spread_px[lines] >= self.sharp_px) | (not average)
-        m = self.motion
         # contiguous and writeable arrays: the kernel's one compiled signature
         val_out, cov_out = limb_values(
-            as_arg(self.t_lines_s[lines]),
-            as_arg(self.camera.backproject(u)),
-            as_arg(bg),
-            as_arg(sharp, np.bool_),
-            as_arg(tk),
-            as_arg(hk),
-            float(self.camera.focal_px),
-            np.array(m.position_m, dtype=float),
-            np.array(m.velocity_mps, dtype=float),
-            np.array(m.acceleration_mps2, dtype=float),
-            float(m.t_c_s),
-            float(m.radius_m),
-            np.array(light, dtype=float),
-            float(self.shading.ambient_dn),
-            float(self.polarity * self.contrast_dn),
+            as_arg(self.t_lines_s[lines]), as_arg(self.camera.backproject(u)), as_arg(bg), as_arg(sharp, np.bool_),
+            *self._samples_tk_hk(), float(self.camera.focal_px), *self._law(),
         )
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
@@ -634,28 +637,17 @@ def _line_level_scatter(
     if keep.sum() < 3:
         return math.nan, 1.0
     idx, lo, count = idx[keep], lo[keep], count[keep]
-    k = np.arange(count.max())[None, :]
-    inside = k < count[:, None]
-    cols = np.where(inside, lo[:, None] + k, lo[:, None])
-    p = edges.profile[idx[:, None], cols]
-    sp = edges.profile_sigma[idx[:, None], cols]
     lines_img = edges.lines[idx]
-    model, hit = limb(lines_img, np.ones(idx.size), cols + c0 - limb.left_px[lines_img][:, None], average=False)
-    # only where the model's surface is seen too (the model sits at a rough
-    # motion: a pixel inside the measured ball may lie outside its silhouette)
-    inside &= np.isfinite(p) & (np.nan_to_num(hit) > 0)
-    n = inside.sum(axis=1)
-    good = n >= 3
-    with np.errstate(invalid="ignore", divide="ignore"):
-        p_mean = np.where(inside, p, 0.0).sum(axis=1) / n
-        m_mean = np.where(inside, model, 0.0).sum(axis=1) / n
-        noise2 = np.where(inside, sp**2, 0.0).sum(axis=1) / n**2
-        d = p_mean / m_mean - 1.0
-        v = noise2 / m_mean**2
-    good &= np.isfinite(d) & np.isfinite(v) & (m_mean > 0.05)
-    if good.sum() < 3:
-        return math.nan, 1.0
-    return float(np.sqrt(max(float(np.mean(d[good] ** 2) - np.mean(v[good])), 0.0))), float(np.mean(n[good]))
+    # (compiled) the lines' means where the model's surface is seen too (the
+    # model sits at a rough motion: a pixel inside the measured ball may lie
+    # outside its silhouette), their scatter and its noise
+    scatter, length, rays_ok = level_scatter(
+        as_arg(lines_img, np.int64), as_arg(lo, np.int64), as_arg(count, np.int64), as_arg(idx, np.int64), as_arg(edges.profile),
+        as_arg(edges.profile_sigma), int(c0), as_arg(limb.left_px[lines_img]), as_arg(limb.t_lines_s[lines_img]), *limb._model(),
+    )
+    if not rays_ok:
+        raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
+    return float(scatter), float(length)
 
 
 def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: float = 0.2) -> np.ndarray | None:
