@@ -390,6 +390,30 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     return out
 
 
+def _expected_signal(p: np.ndarray) -> np.ndarray:
+    """Each pixel's signal for its noise model, from the lines before and after it (same column).
+
+    The mean of the two neighbours along the column (the one neighbour on
+    the box's first and last line; the pixel itself on a one-line box).
+    Not the pixel's own value: a variance that grows with its own noisy
+    value gives the pixels that read high less weight, and every weighted
+    estimate that uses it (the windows' sums, the matched edges' weights,
+    the pixel fit) reads the ball small: on the quick sweep's long balls
+    (R = 0.11 m and 140 000 lines/s, 8-bit, shot noise, 32 seeds each) the
+    speed read 0.23 +- 0.015 and 0.08 +- 0.006 sigma of the pixel bound
+    higher than with the neighbours' signal (the same images).  Their noise
+    is independent of the pixel's; where the coverage changes from line to
+    line (a ball's ends) their mean still follows it to first order.
+    """
+    if p.shape[0] < 2:
+        return p
+    q = np.empty_like(p)
+    q[1:-1] = 0.5 * (p[:-2] + p[2:])
+    q[0] = p[1]
+    q[-1] = p[-2]
+    return q
+
+
 def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
     """``np.median`` of ``values`` repeated ``counts`` times (counts >= 0, total > 0)."""
     order = np.argsort(values, kind="stable")
@@ -830,7 +854,7 @@ def _edge_pass(
             else:
                 sig_bg = float(_median(sp_both))
             if p_in > 0 and sig_in > sig_bg:
-                sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(p / p_in, 0.0, 2.0))
+                sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(_expected_signal(p) / p_in, 0.0, 2.0))
 
     # Every edge estimate at once: for each window (narrow, then wide) the
     # left edges (windows pointing inwards with sign +1), then the right
