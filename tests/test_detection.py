@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.detection import ColumnModel, background_at, detect, region_background
+from ballscan.detection import background_at, detect, region_background
 from ballscan.images import LineImage, load_image
 
 SCENES = Path(__file__).parent / "data" / "scenes"
@@ -211,38 +211,6 @@ def test_slow_illumination_ramp():
     assert len(det.regions) == 1
     bg = background_at(det, slice(0, n), slice(0, w))
     assert np.abs(bg[[0, -1], :] - 20.0 * ramp[[0, -1]]).max() < 0.6
-
-
-def test_known_columns_are_used_and_the_line_drift_measured():
-    # a vignetted, PRNU-patterned background whose columns are known (the
-    # stream engine's model), lit 10 % brighter than when they were learned
-    n, w = 300, 400
-    rng = np.random.default_rng(11)
-    cols = 40.0 * (1.0 - 0.2 * np.linspace(-1, 1, w) ** 2) * (1.0 + 0.01 * rng.standard_normal(w))
-    img, inside = _disc((n, w), (150, 200), (60, 30), 150.0)
-    img = np.where(inside, img, 1.1 * cols[None, :])
-    data = _noisy(img, 1.5, 4)
-    known = ColumnModel(cols, np.full(w, 1.5))
-    det = detect(_image(data), columns=known)
-    own = detect(_image(data))
-    assert np.array_equal(det.background_dn, cols) and np.array_equal(det.noise_dn, np.full(w, 1.5))
-    assert det.drift_model == "gain" and np.abs(det.line_gain - 1.1).max() < 0.01
-    # the same ball, found as without the model
-    assert len(det.regions) == len(own.regions) == 1
-    a, b = det.regions[0], own.regions[0]
-    assert (a.line_start, a.line_stop, a.col_start, a.col_stop) == (b.line_start, b.line_stop, b.col_start, b.col_stop)
-    # the background the estimator sees: the lit columns, to a fraction of the noise
-    assert np.abs(background_at(det, slice(0, n), slice(0, w)) - 1.1 * cols[None, :]).max() < 0.5
-
-
-def test_known_columns_validated():
-    with pytest.raises(ValueError, match="1-D of one length"):
-        ColumnModel(np.zeros(5), np.ones(4))
-    with pytest.raises(ValueError, match="finite"):
-        ColumnModel(np.full(3, np.nan), np.ones(3))
-    with pytest.raises(ValueError, match="columns"):
-        detect(_image(np.full((10, 8), 20.0)), columns=ColumnModel(np.zeros(5), np.ones(5)))
-    assert ColumnModel(np.arange(6.0), np.ones(6)).columns(2, 4).background_dn.tolist() == [2.0, 3.0]
 
 
 def test_two_touching_balls_flagged_overlap():

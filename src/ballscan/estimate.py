@@ -27,7 +27,7 @@ import numpy as np
 from scipy import ndimage as ndi
 
 from .camera import LineScanCamera, line_times
-from .detection import BallRegion, ColumnModel, Detection, background_at, detect, median, region_background
+from .detection import BallRegion, Detection, background_at, detect, median, region_background
 from .edges import matched_edges, measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
@@ -640,7 +640,6 @@ def estimate_image(
     pixels: bool = False,
     matched: bool = True,
     flat_field: bool = True,
-    columns: ColumnModel | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -664,10 +663,6 @@ def estimate_image(
         On a sensor whose column gains scatter (PRNU), the matched edges on
         the image with the measured gains divided out, on long balls (see
         :func:`estimate_region`).
-    columns : ColumnModel, optional
-        The image columns' background level and noise when they are known
-        (the stream engine's, for an event's crop); else :func:`detect`
-        learns them on the image.
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -683,7 +678,7 @@ def estimate_image(
         # is then the camera's actual rate (encoder-triggered lines)
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
-    det = detect(image, columns=columns)
+    det = detect(image)
     bg = _full_background(det) if method == "fit" and det.regions else None
     balls = [
         estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)

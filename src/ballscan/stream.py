@@ -31,11 +31,7 @@ Pipeline per chunk
    before and after and the ball's columns plus a margin, and handed to
    :func:`ballscan.estimate.estimate_image` with a camera whose principal
    point is shifted by the crop's first column (the same camera frame, so
-   positions and velocities need no correction), the lines' timestamps, and
-   the engine's background and noise of the crop's columns as they were when
-   the event began (a :class:`ballscan.detection.ColumnModel`: learned on
-   thousands of lines, where the crop alone has a few dozen clean ones, and
-   0.5 ms less per ball than learning them again on the crop).
+   positions and velocities need no correction) and the lines' timestamps.
    :func:`process_stream` yields the result at once, before the rest of the
    chunk is tested: the latency does not include the lines after the piece
    that ended the event.
@@ -52,7 +48,7 @@ block (robust per-column mode and noise; balls in it do not bias it).
 Slow illumination drift is followed by the per-block EMA (the mean of the
 per-line offsets goes into the level, their spread is kept out of the
 noise); the per-line gain and offset used by the precise estimate are those
-:func:`detect` estimates on the crop relative to the engine's columns.
+:func:`detect` estimates on the crop.
 """
 
 from __future__ import annotations
@@ -69,7 +65,7 @@ import numpy as np
 
 from . import _kernels
 from .camera import LineScanCamera
-from .detection import ColumnModel, detect, median
+from .detection import detect, median
 from .errors import BallscanError
 from .images import LineImage
 from .results import BallEstimate
@@ -255,11 +251,6 @@ class StreamResult:
         The crop's stored values (only with ``keep_crops``).
     crop_times_s : numpy.ndarray or None
         The crop's line times, seconds (only with ``keep_crops``).
-    crop_columns : ColumnModel or None
-        The engine's background and noise of the crop's columns that the
-        estimate used (None for an event that was not estimated):
-        ``estimate_crop(crop, crop_times_s, ..., columns=crop_columns)``
-        gives the same estimate again.
     """
 
     estimate: BallEstimate
@@ -271,7 +262,6 @@ class StreamResult:
     crop: np.ndarray | None = field(default=None, repr=False, compare=False)
     crop_times_s: np.ndarray | None = field(default=None, repr=False, compare=False)
     handoff_s: float = 0.0
-    crop_columns: ColumnModel | None = field(default=None, repr=False, compare=False)
 
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
         """geometry.md estimate keys plus ``source``, ``first_line``, ``last_line`` (stream lines)."""
@@ -324,10 +314,6 @@ class _Event:
     col_min: int
     col_max: int
     n_px: int
-    # the engine's column background and noise (DN) that tested the event's
-    # first line: the crop's estimate uses them (chunking cannot change them)
-    background_dn: np.ndarray
-    noise_dn: np.ndarray
     overflowed: bool = False
     relearned_at: int = 0
 
@@ -657,7 +643,6 @@ class StreamEngine:
 
     def _set_band(self) -> None:
         sig = np.maximum(np.sqrt(self._var), self.config.noise_floor_dn)
-        self._sig = sig
         half = self.config.k_sigma * sig
         lo = np.maximum(np.floor(self._bg - half), 0.0)
         hi = np.minimum(np.ceil(self._bg + half), float(self._max_dn))
@@ -697,9 +682,8 @@ class StreamEngine:
         var = np.maximum(total2 - n * mean * mean, 0.0) / (n - 1)
         mean += off.mean()
         a = cfg.ema_alpha
-        # new arrays, not updates in place: an open event holds the ones that tested its first line
-        self._bg = self._bg + a * (mean - self._bg)
-        self._var = self._var + a * (var - self._var)
+        self._bg += a * (mean - self._bg)
+        self._var += a * (var - self._var)
         self._set_band()
 
     def _test(self, lo: int, hi: int, out: list[StreamResult]) -> None:
@@ -735,7 +719,7 @@ class StreamEngine:
                 self._close(ev, out)
                 ev = None
             if ev is None:
-                self._event = _Event(line, line, a, b, c, self._bg, self._sig)
+                self._event = _Event(line, line, a, b, c)
             else:
                 ev.last_hit = line
                 ev.col_min = min(ev.col_min, a)
@@ -790,10 +774,9 @@ class StreamEngine:
             # timestamps are given; without a timestamps file the exact period is known.
             exposure = 1.0 / self.camera.line_rate_hz
         camera = crop_camera(self.camera, c0, c1, exposure_s=exposure)
-        columns = ColumnModel(ev.background_dn[c0:c1], ev.noise_dn[c0:c1])
-        args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched, columns)
+        args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched)
         handoff = time.perf_counter() - self._chunk_arrival
-        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit, columns)
+        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit)
         self._n_events += 1
         if self._executor is None:
             job.balls = estimate_crop(*args)
@@ -833,7 +816,6 @@ class StreamEngine:
                         job.crop.copy() if cfg.keep_crops and job.crop is not None else None,
                         job.times.copy() if cfg.keep_crops and job.times is not None else None,
                         job.handoff,
-                        job.columns,
                     )
                 )
 
@@ -851,7 +833,6 @@ class _Job:
     handoff: float
     first_hit: int
     last_hit: int
-    columns: ColumnModel | None = None
     balls: tuple = ()
     future: Any = None
 
@@ -867,7 +848,6 @@ def estimate_crop(
     name: str,
     shading: bool = True,
     matched: bool = True,
-    columns: ColumnModel | None = None,
 ) -> tuple[BallEstimate, ...]:
     """Estimate the balls of one event crop (a top-level function: runs in worker processes too).
 
@@ -888,9 +868,6 @@ def estimate_crop(
         The fit's shading-aware second pass.
     matched : bool
         Matched edges where the ball and the sensor allow them.
-    columns : ColumnModel, optional
-        The crop's columns' background and noise (the engine's); without it
-        :func:`ballscan.detection.detect` learns them on the crop.
 
     Returns
     -------
@@ -904,7 +881,7 @@ def estimate_crop(
 
     image = LineImage(crop.astype(np.float64), saturation_dn, bits, name)
     try:
-        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched, columns=columns).balls
+        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched).balls
     except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
         return (BallEstimate.undetermined_estimate(method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 
