@@ -561,20 +561,15 @@ def measure_edges(
     settings : EdgeSettings
     limb : LimbProfile-like, optional
         The ball's brightness model across the left (side +1) or right (-1)
-        edge of image lines ``lines`` (R,), at ``offsets`` (R, M) pixels
-        inwards from the model's mean edge, e.g.
-        :class:`ballscan.shading.LimbProfile`: ``limb(lines, sides, offsets,
-        average=True) -> (value, coverage)`` the expected normalised profile
-        ``p`` and the ball's covered fraction at points (``average=False``:
-        one sample per position), ``limb.pixel_coverage(lines, sides,
-        offsets)`` each whole pixel's covered fraction (pixels centred on
-        ``offsets``), ``limb.surface(lines, sides, offsets)`` the surface's
-        brightness, ``limb.rows(lines, sides)`` the same model as the
-        arguments of the compiled levels
-        (:func:`ballscan._kernels.limb_levels`), and ``limb.spread_px`` the
-        model's edge spread per image line (pixels), which selects the
-        narrow and wide windows to correct (``limb_narrow_max_px``,
-        ``limb_wide_px``).  When given, each
+        edge of image lines, a :class:`ballscan.shading.LimbProfile`:
+        ``limb.rows(lines, sides)`` gives the model as the arguments of the
+        compiled levels (:func:`ballscan._kernels.limb_levels`, which
+        evaluates it as the profile's ``pixel_coverage``, ``surface`` and
+        ``__call__`` do), ``limb.spread_px`` the model's edge spread per
+        image line (pixels), which selects the narrow and wide windows to
+        correct (``limb_narrow_max_px``, ``limb_wide_px``), and
+        ``limb.line_levels(lines)`` (optional) the brightness of the ends'
+        covered part.  When given, each
         edge's inner level is the level run times the model's ratio of the
         mean level over the covered part of the window to the level run's,
         and the edge is the model's mean edge moved by the difference
@@ -997,9 +992,8 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     e, var, L, S, n_win = ps.e, ps.var, ps.L, ps.S, ps.n_win
     area_level = area_level_sigma = None
     if limb is not None:
-        missing = [name for name in ("rows",) if not callable(getattr(limb, name, None))]
-        if missing:
-            raise ValueError(f"limb: needs {' and '.join(missing)} (see measure_edges; e.g. a ballscan.shading.LimbProfile)")
+        if not callable(getattr(limb, "rows", None)):
+            raise ValueError("limb: needs rows (see measure_edges; e.g. a ballscan.shading.LimbProfile)")
         spread = getattr(limb, "spread_px", None)
         if spread is None or np.shape(spread) != (ps.n_img,):
             raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")

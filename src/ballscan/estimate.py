@@ -326,13 +326,19 @@ def estimate_region(
                         gain_sigma = gains.prnu_sigma
                         # NaN (a ball too small to tell) is not flat-fielded
                         if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
-                            edges_fit = matched_edges(edges2, limb)
-                            if edges_fit is not edges2 and int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES:
-                                # a long ball: measured again on its columns' background away from it
+                            rb = None
+                            if int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES:
+                                # a long ball: measured on its columns' background
+                                # away from it.  Only here: with that background
+                                # on every ball the shading pass reads shaded
+                                # balls' V.x low (bench_calibration, 112-268
+                                # lines: mean -1.1 to -2.1 sigma; docs/benchmarks.md)
                                 rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=False)
-                                if rb is not None:
-                                    edges_fit, limb = rb
-                                    bg_refined = True
+                            if rb is not None:
+                                edges_fit, limb = rb
+                                bg_refined = True
+                            else:
+                                edges_fit = matched_edges(edges2, limb)
                         elif (
                             flat_field
                             and math.isfinite(gain_sigma)
