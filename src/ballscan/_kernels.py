@@ -2123,7 +2123,7 @@ def _pairwise_sum(a: np.ndarray) -> float:
 
 @_jit(inline="always")
 def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray) -> float:
-    """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (:func:`ballscan.shading._huber_round`)."""
+    """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (the Huber rounds of :func:`ballscan.shading.fit_shading`)."""
     med = np.median(r)
     for i in range(r.shape[0]):
         buf[i] = abs(r[i] - med)
