@@ -39,6 +39,8 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
+from .detection import median as _median
+
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
 
 # a column's gain needs at least this many interior lines (a median of fewer
@@ -230,15 +232,15 @@ def column_gains(
         d = med[ok] / trend[ok] - 1.0
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
-        scatter = _MAD_SIGMA * float(np.median(np.abs(d - np.median(d))))
+        scatter = _MAD_SIGMA * float(_median(np.abs(d - _median(d))))
         # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
-        z = np.abs(d - np.median(d)) / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
+        z = np.abs(d - _median(d)) / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
         if z[worst] <= _DEFECT_SIGMAS or far_all.sum() == _MAX_DEFECTS:
             break
         far_all[np.flatnonzero(ok)[worst]] = True
     d_far = np.abs(med[far_all] / np.where(trend[far_all] > 0, trend[far_all], 1.0) - 1.0)
-    tau2 = max(scatter**2 - float(np.median(var[ok])), 0.0)
+    tau2 = max(scatter**2 - float(_median(var[ok])), 0.0)
     gain = np.ones(n_c)
     sigma = np.full(n_c, math.sqrt(tau2))
     if tau2 > 0:
