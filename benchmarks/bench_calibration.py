@@ -1,6 +1,7 @@
 """Are the reported 1-sigma honest?  z-scores of the precise fit against the truth (run on demand, not a test).
 
     python benchmarks/bench_calibration.py [--balls N] [--jobs J] [--cases NAME,...]
+        [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background]
 
 For each case (a camera, a ball length in lines, flat or Lambertian-shaded
 ball) it renders ``--balls`` single images of one ball on the default
@@ -12,6 +13,9 @@ prints, per estimated quantity, the RMS and the mean of
 ``z = (estimate - truth) / sigma``.  An honest sigma gives RMS z = 1 and a
 mean within ``1 / sqrt(N)`` of 0; RMS z = 2 means the reported sigma is half
 the actual error.  Also the edges used (``extra["edges"]``).
+
+``--start``, ``--level-samples`` and ``--refined-background`` set the
+shading pass's diagnostic options (:class:`ballscan.estimate.ShadingSetup`).
 
 Cases: ``stream-38`` / ``stream-112`` / ``stream-268`` are the stream
 tests' camera (512 px, f = 1100 px, 20 kHz, z = 4 m: an 18-px-wide tennis
@@ -35,7 +39,7 @@ import numpy as np  # noqa: E402
 from joblib import Parallel, delayed  # noqa: E402
 
 from ballscan.camera import LineScanCamera  # noqa: E402
-from ballscan.estimate import estimate_image  # noqa: E402
+from ballscan.estimate import ShadingSetup, estimate_image  # noqa: E402
 from ballscan.images import LineImage  # noqa: E402
 from ballscan.motion import BallMotion  # noqa: E402
 from ballscan.render import Appearance, RenderSettings, SensorNoise, render  # noqa: E402
@@ -67,7 +71,7 @@ CASES = {
 }
 
 
-def one_ball(case: Case, k: int) -> tuple[np.ndarray, str]:
+def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup()) -> tuple[np.ndarray, str]:
     """z-scores of ball ``k`` of ``case`` and the edges it used."""
     rng = np.random.default_rng(1000 + k)
     cam = case.camera
@@ -83,7 +87,7 @@ def one_ball(case: Case, k: int) -> tuple[np.ndarray, str]:
     )
     app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
     r = render(cam, [(m, app)], n_img, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
-    balls = estimate_image(LineImage(r.image.astype(float), 255.0, 8, case.name), cam, RADIUS_M).balls
+    balls = estimate_image(LineImage(r.image.astype(float), 255.0, 8, case.name), cam, RADIUS_M, shading_setup=setup).balls
     if len(balls) != 1 or balls[0].t_c_s is None:
         return np.full(6, np.nan), "none"
     e = balls[0]
@@ -98,20 +102,28 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--balls", type=int, default=60, help="balls per case (default 60)")
     ap.add_argument("--jobs", type=int, default=1, help="worker processes (default 1)")
     ap.add_argument("--cases", default=",".join(CASES), help="comma-separated case names (default all)")
+    ap.add_argument("--start", default="guess", choices=("guess", "loose_fit"), help="motion the shading law is fitted at (default guess)")
+    ap.add_argument("--level-samples", default="3,2", help="samples over the exposure and the pixel height of the ends' brightness (default 3,2)")
+    ap.add_argument("--refined-background", action="store_true", help="every ball's edges on its columns' background away from it")
     args = ap.parse_args(argv)
+    try:
+        setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background)
+    except ValueError as exc:
+        ap.error(f"--level-samples: {exc}")
     names = [c for c in args.cases.split(",") if c]
     unknown = [c for c in names if c not in CASES]
     if unknown:
         ap.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(CASES)}")
     if args.balls < 2:
         ap.error("--balls: at least 2")
+    print(f"shading pass: {setup}")
     print(f"z = (estimate - truth) / sigma over {args.balls} balls per case; an honest sigma: RMS 1, |mean| < {2 / np.sqrt(args.balls):.2f} (2 s.e.)")
     header = f"{'case':18s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
     print(header)
     print(f"{'':18s} {'':5s}  " + "  ".join(f"{'RMS  mean':>11s}" for _ in NAMES))
     for name in names:
         case = CASES[name]
-        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k) for k in range(args.balls))
+        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup) for k in range(args.balls))
         z = np.array([o[0] for o in out])
         ok = np.all(np.isfinite(z), axis=1)
         z = z[ok]

@@ -288,3 +288,24 @@ def test_long_ball_on_a_flat_fielded_sensor_measured_on_its_refined_background()
         speed.append((b.speed_mps - 5.0) / b.speed_sigma_mps)
         vx.append((b.velocity_mps[0] - 5.0) / b.velocity_sigma_mps[0])
     assert np.mean(speed) < 1.2 and np.sqrt(np.mean(np.square(vx))) < 2.0, (speed, vx)
+
+
+def test_shading_setup_is_checked_and_its_default_is_the_estimator():
+    from ballscan.estimate import ShadingSetup
+
+    with pytest.raises(ValueError, match="start"):
+        ShadingSetup(start="truth")
+    with pytest.raises(ValueError, match="level_samples"):
+        ShadingSetup(level_samples=(0, 2))
+    cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+    m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
+    r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
+    img = LineImage(r.image.astype(float), 255.0, 8, "shaded")
+    plain = estimate_image(img, cam, 0.0335).balls[0]
+    same = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup()).balls[0]
+    assert plain.velocity_mps == same.velocity_mps and plain.position_m == same.position_m
+    other = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup("loose_fit", (8, 4), True)).balls[0]
+    assert other.extra["shading_pass"] == "used" and other.velocity_mps != plain.velocity_mps
+    # the same ball within a few of its sigmas either way
+    dv = np.subtract(other.velocity_mps, plain.velocity_mps)
+    assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps))

@@ -402,3 +402,43 @@ def test_a_light_behind_a_flat_ball_is_not_fitted():
         edges = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
         law = ball_limb(cam, m, img.data, edges, t, bg).shading
         assert (np.linalg.norm(law.light_dn) > 0) == expect_light, law
+
+
+def test_more_exposure_samples_bring_the_end_lines_levels_closer():
+    """The ends' mean brightness with ``level_samples`` (8, 4) against the default (3, 2).
+
+    A slow ball (5 m/s at 20 kHz, the stream tests' camera: 268 lines) has
+    some forty end lines whose covered part is a thin cap seen over a part
+    of the exposure; 3 x 2 samples over the exposure and the pixel's height
+    put their levels 1.25 % RMS (4.5 % worst) off the renderer's (finest
+    sampling), 8 x 4 0.68 % (1.6 %); 32 x 16 no better (0.56 %, 1.7 %).
+    With the default the end lines' levels carry a sigma of 0.1-0.3 %:
+    part of the shaded balls' bias (docs/benchmarks.md, calibration).
+    """
+    from ballscan.render import RenderSettings
+
+    cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+    n = 700
+    m = BallMotion(0.0335, 350 / cam.line_rate_hz, (0.0, 0.1, 4.0), (5.0, -0.02, -0.27))
+    fine = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
+    r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], n, background_level=0.12, noise=None, settings=fine)
+    img = 1000.0 * r.clean
+    t = line_times(cam, n, None)
+    det = detect(LineImage(img, 1000.0, 16, "slow"))
+    bg = np.full(img.shape, 120.0)
+    e = measure_edges(img, det.regions[0], bg, det.noise_dn, t)
+    me = averaged_model(cam, m.to_params()[None], m.radius_m, t)
+    lines = np.flatnonzero((me.area_px[0] > 1.0) & (me.presence[0] > 0))
+    covered = r.coverage[lines].sum(axis=1)
+    rms = {}
+    for samples in ((3, 2), (8, 4)):
+        limb = ball_limb(cam, m, img, e, t, bg, level_samples=samples)
+        assert (limb.level_n_time, limb.level_n_height) == samples and (limb.n_time, limb.n_height) == (3, 2)
+        level, _ = limb.line_levels(lines)
+        measured = ((img[lines] - 120.0) / limb.contrast_dn).sum(axis=1) / covered
+        ends = covered < 0.5 * covered.max()
+        err = level[ends] / measured[ends] - 1.0
+        assert ends.sum() >= 30 and np.all(np.isfinite(err))
+        rms[samples] = float(np.sqrt(np.mean(err**2)))
+    assert rms[(3, 2)] > 0.010 and rms[(8, 4)] < 0.008
+    assert rms[(8, 4)] < 0.65 * rms[(3, 2)]

@@ -39,7 +39,7 @@ from .paper import refine_paper
 from .results import BallEstimate, EstimateReport
 from .shading import ball_limb, shade_profile
 
-__all__ = ["METHODS", "NormalisedBox", "normalised_box", "estimate_image", "estimate_region"]
+__all__ = ["METHODS", "NormalisedBox", "ShadingSetup", "normalised_box", "estimate_image", "estimate_region"]
 
 METHODS = ("fit", "paper")
 
@@ -96,6 +96,44 @@ def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
     period = float(median(np.diff(t)))
     seg = np.diff(t[max(first - 1, 0) : last + 2])
     return bool(np.any(seg > 1.5 * period))
+
+
+
+@dataclass(frozen=True)
+class ShadingSetup:
+    """How the fit's shading-aware second pass is set up (the defaults are the estimator's).
+
+    The other settings are diagnostics of the shaded balls' bias
+    (``benchmarks/bench_calibration.py --start, --level-samples,
+    --refined-background``; docs/benchmarks.md, calibration, session 10),
+    not yet the default: each moves the reported sigmas' calibration
+    closer on some cases and not on others.
+
+    Attributes
+    ----------
+    start : {"guess", "loose_fit"}
+        The motion the shading law and the limb model are built at: the
+        key-point guess (a loose fit of the model-free edges only where the
+        guess is degenerate), or always that loose fit (no outlier rounds,
+        cost tolerance 1e-3).
+    level_samples : (int, int)
+        Samples over the exposure and across the pixel's height of the
+        ends' mean brightness (:meth:`ballscan.shading.LimbProfile.line_levels`).
+    refined_background : bool
+        Measure every ball's edges on its columns' background measured away
+        from the balls (:func:`refine_background`; by default only long
+        balls' matched edges are, see :func:`estimate_region`).
+    """
+
+    start: str = "guess"
+    level_samples: tuple[int, int] = (3, 2)
+    refined_background: bool = False
+
+    def __post_init__(self):
+        if self.start not in ("guess", "loose_fit"):
+            raise ValueError(f"start: expected 'guess' or 'loose_fit', got {self.start!r}")
+        if len(self.level_samples) != 2 or min(int(k) for k in self.level_samples) < 1:
+            raise ValueError(f"level_samples: expected two positive counts, got {self.level_samples!r}")
 
 
 def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, radius_m: float, t: np.ndarray) -> InitialGuess:
@@ -155,6 +193,7 @@ def estimate_region(
     pixels: bool = False,
     matched: bool = True,
     flat_field: bool = True,
+    shading_setup: ShadingSetup = ShadingSetup(),
 ) -> BallEstimate:
     """Estimate one detected ball's motion (see the module docstring).
 
@@ -287,15 +326,15 @@ def estimate_region(
         # outlier rounds, cost tolerance 1e-3).
         t_s = time.perf_counter()
         start: BallMotion | None = ig.motion
-        if ig.degenerate:
+        if ig.degenerate or shading_setup.start == "loose_fit":
             first = fit_motion(camera, edges, ig.motion, _FIRST_PASS)
-            start = first.motion if first.converged else None
+            start = first.motion if first.converged else (None if ig.degenerate else ig.motion)
         shading_pass = "no_start"
         if start is not None:
             # second pass: the edges' limb levels from the ball's fitted shading
             # (a Lambertian limb's brightness falls like sqrt(distance): a level
             # taken inside and extrapolated linearly biases the lit side inwards)
-            limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full)
+            limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples)
             shading_pass = "too_few_pixels"
             if pixels:
                 pixels_state = "no_shading_model"
@@ -333,7 +372,7 @@ def estimate_region(
                                 # on every ball the shading pass reads shaded
                                 # balls' V.x low (bench_calibration, 112-268
                                 # lines: mean -1.1 to -2.1 sigma; docs/benchmarks.md)
-                                rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=False)
+                                rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=False, level_samples=shading_setup.level_samples)
                             if rb is not None:
                                 edges_fit, limb = rb
                                 bg_refined = True
@@ -347,7 +386,7 @@ def estimate_region(
                         ):
                             # the measured gains divided out, and the
                             # remaining gain error in the edges' sigmas
-                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera)
+                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, level_samples=shading_setup.level_samples)
                             if ff is not None:
                                 edges_fit, limb = ff
                                 ff_used = bg_refined = True
@@ -439,7 +478,7 @@ def estimate_region(
     )
 
 
-def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=True):
+def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=True, level_samples=(3, 2)):
     """Matched edges measured on the image with the ball's measured column gains divided out, or None.
 
     Where the ball's interior shows column-gain scatter (PRNU, not
@@ -471,7 +510,7 @@ def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, ca
     else:
         data = image.data
     edges = measure_edges(data, region, bg, detection.noise_dn, t_lines_s, saturation_dn=detection.saturation_dn, others=others)
-    limb = ball_limb(camera, start, data, edges, t_lines_s, bg)
+    limb = ball_limb(camera, start, data, edges, t_lines_s, bg, level_samples=level_samples)
     if limb is None:
         return None
     edges = with_limb(edges, limb)
@@ -646,6 +685,7 @@ def estimate_image(
     pixels: bool = False,
     matched: bool = True,
     flat_field: bool = True,
+    shading_setup: ShadingSetup = ShadingSetup(),
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -669,6 +709,8 @@ def estimate_image(
         On a sensor whose column gains scatter (PRNU), the matched edges on
         the image with the measured gains divided out, on long balls (see
         :func:`estimate_region`).
+    shading_setup : ShadingSetup
+        The shading pass's diagnostic settings (see :class:`ShadingSetup`).
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -685,9 +727,14 @@ def estimate_image(
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image)
-    bg = _full_background(det) if method == "fit" and det.regions else None
+    bg = None
+    if method == "fit" and det.regions:
+        bg = _full_background(refine_background(image.data, det) if shading_setup.refined_background else det)
     balls = [
-        estimate_region(image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
+        estimate_region(
+            image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field,
+            shading_setup=shading_setup,
+        )
         for r in det.regions
     ]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))

@@ -248,6 +248,8 @@ class LimbProfile:
         Lines whose edge spread is below this are sampled once per position.
     n_time, n_height : int
         Samples over the exposure and across the pixel's height elsewhere.
+    level_n_time, level_n_height : int
+        The same for the ends' mean brightness (:meth:`line_levels`).
     level_rel_sigma : float
         Relative 1-sigma of the law's prediction of a line's mean brightness
         over ``level_ref_px`` pixels (texture, seams, the law's own error;
@@ -273,6 +275,8 @@ class LimbProfile:
     n_height: int = 2
     level_rel_sigma: float = 0.0
     level_ref_px: float = 1.0
+    level_n_time: int = 3
+    level_n_height: int = 2
     # the chord samples of the last rows pixel_coverage was asked for
     _samples: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -315,7 +319,7 @@ class LimbProfile:
         # the sums over the inside positions (compiled: the points' model and its sums in one pass)
         val_sum, covered, rays_ok = line_level_sums(
             offsets, inside, as_arg(left), as_arg(self.t_lines_s[lines]), as_arg(~(spread >= self.sharp_px), np.bool_), as_arg(lines, np.int64),
-            *self._model(),
+            *self._model(self.level_n_time, self.level_n_height),
         )
         if not rays_ok:
             raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
@@ -410,18 +414,24 @@ class LimbProfile:
             as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(),
         )
 
-    def _model(self) -> tuple:
-        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan._kernels.limb_levels`)."""
+    def _model(self, n_time: int | None = None, n_height: int | None = None) -> tuple:
+        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan._kernels.limb_levels`).
+
+        ``n_time`` and ``n_height`` (default the profile's) set the samples
+        over the exposure and the pixel's height.
+        """
         cam = self.camera
         return (
-            as_arg(self.background_dn), *self._samples_tk_hk(), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2),
+            as_arg(self.background_dn), *self._samples_tk_hk(n_time, n_height), float(cam.focal_px), float(cam.principal_px), float(cam.k1), float(cam.k2),
             *self._law(),
         )
 
-    def _samples_tk_hk(self) -> tuple[np.ndarray, np.ndarray]:
+    def _samples_tk_hk(self, n_time: int | None = None, n_height: int | None = None) -> tuple[np.ndarray, np.ndarray]:
         """The instants over the exposure (s, from the line's centre time) and heights across the pixel (pixels) an unsharp edge is sampled at."""
-        tk = ((np.arange(self.n_time) + 0.5) / self.n_time - 0.5) * self.camera.exposure
-        hk = (np.arange(self.n_height) + 0.5) / self.n_height - 0.5
+        n_t = self.n_time if n_time is None else int(n_time)
+        n_h = self.n_height if n_height is None else int(n_height)
+        tk = ((np.arange(n_t) + 0.5) / n_t - 0.5) * self.camera.exposure
+        hk = (np.arange(n_h) + 0.5) / n_h - 0.5
         return tk, hk
 
     def _law(self) -> tuple:
@@ -482,6 +492,8 @@ def limb_profile(
     n_height: int = 2,
     level_rel_sigma: float = 0.0,
     level_ref_px: float = 1.0,
+    level_n_time: int = 3,
+    level_n_height: int = 2,
 ) -> LimbProfile:
     """The model's normalised profile across either edge of any line.
 
@@ -511,6 +523,9 @@ def limb_profile(
     level_rel_sigma, level_ref_px : float
         Relative 1-sigma of the law's mean brightness of a line and the
         length it was measured over, pixels (see :class:`LimbProfile`).
+    level_n_time, level_n_height : int
+        Samples over the exposure and the pixel's height for the ends' mean
+        brightness (:meth:`LimbProfile.line_levels`).
 
     Returns
     -------
@@ -519,7 +534,7 @@ def limb_profile(
     return LimbProfile(
         shading, camera, motion, np.asarray(t_lines_s, dtype=float), background_dn, int(polarity), float(contrast_dn),
         np.asarray(spread_px, dtype=float), np.asarray(left_px, dtype=float), np.asarray(right_px, dtype=float),
-        float(sharp_px), int(n_time), int(n_height), float(level_rel_sigma), float(level_ref_px),
+        float(sharp_px), int(n_time), int(n_height), float(level_rel_sigma), float(level_ref_px), int(level_n_time), int(level_n_height),
     )
 
 
@@ -530,6 +545,8 @@ def ball_limb(
     edges: EdgeMeasurements,
     t_lines_s: np.ndarray,
     background_dn: np.ndarray,
+    *,
+    level_samples: tuple[int, int] = (3, 2),
 ) -> LimbProfile | None:
     """Fit the ball's shading and build its edge profile model in one step.
 
@@ -546,6 +563,9 @@ def ball_limb(
         Centre time of every image line, seconds.
     background_dn : ndarray (n_lines, W)
         Background of the image, DN.
+    level_samples : (int, int)
+        Samples over the exposure and the pixel's height for the ends' mean
+        brightness (``level_n_time, level_n_height`` of :func:`limb_profile`).
 
     Returns
     -------
@@ -573,7 +593,10 @@ def ball_limb(
         full = np.full(np.asarray(t_lines_s).size, np.nan)
         full[edges.lines] = np.where(me.presence[0] > 0, arr, np.nan)
         per_line.append(full)
-    limb = limb_profile(shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line)
+    limb = limb_profile(
+        shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line,
+        level_n_time=int(level_samples[0]), level_n_height=int(level_samples[1]),
+    )
     # how well the law predicts a line's mean brightness, measured on the
     # plateau lines and scaled to each end line's length, is the sigma of the
     # end lines' levels (a rendered tennis ball: plateau lines' scatter 4.7 %;
