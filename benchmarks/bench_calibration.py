@@ -1,7 +1,7 @@
 """Are the reported 1-sigma honest?  z-scores of the precise fit against the truth (run on demand, not a test).
 
     python benchmarks/bench_calibration.py [--balls N] [--jobs J] [--cases NAME,...]
-        [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background]
+        [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background] [--clean]
 
 For each case (a camera, a ball length in lines, flat or Lambertian-shaded
 ball) it renders ``--balls`` single images of one ball on the default
@@ -16,6 +16,9 @@ the actual error.  Also the edges used (``extra["edges"]``).
 
 ``--start``, ``--level-samples`` and ``--refined-background`` set the
 shading pass's diagnostic options (:class:`ballscan.estimate.ShadingSetup`).
+``--clean`` also renders each ball noise-free (16 bits, no PRNU) and prints
+its errors in units of the noisy image's sigmas: the estimator's own
+(model) error, which no noise averages away.
 
 Cases: ``stream-38`` / ``stream-112`` / ``stream-268`` are the stream
 tests' camera (512 px, f = 1100 px, 20 kHz, z = 4 m: an 18-px-wide tennis
@@ -71,8 +74,8 @@ CASES = {
 }
 
 
-def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup()) -> tuple[np.ndarray, str]:
-    """z-scores of ball ``k`` of ``case`` and the edges it used."""
+def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup(), clean: bool = False) -> tuple[np.ndarray, np.ndarray, str]:
+    """z-scores of ball ``k`` of ``case``, of its noise-free twin (NaN unless ``clean``) and the edges it used."""
     rng = np.random.default_rng(1000 + k)
     cam = case.camera
     n_img = int(case.lines * 1.6) + 20
@@ -86,15 +89,26 @@ def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup()) -> tuple[
         (v, rng.uniform(-0.06, 0.06) * v, rng.uniform(-0.09, 0.09) * v),
     )
     app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
-    r = render(cam, [(m, app)], n_img, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
-    balls = estimate_image(LineImage(r.image.astype(float), 255.0, 8, case.name), cam, RADIUS_M, shading_setup=setup).balls
-    if len(balls) != 1 or balls[0].t_c_s is None:
-        return np.full(6, np.nan), "none"
-    e = balls[0]
-    est = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
-    sig = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
     true = np.r_[m.t_c_s, m.position_m[1:], m.velocity_mps]
-    return (est - true) / sig, str(e.extra.get("edges"))
+    none = np.full(6, np.nan)
+
+    def measured(image: LineImage):
+        balls = estimate_image(image, cam, RADIUS_M, shading_setup=setup).balls
+        return balls[0] if len(balls) == 1 and balls[0].t_c_s is not None else None
+
+    r = render(cam, [(m, app)], n_img, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
+    e = measured(LineImage(r.image.astype(float), 255.0, 8, case.name))
+    if e is None:
+        return none, none, "none"
+    sig = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
+    z = (np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps] - true) / sig
+    z_clean = none
+    if clean:
+        rc = render(cam, [(m, app)], n_img, background_level=0.12, noise=None, seed=k, settings=FINE)
+        ec = measured(LineImage(rc.image.astype(float), 65535.0, 16, case.name + " clean"))
+        if ec is not None:
+            z_clean = (np.r_[ec.t_c_s, ec.position_m[1:], ec.velocity_mps] - true) / sig
+    return z, z_clean, str(e.extra.get("edges"))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -105,6 +119,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--start", default="guess", choices=("guess", "loose_fit"), help="motion the shading law is fitted at (default guess)")
     ap.add_argument("--level-samples", default="3,2", help="samples over the exposure and the pixel height of the ends' brightness (default 3,2)")
     ap.add_argument("--refined-background", action="store_true", help="every ball's edges on its columns' background away from it")
+    ap.add_argument("--clean", action="store_true", help="also each ball's noise-free twin, in units of the noisy sigmas")
     args = ap.parse_args(argv)
     try:
         setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background)
@@ -118,20 +133,24 @@ def main(argv: list[str] | None = None) -> int:
         ap.error("--balls: at least 2")
     print(f"shading pass: {setup}")
     print(f"z = (estimate - truth) / sigma over {args.balls} balls per case; an honest sigma: RMS 1, |mean| < {2 / np.sqrt(args.balls):.2f} (2 s.e.)")
-    header = f"{'case':18s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
+    header = f"{'case':24s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
     print(header)
-    print(f"{'':18s} {'':5s}  " + "  ".join(f"{'RMS  mean':>11s}" for _ in NAMES))
+    print(f"{'':24s} {'':5s}  " + "  ".join(f"{'RMS  mean':>11s}" for _ in NAMES))
     for name in names:
         case = CASES[name]
-        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup) for k in range(args.balls))
-        z = np.array([o[0] for o in out])
-        ok = np.all(np.isfinite(z), axis=1)
-        z = z[ok]
-        rms = np.sqrt(np.mean(z**2, axis=0))
-        mean = z.mean(axis=0)
-        kinds = Counter(o[1] for o in out)
-        cells = "  ".join(f"{r:5.2f} {m:+5.2f}" for r, m in zip(rms, mean))
-        print(f"{name:18s} {case.lines:5.0f}  {cells}  {dict(kinds)}" + (f"  ({(~ok).sum()} not measured)" if (~ok).any() else ""))
+        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup, args.clean) for k in range(args.balls))
+        kinds = Counter(o[2] for o in out)
+        for label, col in ((name, 0), (f"{name} clean", 1)):
+            z = np.array([o[col] for o in out])
+            ok = np.all(np.isfinite(z), axis=1)
+            if col == 1 and not args.clean:
+                break
+            z = z[ok]
+            rms = np.sqrt(np.mean(z**2, axis=0))
+            mean = z.mean(axis=0)
+            cells = "  ".join(f"{r:5.2f} {m:+5.2f}" for r, m in zip(rms, mean))
+            tail = f"  {dict(kinds)}" if col == 0 else ""
+            print(f"{label:24s} {case.lines:5.0f}  {cells}{tail}" + (f"  ({(~ok).sum()} not measured)" if (~ok).any() else ""))
     return 0
 
 
