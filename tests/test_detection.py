@@ -279,6 +279,12 @@ def test_median_is_numpys_median():
         np.round(rng.normal(size=64) * 4),
         rng.integers(0, 255, 33).astype(np.uint8),
         np.array([2.0, np.nan, 1.0]),
+        # the compiled selection: even sizes, many ties, views, other dtypes
+        rng.normal(size=5336).astype(np.float32),
+        np.round(rng.normal(size=(90, 100)) * 3)[:, ::3],
+        rng.integers(-50, 50, 1000),
+        rng.normal(size=40).astype(np.float16),
+        np.array([np.nan, 1.0, 2.0, 3.0], dtype=np.float32),
     ):
         got, ref = median(a), np.median(a)
         assert type(got) is type(ref)
