@@ -1,7 +1,7 @@
 """Are the reported 1-sigma honest?  z-scores of the precise fit against the truth (run on demand, not a test).
 
     python benchmarks/bench_calibration.py [--balls N] [--jobs J] [--cases NAME,...]
-        [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background] [--clean]
+        [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background] [--refit-law] [--clean]
 
 For each case (a camera, a ball length in lines, flat or Lambertian-shaded
 ball) it renders ``--balls`` single images of one ball on the default
@@ -14,7 +14,7 @@ prints, per estimated quantity, the RMS and the mean of
 mean within ``1 / sqrt(N)`` of 0; RMS z = 2 means the reported sigma is half
 the actual error.  Also the edges used (``extra["edges"]``).
 
-``--start``, ``--level-samples`` and ``--refined-background`` set the
+``--start``, ``--level-samples``, ``--refined-background`` and ``--refit-law`` set the
 shading pass's diagnostic options (:class:`ballscan.estimate.ShadingSetup`).
 ``--clean`` also renders each ball noise-free (16 bits, no PRNU) and prints
 its errors in units of the noisy image's sigmas: the estimator's own
@@ -119,10 +119,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--start", default="guess", choices=("guess", "loose_fit"), help="motion the shading law is fitted at (default guess)")
     ap.add_argument("--level-samples", default="3,2", help="samples over the exposure and the pixel height of the ends' brightness (default 3,2)")
     ap.add_argument("--refined-background", action="store_true", help="every ball's edges on its columns' background away from it")
+    ap.add_argument("--refit-law", action="store_true", help="the law and the limb model again at the fitted motion, and the fit again")
     ap.add_argument("--clean", action="store_true", help="also each ball's noise-free twin, in units of the noisy sigmas")
     args = ap.parse_args(argv)
     try:
-        setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background)
+        setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background, args.refit_law)
     except ValueError as exc:
         ap.error(f"--level-samples: {exc}")
     names = [c for c in args.cases.split(",") if c]

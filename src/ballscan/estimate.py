@@ -123,11 +123,16 @@ class ShadingSetup:
         Measure every ball's edges on its columns' background measured away
         from the balls (:func:`refine_background`; by default only long
         balls' matched edges are, see :func:`estimate_region`).
+    refit_law : bool
+        On the window edges' path, fit the shading law and the limb model
+        again at the fitted motion and fit once more from there (a
+        converged refit replaces the fit; about 3 ms more per ball).
     """
 
     start: str = "guess"
     level_samples: tuple[int, int] = (3, 2)
     refined_background: bool = False
+    refit_law: bool = False
 
     def __post_init__(self):
         if self.start not in ("guess", "loose_fit"):
@@ -403,6 +408,17 @@ def estimate_region(
                             fit2 = None
                     if fit2 is None:
                         fit2 = fit_motion(camera, edges_fit, start)
+                        if shading_setup.refit_law and edges_fit is edges2 and fit2.converged:
+                            # the law and the limb model again at the fitted motion
+                            # (the guess's normals are a pixel or so off), and the fit
+                            limb_r = ball_limb(
+                                camera, fit2.motion, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples
+                            )
+                            if limb_r is not None:
+                                edges_r = with_limb(edges, limb_r)
+                                fit_r = fit_motion(camera, edges_r, fit2.motion)
+                                if fit_r.converged:
+                                    fit2, edges_fit, limb = fit_r, edges_r, limb_r
                 if fit2 is not None:
                     shading_pass = "not_converged"
                     if fit2.converged:
