@@ -1,6 +1,6 @@
 """Where the final fit's V.x error comes from, band by band (run on demand, not a test).
 
-    python benchmarks/decompose_efficiency.py [--point radius_m=0.11] [--seeds 32] [--variant default|noprnu|truegain]
+    python benchmarks/efficiency/decompose.py [--point radius_m=0.11] [--seeds 32] [--variant default|noprnu|truegain]
 
 For each trial of a quick-sweep point (the renders of ``bench_efficiency.py``)
 the final ``fit_motion`` call of the estimator is recorded (its selection,
@@ -34,7 +34,7 @@ from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 U_BANDS = (0.0, 0.5, 0.8, 0.9, 0.95, 0.98, 0.995, 1.0, 9.0)
 
