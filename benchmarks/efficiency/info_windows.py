@@ -31,7 +31,7 @@ for f, v in (("radius_m", 0.11), ("line_rate_hz", 140000.0)):
         if bfree:
             Hs = []
             for g in range(nb):
-                s = (end == g)[:, None]
+                s = (end == g)[:, None] if nb == 2 else np.ones((end.size, 1), dtype=bool)
                 Hs.append(np.where(s, Gb, 0.0))
             H = np.array(Hs)
             Fgb = np.einsum("pnc,qnc->pq", G * W, H)
