@@ -1,7 +1,8 @@
 """Efficiency of the fit against the Cramér–Rao bound on the quick Fig. 5 sweep's points (run on demand, not a test).
 
     python benchmarks/bench_efficiency.py [--points radius_m=0.11,line_rate_hz=140000]
-        [--seeds 32] [--variants default,pixels,noprnu,truegain] [--jobs 2] [--out FILE.npz]
+        [--seeds 32] [--first 0] [--variants default,pixels,noprnu,truegain,fine] [--jobs 2]
+        [--out FILE.npz] [--spread pixel_nodes=8,pixel_window_px=3.0]
 
 Renders the trials of the quick sweep (:func:`ballscan.experiments.fig5_quick_config`:
 the test ``test_quick_fit_within_1p5_of_cramer_rao``'s sensor, ball and
@@ -24,9 +25,6 @@ measures each image with the estimator variants:
     the same noise draws (every pixel's shot noise is drawn as one normal
     deviate here: the paired difference to ``default`` is the renderer's
     sampling error's).
-``clean``
-    The default render without noise (16-bit, the same contrast in DN):
-    the estimator's bias at the trial's phase.
 
 and prints, per point, variant and parameter (t_c, y0, z0, V.x, V.y, V.z,
 speed), the RMSE over the trials divided by the bound's 1-sigma
@@ -52,7 +50,7 @@ from dataclasses import replace  # noqa: E402
 import numpy as np  # noqa: E402
 
 PARAMS = ("t_c", "y0", "z0", "vx", "vy", "vz", "speed")
-VARIANTS = ("default", "pixels", "noprnu", "truegain", "fine", "clean")
+VARIANTS = ("default", "pixels", "noprnu", "truegain", "fine")
 # the renderer's sampling of the continuous exposure (bench_fit.py's truth)
 FINE = dict(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
 
@@ -126,8 +124,6 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
 
             rf = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=noise, seed=int(state[0]), settings=RenderSettings(**FINE))
             measure(v, rf.image)
-        elif v == "clean":
-            measure(v, rendered.clean * noise.white_dn + noise.black_dn)
         else:
             raise ValueError(f"unknown variant {v!r}")
     return out
@@ -177,15 +173,19 @@ def main() -> None:
     ap.add_argument("--variants", default="default,pixels,noprnu,truegain")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=None, help="save the trial errors (npz)")
-    ap.add_argument("--spread", default="", help="experiment: FitSettings of the final fit changed, e.g. 'pixel_nodes=16,pixel_floor=0'")
+    ap.add_argument("--spread", default="", help="experiment: FitSettings of the spread-pixel fit (estimate._SPREAD_PIXELS) changed, e.g. 'pixel_nodes=16,pixel_window_px=6.0'")
     a = ap.parse_args()
+    import ast
+
     from joblib import Parallel, delayed
+
+    from ballscan.fit import FitSettings
 
     variants = tuple(a.variants.split(","))
     spread = {}
     for item in filter(None, a.spread.split(",")):
         k, val = item.split("=")
-        spread[k] = type(getattr(__import__("ballscan.fit", fromlist=["FitSettings"]).FitSettings(), k))(eval(val))
+        spread[k] = type(getattr(FitSettings(), k))(ast.literal_eval(val))
     pts = []
     for item in a.points.split(","):
         f, v = item.split("=")
