@@ -233,6 +233,22 @@ def test_balls_touching_in_time_flagged_overlap():
     assert all("overlap" in r.flags for r in det.regions)
 
 
+def test_long_ball_with_a_ragged_edge_column_is_one_region():
+    # A long ball (400 lines) whose widest column is covered by a fraction of
+    # a pixel: its pixels cross the threshold on two stretches of lines far
+    # apart (two runs in one column), which is a ragged edge, not two balls
+    # (the quick Fig. 5 sweep's 140 000 lines/s ball was split there).
+    img, inside = _disc((500, 200), (250, 100), (200, 30), 150.0)
+    # the outermost columns (129: lines 199-301, 130: line 250) uncovered
+    # about the widest point: column 129 in two runs 40 lines apart
+    img[230:270, 129:131] = 20.0
+    det = detect(_image(_noisy(img, 1.5, 11)))
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    assert "overlap" not in r.flags
+    assert r.line_stop - r.line_start >= 395
+
+
 def test_textured_ball_with_background_level_seam_is_one_region():
     img, inside = _disc((200, 300), (100, 150), (50, 35), 150.0)
     i, j = np.mgrid[:200, :300]

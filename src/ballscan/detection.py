@@ -36,7 +36,8 @@ silhouette into pieces); a group smaller than ``min_area_px`` is rejected
 (noise and hot pixels give single pixels at this threshold). A region's mask
 is the group's pixels with holes filled along each line and each column
 (between the first and last ball pixel of a line, or of a column, is ball).
-A group whose lines or columns contain two separate runs of ball pixels is
+A group whose lines or columns contain two separate runs of ball pixels (on
+two or more neighbouring lines or columns: one alone is a ragged edge) is
 two merged balls: it is split at the gap when the two parts are cleanly
 apart along one axis, and flagged ``"overlap"`` either way.
 """
@@ -442,6 +443,26 @@ def _runs(m: np.ndarray, axis: int) -> np.ndarray:
     return np.count_nonzero(starts, axis=axis)
 
 
+def _merged_runs(m: np.ndarray, axis: int) -> np.ndarray:
+    """Lines (``axis=1``) or columns (``axis=0``) with two or more runs of True, where the next or previous one has too.
+
+    One such line or column alone is a ragged edge, not two balls: on a long
+    ball the column at its widest point is covered by a fraction of a pixel
+    for hundreds of lines, its pixels cross the threshold only now and then,
+    and gaps longer than the closing's leave it in two runs (the quick Fig. 5
+    sweep's 140 000 lines/s ball, 700 lines: 2 of 128 noisy renders split at
+    such a column into two "overlapping" balls, V.x 6 and 43 sigma of the
+    bound off).  Two touching balls give two runs on many neighbouring
+    lines or columns.
+    """
+    multi = _runs(m, axis) >= 2
+    pair = multi[:-1] & multi[1:]
+    out = np.zeros_like(multi)
+    out[:-1] |= pair
+    out[1:] |= pair
+    return out
+
+
 def _valid_run(f: np.ndarray, k: int, op: np.ufunc, axis: int) -> np.ndarray:
     """``op`` (logical or / and) over every window of ``k`` entries along ``axis`` (0 or 1), windows inside ``f`` only.
 
@@ -494,7 +515,7 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndar
     """
     closed = _close(m, r)
     for axis in (1, 0):  # first apart along the sensor (same time), then in time
-        multi = _runs(closed, axis=axis) >= 2
+        multi = _merged_runs(closed, axis)
         if not np.any(multi):
             continue
         # Gap centres along the other axis, on the lines (or columns) with two runs.
@@ -523,7 +544,7 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndar
             cols = np.flatnonzero(part.any(axis=0))
             crop = part[rows[0] : rows[-1] + 1, cols[0] : cols[-1] + 1]
             cc = _close(crop, r)
-            if np.any(_runs(cc, 1) >= 2) or np.any(_runs(cc, 0) >= 2):
+            if np.any(_merged_runs(cc, 1)) or np.any(_merged_runs(cc, 0)):
                 parts = None
                 break
             parts.append((dl + rows[0], dc + cols[0], crop))
@@ -648,7 +669,7 @@ def detect(
             in_group[np.asarray(grp) + 1] = True
             m = in_group[sub]
             closed = _close(m, gap)
-            merged = bool(np.any(_runs(closed, 1) >= 2) or np.any(_runs(closed, 0) >= 2))
+            merged = bool(np.any(_merged_runs(closed, 1)) or np.any(_merged_runs(closed, 0)))
             if merged:
                 parts = _split(m, gap, min_area_px)
                 if parts:

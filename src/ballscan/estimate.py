@@ -177,8 +177,24 @@ _FLAT_FIELD_MIN_COLUMNS = 64
 _FLAT_FIELD_MIN_LINES = 250
 # with the matched edges, the pixels of the ball's ends and of the lines whose
 # edges spread over 0.3 px or more (the sharp lines keep their matched edges):
-# bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound
-_SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3)
+# bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound.
+# 32 Gauss-Legendre nodes per piece of the exposure in the pixel model: a
+# pixel's coverage has kinks where a node's chord end crosses a pixel border,
+# so with 8 nodes the model is a staircase in the parameters (coverage up to
+# 0.024 off, moving as the nodes cross borders) and the solution lands on its
+# steps: on the quick sweep's long balls (32 seeds) V.x moved by 0.53, 0.31
+# and 0.33 sigma of the bound RMS from 8 to 32 nodes (R = 0.11 m, 4.7 m/s,
+# 140 000 lines/s), by 0.07-0.10 from 32 to 64; R = 0.11 m's V.x RMSE 1.27x
+# -> 1.14x the bound (benchmarks/bench_efficiency.py; docs/experiments.md,
+# session 10).  Windows reaching 20 px beyond half the edge spread (not 3):
+# each end's free brightness is then measured on the ball's interior, not
+# on the edge ramps' few inner pixels (with 3 px it cost V.x 4-7 % of its
+# sigma on the bound's own model, and the ramps' far tails biased it); the
+# fit minus the efficient estimator on the same noise (128 seeds), 3 -> 20
+# px: mean +0.19 / +0.51 / +0.51 -> +0.14 / +0.19 / +0.21 sigma, RMS
+# 0.55 / 0.91 / 0.83 -> 0.46 / 0.62 / 0.67 at R = 0.11 m / 4.7 m/s /
+# 140 000 lines/s (6, 12 and 40 px: between, and level with 20)
+_SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
 # ... on balls of at least this many lines with both edges: on ~11 lines (60
 # m/s at 10 kHz) a review measured its speed errors 1.45 sigma RMS (the
 # matched-edge fit's 1.11)
