@@ -75,6 +75,16 @@ def _vector(b, truth) -> tuple[np.ndarray, np.ndarray, dict]:
     return est - tru, sig, info
 
 
+def trial_scene(factor: str, value: float, trial: int):
+    """The experiment's trial ``trial`` at ``factor = value``: its spec, seed state, geometry and untextured appearance (as the experiment renders it)."""
+    from ballscan import experiments as ex
+
+    spec = _spec(factor, value, trial)
+    state = np.random.SeedSequence(spec.seed).generate_state(3, dtype=np.uint32)
+    phase = float(state[1]) / 2.0**32 - 0.5
+    return spec, state, ex.scene_geometry(spec.scene, phase), ex.appearance(spec.scene, "none", int(state[2]))
+
+
 def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
     """Render trial ``trial`` of a point and measure it with each variant."""
     from ballscan import experiments as ex
@@ -88,14 +98,10 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
         import ballscan.estimate as E
 
         E._SPREAD_PIXELS = replace(E._SPREAD_PIXELS, **spread)
-    spec = _spec(factor, value, trial)
-    state = np.random.SeedSequence(spec.seed).generate_state(3, dtype=np.uint32)
-    phase = float(state[1]) / 2.0**32 - 0.5
-    geom = ex.scene_geometry(spec.scene, phase)
+    spec, state, geom, app = trial_scene(factor, value, trial)
     truth = geom.motion
     cam = spec.scene.camera
     R = spec.scene.radius_m
-    app = ex.appearance(spec.scene, "none", int(state[2]))
     out = {"trial": trial}
     rendered = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=spec.scene.noise, seed=int(state[0]))
     noise = spec.scene.noise

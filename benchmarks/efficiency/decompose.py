@@ -73,20 +73,16 @@ def run_one(args):
     from ballscan.estimate import estimate_image
     from ballscan.images import LineImage
     from ballscan.render import render
-    from bench_efficiency import _spec
+    from bench_efficiency import trial_scene
 
     factor, value, trial, variant = args
     truebg = variant.endswith("+truebg")
     variant = variant.replace("+truebg", "")
     log = _install_recorder([])
-    spec = _spec(factor, value, trial)
-    state = np.random.SeedSequence(spec.seed).generate_state(3, dtype=np.uint32)
-    phase = float(state[1]) / 2.0**32 - 0.5
-    geom = ex.scene_geometry(spec.scene, phase)
+    spec, state, geom, app = trial_scene(factor, value, trial)
     truth = geom.motion
     cam = spec.scene.camera
     noise = spec.scene.noise
-    app = ex.appearance(spec.scene, "none", int(state[2]))
     nz = replace(noise, prnu_sigma=0.0) if variant == "noprnu" else noise
     rd = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=nz, seed=int(state[0]))
     data = rd.image.astype(float)
