@@ -125,7 +125,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background, args.refit_law)
     except ValueError as exc:
-        ap.error(f"--level-samples: {exc}")
+        ap.error(str(exc))
     names = [c for c in args.cases.split(",") if c]
     unknown = [c for c in names if c not in CASES]
     if unknown:

@@ -293,22 +293,27 @@ def test_long_ball_on_a_flat_fielded_sensor_measured_on_its_refined_background()
 def test_shading_setup_is_checked_and_its_default_is_the_estimator():
     from ballscan.estimate import ShadingSetup
 
-    with pytest.raises(ValueError, match="start"):
-        ShadingSetup(start="truth")
-    with pytest.raises(ValueError, match="level_samples"):
-        ShadingSetup(level_samples=(0, 2))
+    for bad in (dict(start="truth"), dict(level_samples=(0, 2)), dict(level_samples="32"), dict(level_samples=(2.7, 1.9)),
+                dict(level_samples=(True, True)), dict(level_samples=3), dict(refit_law="no"), dict(refined_background=1)):
+        with pytest.raises(ValueError):
+            ShadingSetup(**bad)
+    assert ShadingSetup(level_samples=[8, 4]).level_samples == (8, 4)  # stored as a tuple: hashable
+    hash(ShadingSetup(level_samples=[8, 4]))
     cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
     m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
     r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
     img = LineImage(r.image.astype(float), 255.0, 8, "shaded")
     plain = estimate_image(img, cam, 0.0335).balls[0]
-    same = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup()).balls[0]
-    assert plain.velocity_mps == same.velocity_mps and plain.position_m == same.position_m
+    # the estimator before ShadingSetup existed (session 9's final code, 72c03ba) on this image
+    # (pinned: a change of the default estimator updates it knowingly)
+    assert plain.velocity_mps == pytest.approx((12.05793171784064, 0.3408214486809053, -0.47047512671892494), rel=0, abs=1e-6)
+    assert not plain.extra["shading_refit"] and not plain.extra["background_refined"]
     other = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup("loose_fit", (8, 4), True)).balls[0]
-    assert other.extra["shading_pass"] == "used" and other.velocity_mps != plain.velocity_mps
+    assert other.extra["shading_pass"] == "used" and other.extra["background_refined"]
     refit = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup(refit_law=True)).balls[0]
-    assert refit.extra["shading_pass"] == "used" and refit.velocity_mps != plain.velocity_mps
-    # the same ball within a few of its sigmas either way
+    assert refit.extra["shading_pass"] == "used" and refit.extra["shading_refit"]
+    # the same ball along and across the sensor within a few of its sigmas either way (V.z's is metres per second)
     for e in (other, refit):
-        dv = np.subtract(e.velocity_mps, plain.velocity_mps)
-        assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps))
+        assert e.velocity_mps != plain.velocity_mps
+        dv = np.subtract(e.velocity_mps, plain.velocity_mps)[:2]
+        assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps)[:2])

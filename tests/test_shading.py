@@ -411,7 +411,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
     some forty end lines whose covered part is a thin cap seen over a part
     of the exposure; 3 x 2 samples over the exposure and the pixel's height
     put their levels 1.25 % RMS (4.5 % worst) off the renderer's (finest
-    sampling), 8 x 4 0.68 % (1.6 %); 32 x 16 no better (0.56 %, 1.7 %).
+    sampling), 8 x 4 0.68 % (1.6 %); 32 x 16 little better in RMS, no better at worst (0.56 %, 1.7 %).
     With the default the end lines' levels carry a sigma of 0.1-0.3 %:
     part of the shaded balls' bias (docs/benchmarks.md, calibration).
     """

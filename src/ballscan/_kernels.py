@@ -1184,8 +1184,9 @@ def middle_values(a: np.ndarray):
     Ranks ``(n - 1) // 2`` and ``n // 2`` (the same value for odd ``n``) by
     a selection (numpy's ``partition`` of a copy, ``a`` is not changed):
     linear time, where the full sort it replaces was ``n log n`` (on the
-    9 000 interior differences of a stream ball's edges 0.28 ms against
-    0.03 ms).  Order statistics are values of ``a``: the same as a sort's.
+    5 335 interior differences of a stream ball's edges 119 us against
+    15 us).  Order statistics are values of ``a``: the same as a sort's
+    (to the sign of a zero: -0.0 and 0.0 compare equal).
     """
     n = a.shape[0]
     for i in range(n):

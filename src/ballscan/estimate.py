@@ -20,6 +20,7 @@ an :class:`~ballscan.results.EstimateReport` with one
 from __future__ import annotations
 
 import math
+import numbers
 import time
 from dataclasses import dataclass, replace
 
@@ -98,16 +99,15 @@ def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
     return bool(np.any(seg > 1.5 * period))
 
 
-
 @dataclass(frozen=True)
 class ShadingSetup:
     """How the fit's shading-aware second pass is set up (the defaults are the estimator's).
 
     The other settings are diagnostics of the shaded balls' bias
     (``benchmarks/bench_calibration.py --start, --level-samples,
-    --refined-background``; docs/benchmarks.md, calibration, session 10),
-    not yet the default: each moves the reported sigmas' calibration
-    closer on some cases and not on others.
+    --refined-background, --refit-law``; docs/benchmarks.md, calibration,
+    session 10), not yet the default: each moves the reported sigmas'
+    calibration closer on some cases and not on others.
 
     Attributes
     ----------
@@ -115,7 +115,7 @@ class ShadingSetup:
         The motion the shading law and the limb model are built at: the
         key-point guess (a loose fit of the model-free edges only where the
         guess is degenerate), or always that loose fit (no outlier rounds,
-        cost tolerance 1e-3).
+        cost tolerance 1e-3; the guess where it does not converge).
     level_samples : (int, int)
         Samples over the exposure and across the pixel's height of the
         ends' mean brightness (:meth:`ballscan.shading.LimbProfile.line_levels`).
@@ -126,7 +126,8 @@ class ShadingSetup:
     refit_law : bool
         On the window edges' path, fit the shading law and the limb model
         again at the fitted motion and fit once more from there (a
-        converged refit replaces the fit; about 3 ms more per ball).
+        converged refit replaces the fit, ``extra["shading_refit"]``; about
+        4-5 ms more per stream crop, docs/benchmarks.md).
     """
 
     start: str = "guess"
@@ -137,8 +138,17 @@ class ShadingSetup:
     def __post_init__(self):
         if self.start not in ("guess", "loose_fit"):
             raise ValueError(f"start: expected 'guess' or 'loose_fit', got {self.start!r}")
-        if len(self.level_samples) != 2 or min(int(k) for k in self.level_samples) < 1:
-            raise ValueError(f"level_samples: expected two positive counts, got {self.level_samples!r}")
+        ls = self.level_samples
+        if (
+            not isinstance(ls, (tuple, list))
+            or len(ls) != 2
+            or not all(isinstance(k, numbers.Integral) and not isinstance(k, bool) and k >= 1 for k in ls)
+        ):
+            raise ValueError(f"level_samples: expected two positive integers, got {ls!r}")
+        object.__setattr__(self, "level_samples", (int(ls[0]), int(ls[1])))
+        for name in ("refined_background", "refit_law"):
+            if not isinstance(getattr(self, name), bool):
+                raise ValueError(f"{name}: expected True or False, got {getattr(self, name)!r}")
 
 
 def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, radius_m: float, t: np.ndarray) -> InitialGuess:
@@ -258,6 +268,10 @@ def estimate_region(
     edges spread over 0.3 px in place of their areas and edges
     (``extra["pixels"]`` "spread"; on balls of at least 20 lines with both
     edges; the matched-edge fit where it does not converge).
+    ``shading_setup`` holds the shading pass's diagnostic settings
+    (:class:`ShadingSetup`; the default is the estimator described here);
+    with ``refined_background`` and no ``background_dn`` the region's
+    background is refined here.
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -316,7 +330,10 @@ def estimate_region(
 
     t_e = time.perf_counter()
     others = [r for r in detection.regions if r.index != region.index]
-    bg_full = background_dn if background_dn is not None else _full_background(detection)
+    if background_dn is not None:
+        bg_full = background_dn
+    else:
+        bg_full = _full_background(refine_background(image.data, detection) if shading_setup.refined_background else detection)
     edges = measure_edges(
         image.data,
         region,
@@ -339,6 +356,8 @@ def estimate_region(
     ff_used = False
     # whether they were measured on the ball's columns' background away from it (refine_background)
     bg_refined = False
+    # whether ShadingSetup.refit_law's refit replaced the fit
+    refit_used = False
     fit = None
     if shading or pixels:
         # The shading model needs the motion only roughly (its normals and edge
@@ -427,6 +446,7 @@ def estimate_region(
                         if shading_setup.refit_law and edges_fit is edges2 and fit2.converged:
                             # the law and the limb model again at the fitted motion
                             # (the guess's normals are a pixel or so off), and the fit
+                            t_r = time.perf_counter()
                             limb_r = ball_limb(
                                 camera, fit2.motion, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples
                             )
@@ -434,7 +454,9 @@ def estimate_region(
                                 edges_r = with_limb(edges, limb_r)
                                 fit_r = fit_motion(camera, edges_r, fit2.motion)
                                 if fit_r.converged:
-                                    fit2, edges_fit, limb = fit_r, edges_r, limb_r
+                                    fit2, edges_fit, limb, refit_used = fit_r, edges_r, limb_r, True
+                            # (the adopted refit's own time is the final fit's, time_fit_s)
+                            t_shading += time.perf_counter() - t_r - (fit2.run_time_s if refit_used else 0.0)
                 if fit2 is not None:
                     shading_pass = "not_converged"
                     if fit2.converged:
@@ -498,7 +520,8 @@ def estimate_region(
             "edges": edges.edges_method,
             "column_gain_sigma": gain_sigma,
             "flat_fielded": ff_used and edges.edges_method == "matched",
-            "background_refined": bg_refined and edges.edges_method == "matched",
+            "background_refined": (bg_refined and edges.edges_method == "matched") or shading_setup.refined_background,
+            "shading_refit": refit_used,
             "shading": None
             if shading_model is None
             else {

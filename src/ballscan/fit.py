@@ -607,7 +607,10 @@ class FitSettings:
     pixel_nodes : int
         Gauss-Legendre nodes per piece of the exposure in the pixel model
         (3 leaves the spread edges' ramps a staircase: a 0.15 m/s speed bias
-        on the 30-degree benchmark).
+        on the 30-degree benchmark).  8 still does, on long balls: the
+        default fit's spread-pixel pass takes 32 (``estimate._SPREAD_PIXELS``:
+        V.x moved 0.3-0.5 sigma from 8 to 32 on the quick Fig. 5 sweep's
+        long balls, 0.07-0.10 from 32 to 64); the opt-in pixel fit keeps 8.
     pixel_jacobian : {"analytic", "fd"}
         The pixel residuals' Jacobian: exact, by forward-mode derivatives in
         one compiled pass (:func:`ballscan._kernels.pixel_residuals_jacobian`;

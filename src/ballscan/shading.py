@@ -248,8 +248,6 @@ class LimbProfile:
         Lines whose edge spread is below this are sampled once per position.
     n_time, n_height : int
         Samples over the exposure and across the pixel's height elsewhere.
-    level_n_time, level_n_height : int
-        The same for the ends' mean brightness (:meth:`line_levels`).
     level_rel_sigma : float
         Relative 1-sigma of the law's prediction of a line's mean brightness
         over ``level_ref_px`` pixels (texture, seams, the law's own error;
@@ -258,6 +256,9 @@ class LimbProfile:
         Length over which ``level_rel_sigma`` was measured, pixels; a line
         covered over ``c`` pixels gets ``level_rel_sigma * sqrt(level_ref_px
         / c)`` (:meth:`line_levels`): texture averages out over a line.
+    level_n_time, level_n_height : int
+        Samples over the exposure and across the pixel's height for the
+        ends' mean brightness (:meth:`line_levels`).
     """
 
     shading: ShadingModel
