@@ -330,10 +330,7 @@ def estimate_region(
 
     t_e = time.perf_counter()
     others = [r for r in detection.regions if r.index != region.index]
-    if background_dn is not None:
-        bg_full = background_dn
-    else:
-        bg_full = _full_background(refine_background(image.data, detection) if shading_setup.refined_background else detection)
+    bg_full = background_dn if background_dn is not None else _shading_background(image, detection, shading_setup)
     edges = measure_edges(
         image.data,
         region,
@@ -531,6 +528,11 @@ def estimate_region(
             },
         },
     )
+
+
+def _shading_background(image: LineImage, detection: Detection, setup: ShadingSetup) -> np.ndarray:
+    """The background every edge of the image is measured on (DN, per pixel): the detector's, or refined (``setup.refined_background``)."""
+    return _full_background(refine_background(image.data, detection) if setup.refined_background else detection)
 
 
 def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=True, level_samples=(3, 2)):
@@ -782,9 +784,7 @@ def estimate_image(
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image)
-    bg = None
-    if method == "fit" and det.regions:
-        bg = _full_background(refine_background(image.data, det) if shading_setup.refined_background else det)
+    bg = _shading_background(image, det, shading_setup) if method == "fit" and det.regions else None
     balls = [
         estimate_region(
             image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field,
