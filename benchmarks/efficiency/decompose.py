@@ -132,29 +132,39 @@ def run_one(args):
     return {"J": J[:, :6], "r0": r0, "kind": kinds, "u": u, "err": x[:6] - th_true, "rep_sig": b.velocity_sigma_mps[0] if b else np.nan}
 
 
-def pixel_fisher_by_line(factor, value):
-    """Per-line pixel Fisher information of the point's nominal motion (gains known) and the line's |u|."""
+def nominal_pixel_model(factor, value, nodes):
+    """The bound's pixel model of the point's nominal motion (gains known), on the lines it keeps (presence > 0).
+
+    Returns a dict: ``scene``, ``motion``, ``cov`` and ``dcov`` (the pixels'
+    coverage and its derivatives, ``precision._pixel_model`` with ``nodes``),
+    ``me`` (the averaged model, 8 nodes) and ``keep`` (its lines kept),
+    ``t`` (their times, s), ``var`` (the pixels' noise variance, DN^2) and
+    ``G`` (the DN derivatives, (6, lines, columns)).
+    """
     from ballscan import experiments as ex
+    from ballscan.fit import averaged_model
     from ballscan.precision import _n_lines_for, _pixel_model
     from bench_efficiency import _spec
 
     sc = _spec(factor, value, 0).scene
     m = ex.scene_geometry(sc, 0.0).motion
     cam, nse = sc.camera, sc.noise
-    cov, dcov = _pixel_model(cam, m, 8)
-    # the lines _pixel_model kept: presence > 0
-    from ballscan.fit import averaged_model
-
-    n_lines = _n_lines_for(cam, m)
-    tt = np.arange(n_lines) / cam.line_rate_hz
+    cov, dcov = _pixel_model(cam, m, nodes)
+    tt = np.arange(_n_lines_for(cam, m)) / cam.line_rate_hz
     me = averaged_model(cam, m.to_params()[None], m.radius_m, tt, m.acceleration_mps2, 8)
-    tt = tt[me.presence[0] > 0]
+    keep = me.presence[0] > 0
     dy = sc.ball_level - sc.background_level
     y = sc.background_level + dy * cov
     var = nse.read_dn**2 + 1 / 12 + y * nse.white_dn**2 / nse.full_well_e
-    G = nse.white_dn * dy * dcov
-    Fi = np.einsum("pnc,qnc->npq", G / var, G)
-    u = np.abs(m.velocity_mps[0] * (tt - m.t_c_s)) / m.radius_m
+    return dict(scene=sc, motion=m, cov=cov, dcov=dcov, me=me, keep=keep, t=tt[keep], var=var, G=nse.white_dn * dy * dcov)
+
+
+def pixel_fisher_by_line(factor, value):
+    """Per-line pixel Fisher information of the point's nominal motion (gains known) and the line's |u|."""
+    pm = nominal_pixel_model(factor, value, 8)
+    m, G = pm["motion"], pm["G"]
+    Fi = np.einsum("pnc,qnc->npq", G / pm["var"], G)
+    u = np.abs(m.velocity_mps[0] * (pm["t"] - m.t_c_s)) / m.radius_m
     return Fi, u
 
 

@@ -1,29 +1,17 @@
 """CRB of V.x from subsets of pixels, with the ball's brightness known or free per end."""
 import sys, math
 sys.path.insert(0, __import__('os').path.join(__import__('os').path.dirname(__file__), '..'))
+sys.path.insert(0, __import__('os').path.dirname(__file__))
 import numpy as np
-from bench_efficiency import _spec
-from ballscan import experiments as ex
-from ballscan.precision import _pixel_model, _n_lines_for
-from ballscan.fit import averaged_model
+from decompose import nominal_pixel_model
 
 for f, v in (("radius_m", 0.11), ("line_rate_hz", 140000.0)):
-    sc = _spec(f, v, 0).scene
-    m = ex.scene_geometry(sc, 0.0).motion
-    cam, nse = sc.camera, sc.noise
-    cov, dcov = _pixel_model(cam, m, 32)
-    n_lines = _n_lines_for(cam, m)
-    tt = np.arange(n_lines) / cam.line_rate_hz
-    me = averaged_model(cam, m.to_params()[None], m.radius_m, tt, m.acceleration_mps2, 8)
-    keep = me.presence[0] > 0
-    tt = tt[keep]
+    pm = nominal_pixel_model(f, v, 32)
+    sc, m, cov, me, keep, tt, var, G = (pm[k] for k in ("scene", "motion", "cov", "me", "keep", "t", "var", "G"))
+    nse = sc.noise
     L, R, sp, pres = me.left_px[0, keep], me.right_px[0, keep], np.nan_to_num(me.spread_px[0, keep]), me.presence[0, keep]
     lo = np.nanmin(L); cols = np.arange(math.floor(lo) - 2, math.floor(lo) - 2 + cov.shape[1], dtype=float)
-    dy = sc.ball_level - sc.background_level
-    y = sc.background_level + dy * cov
-    var = nse.read_dn**2 + 1 / 12 + y * nse.white_dn**2 / nse.full_well_e
-    G = nse.white_dn * dy * dcov                   # (6, N, C)
-    Gb = nse.white_dn * dy * cov                   # brightness derivative (relative B)
+    Gb = nse.white_dn * (sc.ball_level - sc.background_level) * cov  # brightness derivative (relative B)
     end = (tt > m.t_c_s)
     def crb(mask, bfree, nb=2):
         W = mask / var
