@@ -1038,8 +1038,6 @@ def warm_up() -> None:
     # the detection's and the edges' loops (section at the end of the module)
     mode_seek(np.zeros((1, 2), dtype=np.float32), np.zeros(1), np.ones(1), 0.5)
     running_median(np.zeros(3), 3)
-    middle_values(np.zeros(2))
-    middle_values(np.zeros(2, dtype=np.float32))
     prof = np.zeros((1, 8))
     k0 = np.zeros(1, dtype=np.int64)
     k1 = np.full(1, 7, dtype=np.int64)
@@ -1175,33 +1173,6 @@ def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float)
 def _nan_last_less(a: float, b: float) -> bool:
     """``a`` sorts before ``b`` in numpy's order (NaN last)."""
     return a < b or (b != b and a == a)
-
-
-@_jit()
-def middle_values(a: np.ndarray):
-    """The two middle order statistics of the 1-D ``a`` (:func:`ballscan.detection.median`), and whether it holds a NaN.
-
-    Ranks ``(n - 1) // 2`` and ``n // 2`` (the same value for odd ``n``) by
-    a selection (numpy's ``partition`` of a copy, ``a`` is not changed):
-    linear time, where the full sort it replaces was ``n log n`` (on the
-    5 335 interior differences of a stream ball's edges 119 us against
-    15 us).  Order statistics are values of ``a``: the same as a sort's
-    (to the sign of a zero: -0.0 and 0.0 compare equal).
-    """
-    n = a.shape[0]
-    for i in range(n):
-        if math.isnan(a[i]):
-            return a[i], a[i], True
-    h = n // 2
-    p = np.partition(a, h)
-    hi = p[h]
-    lo = hi
-    if n % 2 == 0:
-        lo = p[0]
-        for i in range(1, h):
-            if p[i] > lo:
-                lo = p[i]
-    return lo, hi, False
 
 
 @_jit()
