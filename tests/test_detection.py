@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.detection import background_at, detect, region_background
+from ballscan.detection import ColumnModel, background_at, detect, region_background
 from ballscan.images import LineImage, load_image
 
 SCENES = Path(__file__).parent / "data" / "scenes"
@@ -211,6 +211,43 @@ def test_slow_illumination_ramp():
     assert len(det.regions) == 1
     bg = background_at(det, slice(0, n), slice(0, w))
     assert np.abs(bg[[0, -1], :] - 20.0 * ramp[[0, -1]]).max() < 0.6
+
+
+def test_known_columns_are_used_and_only_the_drift_is_measured():
+    # a ball covering 160 of 200 lines of its columns, a column pattern and a
+    # 30 % illumination ramp: with the columns' level and noise given, they
+    # are the detection's, and the ramp is measured on the image
+    n, w = 200, 300
+    cols = 20.0 + 3.0 * np.sin(np.arange(w) / 7.0)
+    ramp = np.linspace(1.0, 1.3, n)[:, None]
+    img, inside = _disc((n, w), (100, 150), (80, 30), 120.0)
+    img = np.where(inside, img, cols[None, :] * ramp)
+    data = _noisy(img, 1.5, 11)
+    known = ColumnModel(cols, np.full(w, 1.5))
+    det = detect(_image(data), columns=known)
+    assert np.array_equal(det.background_dn, cols)
+    assert np.allclose(det.noise_dn, 1.5)
+    assert len(det.regions) == 1 and det.regions[0].line_stop - det.regions[0].line_start >= 159
+    bg = background_at(det, slice(0, n), slice(0, w))
+    # each line's gain from its ~200 background pixels (1.5 DN noise)
+    assert np.abs(bg - cols[None, :] * ramp).mean() < 0.15 and np.abs(bg - cols[None, :] * ramp).max() < 0.7
+    # the image's own model of the same image: the ball's columns read high
+    own = detect(_image(data))
+    ball_cols = slice(125, 175)
+    assert np.abs(background_at(own, slice(0, n), ball_cols) - (cols[None, :] * ramp)[:, ball_cols]).mean() > np.abs(bg[:, ball_cols] - (cols[None, :] * ramp)[:, ball_cols]).mean()
+
+
+def test_column_model_validated():
+    with pytest.raises(ValueError, match="one length"):
+        ColumnModel(np.zeros(5), np.ones(4))
+    with pytest.raises(ValueError, match="finite"):
+        ColumnModel(np.array([1.0, np.nan]), np.ones(2))
+    with pytest.raises(ValueError, match="finite"):
+        ColumnModel(np.ones(3), np.array([1.0, -1.0, 1.0]))
+    m = ColumnModel(np.arange(10.0), np.ones(10))
+    assert np.array_equal(m.columns(2, 5).background_dn, [2.0, 3.0, 4.0])
+    with pytest.raises(ValueError, match="a model of 10 columns for an image of 12"):
+        detect(_image(np.zeros((20, 12))), columns=m)
 
 
 def test_two_touching_balls_flagged_overlap():

@@ -26,6 +26,10 @@ background of pixel ``(i, j)`` is modelled as
   of the column's background values / 1.349, floored at
   ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
   at a fraction of the image's median noise.
+* A caller that already knows the columns' level and noise (the stream
+  engine's running model, learned on thousands of lines before the ball)
+  passes them as a :class:`ColumnModel`: the per-column mode seeking is
+  skipped, and only the per-line drift is estimated from the image.
 
 Regions
 -------
@@ -54,6 +58,7 @@ from .images import LineImage
 
 __all__ = [
     "BallRegion",
+    "ColumnModel",
     "Detection",
     "detect",
     "background_at",
@@ -118,6 +123,34 @@ class BallRegion:
     def cols(self) -> slice:
         """Slice of the box along the sensor (columns)."""
         return slice(self.col_start, self.col_stop)
+
+
+@dataclass(frozen=True)
+class ColumnModel:
+    """A known per-column background (the stream engine's running model).
+
+    Attributes
+    ----------
+    background_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column background level, DN, at the
+        line gain (or offset) of the lines the model was learned on.
+    noise_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column noise sigma, DN.
+    """
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+
+    def __post_init__(self) -> None:
+        b, s = np.asarray(self.background_dn), np.asarray(self.noise_dn)
+        if b.ndim != 1 or s.shape != b.shape or b.size < 2:
+            raise ValueError(f"ColumnModel: background_dn and noise_dn must be 1-D of one length >= 2, got {b.shape} and {s.shape}")
+        if not (np.all(np.isfinite(b)) and np.all(np.isfinite(s)) and np.all(s >= 0)):
+            raise ValueError("ColumnModel: levels must be finite and noise sigmas finite and >= 0")
+
+    def columns(self, start: int, stop: int) -> "ColumnModel":
+        """The model of sensor pixels ``[start, stop)`` (a crop's columns)."""
+        return ColumnModel(self.background_dn[start:stop], self.noise_dn[start:stop])
 
 
 @dataclass(frozen=True)
@@ -328,17 +361,35 @@ def _global_noise(x: np.ndarray) -> float:
 # Background model
 # --------------------------------------------------------------------------
 def _background(
-    x: np.ndarray, noise_floor_dn: float, first_pass_k: float
+    x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
     n, w = x.shape
     # Column subsample for per-line statistics: a few hundred columns give a
     # per-line level to a small fraction of the noise, at a fraction of the cost.
     step = max(1, w // 512)
     xs = x[:, ::step]
-    sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
-
     # Per-line level from the line medians: balls cover a minority of a line.
     level = _row_median(xs)
+    if known is None:
+        sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
+        b, sig, gain0, offset0, use_gain = _column_modes(x, level, sigma0, noise_floor_dn)
+    else:
+        b = np.array(known.background_dn, dtype=np.float64)
+        sig = np.maximum(np.asarray(known.noise_dn, dtype=np.float64), noise_floor_dn)
+        # the known levels hold the drift of the lines they were learned on:
+        # this image's lines are measured relative to them
+        ref = float(median(b[::step]))
+        use_gain = ref > 10.0 * max(float(median(sig)), noise_floor_dn) and float(level.min()) > 0.0
+        gain0 = level / ref if use_gain else np.ones(n)
+        offset0 = np.zeros(n) if use_gain else level - ref
+    return _line_drift(xs, step, b, sig, gain0, offset0, use_gain, noise_floor_dn, first_pass_k)
+
+
+def _column_modes(
+    x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
+    """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
+    n, w = x.shape
     ref = float(median(level))
     use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
     # Per-column mode, started from the neighbours' level, on the columns with
@@ -372,7 +423,22 @@ def _background(
         b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
         b[weak] = b2
         sig[weak] = sig2
+    return b, sig, gain0, offset0, use_gain
 
+
+def _line_drift(
+    xs: np.ndarray,
+    step: int,
+    b: np.ndarray,
+    sig: np.ndarray,
+    gain0: np.ndarray,
+    offset0: np.ndarray,
+    use_gain: bool,
+    noise_floor_dn: float,
+    first_pass_k: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+    """Per-line gain or offset from the background pixels of the subsampled columns ``xs``, and the floored noise."""
+    n = xs.shape[0]
     # First-pass ball mask on the subsampled columns, then per-line drift from
     # background pixels only.
     bs = b[::step]
@@ -623,6 +689,7 @@ def detect(
     min_area_px: int = 12,
     merge_gap_px: int = 6,
     noise_floor_dn: float = 0.5,
+    columns: ColumnModel | None = None,
 ) -> Detection:
     """Find the balls in a line-scan image.
 
@@ -641,6 +708,11 @@ def detect(
     noise_floor_dn : float, optional
         Smallest noise sigma (DN) used for thresholds: keeps a noise-free or
         flat image from dividing by zero.
+    columns : ColumnModel, optional
+        The columns' background level and noise when they are known (the
+        stream engine's model of a crop's columns): used as they are (the
+        noise floored as the detector's own), and only the per-line drift is
+        estimated from the image.
 
     Returns
     -------
@@ -654,13 +726,15 @@ def detect(
     if x.ndim != 2 or x.shape[0] < 2 or x.shape[1] < 2:
         raise ValueError(f"image must be 2-D with at least 2 lines and 2 columns, got shape {x.shape}")
     n, w = x.shape
+    if columns is not None and np.shape(columns.background_dn) != (w,):
+        raise ValueError(f"columns: a model of {np.shape(columns.background_dn)[0]} columns for an image of {w}")
     sat = float(image.saturation_dn)
     floor = max(float(noise_floor_dn), 1e-12)
 
     # float32 for the whole-image passes: exact for 16-bit integers, and the
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
-    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
+    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0, known=columns)
     # |x - background| in one float32 buffer
     resid32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
     if model == "offset":

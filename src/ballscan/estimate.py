@@ -28,7 +28,7 @@ import numpy as np
 from scipy import ndimage as ndi
 
 from .camera import LineScanCamera, line_times
-from .detection import BallRegion, Detection, background_at, detect, median, region_background
+from .detection import BallRegion, ColumnModel, Detection, background_at, detect, median, region_background
 from .edges import matched_edges, measure_edges, with_limb
 from .errors import ImageFileError
 from .fit import FitSettings, fit_motion, propagate
@@ -743,6 +743,7 @@ def estimate_image(
     matched: bool = True,
     flat_field: bool = True,
     shading_setup: ShadingSetup = ShadingSetup(),
+    columns: ColumnModel | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
@@ -768,6 +769,10 @@ def estimate_image(
         :func:`estimate_region`).
     shading_setup : ShadingSetup
         The shading pass's diagnostic settings (see :class:`ShadingSetup`).
+    columns : ColumnModel, optional
+        The image columns' background level and noise when they are known
+        (the stream engine's, for an event's crop); else :func:`detect`
+        learns them on the image.
     """
     if method not in METHODS:
         raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
@@ -783,7 +788,7 @@ def estimate_image(
         # is then the camera's actual rate (encoder-triggered lines)
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
-    det = detect(image)
+    det = detect(image, columns=columns)
     bg = _shading_background(image, det, shading_setup) if method == "fit" and det.regions else None
     balls = [
         estimate_region(

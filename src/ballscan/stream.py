@@ -31,7 +31,13 @@ Pipeline per chunk
    before and after and the ball's columns plus a margin, and handed to
    :func:`ballscan.estimate.estimate_image` with a camera whose principal
    point is shifted by the crop's first column (the same camera frame, so
-   positions and velocities need no correction) and the lines' timestamps.
+   positions and velocities need no correction), the lines' timestamps, and
+   the engine's background and noise of the crop's columns (a
+   :class:`ballscan.detection.ColumnModel`, ``background="engine"``):
+   learned on thousands of clean lines, where the crop alone holds a few
+   dozen in the ball's columns and its own mode reads high there (limb
+   pixels in its window; the speed then reads 1.4-2.5 sigma high on the
+   benchmark's balls, docs/benchmarks.md), and 0.3 ms less per ball.
    :func:`process_stream` yields the result at once, before the rest of the
    chunk is tested: the latency does not include the lines after the piece
    that ended the event.
@@ -48,7 +54,7 @@ block (robust per-column mode and noise; balls in it do not bias it).
 Slow illumination drift is followed by the per-block EMA (the mean of the
 per-line offsets goes into the level, their spread is kept out of the
 noise); the per-line gain and offset used by the precise estimate are those
-:func:`detect` estimates on the crop.
+:func:`detect` estimates on the crop relative to the engine's columns.
 """
 
 from __future__ import annotations
@@ -65,7 +71,7 @@ import numpy as np
 
 from . import _kernels
 from .camera import LineScanCamera
-from .detection import detect, median
+from .detection import ColumnModel, detect, median
 from .errors import BallscanError
 from .images import LineImage
 from .results import BallEstimate
@@ -181,6 +187,11 @@ class StreamConfig:
         The per-line offset is clipped to this many typical noise sigmas, so
         that a ball covering most of the sampled columns cannot move the
         band onto itself.
+    background : {"engine", "crop"}
+        The background the estimate measures a crop on: the engine's
+        running model of its columns (level and noise; the per-line drift is
+        still measured on the crop), or the one :func:`detect` learns on the
+        crop alone, as ``ballscan estimate`` would on the crop's image.
     """
 
     k_sigma: float = 4.0
@@ -203,6 +214,7 @@ class StreamConfig:
     line_offset: bool = True
     offset_columns: int = 64
     max_line_offset_sigma: float = 3.0
+    background: str = "engine"
 
     def __post_init__(self) -> None:
         def need(ok: bool, name: str, why: str) -> None:
@@ -225,6 +237,7 @@ class StreamConfig:
         need(self.method in ("fit", "paper"), "method", "must be 'fit' or 'paper'")
         need(isinstance(self.offset_columns, (int, np.integer)) and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
         need(self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
+        need(self.background in ("engine", "crop"), "background", "must be 'engine' or 'crop'")
 
 
 @dataclass(frozen=True)
@@ -251,6 +264,11 @@ class StreamResult:
         The crop's stored values (only with ``keep_crops``).
     crop_times_s : numpy.ndarray or None
         The crop's line times, seconds (only with ``keep_crops``).
+    crop_columns : ColumnModel or None
+        The engine's background and noise of the crop's columns that the
+        estimate used (None with ``background="crop"`` and for an event that
+        was not estimated): ``estimate_crop(crop, crop_times_s, ...,
+        columns=crop_columns)`` gives the same estimate again.
     """
 
     estimate: BallEstimate
@@ -262,6 +280,7 @@ class StreamResult:
     crop: np.ndarray | None = field(default=None, repr=False, compare=False)
     crop_times_s: np.ndarray | None = field(default=None, repr=False, compare=False)
     handoff_s: float = 0.0
+    crop_columns: ColumnModel | None = field(default=None, repr=False, compare=False)
 
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
         """geometry.md estimate keys plus ``source``, ``first_line``, ``last_line`` (stream lines)."""
@@ -774,9 +793,14 @@ class StreamEngine:
             # timestamps are given; without a timestamps file the exact period is known.
             exposure = 1.0 / self.camera.line_rate_hz
         camera = crop_camera(self.camera, c0, c1, exposure_s=exposure)
-        args = (crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched)
+        # the model is frozen while the event lasts: these are its columns as the ball found them
+        columns = ColumnModel(self._bg[c0:c1].copy(), np.sqrt(self._var[c0:c1])) if cfg.background == "engine" else None
+        args = (
+            crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched,
+            columns,
+        )
         handoff = time.perf_counter() - self._chunk_arrival
-        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit)
+        job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit, columns=columns)
         self._n_events += 1
         if self._executor is None:
             job.balls = estimate_crop(*args)
@@ -816,6 +840,7 @@ class StreamEngine:
                         job.crop.copy() if cfg.keep_crops and job.crop is not None else None,
                         job.times.copy() if cfg.keep_crops and job.times is not None else None,
                         job.handoff,
+                        job.columns,
                     )
                 )
 
@@ -835,6 +860,7 @@ class _Job:
     last_hit: int
     balls: tuple = ()
     future: Any = None
+    columns: ColumnModel | None = None
 
 
 def estimate_crop(
@@ -848,6 +874,7 @@ def estimate_crop(
     name: str,
     shading: bool = True,
     matched: bool = True,
+    columns: ColumnModel | None = None,
 ) -> tuple[BallEstimate, ...]:
     """Estimate the balls of one event crop (a top-level function: runs in worker processes too).
 
@@ -868,6 +895,9 @@ def estimate_crop(
         The fit's shading-aware second pass.
     matched : bool
         Matched edges where the ball and the sensor allow them.
+    columns : ColumnModel, optional
+        The crop columns' background and noise (the engine's model), else
+        learned on the crop.
 
     Returns
     -------
@@ -881,7 +911,7 @@ def estimate_crop(
 
     image = LineImage(crop.astype(np.float64), saturation_dn, bits, name)
     try:
-        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched).balls
+        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched, columns=columns).balls
     except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
         return (BallEstimate.undetermined_estimate(method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 

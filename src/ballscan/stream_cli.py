@@ -171,6 +171,7 @@ def watch(
     method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
     shading: Annotated[bool, typer.Option("--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate).")] = True,
     matched: Annotated[bool, typer.Option("--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on).")] = True,
+    background: Annotated[str, typer.Option("--background", help="Background a ball's crop is measured on: 'engine' (the stream's running model of its columns, default) or 'crop' (learned on the crop alone, as 'ballscan estimate' on the saved crop).")] = "engine",
     k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
     margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
@@ -192,7 +193,7 @@ def watch(
     src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, keep_crops=save_events is not None)
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, background=background, keep_crops=save_events is not None)
     stream = sys.stdout
     show = sys.stderr.isatty() if status is None else status
     st = _Status(bool(show))
