@@ -56,24 +56,24 @@ def background_chunks(n_chunks: int, seed: int = 0) -> list[np.ndarray]:
     return [apply_sensor(clean, SensorNoise(), rng)[0] for _ in range(n_chunks)]
 
 
-def ball_chunk(line_in_chunk: float, seed: int) -> tuple[np.ndarray, int]:
-    """A chunk with one ball crossing at ``line_in_chunk``; returns it and the ball's last line in it."""
+def ball_chunk(line_in_chunk: float, seed: int) -> tuple[np.ndarray, BallMotion]:
+    """A chunk with one ball crossing at ``line_in_chunk``; returns it and the ball's motion (times from the chunk's first line)."""
     rng = np.random.default_rng(seed)
     m = BallMotion(0.0335, line_in_chunk / RATE, (0.0, rng.uniform(-0.3, 0.3), 4.0), (40.0, 2.0, -3.0))
     r = render(CAMERA, [(m, Appearance.flat(0.8))], CHUNK, background_level=0.12, noise=SensorNoise(), seed=seed)
-    last = int(np.flatnonzero(r.coverage.any(axis=1))[-1])
-    return r.image, last
+    return r.image, m
 
 
 def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: StreamConfig | None = None) -> dict:
     """Feed ``n_chunks`` chunks through :func:`process_stream` (the path of ``ballscan watch``)."""
     bgs = background_chunks(8)
-    balls: dict[int, tuple[np.ndarray, int]] = {}
+    balls: dict[int, tuple[np.ndarray, BallMotion]] = {}
     if ball_every_lines:
         every = max(ball_every_lines // CHUNK, 1)
         for k in range(every // 2, n_chunks, every):
             balls[k] = ball_chunk(400.0 + 37 * (k % 7), seed=k)
     latencies = []
+    z_vx = []  # V.x error over its sigma, against the rendered truth
     handoffs = []
     fit_times = []
     rest = []
@@ -95,6 +95,11 @@ def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: Stre
         handoffs.append(r.handoff_s)
         fit_times.append(r.estimate.run_time_s)
         rest.append(r.latency_s - r.handoff_s - r.estimate.run_time_s)
+        e = r.estimate
+        if e.t_c_s is not None:
+            k = int(e.t_c_s * RATE) // CHUNK
+            if k in balls:
+                z_vx.append((e.velocity_mps[0] - balls[k][1].velocity_mps[0]) / e.velocity_sigma_mps[0])
         if pending and executor is None:
             latencies.append(done - pending.pop(0))
     total = time.perf_counter() - t0
@@ -108,6 +113,7 @@ def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: Stre
         "handoff_ms": (np.median(handoffs) * 1e3, np.max(handoffs) * 1e3) if handoffs else (float("nan"), float("nan")),
         "estimate_ms": (np.median(fit_times) * 1e3, np.max(fit_times) * 1e3) if fit_times else (float("nan"), float("nan")),
         "rest_ms": (np.median(rest) * 1e3, np.max(rest) * 1e3) if rest else (float("nan"), float("nan")),
+        "z_vx": (float(np.sqrt(np.mean(np.square(z_vx)))), float(np.mean(z_vx))) if z_vx else (float("nan"), float("nan")),
     }
 
 
@@ -187,6 +193,7 @@ def main(argv: list[str] | None = None) -> int:
         ("baseline: estimate_image on the ball's chunk (ms)", f"{naive * 1e3:.1f}", "", "", ""),
         ("  latency: engine / baseline", f"{lat[0] / (naive * 1e3):.2f} x", "", "", ""),
         ("balls found / rendered", f"{with_balls['balls']} / {with_balls['expected']}", "", "all", met(with_balls["balls"] == with_balls["expected"])),
+        ("V.x error / its sigma: RMS, mean", f"{with_balls['z_vx'][0]:.2f}, {with_balls['z_vx'][1]:+.2f}", "", "1, 0", ""),
         ("baseline: detect() per chunk, lines/s", f"{base[0]:,.0f}", f"{base[1]:,.0f}", "", ""),
         ("speed-up over the baseline (no ball)", f"{empty['lines_per_s'] / base[0]:.0f} x", f"{empty['lines_per_cpu_s'] / base[1]:.0f} x", "", ""),
     ]
