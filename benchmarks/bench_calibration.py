@@ -2,6 +2,7 @@
 
     python benchmarks/bench_calibration.py [--balls N] [--jobs J] [--cases NAME,...]
         [--start {guess,loose_fit}] [--level-samples T,H] [--refined-background] [--refit-law] [--clean]
+        [--stream {engine,crop}]
 
 For each case (a camera, a ball length in lines, flat or Lambertian-shaded
 ball) it renders ``--balls`` single images of one ball on the default
@@ -19,6 +20,13 @@ shading pass's diagnostic options (:class:`ballscan.estimate.ShadingSetup`).
 ``--clean`` also renders each ball noise-free (16 bits, no PRNU) and prints
 its errors in units of the noisy image's sigmas: the estimator's own
 (model) error, which no noise averages away.
+
+``--stream`` measures the balls as ``ballscan watch`` does instead: each
+ball in a 1024-line chunk of its own between background chunks, one
+stream per worker, through :func:`ballscan.stream.process_stream` with
+``StreamConfig(background=...)`` (the engine's running background of the
+crop's columns, or the crop's own); ``--clean`` and the shading options
+do not apply there.
 
 Cases: ``stream-38`` / ``stream-112`` / ``stream-268`` are the stream
 tests' camera (512 px, f = 1100 px, 20 kHz, z = 4 m: an 18-px-wide tennis
@@ -45,7 +53,8 @@ from ballscan.camera import LineScanCamera  # noqa: E402
 from ballscan.estimate import ShadingSetup, estimate_image  # noqa: E402
 from ballscan.images import LineImage  # noqa: E402
 from ballscan.motion import BallMotion  # noqa: E402
-from ballscan.render import Appearance, RenderSettings, SensorNoise, render  # noqa: E402
+from ballscan.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render  # noqa: E402
+from ballscan.stream import StreamConfig, process_stream  # noqa: E402
 
 RADIUS_M = 0.0335
 FINE = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
@@ -74,20 +83,25 @@ CASES = {
 }
 
 
+def _random_motion(case: Case, rng: np.random.Generator, t_c_s: float) -> BallMotion:
+    """A ball of ``case`` crossing at ``t_c_s``: lateral position within the middle half of the field, velocity 6 % of the speed along y and 9 % in depth."""
+    cam = case.camera
+    half_field = 0.25 * cam.width / cam.focal_px * case.z_m
+    v = case.speed_mps
+    return BallMotion(
+        RADIUS_M,
+        t_c_s,
+        (0.0, rng.uniform(-half_field, half_field), case.z_m),
+        (v, rng.uniform(-0.06, 0.06) * v, rng.uniform(-0.09, 0.09) * v),
+    )
+
+
 def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup(), clean: bool = False) -> tuple[np.ndarray, np.ndarray, str]:
     """z-scores of ball ``k`` of ``case``, of its noise-free twin (NaN unless ``clean``) and the edges it used."""
     rng = np.random.default_rng(1000 + k)
     cam = case.camera
     n_img = int(case.lines * 1.6) + 20
-    # lateral position within the middle half of the field, velocity 6 % of the speed along y and 9 % in depth
-    half_field = 0.25 * cam.width / cam.focal_px * case.z_m
-    v = case.speed_mps
-    m = BallMotion(
-        RADIUS_M,
-        (n_img / 2 + rng.uniform(-0.5, 0.5)) / cam.line_rate_hz,
-        (0.0, rng.uniform(-half_field, half_field), case.z_m),
-        (v, rng.uniform(-0.06, 0.06) * v, rng.uniform(-0.09, 0.09) * v),
-    )
+    m = _random_motion(case, rng, (n_img / 2 + rng.uniform(-0.5, 0.5)) / cam.line_rate_hz)
     app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
     true = np.r_[m.t_c_s, m.position_m[1:], m.velocity_mps]
     none = np.full(6, np.nan)
@@ -111,6 +125,44 @@ def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup(), clean: bo
     return z, z_clean, str(e.extra.get("edges"))
 
 
+STREAM_CHUNK = 1024
+
+
+def stream_balls(case: Case, ks: list[int], background: str) -> list[tuple[np.ndarray, np.ndarray, str]]:
+    """z-scores of balls ``ks`` of ``case`` measured in one stream (``--stream``): each in a chunk of its own after a background chunk."""
+    cam = case.camera
+    app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
+    noise_rng = np.random.default_rng(ks[0])
+    truths: list[BallMotion] = []
+
+    def chunks():
+        for i, k in enumerate(ks):
+            yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12), SensorNoise(), noise_rng)[0]
+            rng = np.random.default_rng(1000 + k)
+            line = rng.uniform(300.0, STREAM_CHUNK - 300.0 - case.lines)
+            m = _random_motion(case, rng, line / cam.line_rate_hz)
+            r = render(cam, [(m, app)], STREAM_CHUNK, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
+            truths.append(BallMotion(RADIUS_M, ((2 * i + 1) * STREAM_CHUNK + line) / cam.line_rate_hz, m.position_m, m.velocity_mps))
+            yield r.image
+        yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12), SensorNoise(), noise_rng)[0]
+
+    none = np.full(6, np.nan)
+    found = {}
+    for res in process_stream(chunks(), cam, RADIUS_M, StreamConfig(background=background), source=case.name):
+        e = res.estimate
+        if e.t_c_s is None:
+            continue
+        i = int(e.t_c_s * cam.line_rate_hz) // (2 * STREAM_CHUNK)
+        if i in found or i >= len(ks):
+            found[i] = None  # two estimates of one ball: not measured
+            continue
+        m = truths[i]
+        sig = np.r_[e.t_c_sigma_s, e.position_sigma_m[1:], e.velocity_sigma_mps]
+        z = (np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps] - np.r_[m.t_c_s, m.position_m[1:], m.velocity_mps]) / sig
+        found[i] = (z, none, str(e.extra.get("edges")))
+    return [found.get(i) or (none, none, "none") for i in range(len(ks))]
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--balls", type=int, default=60, help="balls per case (default 60)")
@@ -121,6 +173,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--refined-background", action="store_true", help="every ball's edges on its columns' background away from it")
     ap.add_argument("--refit-law", action="store_true", help="the law and the limb model again at the fitted motion, and the fit again")
     ap.add_argument("--clean", action="store_true", help="also each ball's noise-free twin, in units of the noisy sigmas")
+    ap.add_argument("--stream", choices=("engine", "crop"), help="measure the balls in a stream (process_stream) on this background instead of as single images")
     args = ap.parse_args(argv)
     try:
         setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background, args.refit_law)
@@ -132,14 +185,21 @@ def main(argv: list[str] | None = None) -> int:
         ap.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(CASES)}")
     if args.balls < 2:
         ap.error("--balls: at least 2")
-    print(f"shading pass: {setup}")
+    if args.stream and (args.clean or setup != ShadingSetup()):
+        ap.error("--stream: the stream's estimator has the default shading pass and no noise-free twins")
+    print(f"stream, background={args.stream!r}" if args.stream else f"shading pass: {setup}")
     print(f"z = (estimate - truth) / sigma over {args.balls} balls per case; an honest sigma: RMS 1, |mean| < {2 / np.sqrt(args.balls):.2f} (2 s.e.)")
     header = f"{'case':24s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
     print(header)
     print(f"{'':24s} {'':5s}  " + "  ".join(f"{'RMS  mean':>11s}" for _ in NAMES))
     for name in names:
         case = CASES[name]
-        out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup, args.clean) for k in range(args.balls))
+        if args.stream:
+            parts = [list(range(args.balls))[j :: args.jobs] for j in range(args.jobs)]
+            done = Parallel(n_jobs=args.jobs)(delayed(stream_balls)(case, ks, args.stream) for ks in parts if ks)
+            out = [o for part in done for o in part]
+        else:
+            out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup, args.clean) for k in range(args.balls))
         kinds = Counter(o[2] for o in out)
         for label, col in ((name, 0), (f"{name} clean", 1)):
             z = np.array([o[col] for o in out])
