@@ -1058,6 +1058,8 @@ def warm_up() -> None:
     line_level_sums(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1, *law)
     interior_normals(z1, k0, k0, np.zeros((0, 0), dtype=np.bool_), 0, 0, *law[:4], *law[4:9])
     level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
+    # the column gains' medians (section at the end of the module)
+    sorted_medians(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), 0)
     warm_up_stream()
 
 
@@ -2469,3 +2471,43 @@ def interior_normals(
             normals[i, 1] = ny * a
             normals[i, 2] = nz * a
     return hit, normals, rays_ok
+
+
+# ---------------------------------------------------------------------------
+# Column gains: the masked medians of ballscan.flatfield.column_gains
+# ---------------------------------------------------------------------------
+# column_gains takes three medians of the masked pixels of a ball's box
+# (each line's, then each column's twice), each by numpy's sort of the box
+# with inf where unmasked (15 us, faster than a compiled selection: 50 us)
+# and then the mask's counts and two gathers of the middle ranks, another
+# 20 us of small numpy calls that one loop does in 2.
+
+
+@_jit()
+def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
+    """Medians of the masked values from the sorted box of :func:`ballscan.flatfield._masked_median`.
+
+    ``v`` is ``where(mask, values, inf)`` sorted along ``axis`` (0 or 1) of
+    a 2-D array: along it each line (or column) of ``n`` masked values has
+    its median at ranks ``(n - 1) // 2`` and ``n // 2``, ``0.5 * (lo +
+    hi)``; NaN where ``n`` is 0.
+    """
+    n_a, n_b = v.shape
+    n_out = n_b if axis == 0 else n_a
+    n_along = n_a if axis == 0 else n_b
+    out = np.empty(n_out)
+    for o in range(n_out):
+        n = 0
+        for i in range(n_along):
+            if (mask[i, o] if axis == 0 else mask[o, i]):
+                n += 1
+        if n == 0:
+            out[o] = np.nan
+            continue
+        lo = (n - 1) // 2
+        hi = n // 2
+        if axis == 0:
+            out[o] = 0.5 * (v[lo, o] + v[hi, o])
+        else:
+            out[o] = 0.5 * (v[o, lo] + v[o, hi])
+    return out

@@ -39,6 +39,7 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
+from ._kernels import as_arg, sorted_medians
 from .detection import median as _median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
@@ -133,13 +134,14 @@ class ColumnGains:
 
 
 def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
-    """Median of ``values`` where ``mask`` along ``axis`` (NaN where none); np.median's value, by one sort."""
-    v = np.sort(np.where(mask, values, np.inf), axis=axis)
-    n = mask.sum(axis=axis)
-    lo = np.expand_dims(np.maximum((n - 1) // 2, 0), axis)
-    hi = np.expand_dims(np.maximum(n // 2, 0), axis)
-    med = 0.5 * (np.take_along_axis(v, lo, axis) + np.take_along_axis(v, hi, axis))
-    return np.where(n > 0, np.squeeze(med, axis), np.nan)
+    """Median of ``values`` where ``mask`` along ``axis`` (0 or 1; NaN where none); np.median's value, by one sort.
+
+    The masked values sort first with inf in the other places, and the
+    middle ranks of each line's (or column's) count are picked in one
+    compiled loop (:func:`ballscan._kernels.sorted_medians`).
+    """
+    mask = as_arg(mask, np.bool_)
+    return sorted_medians(as_arg(np.sort(np.where(mask, values, np.inf), axis=axis)), mask, int(axis))
 
 
 def _inset(mask: np.ndarray, k: int) -> np.ndarray:
