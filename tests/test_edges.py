@@ -288,3 +288,87 @@ def test_matched_edges_get_their_own_floor_in_the_fit():
     assert np.allclose(T["sr_n"][~flag], np.sqrt(np.nan_to_num(e.right_sigma_px)[~flag] ** 2 + st.matched_floor_px**2))
     # without flags every edge has the window floor
     assert np.allclose(_weight_tables(e, st)["sl_n"], np.sqrt(s**2 + st.edge_floor_px**2))
+
+
+# ---------------------------------------------------------------------------
+# the first pass's compiled loops against the numpy forms they replace
+# ---------------------------------------------------------------------------
+def _expected_signal_numpy(p):
+    """Each pixel's signal for its noise model from its column neighbours (the former ballscan.edges._expected_signal)."""
+    if p.shape[0] < 2:
+        return p
+    q = np.empty_like(p)
+    q[1:-1] = 0.5 * (p[:-2] + p[2:])
+    q[0] = p[1]
+    q[-1] = p[-2]
+    return q
+
+
+def _profile(rng, n, w):
+    """A noisy box profile with ties, zeros of both signs, NaN and infinities."""
+    p = rng.standard_normal((n, w)) * 10.0 ** rng.uniform(-3, 1, (n, w))
+    p[rng.random((n, w)) < 0.05] = 0.0
+    p[rng.random((n, w)) < 0.05] = -0.0
+    p[rng.random((n, w)) < 0.02] = np.nan
+    p[rng.random((n, w)) < 0.01] = np.inf
+    return p
+
+
+def test_shot_noise_is_the_numpy_forms_bit_for_bit():
+    from ballscan._kernels import shot_noise
+
+    rng = np.random.default_rng(11)
+    for n, w in ((1, 7), (2, 5), (3, 9), (40, 70), (90, 150)):
+        p = _profile(rng, n, w)
+        sp = np.abs(rng.standard_normal((n, w))) * 0.01 + 1e-12
+        excess, p_in = float(rng.uniform(1e-5, 1e-3)), float(rng.uniform(0.3, 1.5))
+        with np.errstate(invalid="ignore"):
+            want = np.sqrt(sp**2 + excess * np.clip(_expected_signal_numpy(p) / p_in, 0.0, 2.0))
+        assert np.array_equal(shot_noise(p, sp, excess, p_in), want, equal_nan=True), (n, w)
+
+
+def test_shaded_sides_is_the_numpy_forms_bit_for_bit():
+    from ballscan._kernels import shaded_sides
+
+    rng = np.random.default_rng(12)
+    for trial in range(200):
+        n = int(rng.integers(1, 150))
+        rel = rng.standard_normal(4 * n) * 0.05 + rng.uniform(-0.1, 0.1)
+        rel[rng.random(4 * n) < 0.1] = np.nan
+        if trial % 5 == 0:
+            rel[rng.integers(0, 4 * n)] = np.inf
+        rel_sig = np.abs(rng.standard_normal(4 * n)) * 0.02
+        rel_sig[rng.random(4 * n) < 0.1] = 0.0
+        use = (rng.random(4 * n) < 0.8) & (rel_sig > 0)
+        want = np.nan_to_num(rel)
+        for q in range(4):
+            u = use[q * n : (q + 1) * n]
+            with np.errstate(over="ignore"):
+                ratio = np.abs(want[q * n : (q + 1) * n][u]) / rel_sig[q * n : (q + 1) * n][u]
+            if not (bool(u.any()) and float(np.mean(ratio)) > 2.0):
+                want[q * n : (q + 1) * n] = 0.0
+        assert np.array_equal(shaded_sides(rel, rel_sig, use, 4, 2.0), want), trial
+
+
+def test_line_coverage_is_the_numpy_forms_bit_for_bit():
+    from ballscan._kernels import line_coverage
+
+    rng = np.random.default_rng(13)
+    for n, w in ((1, 3), (5, 8), (40, 70), (90, 150), (20, 300)):
+        p = _profile(rng, n, w)
+        p[0] = 0.0  # a line of no area
+        sp = np.abs(rng.standard_normal((n, w))) * 0.01
+        k_left = rng.integers(-2, w, n)
+        k_right = k_left + rng.integers(0, w, n)
+        has_signal = rng.random(n) < 0.8
+        c0 = int(rng.integers(0, 500))
+        jj = np.arange(w)[None, :]
+        sel = (jj >= np.where(has_signal, k_left - 3, 0)[:, None]) & (jj <= np.where(has_signal, k_right + 3, w - 1)[:, None])
+        area = np.where(sel, p, 0.0).sum(axis=1)
+        area_sig = np.sqrt(np.where(sel, sp**2, 0.0).sum(axis=1))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            centroid = np.where(sel, p * (jj + c0), 0.0).sum(axis=1) / area
+        centroid = np.where(area > 3.0 * area_sig, centroid, np.nan)
+        got = line_coverage(p, sp, k_left, k_right, has_signal, c0)
+        for a, b in zip(got, (area, area_sig, centroid)):
+            assert np.array_equal(a, b, equal_nan=True), (n, w)

@@ -43,7 +43,9 @@ import math
 
 import numpy as np
 
-from ._kernels import as_arg, edge_windows, inner_differences, limb_levels, running_median, walk_edges
+from ._kernels import (
+    as_arg, edge_windows, inner_differences, limb_levels, line_coverage, running_median, shaded_sides, shot_noise, walk_edges,
+)
 from .errors import GeometryError
 
 # np.median's value by a full sort (several times faster on these sizes)
@@ -343,7 +345,10 @@ class _EdgePass:
 def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
     """Broadcast a scalar, per-column (W,) or per-pixel (n_lines, W) array to (n_lines, W)."""
     a = np.asarray(value, dtype=float)
-    if a.ndim == 0 or a.shape == (width,) or a.shape == (n_lines, width) or a.shape == (1, width):
+    if a.shape == (n_lines, width):
+        # (already that shape: a view of it would only cost the broadcast's fixed time)
+        return a
+    if a.ndim == 0 or a.shape == (width,) or a.shape == (1, width):
         return np.broadcast_to(a, (n_lines, width))
     raise ValueError(f"{name}: expected a scalar, ({width},) or ({n_lines}, {width}) array, got shape {a.shape}")
 
@@ -369,9 +374,10 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     fewer than ``3 (degree + 1)`` finite entries, a running median over ``n``
     lines is used instead.  NaN stays NaN.
     """
-    ok = np.isfinite(x)
-    idx = np.flatnonzero(ok)
-    if degree < 0 or idx.size < 3 * (degree + 1):
+    if degree < 0:
+        return _running_median(x, n)
+    idx = np.flatnonzero(np.isfinite(x))
+    if idx.size < 3 * (degree + 1):
         return _running_median(x, n)
     u = (idx - idx.mean()) / max(float(np.ptp(idx)), 1.0)
     y = x[idx]
@@ -388,30 +394,6 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     out = np.full(x.size, np.nan)
     out[idx] = np.polynomial.polynomial.polyval(u, coef)
     return out
-
-
-def _expected_signal(p: np.ndarray) -> np.ndarray:
-    """Each pixel's signal for its noise model, from the lines before and after it (same column).
-
-    The mean of the two neighbours along the column (the one neighbour on
-    the box's first and last line; the pixel itself on a one-line box).
-    Not the pixel's own value: a variance that grows with its own noisy
-    value gives the pixels that read high less weight, and every weighted
-    estimate that uses it (the windows' sums, the matched edges' weights,
-    the pixel fit) reads the ball small: on the quick sweep's long balls
-    (R = 0.11 m and 140 000 lines/s, 8-bit, shot noise, 32 seeds each) the
-    speed read 0.23 +- 0.015 and 0.08 +- 0.006 sigma of the pixel bound
-    higher than with the neighbours' signal (the same images).  Their noise
-    is independent of the pixel's; where the coverage changes from line to
-    line (a ball's ends) their mean still follows it to first order.
-    """
-    if p.shape[0] < 2:
-        return p
-    q = np.empty_like(p)
-    q[1:-1] = 0.5 * (p[:-2] + p[2:])
-    q[0] = p[1]
-    q[-1] = p[-2]
-    return q
 
 
 def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
@@ -811,7 +793,6 @@ def _edge_pass(
         # one pixel of dilation along the line: a neighbour's blur reaches it
         other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
 
-    rows = np.arange(n)[:, None]
     peak = p.max(axis=1)
     if sd.strides[0] == 0:
         # a scalar or per-column noise: every line has the same median
@@ -849,7 +830,9 @@ def _edge_pass(
             else:
                 sig_bg = float(_median(sp_both))
             if p_in > 0 and sig_in > sig_bg:
-                sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(_expected_signal(p) / p_in, 0.0, 2.0))
+                # each pixel's signal for its noise from its column neighbours,
+                # not its own value (compiled: see _kernels.shot_noise)
+                sp = shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
 
     # Every edge estimate at once: for each window (narrow, then wide) the
     # left edges (windows pointing inwards with sign +1), then the right
@@ -858,8 +841,7 @@ def _edge_pass(
     variants = ((s.n_out, s.n_in), (s.n_out_wide, s.n_in_wide))
     nv = 2 * len(variants)
     quarters = tuple(slice(q * n, (q + 1) * n) for q in range(nv))
-    rows4 = np.tile(rows[:, 0], nv)[:, None]
-    hs4 = np.tile(has_signal, nv)
+    hs4 = np.concatenate([has_signal] * nv)
     # the windows' and runs' pixels and sums (compiled: some sixty small
     # array operations in numpy, 0.6 ms a ball)
     (S, sw, sw2, L_run, sl2, pl0, pl1, sl0, sl1, pd, sd2, pdd, sdd2, win_first, win_last, n_win, lev, deep_px, sgn1, lo, hi,
@@ -893,13 +875,9 @@ def _edge_pass(
     # is taken once per side (and window), not per line: shrinking each
     # line's correction by its noise would bias noisy edges inwards.
     rel_sig = np.sqrt(rel_var)
-    rel = np.nan_to_num(rel)
-    use = hs4 & (rel_sig > 0)
-    for q in quarters:
-        u = use[q]
-        shaded = bool(u.any()) and float(np.mean(np.abs(rel[q][u]) / rel_sig[q][u])) > s.slope_threshold
-        if not shaded:
-            rel[q] = 0.0
+    # (compiled: per side and window, the mean of |rel| / rel_sig over the
+    # lines with signal, NaN as 0; the unshaded sides' rel set to 0)
+    rel = shaded_sides(rel, rel_sig, hs4 & (rel_sig > 0), nv, float(s.slope_threshold))
     applied = rel != 0
     L = L_run * (1.0 + kap * rel)
     Ls = np.where(L > 0, L, 1.0)
@@ -923,23 +901,17 @@ def _edge_pass(
     usable &= np.concatenate([long_enough, long_enough, long_wide, long_wide])
     endL, endR, satL, satR, ovL, ovR = (a[q] & has_signal for a in (at_sensor_end, saturated, overlapping) for q in quarters[:2])
 
-    # summed coverage: over the segment +- 3 px where the ball is seen, else the whole box
-    jj = np.arange(w)[None, :]
-    lo_c = np.where(has_signal, k_left - 3, 0)[:, None]
-    hi_c = np.where(has_signal, k_right + 3, w - 1)[:, None]
-    sel = (jj >= lo_c) & (jj <= hi_c)
-    area = np.where(sel, p, 0.0).sum(axis=1)
-    area_sig = np.sqrt(np.where(sel, sp**2, 0.0).sum(axis=1))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        centroid = np.where(sel, p * (jj + c0), 0.0).sum(axis=1) / area
-    centroid = np.where(area > 3.0 * area_sig, centroid, np.nan)
+    # summed coverage: over the segment +- 3 px where the ball is seen, else
+    # the whole box (compiled: its sums, sigma and centroid in one pass)
+    area, area_sig, centroid = line_coverage(p, sp, k_left, k_right, has_signal, int(c0))
 
     flags = []
     if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or c1 == W and np.any(has_signal & (k_right >= w - 1)):
         flags.append("cut_sensor_end")
-    if np.any(satL | satR) or np.any(sat & (p > 0.5)):
+    # (the pixel tests only where a pixel is saturated or another ball's)
+    if np.any(satL | satR) or sat.any() and np.any(sat & (p > 0.5)):
         flags.append("saturated")
-    if np.any(other & (p > 0.5)) or np.any(ovL | ovR):
+    if np.any(ovL | ovR) or other.any() and np.any(other & (p > 0.5)):
         flags.append("overlap")
 
     return _EdgePass(
@@ -960,11 +932,12 @@ def _edge_pass(
         win_last=win_last,
         lev=lev,
         deep=deep_px,
-        limb_rows=hs4 & (deep_px.min(axis=1) >= 0) & (deep_px.max(axis=1) < w),
+        # (a run's pixels step by one from its first to its last: those are its extremes)
+        limb_rows=hs4 & (np.minimum(deep_px[:, 0], deep_px[:, -1]) >= 0) & (np.maximum(deep_px[:, 0], deep_px[:, -1]) < w),
         pd=pd,
         sd2=sd2,
         sgn=sgn[:, 0],
-        lines_abs=rows4[:, 0] + l0,
+        lines_abs=np.concatenate([lines] * nv),
         dlev=np.maximum(dlev, 0.0),
         usable=usable,
         run_ok=L_run > 3.0 * np.sqrt(sl2),
@@ -998,9 +971,9 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         if spread is None or np.shape(spread) != (ps.n_img,):
             raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")
         line_spread = np.asarray(spread)[ps.common["lines"]]
-        wanted = np.concatenate(
-            [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
-        )
+        narrow = line_spread < s.limb_narrow_max_px
+        wide = (line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1])
+        wanted = np.concatenate([narrow, narrow, wide, wide])
         e, var, L = _limb_levels(
             limb, e, var, L, S, ps.L_run, ps.sl2, ps.sw, n_win, ps.win_first, ps.win_last, ps.lev, ps.deep, ps.pd, ps.sd2,
             ps.sgn, ps.limb_rows & wanted, ps.lines_abs, s.limb_samples, s.limb_texture_tol,
