@@ -372,3 +372,41 @@ def test_line_coverage_is_the_numpy_forms_bit_for_bit():
         got = line_coverage(p, sp, k_left, k_right, has_signal, c0)
         for a, b in zip(got, (area, area_sig, centroid)):
             assert np.array_equal(a, b, equal_nan=True), (n, w)
+
+
+def test_finished_edges_is_the_numpy_forms_bit_for_bit():
+    from ballscan._kernels import finished_edges
+
+    rng = np.random.default_rng(14)
+    for n in (1, 7, 80):
+        R = 4 * n
+        e = rng.uniform(0, 100, R)
+        var = np.abs(rng.standard_normal(R)) * 1e-3
+        L = rng.uniform(-0.2, 1.5, R)
+        L[rng.random(R) < 0.05] = np.nan
+        S = rng.uniform(0, 4, R)
+        n_win = rng.integers(2, 7, R)
+        dlev = np.abs(rng.standard_normal(R)) * 0.01
+        run_ok, usable = rng.random(R) < 0.9, rng.random(R) < 0.8
+        L_run = rng.uniform(0.5, 1.2, R)
+        has_signal, spoiled = rng.random(n) < 0.8, rng.random(n) < 0.1
+        c0 = int(rng.integers(0, 300))
+        # the numpy form of ballscan.edges._finish
+        Ls = np.where(L > 0, L, 1.0)
+        uncovered = n_win - S / Ls
+        with np.errstate(invalid="ignore"):
+            plausible = run_ok & (L > 0.5 * L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
+        ok = usable & plausible
+        tex = (S / Ls) * dlev / Ls
+        q = [slice(i * n, (i + 1) * n) for i in range(4)]
+        okL, okR = ok[q[0]], ok[q[1]]
+        level = np.where(okL & okR, 0.5 * (L[q[0]] + L[q[1]]), np.where(okL, L[q[0]], np.where(okR, L[q[1]], np.nan)))
+        got = finished_edges(e, var, L, S, n_win, dlev, run_ok, L_run, usable, has_signal, spoiled, c0)
+        assert np.array_equal(got[0], ok)
+        for i in range(4):
+            assert np.array_equal(got[1][i], np.where(has_signal, (e + c0)[q[i]], np.nan), equal_nan=True)
+            assert np.array_equal(got[2][i], np.where(has_signal, np.sqrt(var)[q[i]], np.nan), equal_nan=True)
+        for i in range(2):
+            assert np.array_equal(got[3][i], np.where(has_signal, tex[q[i]], np.nan), equal_nan=True)
+        assert np.array_equal(got[4], level, equal_nan=True)
+        assert np.array_equal(got[5], has_signal & ~(okL & okR) & ~spoiled)

@@ -1064,6 +1064,9 @@ def warm_up() -> None:
     shot_noise(prof, prof, 1.0, 1.0)
     shaded_sides(np.zeros(4), np.ones(4), np.ones(4, dtype=np.bool_), 4, 2.0)
     line_coverage(prof, prof, k0, k1, yes, 0)
+    rows4 = np.ones(4)
+    flags4 = np.ones(4, dtype=np.bool_)
+    finished_edges(rows4, rows4, rows4, rows4, np.ones(4, dtype=np.int64), rows4, flags4, rows4, flags4, yes, yes, 0)
     warm_up_stream()
 
 
@@ -2635,3 +2638,74 @@ def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np
         area_sig[r] = math.sqrt(_pairwise_sum(b_s))
         centroid[r] = _pairwise_sum(b_c) / area[r] if area[r] > 3.0 * area_sig[r] else np.nan
     return area, area_sig, centroid
+
+
+@_jit(error_model="numpy")
+def finished_edges(
+    e: np.ndarray,
+    var: np.ndarray,
+    L: np.ndarray,
+    S: np.ndarray,
+    n_win: np.ndarray,
+    dlev: np.ndarray,
+    run_ok: np.ndarray,
+    L_run: np.ndarray,
+    usable: np.ndarray,
+    has_signal: np.ndarray,
+    spoiled: np.ndarray,
+    c0: int,
+):
+    """The per-line fields of :func:`ballscan.edges._finish` from the edges' rows (4 n: narrow left, right, wide left, right).
+
+    Each edge is usable where ``usable``, its level run is (``run_ok``) and
+    its level plausible: ``L > L_run / 2`` and the uncovered length ``n_win
+    - S / L`` (L 1 where not positive) within ``[-0.5, n_win + 0.5]``.  On
+    the lines with signal the edges ``e + c0`` (sensor pixels), their sigmas
+    ``sqrt(var)`` and the narrow edges' texture ``S / L * dlev / L``, NaN on
+    the others; each line's level (the mean of a usable pair's, or the one
+    usable, NaN) and whether it is an end line (signal, no usable pair, not
+    ``spoiled``).
+
+    Returns
+    -------
+    ok : ndarray of bool (4 n,)
+    edge, sigma : ndarray (4, n)
+        By window and side, as the rows.
+    texture : ndarray (2, n)
+        Narrow window, left and right.
+    level : ndarray (n,)
+    end_line : ndarray of bool (n,)
+    """
+    R = e.shape[0]
+    n = R // 4
+    ok = np.empty(R, dtype=np.bool_)
+    for i in range(R):
+        Ls = L[i] if L[i] > 0.0 else 1.0
+        uncovered = n_win[i] - S[i] / Ls
+        ok[i] = usable[i] and run_ok[i] and L[i] > 0.5 * L_run[i] and uncovered > -0.5 and uncovered < n_win[i] + 0.5
+    edge = np.empty((4, n))
+    sig = np.empty((4, n))
+    tex = np.empty((2, n))
+    level = np.empty(n)
+    end_line = np.empty(n, dtype=np.bool_)
+    for r in range(n):
+        hs = has_signal[r]
+        for q in range(4):
+            i = q * n + r
+            edge[q, r] = e[i] + c0 if hs else np.nan
+            sig[q, r] = math.sqrt(var[i]) if hs else np.nan
+            if q < 2:
+                Ls = L[i] if L[i] > 0.0 else 1.0
+                tex[q, r] = (S[i] / Ls) * dlev[i] / Ls if hs else np.nan
+        ok_l = ok[r]
+        ok_r = ok[n + r]
+        if ok_l and ok_r:
+            level[r] = 0.5 * (L[r] + L[n + r])
+        elif ok_l:
+            level[r] = L[r]
+        elif ok_r:
+            level[r] = L[n + r]
+        else:
+            level[r] = np.nan
+        end_line[r] = hs and not (ok_l and ok_r) and not spoiled[r]
+    return ok, edge, sig, tex, level, end_line

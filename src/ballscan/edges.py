@@ -44,7 +44,8 @@ import math
 import numpy as np
 
 from ._kernels import (
-    as_arg, edge_windows, inner_differences, limb_levels, line_coverage, running_median, shaded_sides, shot_noise, walk_edges,
+    as_arg, edge_windows, finished_edges, inner_differences, limb_levels, line_coverage, running_median, shaded_sides, shot_noise,
+    walk_edges,
 )
 from .errors import GeometryError
 
@@ -978,18 +979,14 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
             limb, e, var, L, S, ps.L_run, ps.sl2, ps.sw, n_win, ps.win_first, ps.win_last, ps.lev, ps.deep, ps.pd, ps.sd2,
             ps.sgn, ps.limb_rows & wanted, ps.lines_abs, s.limb_samples, s.limb_texture_tol,
         )
-    Ls = np.where(L > 0, L, 1.0)
-    uncovered = n_win - S / Ls
-    sig = np.sqrt(var)
-    tex = (S / Ls) * ps.dlev / Ls
-    plausible = ps.run_ok & (L > 0.5 * ps.L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
-    ok_all = ps.usable & plausible
-    res = (e + ps.c0, sig, ok_all, L, tex)
-    (eL, sL, okL, LL, tL), (eR, sR, okR, LR, tR), (eLw, sLw, okLw, _, _), (eRw, sRw, okRw, _, _) = (tuple(a[q] for a in res) for q in ps.quarters)
+    # the usable edges (their levels plausible), the lines' edges, sigmas,
+    # textures and levels, and the faint/short lines whose area is clean
+    # (the fit uses their area instead of edges), in one compiled loop
+    ok_all, edge, sig, tex, level, end_line = finished_edges(
+        e, var, L, S, n_win, ps.dlev, ps.run_ok, ps.L_run, ps.usable, ps.has_signal, ps.spoiled, int(ps.c0)
+    )
+    okL, okR, okLw, okRw = (ok_all[q] for q in ps.quarters)
     has_signal = ps.has_signal
-    level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
-    # faint/short lines whose area is clean: the fit uses their area instead of edges
-    end_line = has_signal & ~(okL & okR) & ~ps.spoiled
     if limb is not None and hasattr(limb, "line_levels"):
         # the brightness of the ends' covered part (their area's divisor)
         line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
@@ -1004,20 +1001,20 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         lev_a, rel_a = limb.line_levels(ps.common["lines"][want])
         area_level[want], area_level_sigma[want] = lev_a, rel_a
     return EdgeMeasurements(
-        left_px=np.where(has_signal, eL, np.nan),
-        right_px=np.where(has_signal, eR, np.nan),
-        left_sigma_px=np.where(has_signal, sL, np.nan),
-        right_sigma_px=np.where(has_signal, sR, np.nan),
+        left_px=edge[0],
+        right_px=edge[1],
+        left_sigma_px=sig[0],
+        right_sigma_px=sig[1],
         left_ok=okL,
         right_ok=okR,
         level=level,
         end_line=end_line,
-        left_texture_px=np.where(has_signal, tL, np.nan),
-        right_texture_px=np.where(has_signal, tR, np.nan),
-        left_wide_px=np.where(has_signal, eLw, np.nan),
-        right_wide_px=np.where(has_signal, eRw, np.nan),
-        left_wide_sigma_px=np.where(has_signal, sLw, np.nan),
-        right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
+        left_texture_px=tex[0],
+        right_texture_px=tex[1],
+        left_wide_px=edge[2],
+        right_wide_px=edge[3],
+        left_wide_sigma_px=sig[2],
+        right_wide_sigma_px=sig[3],
         left_wide_ok=okLw,
         right_wide_ok=okRw,
         area_level=area_level,
