@@ -410,3 +410,25 @@ def test_finished_edges_is_the_numpy_forms_bit_for_bit():
             assert np.array_equal(got[3][i], np.where(has_signal, tex[q[i]], np.nan), equal_nan=True)
         assert np.array_equal(got[4], level, equal_nan=True)
         assert np.array_equal(got[5], has_signal & ~(okL & okR) & ~spoiled)
+
+
+def test_running_medians_are_the_former_kernels_bit_for_bit():
+    from ballscan._kernels import running_median, running_medians
+
+    rng = np.random.default_rng(15)
+    for trial in range(600):
+        size, blocks, n = int(rng.integers(1, 50)), int(rng.integers(1, 5)), int(rng.integers(2, 12))
+        x = rng.standard_normal(size * blocks)
+        if trial % 2:
+            x = np.round(2 * x)  # ties
+        x[rng.random(x.size) < 0.2] = np.nan
+        x[rng.random(x.size) < 0.05] = np.inf
+        x[rng.random(x.size) < 0.05] = -np.inf
+        zero = rng.random(x.size) < 0.1
+        x[zero] = np.where(rng.random(zero.sum()) < 0.5, 0.0, -0.0)
+        want = np.concatenate([running_median(x[b * size : (b + 1) * size].copy(), n) for b in range(blocks)])
+        got = running_medians(x, blocks, n)
+        fin = np.isfinite(want)
+        # the same values, signed zeros too
+        assert np.array_equal(np.isnan(got), np.isnan(want)) and np.array_equal(got[~np.isnan(got)], want[~np.isnan(want)]), trial
+        assert np.array_equal(np.signbit(got[fin]), np.signbit(want[fin])), trial
