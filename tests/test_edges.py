@@ -432,3 +432,49 @@ def test_running_medians_are_the_former_kernels_bit_for_bit():
         # the same values, signed zeros too
         assert np.array_equal(np.isnan(got), np.isnan(want)) and np.array_equal(got[~np.isnan(got)], want[~np.isnan(want)]), trial
         assert np.array_equal(np.signbit(got[fin]), np.signbit(want[fin])), trial
+
+
+def test_level_gradients_and_window_edges_are_the_numpy_forms_bit_for_bit():
+    import math
+
+    from ballscan._kernels import level_gradients, window_edges
+
+    rng = np.random.default_rng(16)
+    for n_level in (1, 2, 3):
+        for n in (1, 9, 70):
+            R = 4 * n
+            pl0, pl1, pd = (rng.uniform(0.3, 1.2, R) for _ in range(3))
+            L_run = rng.uniform(-0.1, 1.2, R)
+            L_run[rng.random(R) < 0.05] = 0.0
+            sl0, sl1 = (np.abs(rng.standard_normal(R)) * 0.01 for _ in range(2))
+            sd2, sl2, sw2 = (np.abs(rng.standard_normal(R)) * 1e-4 for _ in range(3))
+            hs4 = rng.random(R) < 0.8
+            n_in = np.array([0, 1])
+            n_in_r = np.repeat(n_in, 2 * n)
+            # the numpy form of ballscan.edges._edge_pass
+            grad = (pl1 - pl0) / (n_level - 1) if n_level >= 2 else (pd - L_run) / n_level
+            dist = n_in_r + 1 + (n_level - 1) / 2.0 - 0.25
+            Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
+            raw_rel = np.where(hs4, -dist * grad / Lsafe, np.nan)
+            g_var = (sl1**2 + sl0**2) / (n_level - 1) ** 2 if n_level >= 2 else (sd2 + sl2) / n_level**2
+            rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(9, 1)
+            got = level_gradients(pl0, pl1, pd, L_run, sl0, sl1, sd2, sl2, hs4, n_in, n_level, 9)
+            for a, b in zip(got, (raw_rel, rel_var, np.sqrt(rel_var))):
+                assert np.array_equal(a, b, equal_nan=True), (n_level, n)
+
+            rel = np.where(rng.random(R) < 0.5, 0.0, np.nan_to_num(raw_rel))
+            S = rng.uniform(0, 4, R)
+            n_win = rng.integers(2, 7, R)
+            win_first = rng.integers(0, 100, R)
+            win_last = win_first + rng.integers(-6, 7, R)
+            sgn = np.where(rng.random(R) < 0.5, 1, -1)
+            kap = float(rng.uniform(0.5, 1.5))
+            L = L_run * (1.0 + kap * rel)
+            Ls = np.where(L > 0, L, 1.0)
+            uncovered = n_win - S / Ls
+            e = np.where(sgn > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
+            var = sw2 / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
+            var = var + np.where(rel != 0, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
+            got = window_edges(rel, rel_var, L_run, S, sw2, sl2, n_win, win_first, win_last, sgn, kap, kap**2)
+            for a, b in zip(got, (L, e, var)):
+                assert np.array_equal(a, b, equal_nan=True), (n_level, n)

@@ -1058,16 +1058,18 @@ def warm_up() -> None:
     line_level_sums(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1, *law)
     interior_normals(z1, k0, k0, np.zeros((0, 0), dtype=np.bool_), 0, 0, *law[:4], *law[4:9])
     level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
-    # the column gains' medians (section at the end of the module)
+    # the column gains' medians and the edges' whole-box and per-row passes (sections at the end of the module)
     sorted_medians(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), 0)
-    # the edges' whole-box passes (section at the end of the module)
     shot_noise(prof, prof, 1.0, 1.0)
-    shaded_sides(np.zeros(4), np.ones(4), np.ones(4, dtype=np.bool_), 4, 2.0)
     line_coverage(prof, prof, k0, k1, yes, 0)
     rows4 = np.ones(4)
     flags4 = np.ones(4, dtype=np.bool_)
-    finished_edges(rows4, rows4, rows4, rows4, np.ones(4, dtype=np.int64), rows4, flags4, rows4, flags4, yes, yes, 0)
+    ints4 = np.ones(4, dtype=np.int64)
     running_medians(rows4, 4, 3)
+    level_gradients(rows4, rows4, rows4, rows4, rows4, rows4, rows4, rows4, flags4, np.zeros(2, dtype=np.int64), 2, 9)
+    shaded_sides(rows4, rows4, flags4, 4, 2.0)
+    window_edges(rows4, rows4, rows4, rows4, rows4, rows4, ints4, ints4, ints4, ints4, 1.0, 1.0)
+    finished_edges(rows4, rows4, rows4, rows4, ints4, rows4, flags4, rows4, flags4, yes, yes, 0)
     warm_up_stream()
 
 
@@ -2765,3 +2767,102 @@ def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
                     hi = min(cnt // 2, wl - 1)
                     out[x0 + c] = 0.5 * (buf[lo] + buf[hi])
     return out
+
+
+@_jit(error_model="numpy")
+def level_gradients(
+    pl0: np.ndarray,
+    pl1: np.ndarray,
+    pd: np.ndarray,
+    L_run: np.ndarray,
+    sl0: np.ndarray,
+    sl1: np.ndarray,
+    sd2: np.ndarray,
+    sl2: np.ndarray,
+    has_signal: np.ndarray,
+    n_in: np.ndarray,
+    n_level: int,
+    slope_lines: int,
+):
+    """The relative level gradient of each edge row of :func:`ballscan.edges._edge_pass` and its variance as a median of ``slope_lines``.
+
+    Rows as :func:`edge_windows` (``2 n`` per window variant, ``n_in[v]``
+    its pixels inside the rough edge): the gradient per pixel across the
+    level run (first and last pixels ``pl0, pl1``, sigmas ``sl0, sl1``; with
+    a one-pixel run, the deep run ``pd`` against it), times ``-dist /
+    L_run`` (``dist`` from the run's centre to the edge pixel's covered
+    part, ``L_run`` 1 where 0), NaN on lines without signal; each operation
+    as the numpy form's.
+
+    Returns
+    -------
+    raw_rel, rel_var, rel_sig : ndarray (R,)
+    """
+    R = pl0.shape[0]
+    per_variant = R // n_in.shape[0]
+    raw_rel = np.empty(R)
+    rel_var = np.empty(R)
+    rel_sig = np.empty(R)
+    for i in range(R):
+        dist = float(n_in[i // per_variant] + 1) + (n_level - 1) / 2.0 - 0.25
+        Lsafe = L_run[i] if abs(L_run[i]) > 0.0 else 1.0
+        if n_level >= 2:
+            grad = (pl1[i] - pl0[i]) / float(n_level - 1)
+            g_var = (sl1[i] * sl1[i] + sl0[i] * sl0[i]) / float((n_level - 1) ** 2)
+        else:
+            grad = (pd[i] - L_run[i]) / float(n_level)
+            g_var = (sd2[i] + sl2[i]) / float(n_level**2)
+        raw_rel[i] = -dist * grad / Lsafe if has_signal[i] else np.nan
+        rel_var[i] = dist * dist * g_var / (Lsafe * Lsafe) * (math.pi / 2.0) / float(max(slope_lines, 1))
+        rel_sig[i] = math.sqrt(rel_var[i])
+    return raw_rel, rel_var, rel_sig
+
+
+@_jit(error_model="numpy")
+def window_edges(
+    rel: np.ndarray,
+    rel_var: np.ndarray,
+    L_run: np.ndarray,
+    S: np.ndarray,
+    sw2: np.ndarray,
+    sl2: np.ndarray,
+    n_win: np.ndarray,
+    win_first: np.ndarray,
+    win_last: np.ndarray,
+    sgn: np.ndarray,
+    kap: float,
+    kap2: float,
+):
+    """The model-free edges of :func:`ballscan.edges._edge_pass`: level, edge and variance of each edge row.
+
+    The level ``L = L_run (1 + kap rel)`` (``rel`` the applied relative
+    gradient, 0 where not), the edge from the window's uncovered length
+    ``n_win - S / L`` (``L`` 1 where not positive) at its outermost pixel
+    and its variance from the window's and the level run's noise (and the
+    gradient's, ``kap2 rel_var``, where applied); each operation as the
+    numpy form's (``kap2`` is its ``kap**2``).
+
+    Returns
+    -------
+    L, e, var : ndarray (R,)
+    """
+    R = rel.shape[0]
+    L = np.empty(R)
+    e = np.empty(R)
+    var = np.empty(R)
+    for i in range(R):
+        f = 1.0 + kap * rel[i]
+        L[i] = L_run[i] * f
+        Ls = L[i] if L[i] > 0.0 else 1.0
+        uncovered = n_win[i] - S[i] / Ls
+        # left: the window starts at its outermost pixel a; right: ends at b
+        if sgn[i] > 0:
+            e[i] = (min(win_first[i], win_last[i]) - 0.5) + uncovered
+        else:
+            e[i] = (max(win_first[i], win_last[i]) + 0.5) - uncovered
+        Ls2 = Ls * Ls
+        u = S[i] / Ls2
+        v = sw2[i] / Ls2 + u * u * sl2[i] * (f * f)
+        c = S[i] / Ls
+        var[i] = v + (c * c * kap2 * rel_var[i] if rel[i] != 0.0 else 0.0)
+    return L, e, var

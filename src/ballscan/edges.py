@@ -44,8 +44,8 @@ import math
 import numpy as np
 
 from ._kernels import (
-    as_arg, edge_windows, finished_edges, inner_differences, limb_levels, line_coverage, running_medians, shaded_sides, shot_noise,
-    walk_edges,
+    as_arg, edge_windows, finished_edges, inner_differences, level_gradients, limb_levels, line_coverage, running_medians, shaded_sides,
+    shot_noise, walk_edges, window_edges,
 )
 from .errors import GeometryError
 
@@ -849,52 +849,35 @@ def _edge_pass(
     hs4 = np.concatenate([has_signal] * nv)
     # the windows' and runs' pixels and sums (compiled: some sixty small
     # array operations in numpy, 0.6 ms a ball)
+    n_in = np.array([v[1] for v in variants], dtype=np.int64)
     (S, sw, sw2, L_run, sl2, pl0, pl1, sl0, sl1, pd, sd2, pdd, sdd2, win_first, win_last, n_win, lev, deep_px, sgn1, lo, hi,
      inside_box, saturated, overlapping) = edge_windows(
-        p, as_arg(sp), as_arg(sat, np.bool_), other, k_left, k_right,
-        np.array([v[0] for v in variants], dtype=np.int64), np.array([v[1] for v in variants], dtype=np.int64), int(s.n_level),
+        p, as_arg(sp), as_arg(sat, np.bool_), other, k_left, k_right, np.array([v[0] for v in variants], dtype=np.int64), n_in, int(s.n_level),
     )
-    sgn = sgn1[:, None]
-    n_in_r = np.repeat(np.array([v[1] for v in variants]), 2 * n)[:, None]  # (4n, 1)
     kap = s.level_slope
     # relative level gradient, median-filtered along the lines (shading is
     # smooth from line to line, felt texture and noise are not):
     # gradient per pixel across the level run (inwards positive), towards
-    # the covered part of the edge pixel (about `dist` pixels outwards)
-    if s.n_level >= 2:
-        grad = (pl1 - pl0) / (s.n_level - 1)
-    else:
-        grad = (pd - L_run) / s.n_level
-    dist = n_in_r[:, 0] + 1 + (s.n_level - 1) / 2.0 - 0.25
-    Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
-    raw_rel = np.where(hs4, -dist * grad / Lsafe, np.nan)
+    # the covered part of the edge pixel (about `dist` pixels outwards), and
+    # the noise of its median of slope_lines lines (compiled)
+    raw_rel, rel_var, rel_sig = level_gradients(
+        pl0, pl1, pd, L_run, sl0, sl1, sd2, sl2, hs4, n_in, int(s.n_level), int(s.slope_lines)
+    )
     if s.slope_degree < 0:
         # (_smooth_lines' running median, of every side in one call)
         rel = _running_median(raw_rel, s.slope_lines, nv)
     else:
         rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
-    # noise of the smoothed gradient (median of slope_lines lines)
-    if s.n_level >= 2:
-        g_var = (sl1**2 + sl0**2) / (s.n_level - 1) ** 2
-    else:
-        g_var = (sd2 + sl2) / s.n_level**2
-    rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(s.slope_lines, 1)
     # Only a side whose gradient stands out of its noise is corrected (an
     # unshaded ball keeps the plain level and its noise).  The decision
     # is taken once per side (and window), not per line: shrinking each
     # line's correction by its noise would bias noisy edges inwards.
-    rel_sig = np.sqrt(rel_var)
     # (compiled: per side and window, the mean of |rel| / rel_sig over the
     # lines with signal, NaN as 0; the unshaded sides' rel set to 0)
     rel = shaded_sides(rel, rel_sig, hs4 & (rel_sig > 0), nv, float(s.slope_threshold))
-    applied = rel != 0
-    L = L_run * (1.0 + kap * rel)
-    Ls = np.where(L > 0, L, 1.0)
-    uncovered = n_win - S / Ls
-    # left: the window starts at its outermost pixel a; right: ends at b
-    e = np.where(sgn[:, 0] > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
-    var = sw2 / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
-    var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
+    # the levels, the edges from the windows' uncovered lengths and their
+    # variances (compiled)
+    L, e, var = window_edges(rel, rel_var, L_run, S, sw2, sl2, n_win, win_first, win_last, sgn1, float(kap), float(kap**2))
     abs_lo, abs_hi = lo + c0, hi + c0
     at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
     # texture indicator from pixels the edge does not use (the deep run and
@@ -945,7 +928,7 @@ def _edge_pass(
         limb_rows=hs4 & (np.minimum(deep_px[:, 0], deep_px[:, -1]) >= 0) & (np.maximum(deep_px[:, 0], deep_px[:, -1]) < w),
         pd=pd,
         sd2=sd2,
-        sgn=sgn[:, 0],
+        sgn=sgn1,
         lines_abs=np.concatenate([lines] * nv),
         dlev=np.maximum(dlev, 0.0),
         usable=usable,
