@@ -1060,6 +1060,7 @@ def warm_up() -> None:
     level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
     # the column gains' medians and the edges' whole-box and per-row passes (sections at the end of the module)
     sorted_medians(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), 0)
+    median_deviations(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_))
     shot_noise(prof, prof, 1.0, 1.0)
     line_coverage(prof, prof, k0, k1, yes, 0)
     rows4 = np.ones(4)
@@ -2866,3 +2867,67 @@ def window_edges(
         c = S[i] / Ls
         var[i] = v + (c * c * kap2 * rel_var[i] if rel[i] != 0.0 else 0.0)
     return L, e, var
+
+
+@_jit()
+def median_deviations(v: np.ndarray, mask: np.ndarray):
+    """Each column's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
+
+    ``v`` is ``where(mask, values, inf)`` sorted along the columns (axis 0);
+    the median as :func:`sorted_medians`.  Where a column's first and
+    ``n``-th sorted values are finite they are its ``n`` masked values, and
+    the deviations ``|x - med|`` in ascending order are those below the
+    median walked down (``med - x``, the same value: rounding is symmetric)
+    merged with those above walked up: their middle ranks are the
+    deviations' median, ``0.5 * (lo + hi)``, without a second sort.
+
+    Returns
+    -------
+    med, mad : ndarray (n_cols,)
+        NaN where a column has no masked value; ``mad`` also NaN where not
+        measured so (see ``exact``).
+    exact : bool
+        False when a column's masked values are not all finite (its
+        deviations must be sorted as they are).
+    """
+    n_a, n_b = v.shape
+    med = np.empty(n_b)
+    mad = np.empty(n_b)
+    exact = True
+    for o in range(n_b):
+        n = 0
+        for i in range(n_a):
+            if mask[i, o]:
+                n += 1
+        if n == 0:
+            med[o] = np.nan
+            mad[o] = np.nan
+            continue
+        lo = (n - 1) // 2
+        hi = n // 2
+        m = 0.5 * (v[lo, o] + v[hi, o])
+        med[o] = m
+        if not (math.isfinite(v[0, o]) and math.isfinite(v[n - 1, o])):
+            exact = False
+            mad[o] = np.nan
+            continue
+        below = 0
+        while below < n and v[below, o] <= m:
+            below += 1
+        i = below - 1
+        j = below
+        d_lo = 0.0
+        d_hi = 0.0
+        for rank in range(hi + 1):
+            if j >= n or (i >= 0 and m - v[i, o] <= v[j, o] - m):
+                d = m - v[i, o]
+                i -= 1
+            else:
+                d = v[j, o] - m
+                j += 1
+            if rank == lo:
+                d_lo = d
+            if rank == hi:
+                d_hi = d
+        mad[o] = 0.5 * (d_lo + d_hi)
+    return med, mad, exact

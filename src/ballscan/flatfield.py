@@ -39,7 +39,7 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
-from ._kernels import as_arg, sorted_medians
+from ._kernels import as_arg, median_deviations, sorted_medians
 from .detection import median as _median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
@@ -144,6 +144,20 @@ def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarra
     return sorted_medians(as_arg(np.sort(np.where(mask, values, np.inf), axis=axis)), mask, int(axis))
 
 
+def _column_median_mad(values: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``_masked_median(values, mask, 0)`` and the median of ``|values - it|`` where ``mask`` (each column's), by one sort.
+
+    The deviations' median comes from the sorted values themselves
+    (:func:`ballscan._kernels.median_deviations`); only where a masked value
+    is not finite are the deviations sorted as they are.
+    """
+    mask = as_arg(mask, np.bool_)
+    med, mad, exact = median_deviations(as_arg(np.sort(np.where(mask, values, np.inf), axis=0)), mask)
+    if not exact:
+        mad = _masked_median(np.abs(values - med[None, :]), mask, axis=0)
+    return med, mad
+
+
 def _inset(mask: np.ndarray, k: int) -> np.ndarray:
     """Pixels of ``mask`` with ``k`` mask pixels on either side within their line (outside the box is not mask).
 
@@ -215,8 +229,8 @@ def column_gains(
     if cols.size < _TREND_COLS:
         return none
     r, inner_c, n_c_used = r[:, cols], inner[:, cols], n[cols]
-    med = _masked_median(r, inner_c, axis=0)
-    spread = _MAD_SIGMA * _masked_median(np.abs(r - med[None, :]), inner_c, axis=0)
+    med, mad = _column_median_mad(r, inner_c)
+    spread = _MAD_SIGMA * mad
     var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's.  A
     # defective (stuck, dead, hot) column is no gain: dividing by its value
