@@ -478,3 +478,17 @@ def test_level_gradients_and_window_edges_are_the_numpy_forms_bit_for_bit():
             got = window_edges(rel, rel_var, L_run, S, sw2, sl2, n_win, win_first, win_last, sgn, kap, kap**2)
             for a, b in zip(got, (L, e, var)):
                 assert np.array_equal(a, b, equal_nan=True), (n_level, n)
+
+
+def test_rough_edges_are_the_numpy_forms():
+    from ballscan._kernels import rough_edges
+
+    rng = np.random.default_rng(17)
+    for n, w in ((1, 1), (3, 8), (40, 70), (120, 80)):
+        p = _profile(rng, n, w)
+        p[0] = 0.0  # no pixel above a zero peak's fraction but itself
+        with np.errstate(invalid="ignore"):
+            peak = p.max(axis=1)
+            above = p >= 0.25 * peak[:, None]
+        k_left, k_right = rough_edges(p, peak, 0.25)
+        assert np.array_equal(k_left, np.argmax(above, axis=1)) and np.array_equal(k_right, w - 1 - np.argmax(above[:, ::-1], axis=1)), (n, w)

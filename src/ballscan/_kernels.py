@@ -1061,6 +1061,7 @@ def warm_up() -> None:
     # the column gains' medians and the edges' whole-box and per-row passes (sections at the end of the module)
     sorted_medians(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), 0)
     median_deviations(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_))
+    rough_edges(prof, np.ones(1), 0.25)
     shot_noise(prof, prof, 1.0, 1.0)
     line_coverage(prof, prof, k0, k1, yes, 0)
     rows4 = np.ones(4)
@@ -2931,3 +2932,27 @@ def median_deviations(v: np.ndarray, mask: np.ndarray):
                 d_hi = d
         mad[o] = 0.5 * (d_lo + d_hi)
     return med, mad, exact
+
+
+@_jit()
+def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
+    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.edges._edge_pass`).
+
+    Returns
+    -------
+    k_left, k_right : ndarray of int64 (n,)
+    """
+    n, w = p.shape
+    k_left = np.zeros(n, dtype=np.int64)
+    k_right = np.full(n, w - 1, dtype=np.int64)
+    for r in range(n):
+        t = fraction * peak[r]
+        for j in range(w):
+            if p[r, j] >= t:
+                k_left[r] = j
+                break
+        for j in range(w - 1, -1, -1):
+            if p[r, j] >= t:
+                k_right[r] = j
+                break
+    return k_left, k_right

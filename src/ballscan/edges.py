@@ -44,8 +44,8 @@ import math
 import numpy as np
 
 from ._kernels import (
-    as_arg, edge_windows, finished_edges, inner_differences, level_gradients, limb_levels, line_coverage, running_medians, shaded_sides,
-    shot_noise, walk_edges, window_edges,
+    as_arg, edge_windows, finished_edges, inner_differences, level_gradients, limb_levels, line_coverage, rough_edges, running_medians,
+    shaded_sides, shot_noise, walk_edges, window_edges,
 )
 from .errors import GeometryError
 
@@ -790,7 +790,13 @@ def _edge_pass(
     sd = _as_columns(noise_dn, n_img, W, "noise_dn")[l0:l1, c0:c1]
     raw = data[l0:l1, c0:c1]
     p = pol * (raw - bg) / contrast
-    sp = np.maximum(sd, 1e-12) / contrast  # noise of p, normalised units
+    # noise of p, normalised units
+    if sd.strides[0] == 0:
+        # a scalar or per-column noise: one line's, repeated
+        sp = np.empty((n, w))
+        sp[:] = np.maximum(sd[0], 1e-12) / contrast
+    else:
+        sp = np.maximum(sd, 1e-12) / contrast
     sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
     other = np.zeros((n, w), dtype=bool)
     for o in others:
@@ -805,18 +811,15 @@ def _edge_pass(
     else:
         noise_row = np.median(sp, axis=1)
     has_signal = peak > s.min_snr * noise_row
-    above = p >= s.find_fraction * peak[:, None]
-    k_left = np.argmax(above, axis=1)
-    k_right = w - 1 - np.argmax(above[:, ::-1], axis=1)
+    # the first and last pixels at find_fraction of the peak (compiled)
+    k_left, k_right = rough_edges(p, peak, float(s.find_fraction))
     # A shaded limb can be darker than a fraction of a bright seam's peak:
     # walk outwards while the next pixel still holds find_fraction of its
     # inner neighbour (and is significant), so that the window sits on the
     # ball's real edge.
     floor_p = s.min_snr * noise_row
     # (compiled: line by line, where the numpy form stepped all lines at once)
-    k_left, k_right = walk_edges(
-        p, as_arg(k_left, np.int64), as_arg(k_right, np.int64), as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px)
-    )
+    k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
 
     # Signal-dependent noise (shot noise): the background's noise understates
     # the ball's.  Estimate the ball's pixel noise from second differences
