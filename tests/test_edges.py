@@ -492,3 +492,26 @@ def test_rough_edges_are_the_numpy_forms():
             above = p >= 0.25 * peak[:, None]
         k_left, k_right = rough_edges(p, peak, 0.25)
         assert np.array_equal(k_left, np.argmax(above, axis=1)) and np.array_equal(k_right, w - 1 - np.argmax(above[:, ::-1], axis=1)), (n, w)
+
+
+def test_limb_pixels_and_finite_rows_are_the_numpy_forms():
+    from ballscan._kernels import finite_rows, limb_pixels
+
+    rng = np.random.default_rng(18)
+    R = 40
+    sgn = np.where(rng.random(R) < 0.5, 1, -1)
+    win_first = rng.integers(0, 100, R)
+    win_last = win_first - sgn * rng.integers(1, 6, R)
+    n_win = np.abs(win_last - win_first) + 1
+    lev = np.stack([win_last + sgn, win_last + 2 * sgn], axis=1)
+    deep = lev + 2 * sgn[:, None]
+    rows = np.flatnonzero(rng.random(R) < 0.7)
+    # the numpy form of ballscan.edges._limb_levels
+    sg = sgn[rows].astype(float)
+    k = np.arange(int(n_win[rows].max()))
+    first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
+    px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+    got = limb_pixels(rows, sgn, win_first, win_last, n_win, lev, deep)
+    assert np.array_equal(got[0], sg) and np.array_equal(got[1], px) and got[2] == k.size
+    a = _profile(rng, 60, 30)
+    assert np.array_equal(finite_rows(a), np.all(np.isfinite(a), axis=1))

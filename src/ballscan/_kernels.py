@@ -1072,6 +1072,8 @@ def warm_up() -> None:
     shaded_sides(rows4, rows4, flags4, 4, 2.0)
     window_edges(rows4, rows4, rows4, rows4, rows4, rows4, ints4, ints4, ints4, ints4, 1.0, 1.0)
     finished_edges(rows4, rows4, rows4, rows4, ints4, rows4, flags4, rows4, flags4, yes, yes, 0)
+    limb_pixels(k0, ints4, ints4, ints4, ints4, np.zeros((4, 2), dtype=np.int64), np.zeros((4, 2), dtype=np.int64))
+    finite_rows(prof)
     warm_up_stream()
 
 
@@ -2956,3 +2958,50 @@ def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
                 k_right[r] = j
                 break
     return k_left, k_right
+
+
+@_jit()
+def limb_pixels(rows: np.ndarray, sgn: np.ndarray, win_first: np.ndarray, win_last: np.ndarray, n_win: np.ndarray, lev: np.ndarray, deep: np.ndarray):
+    """The pixel centres of :func:`limb_levels`'s rows ``rows`` of the edges of :func:`ballscan.edges._edge_pass`.
+
+    Each row's window from its outermost pixel inwards (as many as the
+    longest window of the rows: ``kw``), then its level run ``lev`` and the
+    run inside it ``deep`` (box pixels, as float).
+
+    Returns
+    -------
+    sg : ndarray (R,)
+        The rows' sides as float (+1 left, -1 right).
+    px : ndarray (R, kw + 2 n_level)
+    kw : int
+    """
+    R = rows.shape[0]
+    n_level = lev.shape[1]
+    kw = 0
+    for i in range(R):
+        kw = max(kw, n_win[rows[i]])
+    sg = np.empty(R)
+    px = np.empty((R, kw + 2 * n_level))
+    for i in range(R):
+        r = rows[i]
+        sg[i] = float(sgn[r])
+        first = min(win_first[r], win_last[r]) if sg[i] > 0 else max(win_first[r], win_last[r])
+        for k in range(kw):
+            px[i, k] = first + sg[i] * k
+        for j in range(n_level):
+            px[i, kw + j] = lev[r, j]
+            px[i, kw + n_level + j] = deep[r, j]
+    return sg, px, kw
+
+
+@_jit()
+def finite_rows(a: np.ndarray) -> np.ndarray:
+    """``np.all(np.isfinite(a), axis=1)`` of a 2-D array (each row stops at its first non-finite value)."""
+    n, w = a.shape
+    out = np.ones(n, dtype=np.bool_)
+    for r in range(n):
+        for j in range(w):
+            if not math.isfinite(a[r, j]):
+                out[r] = False
+                break
+    return out

@@ -44,8 +44,8 @@ import math
 import numpy as np
 
 from ._kernels import (
-    as_arg, edge_windows, finished_edges, inner_differences, level_gradients, limb_levels, line_coverage, rough_edges, running_medians,
-    shaded_sides, shot_noise, walk_edges, window_edges,
+    as_arg, edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
+    rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
 from .errors import GeometryError
 
@@ -478,19 +478,16 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     rows = np.flatnonzero(valid & np.isfinite(e))
     if rows.size == 0:
         return edge, var, L
-    sg = sgn[rows].astype(float)
     # the window from its outermost pixel inwards, then the level run and
-    # the run inside it, in one array
-    k = np.arange(int(n_win[rows].max()))
-    first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
-    px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+    # the run inside it, in one array (compiled)
+    sg, px, kw = limb_pixels(rows, sgn, win_first, win_last, n_win, lev, deep)
     # the data's ratio of the run inside the level run to the level run, and
     # how far the model's may differ (texture, not shading, beyond)
     with np.errstate(invalid="ignore", divide="ignore"):
         q_data = pd[rows] / L_run[rows]
         q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
     edge[rows], var[rows], L[rows], rays_ok = limb_levels(
-        sg, px, as_arg(n_win[rows], np.int64), k.size, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_run[rows], sl2[rows],
+        sg, px, as_arg(n_win[rows], np.int64), kw, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_run[rows], sl2[rows],
         as_arg(sw[rows]), q_data, 3.0 * q_sig + tol, int(m), *limb.rows(lines_abs[rows], sg),
     )
     if not rays_ok:
@@ -986,7 +983,7 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
         # not where a pixel of the line is saturated or another ball's (NaN in
         # the profile): its area is not the ball's coverage times a level
-        clean = np.all(np.isfinite(ps.common["profile"]), axis=1)
+        clean = finite_rows(ps.common["profile"])
         want = np.flatnonzero(
             has_signal & clean & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR))
         )
