@@ -2490,11 +2490,13 @@ def interior_normals(
 # ---------------------------------------------------------------------------
 # Column gains: the masked medians of ballscan.flatfield.column_gains
 # ---------------------------------------------------------------------------
-# column_gains takes three medians of the masked pixels of a ball's box
-# (each line's, then each column's twice), each by numpy's sort of the box
-# with inf where unmasked (15 us, faster than a compiled selection: 50 us)
-# and then the mask's counts and two gathers of the middle ranks, another
-# 20 us of small numpy calls that one loop does in 2.
+# column_gains takes three medians of the masked pixels of a ball's box: each
+# line's, each column's and each column's absolute deviation from it.  numpy's
+# sort of the box with inf where unmasked stays (15 us, faster than a
+# compiled selection: 50 us); the middle ranks are picked here (as numpy the
+# mask's counts and two gathers, another 20 us of small calls), and the
+# deviations' median is merged from the same sorted columns instead of a
+# second sort.
 
 
 @_jit()
@@ -2527,17 +2529,109 @@ def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
     return out
 
 
+@_jit()
+def median_deviations(v: np.ndarray, mask: np.ndarray):
+    """Each column's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
+
+    ``v`` is ``where(mask, values, inf)`` sorted along the columns (axis 0);
+    the median as :func:`sorted_medians`.  Where a column's first and
+    ``n``-th sorted values are finite they are its ``n`` masked values, and
+    the deviations ``|x - med|`` in ascending order are those below the
+    median walked down (``med - x``, the same value: rounding is symmetric)
+    merged with those above walked up: their middle ranks are the
+    deviations' median, ``0.5 * (lo + hi)``, without a second sort.
+
+    Returns
+    -------
+    med, mad : ndarray (n_cols,)
+        NaN where a column has no masked value; ``mad`` also NaN where not
+        measured so (see ``exact``).
+    exact : bool
+        False when a column's masked values are not all finite (its
+        deviations must be sorted as they are).
+    """
+    n_a, n_b = v.shape
+    med = np.empty(n_b)
+    mad = np.empty(n_b)
+    exact = True
+    for o in range(n_b):
+        n = 0
+        for i in range(n_a):
+            if mask[i, o]:
+                n += 1
+        if n == 0:
+            med[o] = np.nan
+            mad[o] = np.nan
+            continue
+        lo = (n - 1) // 2
+        hi = n // 2
+        m = 0.5 * (v[lo, o] + v[hi, o])
+        med[o] = m
+        if not (math.isfinite(v[0, o]) and math.isfinite(v[n - 1, o])):
+            exact = False
+            mad[o] = np.nan
+            continue
+        below = 0
+        while below < n and v[below, o] <= m:
+            below += 1
+        i = below - 1
+        j = below
+        d_lo = 0.0
+        d_hi = 0.0
+        for rank in range(hi + 1):
+            if j >= n or (i >= 0 and m - v[i, o] <= v[j, o] - m):
+                d = m - v[i, o]
+                i -= 1
+            else:
+                d = v[j, o] - m
+                j += 1
+            if rank == lo:
+                d_lo = d
+            if rank == hi:
+                d_hi = d
+        mad[o] = 0.5 * (d_lo + d_hi)
+    return med, mad, exact
+
+
 # ---------------------------------------------------------------------------
-# Edge measurement: the first pass's whole-box passes
+# Edge measurement: the first pass's and the finish's small array passes
 # ---------------------------------------------------------------------------
-# ballscan.edges._edge_pass spent a third of its time in numpy expressions of
-# a few passes each over the box (the shot noise's sigmas, the lines' summed
-# coverage and centroid) or over the edges' rows (the shading decision per
-# side), some 0.15 ms a ball; one loop each does the same arithmetic, the
-# sums in numpy's (pairwise) order, so the values are the same.
+# After the windows' sums (edge_windows) ballscan.edges._edge_pass and
+# _finish were some hundred numpy expressions of a few microseconds each on
+# the box (the rough edges, the shot noise's sigmas, the lines' summed
+# coverage) or on the edges' rows (the level gradients and their running
+# medians, the shading decision per side, the levels, edges and variances,
+# the usable edges and the lines' fields, the limb levels' pixel centres):
+# 0.3 ms of a stream ball's 0.64 ms measure_edges.  Each loop below does the
+# same arithmetic in the same order (sums in numpy's pairwise order), so the
+# values are the same bit for bit.
 
 # np.nan_to_num's value for an infinity
 _FLOAT_MAX = float(np.finfo(np.float64).max)
+
+
+@_jit()
+def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
+    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.edges._edge_pass`).
+
+    Returns
+    -------
+    k_left, k_right : ndarray of int64 (n,)
+    """
+    n, w = p.shape
+    k_left = np.zeros(n, dtype=np.int64)
+    k_right = np.full(n, w - 1, dtype=np.int64)
+    for r in range(n):
+        t = fraction * peak[r]
+        for j in range(w):
+            if p[r, j] >= t:
+                k_left[r] = j
+                break
+        for j in range(w - 1, -1, -1):
+            if p[r, j] >= t:
+                k_right[r] = j
+                break
+    return k_left, k_right
 
 
 @_jit(error_model="numpy")
@@ -2578,6 +2672,145 @@ def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.
     return out
 
 
+@_jit(error_model="numpy")
+def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, c0: int):
+    """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.edges._edge_pass`).
+
+    Over the columns ``k_left - 3`` to ``k_right + 3`` of a line with
+    signal, else the whole line: ``area = sum p``, ``area_sig = sqrt(sum
+    sp^2)`` and ``centroid = sum p (j + c0) / area``, NaN unless ``area >
+    3 area_sig``.  Each sum is numpy's of the line with zeros outside the
+    columns (pairwise, :func:`_pairwise_sum`).
+    """
+    n, w = p.shape
+    area = np.empty(n)
+    area_sig = np.empty(n)
+    centroid = np.empty(n)
+    b_p = np.empty(w)
+    b_s = np.empty(w)
+    b_c = np.empty(w)
+    for r in range(n):
+        lo = k_left[r] - 3 if has_signal[r] else 0
+        hi = k_right[r] + 3 if has_signal[r] else w - 1
+        for j in range(w):
+            if lo <= j <= hi:
+                b_p[j] = p[r, j]
+                b_s[j] = sp[r, j] * sp[r, j]
+                b_c[j] = p[r, j] * float(j + c0)
+            else:
+                b_p[j] = 0.0
+                b_s[j] = 0.0
+                b_c[j] = 0.0
+        area[r] = _pairwise_sum(b_p)
+        area_sig[r] = math.sqrt(_pairwise_sum(b_s))
+        centroid[r] = _pairwise_sum(b_c) / area[r] if area[r] > 3.0 * area_sig[r] else np.nan
+    return area, area_sig, centroid
+
+
+@_jit(error_model="numpy")
+def level_gradients(
+    pl0: np.ndarray,
+    pl1: np.ndarray,
+    pd: np.ndarray,
+    L_run: np.ndarray,
+    sl0: np.ndarray,
+    sl1: np.ndarray,
+    sd2: np.ndarray,
+    sl2: np.ndarray,
+    has_signal: np.ndarray,
+    n_in: np.ndarray,
+    n_level: int,
+    slope_lines: int,
+):
+    """The relative level gradient of each edge row of :func:`ballscan.edges._edge_pass` and its variance as a median of ``slope_lines``.
+
+    Rows as :func:`edge_windows` (``2 n`` per window variant, ``n_in[v]``
+    its pixels inside the rough edge): the gradient per pixel across the
+    level run (first and last pixels ``pl0, pl1``, sigmas ``sl0, sl1``; with
+    a one-pixel run, the deep run ``pd`` against it), times ``-dist /
+    L_run`` (``dist`` from the run's centre to the edge pixel's covered
+    part, ``L_run`` 1 where 0), NaN on lines without signal; each operation
+    as the numpy form's.
+
+    Returns
+    -------
+    raw_rel, rel_var, rel_sig : ndarray (R,)
+    """
+    R = pl0.shape[0]
+    per_variant = R // n_in.shape[0]
+    raw_rel = np.empty(R)
+    rel_var = np.empty(R)
+    rel_sig = np.empty(R)
+    for i in range(R):
+        dist = float(n_in[i // per_variant] + 1) + (n_level - 1) / 2.0 - 0.25
+        Lsafe = L_run[i] if abs(L_run[i]) > 0.0 else 1.0
+        if n_level >= 2:
+            grad = (pl1[i] - pl0[i]) / float(n_level - 1)
+            g_var = (sl1[i] * sl1[i] + sl0[i] * sl0[i]) / float((n_level - 1) ** 2)
+        else:
+            grad = (pd[i] - L_run[i]) / float(n_level)
+            g_var = (sd2[i] + sl2[i]) / float(n_level**2)
+        raw_rel[i] = -dist * grad / Lsafe if has_signal[i] else np.nan
+        rel_var[i] = dist * dist * g_var / (Lsafe * Lsafe) * (math.pi / 2.0) / float(max(slope_lines, 1))
+        rel_sig[i] = math.sqrt(rel_var[i])
+    return raw_rel, rel_var, rel_sig
+
+
+@_jit()
+def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
+    """:func:`running_median` of each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
+
+    The same values: each window is kept sorted in numpy's order (NaN last)
+    and, among equal values, in index order, as :func:`running_median`'s
+    insertion sort leaves it; a step drops the oldest entry and inserts the
+    newest instead of sorting the window anew (whose unpredictable
+    comparisons were most of its time on the crops).
+    """
+    size = x.shape[0] // n_blocks
+    h = n // 2
+    wl = 2 * h + 1
+    out = np.empty(x.shape[0])
+    buf = np.empty(wl)
+    idx = np.empty(wl, dtype=np.int64)
+    for blk in range(n_blocks):
+        x0 = blk * size
+        m = 0
+        cnt = 0
+        for i in range(-h, size + h):
+            v = x[x0 + i] if 0 <= i < size else np.nan
+            if m == wl:
+                # drop the window's oldest entry (index i - wl)
+                k = 0
+                while idx[k] != i - wl:
+                    k += 1
+                if math.isfinite(buf[k]):
+                    cnt -= 1
+                for q in range(k, m - 1):
+                    buf[q] = buf[q + 1]
+                    idx[q] = idx[q + 1]
+                m -= 1
+            if math.isfinite(v):
+                cnt += 1
+            # after every entry it does not sort before (the newest index)
+            p = m
+            while p > 0 and _nan_last_less(v, buf[p - 1]):
+                buf[p] = buf[p - 1]
+                idx[p] = idx[p - 1]
+                p -= 1
+            buf[p] = v
+            idx[p] = i
+            m += 1
+            c = i - h
+            if c >= 0:
+                if cnt == 0:
+                    out[x0 + c] = np.nan
+                else:
+                    lo = max(cnt - 1, 0) // 2
+                    hi = min(cnt // 2, wl - 1)
+                    out[x0 + c] = 0.5 * (buf[lo] + buf[hi])
+    return out
+
+
 @_jit()
 def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides: int, threshold: float) -> np.ndarray:
     """The smoothed relative level gradients of :func:`ballscan.edges._edge_pass` that are applied, 0 elsewhere.
@@ -2613,38 +2846,53 @@ def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides:
 
 
 @_jit(error_model="numpy")
-def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, c0: int):
-    """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.edges._edge_pass`).
+def window_edges(
+    rel: np.ndarray,
+    rel_var: np.ndarray,
+    L_run: np.ndarray,
+    S: np.ndarray,
+    sw2: np.ndarray,
+    sl2: np.ndarray,
+    n_win: np.ndarray,
+    win_first: np.ndarray,
+    win_last: np.ndarray,
+    sgn: np.ndarray,
+    kap: float,
+    kap2: float,
+):
+    """The model-free edges of :func:`ballscan.edges._edge_pass`: level, edge and variance of each edge row.
 
-    Over the columns ``k_left - 3`` to ``k_right + 3`` of a line with
-    signal, else the whole line: ``area = sum p``, ``area_sig = sqrt(sum
-    sp^2)`` and ``centroid = sum p (j + c0) / area``, NaN unless ``area >
-    3 area_sig``.  Each sum is numpy's of the line with zeros outside the
-    columns (pairwise, :func:`_pairwise_sum`).
+    The level ``L = L_run (1 + kap rel)`` (``rel`` the applied relative
+    gradient, 0 where not), the edge from the window's uncovered length
+    ``n_win - S / L`` (``L`` 1 where not positive) at its outermost pixel
+    and its variance from the window's and the level run's noise (and the
+    gradient's, ``kap2 rel_var``, where applied); each operation as the
+    numpy form's (``kap2`` is its ``kap**2``).
+
+    Returns
+    -------
+    L, e, var : ndarray (R,)
     """
-    n, w = p.shape
-    area = np.empty(n)
-    area_sig = np.empty(n)
-    centroid = np.empty(n)
-    b_p = np.empty(w)
-    b_s = np.empty(w)
-    b_c = np.empty(w)
-    for r in range(n):
-        lo = k_left[r] - 3 if has_signal[r] else 0
-        hi = k_right[r] + 3 if has_signal[r] else w - 1
-        for j in range(w):
-            if lo <= j <= hi:
-                b_p[j] = p[r, j]
-                b_s[j] = sp[r, j] * sp[r, j]
-                b_c[j] = p[r, j] * float(j + c0)
-            else:
-                b_p[j] = 0.0
-                b_s[j] = 0.0
-                b_c[j] = 0.0
-        area[r] = _pairwise_sum(b_p)
-        area_sig[r] = math.sqrt(_pairwise_sum(b_s))
-        centroid[r] = _pairwise_sum(b_c) / area[r] if area[r] > 3.0 * area_sig[r] else np.nan
-    return area, area_sig, centroid
+    R = rel.shape[0]
+    L = np.empty(R)
+    e = np.empty(R)
+    var = np.empty(R)
+    for i in range(R):
+        f = 1.0 + kap * rel[i]
+        L[i] = L_run[i] * f
+        Ls = L[i] if L[i] > 0.0 else 1.0
+        uncovered = n_win[i] - S[i] / Ls
+        # left: the window starts at its outermost pixel a; right: ends at b
+        if sgn[i] > 0:
+            e[i] = (min(win_first[i], win_last[i]) - 0.5) + uncovered
+        else:
+            e[i] = (max(win_first[i], win_last[i]) + 0.5) - uncovered
+        Ls2 = Ls * Ls
+        u = S[i] / Ls2
+        v = sw2[i] / Ls2 + u * u * sl2[i] * (f * f)
+        c = S[i] / Ls
+        var[i] = v + (c * c * kap2 * rel_var[i] if rel[i] != 0.0 else 0.0)
+    return L, e, var
 
 
 @_jit(error_model="numpy")
@@ -2716,248 +2964,6 @@ def finished_edges(
             level[r] = np.nan
         end_line[r] = hs and not (ok_l and ok_r) and not spoiled[r]
     return ok, edge, sig, tex, level, end_line
-
-
-@_jit()
-def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
-    """:func:`running_median` of each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
-
-    The same values: each window is kept sorted in numpy's order (NaN last)
-    and, among equal values, in index order, as :func:`running_median`'s
-    insertion sort leaves it; a step drops the oldest entry and inserts the
-    newest instead of sorting the window anew (whose unpredictable
-    comparisons were most of its time on the crops).
-    """
-    size = x.shape[0] // n_blocks
-    h = n // 2
-    wl = 2 * h + 1
-    out = np.empty(x.shape[0])
-    buf = np.empty(wl)
-    idx = np.empty(wl, dtype=np.int64)
-    for blk in range(n_blocks):
-        x0 = blk * size
-        m = 0
-        cnt = 0
-        for i in range(-h, size + h):
-            v = x[x0 + i] if 0 <= i < size else np.nan
-            if m == wl:
-                # drop the window's oldest entry (index i - wl)
-                k = 0
-                while idx[k] != i - wl:
-                    k += 1
-                if math.isfinite(buf[k]):
-                    cnt -= 1
-                for q in range(k, m - 1):
-                    buf[q] = buf[q + 1]
-                    idx[q] = idx[q + 1]
-                m -= 1
-            if math.isfinite(v):
-                cnt += 1
-            # after every entry it does not sort before (the newest index)
-            p = m
-            while p > 0 and _nan_last_less(v, buf[p - 1]):
-                buf[p] = buf[p - 1]
-                idx[p] = idx[p - 1]
-                p -= 1
-            buf[p] = v
-            idx[p] = i
-            m += 1
-            c = i - h
-            if c >= 0:
-                if cnt == 0:
-                    out[x0 + c] = np.nan
-                else:
-                    lo = max(cnt - 1, 0) // 2
-                    hi = min(cnt // 2, wl - 1)
-                    out[x0 + c] = 0.5 * (buf[lo] + buf[hi])
-    return out
-
-
-@_jit(error_model="numpy")
-def level_gradients(
-    pl0: np.ndarray,
-    pl1: np.ndarray,
-    pd: np.ndarray,
-    L_run: np.ndarray,
-    sl0: np.ndarray,
-    sl1: np.ndarray,
-    sd2: np.ndarray,
-    sl2: np.ndarray,
-    has_signal: np.ndarray,
-    n_in: np.ndarray,
-    n_level: int,
-    slope_lines: int,
-):
-    """The relative level gradient of each edge row of :func:`ballscan.edges._edge_pass` and its variance as a median of ``slope_lines``.
-
-    Rows as :func:`edge_windows` (``2 n`` per window variant, ``n_in[v]``
-    its pixels inside the rough edge): the gradient per pixel across the
-    level run (first and last pixels ``pl0, pl1``, sigmas ``sl0, sl1``; with
-    a one-pixel run, the deep run ``pd`` against it), times ``-dist /
-    L_run`` (``dist`` from the run's centre to the edge pixel's covered
-    part, ``L_run`` 1 where 0), NaN on lines without signal; each operation
-    as the numpy form's.
-
-    Returns
-    -------
-    raw_rel, rel_var, rel_sig : ndarray (R,)
-    """
-    R = pl0.shape[0]
-    per_variant = R // n_in.shape[0]
-    raw_rel = np.empty(R)
-    rel_var = np.empty(R)
-    rel_sig = np.empty(R)
-    for i in range(R):
-        dist = float(n_in[i // per_variant] + 1) + (n_level - 1) / 2.0 - 0.25
-        Lsafe = L_run[i] if abs(L_run[i]) > 0.0 else 1.0
-        if n_level >= 2:
-            grad = (pl1[i] - pl0[i]) / float(n_level - 1)
-            g_var = (sl1[i] * sl1[i] + sl0[i] * sl0[i]) / float((n_level - 1) ** 2)
-        else:
-            grad = (pd[i] - L_run[i]) / float(n_level)
-            g_var = (sd2[i] + sl2[i]) / float(n_level**2)
-        raw_rel[i] = -dist * grad / Lsafe if has_signal[i] else np.nan
-        rel_var[i] = dist * dist * g_var / (Lsafe * Lsafe) * (math.pi / 2.0) / float(max(slope_lines, 1))
-        rel_sig[i] = math.sqrt(rel_var[i])
-    return raw_rel, rel_var, rel_sig
-
-
-@_jit(error_model="numpy")
-def window_edges(
-    rel: np.ndarray,
-    rel_var: np.ndarray,
-    L_run: np.ndarray,
-    S: np.ndarray,
-    sw2: np.ndarray,
-    sl2: np.ndarray,
-    n_win: np.ndarray,
-    win_first: np.ndarray,
-    win_last: np.ndarray,
-    sgn: np.ndarray,
-    kap: float,
-    kap2: float,
-):
-    """The model-free edges of :func:`ballscan.edges._edge_pass`: level, edge and variance of each edge row.
-
-    The level ``L = L_run (1 + kap rel)`` (``rel`` the applied relative
-    gradient, 0 where not), the edge from the window's uncovered length
-    ``n_win - S / L`` (``L`` 1 where not positive) at its outermost pixel
-    and its variance from the window's and the level run's noise (and the
-    gradient's, ``kap2 rel_var``, where applied); each operation as the
-    numpy form's (``kap2`` is its ``kap**2``).
-
-    Returns
-    -------
-    L, e, var : ndarray (R,)
-    """
-    R = rel.shape[0]
-    L = np.empty(R)
-    e = np.empty(R)
-    var = np.empty(R)
-    for i in range(R):
-        f = 1.0 + kap * rel[i]
-        L[i] = L_run[i] * f
-        Ls = L[i] if L[i] > 0.0 else 1.0
-        uncovered = n_win[i] - S[i] / Ls
-        # left: the window starts at its outermost pixel a; right: ends at b
-        if sgn[i] > 0:
-            e[i] = (min(win_first[i], win_last[i]) - 0.5) + uncovered
-        else:
-            e[i] = (max(win_first[i], win_last[i]) + 0.5) - uncovered
-        Ls2 = Ls * Ls
-        u = S[i] / Ls2
-        v = sw2[i] / Ls2 + u * u * sl2[i] * (f * f)
-        c = S[i] / Ls
-        var[i] = v + (c * c * kap2 * rel_var[i] if rel[i] != 0.0 else 0.0)
-    return L, e, var
-
-
-@_jit()
-def median_deviations(v: np.ndarray, mask: np.ndarray):
-    """Each column's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
-
-    ``v`` is ``where(mask, values, inf)`` sorted along the columns (axis 0);
-    the median as :func:`sorted_medians`.  Where a column's first and
-    ``n``-th sorted values are finite they are its ``n`` masked values, and
-    the deviations ``|x - med|`` in ascending order are those below the
-    median walked down (``med - x``, the same value: rounding is symmetric)
-    merged with those above walked up: their middle ranks are the
-    deviations' median, ``0.5 * (lo + hi)``, without a second sort.
-
-    Returns
-    -------
-    med, mad : ndarray (n_cols,)
-        NaN where a column has no masked value; ``mad`` also NaN where not
-        measured so (see ``exact``).
-    exact : bool
-        False when a column's masked values are not all finite (its
-        deviations must be sorted as they are).
-    """
-    n_a, n_b = v.shape
-    med = np.empty(n_b)
-    mad = np.empty(n_b)
-    exact = True
-    for o in range(n_b):
-        n = 0
-        for i in range(n_a):
-            if mask[i, o]:
-                n += 1
-        if n == 0:
-            med[o] = np.nan
-            mad[o] = np.nan
-            continue
-        lo = (n - 1) // 2
-        hi = n // 2
-        m = 0.5 * (v[lo, o] + v[hi, o])
-        med[o] = m
-        if not (math.isfinite(v[0, o]) and math.isfinite(v[n - 1, o])):
-            exact = False
-            mad[o] = np.nan
-            continue
-        below = 0
-        while below < n and v[below, o] <= m:
-            below += 1
-        i = below - 1
-        j = below
-        d_lo = 0.0
-        d_hi = 0.0
-        for rank in range(hi + 1):
-            if j >= n or (i >= 0 and m - v[i, o] <= v[j, o] - m):
-                d = m - v[i, o]
-                i -= 1
-            else:
-                d = v[j, o] - m
-                j += 1
-            if rank == lo:
-                d_lo = d
-            if rank == hi:
-                d_hi = d
-        mad[o] = 0.5 * (d_lo + d_hi)
-    return med, mad, exact
-
-
-@_jit()
-def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
-    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.edges._edge_pass`).
-
-    Returns
-    -------
-    k_left, k_right : ndarray of int64 (n,)
-    """
-    n, w = p.shape
-    k_left = np.zeros(n, dtype=np.int64)
-    k_right = np.full(n, w - 1, dtype=np.int64)
-    for r in range(n):
-        t = fraction * peak[r]
-        for j in range(w):
-            if p[r, j] >= t:
-                k_left[r] = j
-                break
-        for j in range(w - 1, -1, -1):
-            if p[r, j] >= t:
-                k_right[r] = j
-                break
-    return k_left, k_right
 
 
 @_jit()
