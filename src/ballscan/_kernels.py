@@ -2531,33 +2531,35 @@ def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
 
 @_jit()
 def median_deviations(v: np.ndarray, mask: np.ndarray):
-    """Each column's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
+    """Each row's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
 
-    ``v`` is ``where(mask, values, inf)`` sorted along the columns (axis 0);
-    the median as :func:`sorted_medians`.  Where a column's first and
-    ``n``-th sorted values are finite they are its ``n`` masked values, and
-    the deviations ``|x - med|`` in ascending order are those below the
-    median walked down (``med - x``, the same value: rounding is symmetric)
-    merged with those above walked up: their middle ranks are the
-    deviations' median, ``0.5 * (lo + hi)``, without a second sort.
+    ``v`` is ``where(mask, values, inf)`` sorted along its rows (the box's
+    columns, transposed); the median as :func:`sorted_medians`.  Where a
+    row's first and ``n``-th sorted values are finite they are its ``n``
+    masked values, and the deviations ``|x - med|`` in ascending order are
+    those below the median walked down (``med - x``, the same value:
+    rounding is symmetric) merged with those above walked up: their middle
+    ranks are the deviations' median, ``0.5 * (lo + hi)``, without a second
+    sort.
 
     Returns
     -------
-    med, mad : ndarray (n_cols,)
-        NaN where a column has no masked value; ``mad`` also NaN where not
+    med, mad : ndarray (n_rows,)
+        NaN where a row has no masked value; ``mad`` also NaN where not
         measured so (see ``exact``).
     exact : bool
-        False when a column's masked values are not all finite (its
-        deviations must be sorted as they are).
+        False when a row's masked values are not all finite (its deviations
+        must be sorted as they are).
     """
-    n_a, n_b = v.shape
-    med = np.empty(n_b)
-    mad = np.empty(n_b)
+    n_rows, n_along = v.shape
+    med = np.empty(n_rows)
+    mad = np.empty(n_rows)
     exact = True
-    for o in range(n_b):
+    for o in range(n_rows):
+        x = v[o]
         n = 0
-        for i in range(n_a):
-            if mask[i, o]:
+        for i in range(n_along):
+            if mask[o, i]:
                 n += 1
         if n == 0:
             med[o] = np.nan
@@ -2565,25 +2567,25 @@ def median_deviations(v: np.ndarray, mask: np.ndarray):
             continue
         lo = (n - 1) // 2
         hi = n // 2
-        m = 0.5 * (v[lo, o] + v[hi, o])
+        m = 0.5 * (x[lo] + x[hi])
         med[o] = m
-        if not (math.isfinite(v[0, o]) and math.isfinite(v[n - 1, o])):
+        if not (math.isfinite(x[0]) and math.isfinite(x[n - 1])):
             exact = False
             mad[o] = np.nan
             continue
         below = 0
-        while below < n and v[below, o] <= m:
+        while below < n and x[below] <= m:
             below += 1
         i = below - 1
         j = below
         d_lo = 0.0
         d_hi = 0.0
         for rank in range(hi + 1):
-            if j >= n or (i >= 0 and m - v[i, o] <= v[j, o] - m):
-                d = m - v[i, o]
+            if j >= n or (i >= 0 and m - x[i] <= x[j] - m):
+                d = m - x[i]
                 i -= 1
             else:
-                d = v[j, o] - m
+                d = x[j] - m
                 j += 1
             if rank == lo:
                 d_lo = d

@@ -151,8 +151,10 @@ def _column_median_mad(values: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray
     (:func:`ballscan._kernels.median_deviations`); only where a masked value
     is not finite are the deviations sorted as they are.
     """
-    mask = as_arg(mask, np.bool_)
-    med, mad, exact = median_deviations(as_arg(np.sort(np.where(mask, values, np.inf), axis=0)), mask)
+    # (column by column along the transposed box: the columns of a box
+    # indexed by its columns are contiguous)
+    mask_t = as_arg(mask.T, np.bool_)
+    med, mad, exact = median_deviations(as_arg(np.sort(np.where(mask_t, values.T, np.inf), axis=1)), mask_t)
     if not exact:
         mad = _masked_median(np.abs(values - med[None, :]), mask, axis=0)
     return med, mad
