@@ -483,11 +483,12 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     sg, px, kw = limb_pixels(rows, sgn, win_first, win_last, n_win, lev, deep)
     # the data's ratio of the run inside the level run to the level run, and
     # how far the model's may differ (texture, not shading, beyond)
+    L_r, pd_r, sl2_r = L_run[rows], pd[rows], sl2[rows]
     with np.errstate(invalid="ignore", divide="ignore"):
-        q_data = pd[rows] / L_run[rows]
-        q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
+        q_data = pd_r / L_r
+        q_sig = np.sqrt(sd2[rows] / L_r**2 + sl2_r * pd_r**2 / L_r**4)
     edge[rows], var[rows], L[rows], rays_ok = limb_levels(
-        sg, px, as_arg(n_win[rows], np.int64), kw, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_run[rows], sl2[rows],
+        sg, px, as_arg(n_win[rows], np.int64), kw, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_r, sl2_r,
         as_arg(sw[rows]), q_data, 3.0 * q_sig + tol, int(m), *limb.rows(lines_abs[rows], sg),
     )
     if not rays_ok:

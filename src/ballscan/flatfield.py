@@ -250,9 +250,10 @@ def column_gains(
         d = med[ok] / trend[ok] - 1.0
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
-        scatter = _MAD_SIGMA * float(_median(np.abs(d - _median(d))))
+        dev = np.abs(d - _median(d))
+        scatter = _MAD_SIGMA * float(_median(dev))
         # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
-        z = np.abs(d - _median(d)) / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
+        z = dev / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
         if z[worst] <= _DEFECT_SIGMAS or far_all.sum() == _MAX_DEFECTS:
             break
