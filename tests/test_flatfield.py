@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.flatfield import column_gains, flat_fielded
+from ballscan.flatfield import _column_median_mad, _masked_median, column_gains, flat_fielded
 
 
 def _disc(n_lines: int, n_cols: int, prnu: float, noise: float, seed: int, shade: float = 0.0):
@@ -96,3 +96,49 @@ def test_a_stuck_column_is_no_gain_and_flat_fielding_stays_below_saturation():
     sat = float(data.max()) + 0.5
     ff = flat_fielded(data, bg, g, slice(0, data.shape[0]), saturation_dn=sat)
     assert np.all(ff[data < sat] < sat) and np.all(np.isfinite(ff))
+
+
+def _masked_median_numpy(values, mask, axis):
+    """The numpy form of ballscan.flatfield._masked_median (one sort, the mask's counts and two gathers)."""
+    v = np.sort(np.where(mask, values, np.inf), axis=axis)
+    n = mask.sum(axis=axis)
+    lo = np.expand_dims(np.maximum((n - 1) // 2, 0), axis)
+    hi = np.expand_dims(np.maximum(n // 2, 0), axis)
+    med = 0.5 * (np.take_along_axis(v, lo, axis) + np.take_along_axis(v, hi, axis))
+    return np.where(n > 0, np.squeeze(med, axis), np.nan)
+
+
+def test_masked_median_is_the_numpy_forms_bit_for_bit():
+    rng = np.random.default_rng(5)
+    for trial in range(400):
+        a, b = (int(x) for x in rng.integers(1, 25, 2))
+        v = rng.standard_normal((a, b))
+        if trial % 3 == 0:
+            v = np.round(3 * v)  # ties
+        if trial % 4 == 0:
+            v[rng.random((a, b)) < 0.1] = np.nan
+            v[rng.random((a, b)) < 0.1] = np.inf
+        mask = rng.random((a, b)) < rng.random()
+        for axis in (0, 1):
+            with np.errstate(invalid="ignore"):
+                want = _masked_median_numpy(v, mask, axis)
+            assert np.array_equal(_masked_median(v, mask, axis), want, equal_nan=True), (trial, axis)
+
+
+def test_column_median_and_deviation_are_the_numpy_forms_bit_for_bit():
+    rng = np.random.default_rng(6)
+    for trial in range(600):
+        a, b = (int(x) for x in rng.integers(1, 40, 2))
+        v = rng.standard_normal((a, b)) * 10.0 ** rng.uniform(-3, 3)
+        if trial % 3 == 0:
+            v = np.round(3 * v) / 3  # ties
+        if trial % 5 == 0:
+            # not finite: the deviations sorted as they are
+            v[rng.random((a, b)) < 0.05] = np.nan
+            v[rng.random((a, b)) < 0.05] = -np.inf
+        mask = rng.random((a, b)) < rng.random()
+        with np.errstate(invalid="ignore"):
+            med = _masked_median_numpy(v, mask, 0)
+            mad = _masked_median_numpy(np.abs(v - med[None, :]), mask, 0)
+            got = _column_median_mad(v, mask)
+        assert np.array_equal(got[0], med, equal_nan=True) and np.array_equal(got[1], mad, equal_nan=True), trial

@@ -1058,6 +1058,22 @@ def warm_up() -> None:
     line_level_sums(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1, *law)
     interior_normals(z1, k0, k0, np.zeros((0, 0), dtype=np.bool_), 0, 0, *law[:4], *law[4:9])
     level_scatter(k0, k0, np.ones(1, dtype=np.int64), k0, np.ones((1, 1)), np.ones((1, 1)), 0, z1, z1, np.zeros((1, 1)), z1, z1, *law)
+    # the column gains' medians and the edges' whole-box and per-row passes (sections at the end of the module)
+    sorted_medians(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), 0)
+    median_deviations(np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_))
+    rough_edges(prof, np.ones(1), 0.25)
+    shot_noise(prof, prof, 1.0, 1.0)
+    line_coverage(prof, prof, k0, k1, yes, 0)
+    rows4 = np.ones(4)
+    flags4 = np.ones(4, dtype=np.bool_)
+    ints4 = np.ones(4, dtype=np.int64)
+    running_medians(rows4, 4, 3)
+    level_gradients(rows4, rows4, rows4, rows4, rows4, rows4, rows4, rows4, flags4, np.zeros(2, dtype=np.int64), 2, 9)
+    shaded_sides(rows4, rows4, flags4, 4, 2.0)
+    window_edges(rows4, rows4, rows4, rows4, rows4, rows4, ints4, ints4, ints4, ints4, 1.0, 1.0)
+    finished_edges(rows4, rows4, rows4, rows4, ints4, rows4, flags4, rows4, flags4, yes, yes, 0)
+    limb_pixels(k0, ints4, ints4, ints4, ints4, np.zeros((4, 2), dtype=np.int64), np.zeros((4, 2), dtype=np.int64))
+    finite_rows(prof)
     warm_up_stream()
 
 
@@ -2469,3 +2485,531 @@ def interior_normals(
             normals[i, 1] = ny * a
             normals[i, 2] = nz * a
     return hit, normals, rays_ok
+
+
+# ---------------------------------------------------------------------------
+# Column gains: the masked medians of ballscan.flatfield.column_gains
+# ---------------------------------------------------------------------------
+# column_gains takes three medians of the masked pixels of a ball's box: each
+# line's, each column's and each column's absolute deviation from it.  numpy's
+# sort of the box with inf where unmasked stays (15 us, faster than a
+# compiled selection: 50 us); the middle ranks are picked here (as numpy the
+# mask's counts and two gathers, another 20 us of small calls), and the
+# deviations' median is merged from the same sorted columns instead of a
+# second sort.
+
+
+@_jit()
+def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
+    """Medians of the masked values from the sorted box of :func:`ballscan.flatfield._masked_median`.
+
+    ``v`` is ``where(mask, values, inf)`` sorted along ``axis`` (0 or 1) of
+    a 2-D array: along it each line (or column) of ``n`` masked values has
+    its median at ranks ``(n - 1) // 2`` and ``n // 2``, ``0.5 * (lo +
+    hi)``; NaN where ``n`` is 0.
+    """
+    n_a, n_b = v.shape
+    n_out = n_b if axis == 0 else n_a
+    n_along = n_a if axis == 0 else n_b
+    out = np.empty(n_out)
+    for o in range(n_out):
+        n = 0
+        for i in range(n_along):
+            if (mask[i, o] if axis == 0 else mask[o, i]):
+                n += 1
+        if n == 0:
+            out[o] = np.nan
+            continue
+        lo = (n - 1) // 2
+        hi = n // 2
+        if axis == 0:
+            out[o] = 0.5 * (v[lo, o] + v[hi, o])
+        else:
+            out[o] = 0.5 * (v[o, lo] + v[o, hi])
+    return out
+
+
+@_jit()
+def median_deviations(v: np.ndarray, mask: np.ndarray):
+    """Each row's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
+
+    ``v`` is ``where(mask, values, inf)`` sorted along its rows (the box's
+    columns, transposed); the median as :func:`sorted_medians`.  Where a
+    row's first and ``n``-th sorted values are finite they are its ``n``
+    masked values, and the deviations ``|x - med|`` in ascending order are
+    those below the median walked down (``med - x``, the same value:
+    rounding is symmetric) merged with those above walked up: their middle
+    ranks are the deviations' median, ``0.5 * (lo + hi)``, without a second
+    sort.
+
+    Returns
+    -------
+    med, mad : ndarray (n_rows,)
+        NaN where a row has no masked value; ``mad`` also NaN where not
+        measured so (see ``exact``).
+    exact : bool
+        False when a row's masked values are not all finite (its deviations
+        must be sorted as they are).
+    """
+    n_rows, n_along = v.shape
+    med = np.empty(n_rows)
+    mad = np.empty(n_rows)
+    exact = True
+    for o in range(n_rows):
+        x = v[o]
+        n = 0
+        for i in range(n_along):
+            if mask[o, i]:
+                n += 1
+        if n == 0:
+            med[o] = np.nan
+            mad[o] = np.nan
+            continue
+        lo = (n - 1) // 2
+        hi = n // 2
+        m = 0.5 * (x[lo] + x[hi])
+        med[o] = m
+        if not (math.isfinite(x[0]) and math.isfinite(x[n - 1])):
+            exact = False
+            mad[o] = np.nan
+            continue
+        below = 0
+        while below < n and x[below] <= m:
+            below += 1
+        i = below - 1
+        j = below
+        d_lo = 0.0
+        d_hi = 0.0
+        for rank in range(hi + 1):
+            if j >= n or (i >= 0 and m - x[i] <= x[j] - m):
+                d = m - x[i]
+                i -= 1
+            else:
+                d = x[j] - m
+                j += 1
+            if rank == lo:
+                d_lo = d
+            if rank == hi:
+                d_hi = d
+        mad[o] = 0.5 * (d_lo + d_hi)
+    return med, mad, exact
+
+
+# ---------------------------------------------------------------------------
+# Edge measurement: the first pass's and the finish's small array passes
+# ---------------------------------------------------------------------------
+# After the windows' sums (edge_windows) ballscan.edges._edge_pass and
+# _finish were some hundred numpy expressions of a few microseconds each on
+# the box (the rough edges, the shot noise's sigmas, the lines' summed
+# coverage) or on the edges' rows (the level gradients and their running
+# medians, the shading decision per side, the levels, edges and variances,
+# the usable edges and the lines' fields, the limb levels' pixel centres):
+# 0.3 ms of a stream ball's 0.64 ms measure_edges.  Each loop below does the
+# same arithmetic in the same order (sums in numpy's pairwise order), so the
+# values are the same bit for bit.
+
+# np.nan_to_num's value for an infinity
+_FLOAT_MAX = float(np.finfo(np.float64).max)
+
+
+@_jit()
+def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
+    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.edges._edge_pass`).
+
+    Returns
+    -------
+    k_left, k_right : ndarray of int64 (n,)
+    """
+    n, w = p.shape
+    k_left = np.zeros(n, dtype=np.int64)
+    k_right = np.full(n, w - 1, dtype=np.int64)
+    for r in range(n):
+        t = fraction * peak[r]
+        for j in range(w):
+            if p[r, j] >= t:
+                k_left[r] = j
+                break
+        for j in range(w - 1, -1, -1):
+            if p[r, j] >= t:
+                k_right[r] = j
+                break
+    return k_left, k_right
+
+
+@_jit(error_model="numpy")
+def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.ndarray:
+    """The pixels' noise with the ball's shot noise, ``sqrt(sp**2 + excess * clip(q / p_in, 0, 2))`` (:func:`ballscan.edges._edge_pass`).
+
+    ``q`` is each pixel's signal from the lines before and after it (same
+    column): the mean of the two neighbours (the one neighbour on the box's
+    first and last line; the pixel itself on a one-line box).  Not the
+    pixel's own value: a variance that grows with its own noisy value gives
+    the pixels that read high less weight, and every weighted estimate that
+    uses it (the windows' sums, the matched edges' weights, the pixel fit)
+    reads the ball small: on the quick sweep's long balls (R = 0.11 m and
+    140 000 lines/s, 8-bit, shot noise, 32 seeds each) the speed read 0.23
+    +- 0.015 and 0.08 +- 0.006 sigma of the pixel bound higher than with the
+    neighbours' signal (the same images).  Their noise is independent of the
+    pixel's; where the coverage changes from line to line (a ball's ends)
+    their mean still follows it to first order.  The clip keeps NaN, as
+    numpy's does.
+    """
+    n, w = p.shape
+    out = np.empty((n, w))
+    for r in range(n):
+        for j in range(w):
+            if n < 2:
+                q = p[r, j]
+            elif r == 0:
+                q = p[1, j]
+            elif r == n - 1:
+                q = p[n - 2, j]
+            else:
+                q = 0.5 * (p[r - 1, j] + p[r + 1, j])
+            t = q / p_in
+            if t == t:
+                t = t if t > 0.0 else 0.0
+                t = t if t < 2.0 else 2.0
+            out[r, j] = math.sqrt(sp[r, j] * sp[r, j] + excess * t)
+    return out
+
+
+@_jit(error_model="numpy")
+def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, c0: int):
+    """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.edges._edge_pass`).
+
+    Over the columns ``k_left - 3`` to ``k_right + 3`` of a line with
+    signal, else the whole line: ``area = sum p``, ``area_sig = sqrt(sum
+    sp^2)`` and ``centroid = sum p (j + c0) / area``, NaN unless ``area >
+    3 area_sig``.  Each sum is numpy's of the line with zeros outside the
+    columns (pairwise, :func:`_pairwise_sum`).
+    """
+    n, w = p.shape
+    area = np.empty(n)
+    area_sig = np.empty(n)
+    centroid = np.empty(n)
+    b_p = np.empty(w)
+    b_s = np.empty(w)
+    b_c = np.empty(w)
+    for r in range(n):
+        lo = k_left[r] - 3 if has_signal[r] else 0
+        hi = k_right[r] + 3 if has_signal[r] else w - 1
+        for j in range(w):
+            if lo <= j <= hi:
+                b_p[j] = p[r, j]
+                b_s[j] = sp[r, j] * sp[r, j]
+                b_c[j] = p[r, j] * float(j + c0)
+            else:
+                b_p[j] = 0.0
+                b_s[j] = 0.0
+                b_c[j] = 0.0
+        area[r] = _pairwise_sum(b_p)
+        area_sig[r] = math.sqrt(_pairwise_sum(b_s))
+        centroid[r] = _pairwise_sum(b_c) / area[r] if area[r] > 3.0 * area_sig[r] else np.nan
+    return area, area_sig, centroid
+
+
+@_jit(error_model="numpy")
+def level_gradients(
+    pl0: np.ndarray,
+    pl1: np.ndarray,
+    pd: np.ndarray,
+    L_run: np.ndarray,
+    sl0: np.ndarray,
+    sl1: np.ndarray,
+    sd2: np.ndarray,
+    sl2: np.ndarray,
+    has_signal: np.ndarray,
+    n_in: np.ndarray,
+    n_level: int,
+    slope_lines: int,
+):
+    """The relative level gradient of each edge row of :func:`ballscan.edges._edge_pass` and its variance as a median of ``slope_lines``.
+
+    Rows as :func:`edge_windows` (``2 n`` per window variant, ``n_in[v]``
+    its pixels inside the rough edge): the gradient per pixel across the
+    level run (first and last pixels ``pl0, pl1``, sigmas ``sl0, sl1``; with
+    a one-pixel run, the deep run ``pd`` against it), times ``-dist /
+    L_run`` (``dist`` from the run's centre to the edge pixel's covered
+    part, ``L_run`` 1 where 0), NaN on lines without signal; each operation
+    as the numpy form's.
+
+    Returns
+    -------
+    raw_rel, rel_var, rel_sig : ndarray (R,)
+    """
+    R = pl0.shape[0]
+    per_variant = R // n_in.shape[0]
+    raw_rel = np.empty(R)
+    rel_var = np.empty(R)
+    rel_sig = np.empty(R)
+    for i in range(R):
+        dist = float(n_in[i // per_variant] + 1) + (n_level - 1) / 2.0 - 0.25
+        Lsafe = L_run[i] if abs(L_run[i]) > 0.0 else 1.0
+        if n_level >= 2:
+            grad = (pl1[i] - pl0[i]) / float(n_level - 1)
+            g_var = (sl1[i] * sl1[i] + sl0[i] * sl0[i]) / float((n_level - 1) ** 2)
+        else:
+            grad = (pd[i] - L_run[i]) / float(n_level)
+            g_var = (sd2[i] + sl2[i]) / float(n_level**2)
+        raw_rel[i] = -dist * grad / Lsafe if has_signal[i] else np.nan
+        rel_var[i] = dist * dist * g_var / (Lsafe * Lsafe) * (math.pi / 2.0) / float(max(slope_lines, 1))
+        rel_sig[i] = math.sqrt(rel_var[i])
+    return raw_rel, rel_var, rel_sig
+
+
+@_jit()
+def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
+    """:func:`running_median` of each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
+
+    The same values: each window is kept sorted in numpy's order (NaN last)
+    and, among equal values, in index order, as :func:`running_median`'s
+    insertion sort leaves it; a step drops the oldest entry and inserts the
+    newest instead of sorting the window anew (whose unpredictable
+    comparisons were most of its time on the crops).
+    """
+    size = x.shape[0] // n_blocks
+    h = n // 2
+    wl = 2 * h + 1
+    out = np.empty(x.shape[0])
+    buf = np.empty(wl)
+    idx = np.empty(wl, dtype=np.int64)
+    for blk in range(n_blocks):
+        x0 = blk * size
+        m = 0
+        cnt = 0
+        for i in range(-h, size + h):
+            v = x[x0 + i] if 0 <= i < size else np.nan
+            if m == wl:
+                # drop the window's oldest entry (index i - wl)
+                k = 0
+                while idx[k] != i - wl:
+                    k += 1
+                if math.isfinite(buf[k]):
+                    cnt -= 1
+                for q in range(k, m - 1):
+                    buf[q] = buf[q + 1]
+                    idx[q] = idx[q + 1]
+                m -= 1
+            if math.isfinite(v):
+                cnt += 1
+            # after every entry it does not sort before (the newest index)
+            p = m
+            while p > 0 and _nan_last_less(v, buf[p - 1]):
+                buf[p] = buf[p - 1]
+                idx[p] = idx[p - 1]
+                p -= 1
+            buf[p] = v
+            idx[p] = i
+            m += 1
+            c = i - h
+            if c >= 0:
+                if cnt == 0:
+                    out[x0 + c] = np.nan
+                else:
+                    lo = max(cnt - 1, 0) // 2
+                    hi = min(cnt // 2, wl - 1)
+                    out[x0 + c] = 0.5 * (buf[lo] + buf[hi])
+    return out
+
+
+@_jit()
+def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides: int, threshold: float) -> np.ndarray:
+    """The smoothed relative level gradients of :func:`ballscan.edges._edge_pass` that are applied, 0 elsewhere.
+
+    ``rel`` holds ``n_sides`` equal blocks of rows (a window's left or
+    right edges); NaN becomes 0 and an infinity the largest float (as
+    ``np.nan_to_num``), and a block is zeroed unless the mean of ``|rel| /
+    rel_sig`` over its ``use`` rows (numpy's pairwise sum over their count)
+    exceeds ``threshold``.
+    """
+    R = rel.shape[0]
+    n = R // n_sides
+    out = np.empty(R)
+    for i in range(R):
+        v = rel[i]
+        if v != v:
+            v = 0.0
+        elif v == np.inf:
+            v = _FLOAT_MAX
+        elif v == -np.inf:
+            v = -_FLOAT_MAX
+        out[i] = v
+    buf = np.empty(n)
+    for q in range(n_sides):
+        m = 0
+        for i in range(q * n, (q + 1) * n):
+            if use[i]:
+                buf[m] = abs(out[i]) / rel_sig[i]
+                m += 1
+        if not (m > 0 and _pairwise_sum(buf[:m]) / m > threshold):
+            out[q * n : (q + 1) * n] = 0.0
+    return out
+
+
+@_jit(error_model="numpy")
+def window_edges(
+    rel: np.ndarray,
+    rel_var: np.ndarray,
+    L_run: np.ndarray,
+    S: np.ndarray,
+    sw2: np.ndarray,
+    sl2: np.ndarray,
+    n_win: np.ndarray,
+    win_first: np.ndarray,
+    win_last: np.ndarray,
+    sgn: np.ndarray,
+    kap: float,
+    kap2: float,
+):
+    """The model-free edges of :func:`ballscan.edges._edge_pass`: level, edge and variance of each edge row.
+
+    The level ``L = L_run (1 + kap rel)`` (``rel`` the applied relative
+    gradient, 0 where not), the edge from the window's uncovered length
+    ``n_win - S / L`` (``L`` 1 where not positive) at its outermost pixel
+    and its variance from the window's and the level run's noise (and the
+    gradient's, ``kap2 rel_var``, where applied); each operation as the
+    numpy form's (``kap2`` is its ``kap**2``).
+
+    Returns
+    -------
+    L, e, var : ndarray (R,)
+    """
+    R = rel.shape[0]
+    L = np.empty(R)
+    e = np.empty(R)
+    var = np.empty(R)
+    for i in range(R):
+        f = 1.0 + kap * rel[i]
+        L[i] = L_run[i] * f
+        Ls = L[i] if L[i] > 0.0 else 1.0
+        uncovered = n_win[i] - S[i] / Ls
+        # left: the window starts at its outermost pixel a; right: ends at b
+        if sgn[i] > 0:
+            e[i] = (min(win_first[i], win_last[i]) - 0.5) + uncovered
+        else:
+            e[i] = (max(win_first[i], win_last[i]) + 0.5) - uncovered
+        Ls2 = Ls * Ls
+        u = S[i] / Ls2
+        v = sw2[i] / Ls2 + u * u * sl2[i] * (f * f)
+        c = S[i] / Ls
+        var[i] = v + (c * c * kap2 * rel_var[i] if rel[i] != 0.0 else 0.0)
+    return L, e, var
+
+
+@_jit(error_model="numpy")
+def finished_edges(
+    e: np.ndarray,
+    var: np.ndarray,
+    L: np.ndarray,
+    S: np.ndarray,
+    n_win: np.ndarray,
+    dlev: np.ndarray,
+    run_ok: np.ndarray,
+    L_run: np.ndarray,
+    usable: np.ndarray,
+    has_signal: np.ndarray,
+    spoiled: np.ndarray,
+    c0: int,
+):
+    """The per-line fields of :func:`ballscan.edges._finish` from the edges' rows (4 n: narrow left, right, wide left, right).
+
+    Each edge is usable where ``usable``, its level run is (``run_ok``) and
+    its level plausible: ``L > L_run / 2`` and the uncovered length ``n_win
+    - S / L`` (L 1 where not positive) within ``[-0.5, n_win + 0.5]``.  On
+    the lines with signal the edges ``e + c0`` (sensor pixels), their sigmas
+    ``sqrt(var)`` and the narrow edges' texture ``S / L * dlev / L``, NaN on
+    the others; each line's level (the mean of a usable pair's, or the one
+    usable, NaN) and whether it is an end line (signal, no usable pair, not
+    ``spoiled``).
+
+    Returns
+    -------
+    ok : ndarray of bool (4 n,)
+    edge, sigma : ndarray (4, n)
+        By window and side, as the rows.
+    texture : ndarray (2, n)
+        Narrow window, left and right.
+    level : ndarray (n,)
+    end_line : ndarray of bool (n,)
+    """
+    R = e.shape[0]
+    n = R // 4
+    ok = np.empty(R, dtype=np.bool_)
+    for i in range(R):
+        Ls = L[i] if L[i] > 0.0 else 1.0
+        uncovered = n_win[i] - S[i] / Ls
+        ok[i] = usable[i] and run_ok[i] and L[i] > 0.5 * L_run[i] and uncovered > -0.5 and uncovered < n_win[i] + 0.5
+    edge = np.empty((4, n))
+    sig = np.empty((4, n))
+    tex = np.empty((2, n))
+    level = np.empty(n)
+    end_line = np.empty(n, dtype=np.bool_)
+    for r in range(n):
+        hs = has_signal[r]
+        for q in range(4):
+            i = q * n + r
+            edge[q, r] = e[i] + c0 if hs else np.nan
+            sig[q, r] = math.sqrt(var[i]) if hs else np.nan
+            if q < 2:
+                Ls = L[i] if L[i] > 0.0 else 1.0
+                tex[q, r] = (S[i] / Ls) * dlev[i] / Ls if hs else np.nan
+        ok_l = ok[r]
+        ok_r = ok[n + r]
+        if ok_l and ok_r:
+            level[r] = 0.5 * (L[r] + L[n + r])
+        elif ok_l:
+            level[r] = L[r]
+        elif ok_r:
+            level[r] = L[n + r]
+        else:
+            level[r] = np.nan
+        end_line[r] = hs and not (ok_l and ok_r) and not spoiled[r]
+    return ok, edge, sig, tex, level, end_line
+
+
+@_jit()
+def limb_pixels(rows: np.ndarray, sgn: np.ndarray, win_first: np.ndarray, win_last: np.ndarray, n_win: np.ndarray, lev: np.ndarray, deep: np.ndarray):
+    """The pixel centres of :func:`limb_levels`'s rows ``rows`` of the edges of :func:`ballscan.edges._edge_pass`.
+
+    Each row's window from its outermost pixel inwards (as many as the
+    longest window of the rows: ``kw``), then its level run ``lev`` and the
+    run inside it ``deep`` (box pixels, as float).
+
+    Returns
+    -------
+    sg : ndarray (R,)
+        The rows' sides as float (+1 left, -1 right).
+    px : ndarray (R, kw + 2 n_level)
+    kw : int
+    """
+    R = rows.shape[0]
+    n_level = lev.shape[1]
+    kw = 0
+    for i in range(R):
+        kw = max(kw, n_win[rows[i]])
+    sg = np.empty(R)
+    px = np.empty((R, kw + 2 * n_level))
+    for i in range(R):
+        r = rows[i]
+        sg[i] = float(sgn[r])
+        first = min(win_first[r], win_last[r]) if sg[i] > 0 else max(win_first[r], win_last[r])
+        for k in range(kw):
+            px[i, k] = first + sg[i] * k
+        for j in range(n_level):
+            px[i, kw + j] = lev[r, j]
+            px[i, kw + n_level + j] = deep[r, j]
+    return sg, px, kw
+
+
+@_jit()
+def finite_rows(a: np.ndarray) -> np.ndarray:
+    """``np.all(np.isfinite(a), axis=1)`` of a 2-D array (each row stops at its first non-finite value)."""
+    n, w = a.shape
+    out = np.ones(n, dtype=np.bool_)
+    for r in range(n):
+        for j in range(w):
+            if not math.isfinite(a[r, j]):
+                out[r] = False
+                break
+    return out

@@ -43,7 +43,10 @@ import math
 
 import numpy as np
 
-from ._kernels import as_arg, edge_windows, inner_differences, limb_levels, running_median, walk_edges
+from ._kernels import (
+    as_arg, edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
+    rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
+)
 from .errors import GeometryError
 
 # np.median's value by a full sort (several times faster on these sizes)
@@ -343,7 +346,10 @@ class _EdgePass:
 def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
     """Broadcast a scalar, per-column (W,) or per-pixel (n_lines, W) array to (n_lines, W)."""
     a = np.asarray(value, dtype=float)
-    if a.ndim == 0 or a.shape == (width,) or a.shape == (n_lines, width) or a.shape == (1, width):
+    if a.shape == (n_lines, width):
+        # (already that shape: a view of it would only cost the broadcast's fixed time)
+        return a
+    if a.ndim == 0 or a.shape == (width,) or a.shape == (1, width):
         return np.broadcast_to(a, (n_lines, width))
     raise ValueError(f"{name}: expected a scalar, ({width},) or ({n_lines}, {width}) array, got shape {a.shape}")
 
@@ -369,9 +375,10 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     fewer than ``3 (degree + 1)`` finite entries, a running median over ``n``
     lines is used instead.  NaN stays NaN.
     """
-    ok = np.isfinite(x)
-    idx = np.flatnonzero(ok)
-    if degree < 0 or idx.size < 3 * (degree + 1):
+    if degree < 0:
+        return _running_median(x, n)
+    idx = np.flatnonzero(np.isfinite(x))
+    if idx.size < 3 * (degree + 1):
         return _running_median(x, n)
     u = (idx - idx.mean()) / max(float(np.ptp(idx)), 1.0)
     y = x[idx]
@@ -388,30 +395,6 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     out = np.full(x.size, np.nan)
     out[idx] = np.polynomial.polynomial.polyval(u, coef)
     return out
-
-
-def _expected_signal(p: np.ndarray) -> np.ndarray:
-    """Each pixel's signal for its noise model, from the lines before and after it (same column).
-
-    The mean of the two neighbours along the column (the one neighbour on
-    the box's first and last line; the pixel itself on a one-line box).
-    Not the pixel's own value: a variance that grows with its own noisy
-    value gives the pixels that read high less weight, and every weighted
-    estimate that uses it (the windows' sums, the matched edges' weights,
-    the pixel fit) reads the ball small: on the quick sweep's long balls
-    (R = 0.11 m and 140 000 lines/s, 8-bit, shot noise, 32 seeds each) the
-    speed read 0.23 +- 0.015 and 0.08 +- 0.006 sigma of the pixel bound
-    higher than with the neighbours' signal (the same images).  Their noise
-    is independent of the pixel's; where the coverage changes from line to
-    line (a ball's ends) their mean still follows it to first order.
-    """
-    if p.shape[0] < 2:
-        return p
-    q = np.empty_like(p)
-    q[1:-1] = 0.5 * (p[:-2] + p[2:])
-    q[0] = p[1]
-    q[-1] = p[-2]
-    return q
 
 
 def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
@@ -495,19 +478,17 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     rows = np.flatnonzero(valid & np.isfinite(e))
     if rows.size == 0:
         return edge, var, L
-    sg = sgn[rows].astype(float)
     # the window from its outermost pixel inwards, then the level run and
-    # the run inside it, in one array
-    k = np.arange(int(n_win[rows].max()))
-    first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])
-    px = np.concatenate([first[:, None] + sg[:, None] * k[None, :], lev[rows], deep[rows]], axis=1).astype(float)
+    # the run inside it, in one array (compiled)
+    sg, px, kw = limb_pixels(rows, sgn, win_first, win_last, n_win, lev, deep)
     # the data's ratio of the run inside the level run to the level run, and
     # how far the model's may differ (texture, not shading, beyond)
+    L_r, pd_r, sl2_r = L_run[rows], pd[rows], sl2[rows]
     with np.errstate(invalid="ignore", divide="ignore"):
-        q_data = pd[rows] / L_run[rows]
-        q_sig = np.sqrt(sd2[rows] / L_run[rows] ** 2 + sl2[rows] * pd[rows] ** 2 / L_run[rows] ** 4)
+        q_data = pd_r / L_r
+        q_sig = np.sqrt(sd2[rows] / L_r**2 + sl2_r * pd_r**2 / L_r**4)
     edge[rows], var[rows], L[rows], rays_ok = limb_levels(
-        sg, px, as_arg(n_win[rows], np.int64), k.size, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_run[rows], sl2[rows],
+        sg, px, as_arg(n_win[rows], np.int64), kw, lev.shape[1], e[rows], var0[rows], L0[rows], S[rows], L_r, sl2_r,
         as_arg(sw[rows]), q_data, 3.0 * q_sig + tol, int(m), *limb.rows(lines_abs[rows], sg),
     )
     if not rays_ok:
@@ -515,14 +496,18 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     return edge, var, L
 
 
-def _running_median(x: np.ndarray, n: int) -> np.ndarray:
-    """Median of ``x`` over a centred window of ``n`` entries, ignoring NaN (NaN where all are)."""
+def _running_median(x: np.ndarray, n: int, blocks: int = 1) -> np.ndarray:
+    """Median of ``x`` over a centred window of ``n`` entries, ignoring NaN (NaN where all are).
+
+    With ``blocks``, of each of that many equal parts of ``x`` on its own
+    (the windows end at the parts' ends).
+    """
     if n <= 1 or x.size == 0:
         return x.copy()
     # the median of the finite entries (the mean of the middle two for an
     # even count), as np.nanmedian; compiled: the numpy form (sorted sliding
     # windows) took 70 us per call, four calls per ball
-    return running_median(as_arg(x), int(n))
+    return running_medians(as_arg(x), int(blocks), int(n))
 
 
 def measure_edges(
@@ -803,7 +788,13 @@ def _edge_pass(
     sd = _as_columns(noise_dn, n_img, W, "noise_dn")[l0:l1, c0:c1]
     raw = data[l0:l1, c0:c1]
     p = pol * (raw - bg) / contrast
-    sp = np.maximum(sd, 1e-12) / contrast  # noise of p, normalised units
+    # noise of p, normalised units
+    if sd.strides[0] == 0:
+        # a scalar or per-column noise: one line's, repeated
+        sp = np.empty((n, w))
+        sp[:] = np.maximum(sd[0], 1e-12) / contrast
+    else:
+        sp = np.maximum(sd, 1e-12) / contrast
     sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
     other = np.zeros((n, w), dtype=bool)
     for o in others:
@@ -811,7 +802,6 @@ def _edge_pass(
         # one pixel of dilation along the line: a neighbour's blur reaches it
         other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
 
-    rows = np.arange(n)[:, None]
     peak = p.max(axis=1)
     if sd.strides[0] == 0:
         # a scalar or per-column noise: every line has the same median
@@ -819,18 +809,15 @@ def _edge_pass(
     else:
         noise_row = np.median(sp, axis=1)
     has_signal = peak > s.min_snr * noise_row
-    above = p >= s.find_fraction * peak[:, None]
-    k_left = np.argmax(above, axis=1)
-    k_right = w - 1 - np.argmax(above[:, ::-1], axis=1)
+    # the first and last pixels at find_fraction of the peak (compiled)
+    k_left, k_right = rough_edges(p, peak, float(s.find_fraction))
     # A shaded limb can be darker than a fraction of a bright seam's peak:
     # walk outwards while the next pixel still holds find_fraction of its
     # inner neighbour (and is significant), so that the window sits on the
     # ball's real edge.
     floor_p = s.min_snr * noise_row
     # (compiled: line by line, where the numpy form stepped all lines at once)
-    k_left, k_right = walk_edges(
-        p, as_arg(k_left, np.int64), as_arg(k_right, np.int64), as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px)
-    )
+    k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
 
     # Signal-dependent noise (shot noise): the background's noise understates
     # the ball's.  Estimate the ball's pixel noise from second differences
@@ -849,7 +836,9 @@ def _edge_pass(
             else:
                 sig_bg = float(_median(sp_both))
             if p_in > 0 and sig_in > sig_bg:
-                sp = np.sqrt(sp**2 + (sig_in**2 - sig_bg**2) * np.clip(_expected_signal(p) / p_in, 0.0, 2.0))
+                # each pixel's signal for its noise from its column neighbours,
+                # not its own value (compiled: see _kernels.shot_noise)
+                sp = shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
 
     # Every edge estimate at once: for each window (narrow, then wide) the
     # left edges (windows pointing inwards with sign +1), then the right
@@ -858,56 +847,38 @@ def _edge_pass(
     variants = ((s.n_out, s.n_in), (s.n_out_wide, s.n_in_wide))
     nv = 2 * len(variants)
     quarters = tuple(slice(q * n, (q + 1) * n) for q in range(nv))
-    rows4 = np.tile(rows[:, 0], nv)[:, None]
-    hs4 = np.tile(has_signal, nv)
+    hs4 = np.concatenate([has_signal] * nv)
     # the windows' and runs' pixels and sums (compiled: some sixty small
     # array operations in numpy, 0.6 ms a ball)
+    n_in = np.array([v[1] for v in variants], dtype=np.int64)
     (S, sw, sw2, L_run, sl2, pl0, pl1, sl0, sl1, pd, sd2, pdd, sdd2, win_first, win_last, n_win, lev, deep_px, sgn1, lo, hi,
      inside_box, saturated, overlapping) = edge_windows(
-        p, as_arg(sp), as_arg(sat, np.bool_), other, k_left, k_right,
-        np.array([v[0] for v in variants], dtype=np.int64), np.array([v[1] for v in variants], dtype=np.int64), int(s.n_level),
+        p, as_arg(sp), as_arg(sat, np.bool_), other, k_left, k_right, np.array([v[0] for v in variants], dtype=np.int64), n_in, int(s.n_level),
     )
-    sgn = sgn1[:, None]
-    n_in_r = np.repeat(np.array([v[1] for v in variants]), 2 * n)[:, None]  # (4n, 1)
     kap = s.level_slope
     # relative level gradient, median-filtered along the lines (shading is
     # smooth from line to line, felt texture and noise are not):
     # gradient per pixel across the level run (inwards positive), towards
-    # the covered part of the edge pixel (about `dist` pixels outwards)
-    if s.n_level >= 2:
-        grad = (pl1 - pl0) / (s.n_level - 1)
+    # the covered part of the edge pixel (about `dist` pixels outwards), and
+    # the noise of its median of slope_lines lines (compiled)
+    raw_rel, rel_var, rel_sig = level_gradients(
+        pl0, pl1, pd, L_run, sl0, sl1, sd2, sl2, hs4, n_in, int(s.n_level), int(s.slope_lines)
+    )
+    if s.slope_degree < 0:
+        # (_smooth_lines' running median, of every side in one call)
+        rel = _running_median(raw_rel, s.slope_lines, nv)
     else:
-        grad = (pd - L_run) / s.n_level
-    dist = n_in_r[:, 0] + 1 + (s.n_level - 1) / 2.0 - 0.25
-    Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
-    raw_rel = np.where(hs4, -dist * grad / Lsafe, np.nan)
-    rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
-    # noise of the smoothed gradient (median of slope_lines lines)
-    if s.n_level >= 2:
-        g_var = (sl1**2 + sl0**2) / (s.n_level - 1) ** 2
-    else:
-        g_var = (sd2 + sl2) / s.n_level**2
-    rel_var = (dist**2) * g_var / Lsafe**2 * (math.pi / 2.0) / max(s.slope_lines, 1)
+        rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
     # Only a side whose gradient stands out of its noise is corrected (an
     # unshaded ball keeps the plain level and its noise).  The decision
     # is taken once per side (and window), not per line: shrinking each
     # line's correction by its noise would bias noisy edges inwards.
-    rel_sig = np.sqrt(rel_var)
-    rel = np.nan_to_num(rel)
-    use = hs4 & (rel_sig > 0)
-    for q in quarters:
-        u = use[q]
-        shaded = bool(u.any()) and float(np.mean(np.abs(rel[q][u]) / rel_sig[q][u])) > s.slope_threshold
-        if not shaded:
-            rel[q] = 0.0
-    applied = rel != 0
-    L = L_run * (1.0 + kap * rel)
-    Ls = np.where(L > 0, L, 1.0)
-    uncovered = n_win - S / Ls
-    # left: the window starts at its outermost pixel a; right: ends at b
-    e = np.where(sgn[:, 0] > 0, np.minimum(win_first, win_last) - 0.5 + uncovered, np.maximum(win_first, win_last) + 0.5 - uncovered)
-    var = sw2 / Ls**2 + (S / Ls**2) ** 2 * sl2 * (1.0 + kap * rel) ** 2
-    var = var + np.where(applied, (S / Ls) ** 2 * kap**2 * rel_var, 0.0)
+    # (compiled: per side and window, the mean of |rel| / rel_sig over the
+    # lines with signal, NaN as 0; the unshaded sides' rel set to 0)
+    rel = shaded_sides(rel, rel_sig, hs4 & (rel_sig > 0), nv, float(s.slope_threshold))
+    # the levels, the edges from the windows' uncovered lengths and their
+    # variances (compiled)
+    L, e, var = window_edges(rel, rel_var, L_run, S, sw2, sl2, n_win, win_first, win_last, sgn1, float(kap), float(kap**2))
     abs_lo, abs_hi = lo + c0, hi + c0
     at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
     # texture indicator from pixels the edge does not use (the deep run and
@@ -923,23 +894,17 @@ def _edge_pass(
     usable &= np.concatenate([long_enough, long_enough, long_wide, long_wide])
     endL, endR, satL, satR, ovL, ovR = (a[q] & has_signal for a in (at_sensor_end, saturated, overlapping) for q in quarters[:2])
 
-    # summed coverage: over the segment +- 3 px where the ball is seen, else the whole box
-    jj = np.arange(w)[None, :]
-    lo_c = np.where(has_signal, k_left - 3, 0)[:, None]
-    hi_c = np.where(has_signal, k_right + 3, w - 1)[:, None]
-    sel = (jj >= lo_c) & (jj <= hi_c)
-    area = np.where(sel, p, 0.0).sum(axis=1)
-    area_sig = np.sqrt(np.where(sel, sp**2, 0.0).sum(axis=1))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        centroid = np.where(sel, p * (jj + c0), 0.0).sum(axis=1) / area
-    centroid = np.where(area > 3.0 * area_sig, centroid, np.nan)
+    # summed coverage: over the segment +- 3 px where the ball is seen, else
+    # the whole box (compiled: its sums, sigma and centroid in one pass)
+    area, area_sig, centroid = line_coverage(p, sp, k_left, k_right, has_signal, int(c0))
 
     flags = []
     if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or c1 == W and np.any(has_signal & (k_right >= w - 1)):
         flags.append("cut_sensor_end")
-    if np.any(satL | satR) or np.any(sat & (p > 0.5)):
+    # (the pixel tests only where a pixel is saturated or another ball's)
+    if np.any(satL | satR) or sat.any() and np.any(sat & (p > 0.5)):
         flags.append("saturated")
-    if np.any(other & (p > 0.5)) or np.any(ovL | ovR):
+    if np.any(ovL | ovR) or other.any() and np.any(other & (p > 0.5)):
         flags.append("overlap")
 
     return _EdgePass(
@@ -960,11 +925,12 @@ def _edge_pass(
         win_last=win_last,
         lev=lev,
         deep=deep_px,
-        limb_rows=hs4 & (deep_px.min(axis=1) >= 0) & (deep_px.max(axis=1) < w),
+        # (a run's pixels step by one from its first to its last: those are its extremes)
+        limb_rows=hs4 & (np.minimum(deep_px[:, 0], deep_px[:, -1]) >= 0) & (np.maximum(deep_px[:, 0], deep_px[:, -1]) < w),
         pd=pd,
         sd2=sd2,
-        sgn=sgn[:, 0],
-        lines_abs=rows4[:, 0] + l0,
+        sgn=sgn1,
+        lines_abs=np.concatenate([lines] * nv),
         dlev=np.maximum(dlev, 0.0),
         usable=usable,
         run_ok=L_run > 3.0 * np.sqrt(sl2),
@@ -998,31 +964,27 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         if spread is None or np.shape(spread) != (ps.n_img,):
             raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")
         line_spread = np.asarray(spread)[ps.common["lines"]]
-        wanted = np.concatenate(
-            [np.tile(line_spread < s.limb_narrow_max_px, 2), np.tile((line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1]), 2)]
-        )
+        narrow = line_spread < s.limb_narrow_max_px
+        wide = (line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1])
+        wanted = np.concatenate([narrow, narrow, wide, wide])
         e, var, L = _limb_levels(
             limb, e, var, L, S, ps.L_run, ps.sl2, ps.sw, n_win, ps.win_first, ps.win_last, ps.lev, ps.deep, ps.pd, ps.sd2,
             ps.sgn, ps.limb_rows & wanted, ps.lines_abs, s.limb_samples, s.limb_texture_tol,
         )
-    Ls = np.where(L > 0, L, 1.0)
-    uncovered = n_win - S / Ls
-    sig = np.sqrt(var)
-    tex = (S / Ls) * ps.dlev / Ls
-    plausible = ps.run_ok & (L > 0.5 * ps.L_run) & (uncovered > -0.5) & (uncovered < n_win + 0.5)
-    ok_all = ps.usable & plausible
-    res = (e + ps.c0, sig, ok_all, L, tex)
-    (eL, sL, okL, LL, tL), (eR, sR, okR, LR, tR), (eLw, sLw, okLw, _, _), (eRw, sRw, okRw, _, _) = (tuple(a[q] for a in res) for q in ps.quarters)
+    # the usable edges (their levels plausible), the lines' edges, sigmas,
+    # textures and levels, and the faint/short lines whose area is clean
+    # (the fit uses their area instead of edges), in one compiled loop
+    ok_all, edge, sig, tex, level, end_line = finished_edges(
+        e, var, L, S, n_win, ps.dlev, ps.run_ok, ps.L_run, ps.usable, ps.has_signal, ps.spoiled, int(ps.c0)
+    )
+    okL, okR, okLw, okRw = (ok_all[q] for q in ps.quarters)
     has_signal = ps.has_signal
-    level = np.where(okL & okR, 0.5 * (LL + LR), np.where(okL, LL, np.where(okR, LR, np.nan)))
-    # faint/short lines whose area is clean: the fit uses their area instead of edges
-    end_line = has_signal & ~(okL & okR) & ~ps.spoiled
     if limb is not None and hasattr(limb, "line_levels"):
         # the brightness of the ends' covered part (their area's divisor)
         line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
         # not where a pixel of the line is saturated or another ball's (NaN in
         # the profile): its area is not the ball's coverage times a level
-        clean = np.all(np.isfinite(ps.common["profile"]), axis=1)
+        clean = finite_rows(ps.common["profile"])
         want = np.flatnonzero(
             has_signal & clean & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR))
         )
@@ -1031,20 +993,20 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         lev_a, rel_a = limb.line_levels(ps.common["lines"][want])
         area_level[want], area_level_sigma[want] = lev_a, rel_a
     return EdgeMeasurements(
-        left_px=np.where(has_signal, eL, np.nan),
-        right_px=np.where(has_signal, eR, np.nan),
-        left_sigma_px=np.where(has_signal, sL, np.nan),
-        right_sigma_px=np.where(has_signal, sR, np.nan),
+        left_px=edge[0],
+        right_px=edge[1],
+        left_sigma_px=sig[0],
+        right_sigma_px=sig[1],
         left_ok=okL,
         right_ok=okR,
         level=level,
         end_line=end_line,
-        left_texture_px=np.where(has_signal, tL, np.nan),
-        right_texture_px=np.where(has_signal, tR, np.nan),
-        left_wide_px=np.where(has_signal, eLw, np.nan),
-        right_wide_px=np.where(has_signal, eRw, np.nan),
-        left_wide_sigma_px=np.where(has_signal, sLw, np.nan),
-        right_wide_sigma_px=np.where(has_signal, sRw, np.nan),
+        left_texture_px=tex[0],
+        right_texture_px=tex[1],
+        left_wide_px=edge[2],
+        right_wide_px=edge[3],
+        left_wide_sigma_px=sig[2],
+        right_wide_sigma_px=sig[3],
         left_wide_ok=okLw,
         right_wide_ok=okRw,
         area_level=area_level,

@@ -39,6 +39,7 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
+from ._kernels import as_arg, median_deviations, sorted_medians
 from .detection import median as _median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
@@ -133,13 +134,30 @@ class ColumnGains:
 
 
 def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
-    """Median of ``values`` where ``mask`` along ``axis`` (NaN where none); np.median's value, by one sort."""
-    v = np.sort(np.where(mask, values, np.inf), axis=axis)
-    n = mask.sum(axis=axis)
-    lo = np.expand_dims(np.maximum((n - 1) // 2, 0), axis)
-    hi = np.expand_dims(np.maximum(n // 2, 0), axis)
-    med = 0.5 * (np.take_along_axis(v, lo, axis) + np.take_along_axis(v, hi, axis))
-    return np.where(n > 0, np.squeeze(med, axis), np.nan)
+    """Median of ``values`` where ``mask`` along ``axis`` (0 or 1; NaN where none); np.median's value, by one sort.
+
+    The masked values sort first with inf in the other places, and the
+    middle ranks of each line's (or column's) count are picked in one
+    compiled loop (:func:`ballscan._kernels.sorted_medians`).
+    """
+    mask = as_arg(mask, np.bool_)
+    return sorted_medians(as_arg(np.sort(np.where(mask, values, np.inf), axis=axis)), mask, int(axis))
+
+
+def _column_median_mad(values: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``_masked_median(values, mask, 0)`` and the median of ``|values - it|`` where ``mask`` (each column's), by one sort.
+
+    The deviations' median comes from the sorted values themselves
+    (:func:`ballscan._kernels.median_deviations`); only where a masked value
+    is not finite are the deviations sorted as they are.
+    """
+    # (column by column along the transposed box: the columns of a box
+    # indexed by its columns are contiguous)
+    mask_t = as_arg(mask.T, np.bool_)
+    med, mad, exact = median_deviations(as_arg(np.sort(np.where(mask_t, values.T, np.inf), axis=1)), mask_t)
+    if not exact:
+        mad = _masked_median(np.abs(values - med[None, :]), mask, axis=0)
+    return med, mad
 
 
 def _inset(mask: np.ndarray, k: int) -> np.ndarray:
@@ -213,8 +231,8 @@ def column_gains(
     if cols.size < _TREND_COLS:
         return none
     r, inner_c, n_c_used = r[:, cols], inner[:, cols], n[cols]
-    med = _masked_median(r, inner_c, axis=0)
-    spread = _MAD_SIGMA * _masked_median(np.abs(r - med[None, :]), inner_c, axis=0)
+    med, mad = _column_median_mad(r, inner_c)
+    spread = _MAD_SIGMA * mad
     var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's.  A
     # defective (stuck, dead, hot) column is no gain: dividing by its value
@@ -232,9 +250,10 @@ def column_gains(
         d = med[ok] / trend[ok] - 1.0
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
-        scatter = _MAD_SIGMA * float(_median(np.abs(d - _median(d))))
+        dev = np.abs(d - _median(d))
+        scatter = _MAD_SIGMA * float(_median(dev))
         # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
-        z = np.abs(d - _median(d)) / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
+        z = dev / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
         if z[worst] <= _DEFECT_SIGMAS or far_all.sum() == _MAX_DEFECTS:
             break
