@@ -333,6 +333,123 @@ def test_masked_median_is_the_median_of_the_plus_minus_big_row():
         parity = np.cumsum(excluded, axis=1) & 1
         ref = np.median(np.where(excluded, np.where(parity == 1, _BIG, -_BIG), a), axis=1)
         count = (~excluded).sum(axis=1)
-        got, got_count = _masked_median(a, excluded)
+        got, got_count = _masked_median(np.where(excluded, np.inf, a), excluded.sum(axis=1))
         assert np.array_equal(got_count, count)
         assert np.array_equal(got, np.where(count > 0, ref, 0.0))
+
+
+# ---------------------------------------------------------------- compiled loops against their numpy forms
+def _random_mask(rng, max_side=60):
+    shape = (int(rng.integers(1, max_side)), int(rng.integers(1, max_side)))
+    return rng.random(shape) < rng.uniform(0.02, 0.7)
+
+
+def test_label_pixels_equals_ndimage_label_bincount_and_find_objects():
+    from scipy import ndimage as ndi
+
+    from ballscan._kernels import label_pixels
+
+    rng = np.random.default_rng(3)
+    for _ in range(300):
+        hit = _random_mask(rng)
+        ref, nlab = ndi.label(hit, structure=np.ones((3, 3), dtype=bool))
+        lab, sizes, boxes = label_pixels(hit)
+        assert lab.dtype == ref.dtype and np.array_equal(lab, ref)
+        assert np.array_equal(sizes, np.bincount(ref[hit], minlength=nlab + 1)[1:])
+        objs = ndi.find_objects(ref)
+        assert boxes.shape == (nlab, 4)
+        assert [tuple(b) for b in boxes.tolist()] == [(o[0].start, o[0].stop, o[1].start, o[1].stop) for o in objs]
+
+
+def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):
+    """The numpy form of the first-pass samples and their masked line medians (ballscan.detection._background)."""
+    from ballscan.detection import _BIG
+
+    if use_gain:
+        resid = np.multiply.outer(gain0, bs)
+        np.subtract(xs, resid, out=resid)
+        excluded = np.abs(resid, out=resid) > thr[None, :]
+        safe = np.where(bs > 0, bs, 1.0)
+        excluded |= (bs <= 0)[None, :]
+        a = xs / safe[None, :]
+    else:
+        a = xs - bs[None, :]
+        excluded = np.abs(a - offset0[:, None]) > thr[None, :]
+    n_row, n = a.shape
+    e = np.count_nonzero(excluded, axis=1)
+    count = n - e
+    s = np.where(excluded, np.inf, a)
+    s.sort(axis=1)
+    rows = np.arange(n_row)
+    n_low = e // 2
+
+    def at(rank):
+        k = rank - n_low
+        v = s[rows, np.clip(k, 0, n - 1)]
+        return np.where(k < 0, -_BIG, np.where(k >= count, _BIG, v))
+
+    h = n // 2
+    med = at(h) if n % 2 else (at(h - 1) + at(h)) / 2
+    return np.where(count > 0, med, 0.0), count
+
+
+def test_first_pass_lines_and_masked_median_equal_their_numpy_form():
+    from ballscan._kernels import first_pass_lines
+    from ballscan.detection import _masked_median
+
+    rng = np.random.default_rng(4)
+    for trial in range(200):
+        n, w = int(rng.integers(1, 40)), int(rng.integers(1, 40))
+        bs = rng.uniform(-5.0, 120.0, w)
+        gain0 = rng.uniform(0.9, 1.1, n).astype(np.float32)
+        offset0 = rng.normal(0.0, 3.0, n).astype(np.float32)
+        xs = np.round(np.multiply.outer(gain0, bs) + rng.normal(0, 2, (n, w)) + 40 * (rng.random((n, w)) < 0.2)).astype(np.float32)
+        if trial % 10 == 0:
+            xs[rng.integers(0, n), rng.integers(0, w)] = np.nan
+        thr = 3.0 * rng.uniform(0.5, 3.0, w)
+        for use_gain in (True, False):
+            g0 = gain0 if use_gain else np.ones(n)
+            o0 = np.zeros(n) if use_gain else offset0
+            ref, ref_count = _first_pass_numpy(xs, g0, o0, bs, thr, use_gain)
+            s, e = first_pass_lines(xs, g0.astype(np.float64), o0.astype(np.float64), bs, thr, use_gain)
+            got, count = _masked_median(s, e)
+            assert np.array_equal(count, ref_count)
+            assert np.array_equal(got, ref, equal_nan=True)
+
+
+def _fill_numpy(m):
+    """The numpy form of the union of the per-line and per-column hole fills."""
+    h, w = m.shape
+    out = np.zeros_like(m)
+    for axis, length in ((1, w), (0, h)):
+        anyv = m.any(axis=axis)
+        first = np.argmax(m, axis=axis)
+        last = length - 1 - np.argmax(np.flip(m, axis=axis), axis=axis)
+        idx = np.arange(length)
+        if axis == 1:
+            f = (idx[None, :] >= first[:, None]) & (idx[None, :] <= last[:, None]) & anyv[:, None]
+        else:
+            f = (idx[:, None] >= first[None, :]) & (idx[:, None] <= last[None, :]) & anyv[None, :]
+        out |= f
+    return out
+
+
+def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
+    from ballscan._kernels import fill_lines_and_cols, region_values
+
+    rng = np.random.default_rng(5)
+    for _ in range(300):
+        m = _random_mask(rng, 30)
+        filled = fill_lines_and_cols(m)
+        assert np.array_equal(filled, _fill_numpy(m))
+        h, w = m.shape
+        n, width = h + int(rng.integers(0, 5)), w + int(rng.integers(0, 5))
+        l0, c0 = int(rng.integers(0, n - h + 1)), int(rng.integers(0, width - w + 1))
+        x = np.round(rng.uniform(0, 260, (n, width)))
+        gain, b, offset = rng.uniform(0.9, 1.1, n), rng.uniform(10, 200, width), rng.normal(0, 2, n)
+        box = (slice(l0, l0 + h), slice(c0, c0 + w))
+        vals, saturated = region_values(x, gain, b, offset, l0, c0, filled, 255.0)
+        ref = (x[box] - (gain[box[0], None] * b[None, box[1]] + offset[box[0], None]))[filled]
+        assert np.array_equal(vals, ref)
+        assert saturated == bool(np.any(x[box][filled] >= 255.0))
+

@@ -1037,6 +1037,10 @@ def warm_up() -> None:
     )
     # the detection's and the edges' loops (section at the end of the module)
     mode_seek(np.zeros((1, 2), dtype=np.float32), np.zeros(1), np.ones(1), 0.5)
+    label_pixels(np.ones((2, 2), dtype=np.bool_))
+    s, e = first_pass_lines(np.ones((1, 2), dtype=np.float32), np.ones(1), np.zeros(1), np.ones(2), np.ones(2), True)
+    kept_median(s, e, 1e300)
+    region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
     running_median(np.zeros(3), 3)
     prof = np.zeros((1, 8))
     k0 = np.zeros(1, dtype=np.int64)
@@ -1167,6 +1171,178 @@ def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float)
         sig_out[i] = sg
         cnt[i] = c
     return centre, sig_out, cnt
+
+
+@_jit()
+def label_pixels(hit: np.ndarray):
+    """8-connected labels, sizes and boxes of the True pixels of ``hit`` (:func:`ballscan.detection.detect`).
+
+    The labels are numbered as ``scipy.ndimage.label`` numbers them (in the
+    raster order of each component's first pixel), so ``lab`` is its array;
+    ``sizes[k]`` and ``boxes[k] = (line_start, line_stop, col_start,
+    col_stop)`` belong to label ``k + 1`` (``np.bincount`` and
+    ``ndi.find_objects`` of it).  One union-find pass over the pixels and
+    one renumbering pass.
+    """
+    n, w = hit.shape
+    lab = np.zeros((n, w), dtype=np.int32)
+    parent = np.empty(n * w + 1, dtype=np.int32)
+    n_prov = 0
+    for i in range(n):
+        for j in range(w):
+            if not hit[i, j]:
+                continue
+            root = 0
+            # the neighbours already visited: left, and the three above
+            for di, dj in ((0, -1), (-1, -1), (-1, 0), (-1, 1)):
+                ii = i + di
+                jj = j + dj
+                if ii < 0 or jj < 0 or jj >= w:
+                    continue
+                q = lab[ii, jj]
+                if q == 0:
+                    continue
+                while parent[q] != q:
+                    parent[q] = parent[parent[q]]  # path halving
+                    q = parent[q]
+                if root == 0:
+                    root = q
+                elif q != root:
+                    lo = min(q, root)
+                    parent[max(q, root)] = lo
+                    root = lo
+            if root == 0:
+                n_prov += 1
+                parent[n_prov] = n_prov
+                root = n_prov
+            lab[i, j] = root
+    final = np.zeros(n_prov + 1, dtype=np.int32)
+    sizes = np.zeros(n_prov, dtype=np.int64)
+    boxes = np.empty((n_prov, 4), dtype=np.int64)
+    n_lab = 0
+    for i in range(n):
+        for j in range(w):
+            q = lab[i, j]
+            if q == 0:
+                continue
+            while parent[q] != q:
+                q = parent[q]
+            k = final[q]
+            if k == 0:
+                n_lab += 1
+                k = n_lab
+                final[q] = k
+                boxes[k - 1, 0] = i
+                boxes[k - 1, 1] = i + 1
+                boxes[k - 1, 2] = j
+                boxes[k - 1, 3] = j + 1
+            lab[i, j] = k
+            sizes[k - 1] += 1
+            boxes[k - 1, 1] = i + 1
+            boxes[k - 1, 2] = min(boxes[k - 1, 2], j)
+            boxes[k - 1, 3] = max(boxes[k - 1, 3], j + 1)
+    return lab, sizes[:n_lab].copy(), boxes[:n_lab].copy()
+
+
+@_jit()
+def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs: np.ndarray, thr: np.ndarray, use_gain: bool):
+    """Each line's drift samples with the first-pass ball pixels set to +inf, and their number per line (:func:`ballscan.detection._background`).
+
+    With ``use_gain`` a sample is ``xs / bs`` (``bs`` <= 0: excluded, divided
+    by 1) and a pixel is excluded where ``|xs - gain0 bs| > thr``; else it
+    is ``xs - bs``, excluded where ``|xs - bs - offset0| > thr``.  The same
+    float64 operations as the numpy form (``xs`` float32, widened).
+    """
+    n, w = xs.shape
+    s = np.empty((n, w))
+    excluded = np.zeros(n, dtype=np.int64)
+    for i in range(n):
+        for j in range(w):
+            x = np.float64(xs[i, j])
+            if use_gain:
+                out = abs(x - gain0[i] * bs[j]) > thr[j] or bs[j] <= 0
+                v = x / (bs[j] if bs[j] > 0 else 1.0)
+            else:
+                v = x - bs[j]
+                out = abs(v - offset0[i]) > thr[j]
+            if out:
+                s[i, j] = np.inf
+                excluded[i] += 1
+            else:
+                s[i, j] = v
+    return s, excluded
+
+
+@_jit()
+def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
+    """Per row of the row-sorted ``s`` (excluded values +inf, ``excluded`` of them): the masked median and the kept count (:func:`ballscan.detection._masked_median`)."""
+    n_row, n = s.shape
+    med = np.zeros(n_row)
+    count = n - excluded
+    h = n // 2
+    for i in range(n_row):
+        if count[i] <= 0:
+            continue
+        n_low = excluded[i] // 2
+        # ranks of the virtual row: n_low values -big, the kept ones, then +big
+        hi = h - n_low
+        v_hi = -big if hi < 0 else (big if hi >= count[i] else s[i, hi])
+        if n % 2:
+            med[i] = v_hi
+        else:
+            lo = hi - 1
+            v_lo = -big if lo < 0 else (big if lo >= count[i] else s[i, lo])
+            med[i] = (v_lo + v_hi) / 2
+    return med, count
+
+
+@_jit()
+def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
+    """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.detection._fill_lines_and_cols`)."""
+    h, w = m.shape
+    out = np.zeros((h, w), dtype=np.bool_)
+    for i in range(h):
+        first = -1
+        last = -1
+        for j in range(w):
+            if m[i, j]:
+                if first < 0:
+                    first = j
+                last = j
+        for j in range(first if first >= 0 else w, last + 1):
+            out[i, j] = True
+    for j in range(w):
+        first = -1
+        last = -1
+        for i in range(h):
+            if m[i, j]:
+                if first < 0:
+                    first = i
+                last = i
+        for i in range(first if first >= 0 else h, last + 1):
+            out[i, j] = True
+    return out
+
+
+@_jit()
+def region_values(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, l0: int, c0: int, mask: np.ndarray, sat: float):
+    """Ball-minus-background values of the mask's pixels (in raster order) and whether any is at or above ``sat`` (:func:`ballscan.detection.detect`).
+
+    The box's background is ``gain * b + offset`` as in
+    :func:`ballscan.detection.background_at` (the same float64 operations).
+    """
+    h, w = mask.shape
+    vals = np.empty(h * w)
+    k = 0
+    saturated = False
+    for i in range(h):
+        for j in range(w):
+            if mask[i, j]:
+                xv = x[l0 + i, c0 + j]
+                vals[k] = xv - (gain[l0 + i] * b[c0 + j] + offset[l0 + i])
+                saturated = saturated or xv >= sat
+                k += 1
+    return vals[:k].copy(), saturated
 
 
 @_jit(inline="always")
