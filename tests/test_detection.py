@@ -344,21 +344,32 @@ def _random_mask(rng, max_side=60):
     return rng.random(shape) < rng.uniform(0.02, 0.7)
 
 
-def test_label_pixels_equals_ndimage_label_bincount_and_find_objects():
+def test_label_hits_equals_the_threshold_then_ndimage_label_bincount_and_find_objects():
     from scipy import ndimage as ndi
 
-    from ballscan._kernels import label_pixels
+    from ballscan._kernels import label_hits
 
     rng = np.random.default_rng(3)
-    for _ in range(300):
-        hit = _random_mask(rng)
+    for trial in range(300):
+        n, w = int(rng.integers(1, 60)), int(rng.integers(1, 60))
+        gain = rng.uniform(0.9, 1.1, n).astype(np.float32)
+        b = rng.uniform(0.0, 200.0, w).astype(np.float32)
+        offset = (rng.normal(0.0, 2.0, n) if trial % 2 else np.zeros(n)).astype(np.float32)
+        x = np.round(np.multiply.outer(gain, b) + rng.normal(0.0, 4.0, (n, w))).astype(np.float32)
+        x[rng.random((n, w)) < rng.uniform(0.0, 0.6)] += 50.0
+        thr = rng.uniform(1.0, 30.0, w).astype(np.float32)
+        # the numpy form
+        resid = np.multiply.outer(gain, b)
+        if trial % 2:
+            resid += offset[:, None]
+        hit = np.abs(x - resid) > thr[None, :]
         ref, nlab = ndi.label(hit, structure=np.ones((3, 3), dtype=bool))
-        lab, sizes, boxes = label_pixels(hit)
+        lab, sizes, boxes = label_hits(x, gain, b, offset, thr)
         assert lab.dtype == ref.dtype and np.array_equal(lab, ref)
         assert np.array_equal(sizes, np.bincount(ref[hit], minlength=nlab + 1)[1:])
         objs = ndi.find_objects(ref)
         assert boxes.shape == (nlab, 4)
-        assert [tuple(b) for b in boxes.tolist()] == [(o[0].start, o[0].stop, o[1].start, o[1].stop) for o in objs]
+        assert [tuple(q) for q in boxes.tolist()] == [(o[0].start, o[0].stop, o[1].start, o[1].stop) for o in objs]
 
 
 def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):

@@ -1037,7 +1037,8 @@ def warm_up() -> None:
     )
     # the detection's and the edges' loops (section at the end of the module)
     mode_seek(np.zeros((1, 2), dtype=np.float32), np.zeros(1), np.ones(1), 0.5)
-    label_pixels(np.ones((2, 2), dtype=np.bool_))
+    one32 = np.ones(2, dtype=np.float32)
+    label_hits(np.ones((2, 2), dtype=np.float32), one32, one32, one32, one32)
     s, e = first_pass_lines(np.ones((1, 2), dtype=np.float32), np.ones(1), np.zeros(1), np.ones(2), np.ones(2), True)
     kept_median(s, e, 1e300)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
@@ -1173,74 +1174,91 @@ def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float)
     return centre, sig_out, cnt
 
 
-@_jit()
-def label_pixels(hit: np.ndarray):
-    """8-connected labels, sizes and boxes of the True pixels of ``hit`` (:func:`ballscan.detection.detect`).
+@_jit(inline="always")
+def _root(parent: np.ndarray, q: int) -> int:
+    """Root of ``q`` in the union-find forest ``parent`` (path halving)."""
+    while parent[q] != q:
+        parent[q] = parent[parent[q]]
+        q = parent[q]
+    return q
 
-    The labels are numbered as ``scipy.ndimage.label`` numbers them (in the
-    raster order of each component's first pixel), so ``lab`` is its array;
-    ``sizes[k]`` and ``boxes[k] = (line_start, line_stop, col_start,
-    col_stop)`` belong to label ``k + 1`` (``np.bincount`` and
-    ``ndi.find_objects`` of it).  One union-find pass over the pixels and
-    one renumbering pass.
+
+@_jit()
+def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, thr: np.ndarray):
+    """8-connected labels, sizes and boxes of the pixels with ``|x - (gain b + offset)| > thr`` (:func:`ballscan.detection.detect`).
+
+    The test is in float32 like the numpy form (``x``, ``gain``, ``b``,
+    ``offset`` and ``thr`` float32).  The labels are numbered as
+    ``scipy.ndimage.label`` (structure ``ones((3, 3))``) numbers them, in
+    the raster order of each component's first pixel, so ``lab`` (int32)
+    is its array; ``sizes[k]`` and ``boxes[k] = (line_start, line_stop,
+    col_start, col_stop)`` belong to label ``k + 1`` (``np.bincount`` and
+    ``ndi.find_objects`` of it).  Runs of hit pixels along each line are
+    joined (union-find) with the runs of the line above that touch them.
     """
-    n, w = hit.shape
+    n, w = x.shape
     lab = np.zeros((n, w), dtype=np.int32)
-    parent = np.empty(n * w + 1, dtype=np.int32)
-    n_prov = 0
+    cap = n * ((w + 1) // 2)  # the most runs the lines can hold
+    run_line = np.empty(cap, dtype=np.int64)
+    run_start = np.empty(cap, dtype=np.int64)
+    run_stop = np.empty(cap, dtype=np.int64)
+    parent = np.empty(cap, dtype=np.int64)
+    n_run = 0
+    prev_first = 0  # the runs of the line above: [prev_first, first)
     for i in range(n):
-        for j in range(w):
-            if not hit[i, j]:
+        first = n_run
+        g = gain[i]
+        o = offset[i]
+        j = 0
+        while j < w:
+            if not abs(x[i, j] - (g * b[j] + o)) > thr[j]:
+                j += 1
                 continue
-            root = 0
-            # the neighbours already visited: left, and the three above
-            for di, dj in ((0, -1), (-1, -1), (-1, 0), (-1, 1)):
-                ii = i + di
-                jj = j + dj
-                if ii < 0 or jj < 0 or jj >= w:
-                    continue
-                q = lab[ii, jj]
-                if q == 0:
-                    continue
-                while parent[q] != q:
-                    parent[q] = parent[parent[q]]  # path halving
-                    q = parent[q]
-                if root == 0:
-                    root = q
-                elif q != root:
-                    lo = min(q, root)
-                    parent[max(q, root)] = lo
-                    root = lo
-            if root == 0:
-                n_prov += 1
-                parent[n_prov] = n_prov
-                root = n_prov
-            lab[i, j] = root
-    final = np.zeros(n_prov + 1, dtype=np.int32)
-    sizes = np.zeros(n_prov, dtype=np.int64)
-    boxes = np.empty((n_prov, 4), dtype=np.int64)
+            start = j
+            j += 1
+            while j < w and abs(x[i, j] - (g * b[j] + o)) > thr[j]:
+                j += 1
+            run_line[n_run] = i
+            run_start[n_run] = start
+            run_stop[n_run] = j
+            parent[n_run] = n_run
+            n_run += 1
+        # 8-connected: runs [a, b) and [c, d) of neighbouring lines touch where a <= d and c <= b
+        q = prev_first
+        for r in range(first, n_run):
+            while q < first and run_stop[q] < run_start[r]:
+                q += 1
+            k = q
+            while k < first and run_start[k] <= run_stop[r]:
+                ra = _root(parent, r)
+                rb = _root(parent, k)
+                if ra < rb:
+                    parent[rb] = ra
+                elif rb < ra:
+                    parent[ra] = rb
+                k += 1
+        prev_first = first
+    final = np.zeros(n_run, dtype=np.int32)
+    sizes = np.zeros(n_run, dtype=np.int64)
+    boxes = np.empty((n_run, 4), dtype=np.int64)
     n_lab = 0
-    for i in range(n):
-        for j in range(w):
-            q = lab[i, j]
-            if q == 0:
-                continue
-            while parent[q] != q:
-                q = parent[q]
-            k = final[q]
-            if k == 0:
-                n_lab += 1
-                k = n_lab
-                final[q] = k
-                boxes[k - 1, 0] = i
-                boxes[k - 1, 1] = i + 1
-                boxes[k - 1, 2] = j
-                boxes[k - 1, 3] = j + 1
+    for r in range(n_run):
+        root = _root(parent, r)
+        k = final[root]
+        if k == 0:
+            n_lab += 1
+            k = n_lab
+            final[root] = k
+            boxes[k - 1, 0] = run_line[r]
+            boxes[k - 1, 2] = run_start[r]
+            boxes[k - 1, 3] = run_stop[r]
+        i = run_line[r]
+        for j in range(run_start[r], run_stop[r]):
             lab[i, j] = k
-            sizes[k - 1] += 1
-            boxes[k - 1, 1] = i + 1
-            boxes[k - 1, 2] = min(boxes[k - 1, 2], j)
-            boxes[k - 1, 3] = max(boxes[k - 1, 3], j + 1)
+        sizes[k - 1] += run_stop[r] - run_start[r]
+        boxes[k - 1, 1] = i + 1
+        boxes[k - 1, 2] = min(boxes[k - 1, 2], run_start[r])
+        boxes[k - 1, 3] = max(boxes[k - 1, 3], run_stop[r])
     return lab, sizes[:n_lab].copy(), boxes[:n_lab].copy()
 
 

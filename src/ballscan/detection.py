@@ -49,7 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage as ndi
 
-from ._kernels import as_arg, fill_lines_and_cols, first_pass_lines, kept_median, label_pixels, mode_seek, region_values
+from ._kernels import as_arg, fill_lines_and_cols, first_pass_lines, kept_median, label_hits, mode_seek, region_values
 from .images import LineImage
 
 __all__ = [
@@ -632,16 +632,19 @@ def detect(
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
     b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0)
-    # |x - background| in one float32 buffer
-    resid32 = np.multiply.outer(gain.astype(np.float32), b.astype(np.float32))
-    if model == "offset":
-        resid32 += offset.astype(np.float32)[:, None]
-    np.subtract(x32, resid32, out=resid32)
-    hit = np.abs(resid32, out=resid32) > (k_sigma * noise).astype(np.float32)[None, :]
-
-    # compiled (_kernels.label_pixels): ndi.label (8-connected), the sizes
-    # and ndi.find_objects took 0.2 ms on a stream crop; the same labels
-    lab, sizes, boxes = label_pixels(as_arg(hit, np.bool_))
+    # The pixels with |x - background| > k_sigma noise (in float32), labelled
+    # 8-connected, with their sizes and boxes: compiled
+    # (_kernels.label_hits), where the threshold's numpy passes, ndi.label,
+    # np.bincount and ndi.find_objects took 0.25 ms on a stream crop; the
+    # same labels.  The offset is 0 in the gain model: adding it there
+    # changes no residual.
+    lab, sizes, boxes = label_hits(
+        as_arg(x32, np.float32),
+        gain.astype(np.float32),
+        b.astype(np.float32),
+        offset.astype(np.float32),
+        (k_sigma * noise).astype(np.float32),
+    )
     nlab = sizes.size
     regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
     if nlab:
