@@ -464,3 +464,33 @@ def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
         assert np.array_equal(vals, ref)
         assert saturated == bool(np.any(x[box][filled] >= 255.0))
 
+
+
+def test_integer_median_mad_equals_the_two_selections():
+    from ballscan._kernels import integer_median_mad
+    from ballscan.detection import median
+
+    rng = np.random.default_rng(6)
+    for trial in range(500):
+        d = np.round(rng.normal(size=int(rng.integers(1, 400))) * rng.uniform(0.1, 30.0)).astype(np.float32)
+        if trial % 5 == 0:
+            d[rng.random(d.size) < 0.1] += 200.0  # outliers (balls)
+        ok, med, mad = integer_median_mad(d)
+        ref_med = median(d)
+        assert ok and np.float32(med) == ref_med
+        assert np.float32(mad) == median(np.abs(d - ref_med))
+    for d in ([1.5, 2.0], [np.nan, 2.0], [np.inf, 2.0], [0.0, 3e7], [-5000.0, 5000.0]):
+        assert not integer_median_mad(np.array(d, dtype=np.float32))[0]
+
+
+def test_reflect_median_filter_equals_ndimage_median_filter():
+    from scipy import ndimage as ndi
+
+    from ballscan._kernels import reflect_median_filter
+
+    rng = np.random.default_rng(7)
+    for trial in range(500):
+        w = int(rng.integers(1, 300))
+        x = rng.normal(size=w) if trial % 2 else np.round(rng.normal(size=w) * 2.0)  # ties
+        size = 2 * int(rng.integers(0, w)) + 1
+        assert np.array_equal(reflect_median_filter(x, size), ndi.median_filter(x, size=size, mode="reflect"))

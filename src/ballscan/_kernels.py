@@ -1039,6 +1039,8 @@ def warm_up() -> None:
     mode_seek(np.zeros((1, 2), dtype=np.float32), np.zeros(1), np.ones(1), 0.5)
     one32 = np.ones(2, dtype=np.float32)
     label_hits(np.ones((2, 2), dtype=np.float32), one32, one32, one32, one32)
+    integer_median_mad(np.zeros(2, dtype=np.float32))
+    reflect_median_filter(np.zeros(3), 3)
     s, e = first_pass_lines(np.ones((1, 2), dtype=np.float32), np.ones(1), np.zeros(1), np.ones(2), np.ones(2), True)
     kept_median(s, e, 1e300)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
@@ -1260,6 +1262,113 @@ def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarra
         boxes[k - 1, 2] = min(boxes[k - 1, 2], run_start[r])
         boxes[k - 1, 3] = max(boxes[k - 1, 3], run_stop[r])
     return lab, sizes[:n_lab].copy(), boxes[:n_lab].copy()
+
+
+@_jit(inline="always")
+def _rank_in_counts(counts: np.ndarray, k: int) -> int:
+    """Index of the value of rank ``k`` (0-based) in the histogram ``counts``."""
+    seen = 0
+    for i in range(counts.size):
+        seen += counts[i]
+        if seen > k:
+            return i
+    return counts.size - 1
+
+
+@_jit()
+def integer_median_mad(d: np.ndarray):
+    """``median(d)`` and ``median(|d - median(d)|)`` of float32 ``d`` holding small integers, by counting (:func:`ballscan.detection._global_noise`).
+
+    Returns ``(ok, med, mad)``; ``ok`` is False (and the values 0) unless
+    every value is an integer and their range is at most ``2 d.size +
+    1024``.  Then both medians are exact in float32 (integers and half or
+    quarter integers below 2**21), so they are the values of the numpy
+    form: the middle order statistic, or the mean of the two middle ones
+    in float32.
+    """
+    n = d.size
+    zero = np.float32(0.0)
+    two = np.float32(2.0)
+    if n == 0:
+        return False, zero, zero
+    iv = np.empty(n, dtype=np.int32)
+    bad = False
+    for q in range(n):
+        v = d[q]
+        bad |= not abs(v) <= np.float32(1048576.0)
+        iv[q] = np.int32(v) if abs(v) <= np.float32(1048576.0) else 0
+        bad |= np.float32(iv[q]) != v
+    if bad:
+        return False, zero, zero
+    lo = iv.min()
+    span = int(iv.max()) - int(lo) + 1
+    if span > 2 * n + 1024:
+        return False, zero, zero
+    base = int(lo)
+    counts = np.zeros(span, dtype=np.int64)
+    for q in range(n):
+        counts[iv[q] - base] += 1
+    h = n // 2
+    med = np.float32(_rank_in_counts(counts, h) + base)
+    if n % 2 == 0:
+        med = (np.float32(_rank_in_counts(counts, h - 1) + base) + med) / two
+    # |v - med| doubled is an integer: count it
+    dev = np.zeros(2 * span + 2, dtype=np.int64)
+    for i in range(span):
+        if counts[i]:
+            dev[int(abs(2.0 * (np.float64(i + base) - np.float64(med))))] += counts[i]
+    mad = np.float32(_rank_in_counts(dev, h)) / two
+    if n % 2 == 0:
+        mad = (np.float32(_rank_in_counts(dev, h - 1)) / two + mad) / two
+    return True, med, mad
+
+
+@_jit()
+def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
+    """``scipy.ndimage.median_filter(x, size, mode="reflect")`` of a 1-D float64 ``x`` without NaN, ``size`` odd and below ``2 x.size`` (:func:`ballscan.detection._background`).
+
+    The windows hold the entries of ``x`` (mirrored at the ends, once, as
+    ``d c b a | a b c d | d c b a``) with multiplicities 0 to 2; they are
+    kept as counts over ``x`` sorted, and the middle rank is followed as
+    the window slides by one (a few steps each), instead of a selection
+    per window.
+    """
+    w = x.size
+    r = size // 2
+    order = np.argsort(x)
+    pos = np.empty(w, dtype=np.int64)
+    for q in range(w):
+        pos[order[q]] = q
+    cnt = np.zeros(w, dtype=np.int64)
+    for t in range(-r, r + 1):
+        cnt[pos[-t - 1 if t < 0 else (2 * w - 1 - t if t >= w else t)]] += 1
+    # p: the sorted position holding rank r of the window; below: the window's entries before it
+    p = 0
+    below = 0
+    while below + cnt[p] <= r:
+        below += cnt[p]
+        p += 1
+    out = np.empty(w)
+    out[0] = x[order[p]]
+    for i in range(1, w):
+        t_out = i - r - 1
+        t_in = i + r
+        a = pos[-t_out - 1 if t_out < 0 else (2 * w - 1 - t_out if t_out >= w else t_out)]
+        b = pos[-t_in - 1 if t_in < 0 else (2 * w - 1 - t_in if t_in >= w else t_in)]
+        cnt[a] -= 1
+        if a < p:
+            below -= 1
+        cnt[b] += 1
+        if b < p:
+            below += 1
+        while below > r:
+            p -= 1
+            below -= cnt[p]
+        while below + cnt[p] <= r:
+            below += cnt[p]
+            p += 1
+        out[i] = x[order[p]]
+    return out
 
 
 @_jit()

@@ -49,7 +49,17 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage as ndi
 
-from ._kernels import as_arg, fill_lines_and_cols, first_pass_lines, kept_median, label_hits, mode_seek, region_values
+from ._kernels import (
+    as_arg,
+    fill_lines_and_cols,
+    first_pass_lines,
+    integer_median_mad,
+    kept_median,
+    label_hits,
+    mode_seek,
+    reflect_median_filter,
+    region_values,
+)
 from .images import LineImage
 
 __all__ = [
@@ -301,7 +311,7 @@ def _mode_seek(
 
 
 def _global_noise(x: np.ndarray) -> float:
-    """Noise sigma (DN) from differences of consecutive lines (balls are rare outliers)."""
+    """Noise sigma (DN) from differences of consecutive lines (balls are rare outliers); ``x`` float32."""
     if x.shape[0] < 2:
         return 0.0
     d = np.diff(x, axis=0).ravel()
@@ -309,7 +319,10 @@ def _global_noise(x: np.ndarray) -> float:
     d = d[:: max(1, d.size // 100_000)]
     if d.size == 0:
         return 0.0
-    mad = median(np.abs(d - median(d)))
+    # Integer data (the usual case): both medians by counting, exact, at a
+    # quarter of the two selections' cost (15 000 values: 10 against 39 us).
+    ok, _, mad = integer_median_mad(as_arg(d, np.float32))
+    mad = np.float32(mad) if ok else median(np.abs(d - median(d)))
     return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
 
 
@@ -350,7 +363,12 @@ def _background(
     win = max(w // 4, 255) | 1
     # "reflect", not "nearest": at a sensor end "nearest" repeats the end column
     # half a window long, and a ball covering that end would out-vote the background.
-    neighbours = ndi.median_filter(col_med, size=min(win, 2 * w - 1), mode="reflect")
+    size = min(win, 2 * w - 1)
+    if np.isnan(col_med).any():
+        neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
+    else:
+        # compiled (_kernels.reflect_median_filter): the same values, 4 against 17 us
+        neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
     min_support = max(3, int(np.ceil(0.03 * n)))
