@@ -494,3 +494,23 @@ def test_reflect_median_filter_equals_ndimage_median_filter():
         x = rng.normal(size=w) if trial % 2 else np.round(rng.normal(size=w) * 2.0)  # ties
         size = 2 * int(rng.integers(0, w)) + 1
         assert np.array_equal(reflect_median_filter(x, size), ndi.median_filter(x, size=size, mode="reflect"))
+
+
+def test_run_counts_and_group_mask_equal_their_numpy_form():
+    from ballscan._kernels import group_mask, run_counts
+
+    rng = np.random.default_rng(8)
+    for _ in range(300):
+        m = _random_mask(rng)
+        for axis in (0, 1):
+            starts = m.copy()
+            if axis == 1:
+                starts[:, 1:] &= ~m[:, :-1]
+            else:
+                starts[1:] &= ~m[:-1]
+            assert np.array_equal(run_counts(m, axis), np.count_nonzero(starts, axis=axis))
+        lab = rng.integers(0, 6, m.shape).astype(np.int32)
+        in_group = rng.random(6) < 0.5
+        l0, c0 = int(rng.integers(0, m.shape[0])), int(rng.integers(0, m.shape[1]))
+        l1, c1 = int(rng.integers(l0, m.shape[0] + 1)), int(rng.integers(c0, m.shape[1] + 1))
+        assert np.array_equal(group_mask(lab, l0, l1, c0, c1, in_group), in_group[lab[l0:l1, c0:c1]])

@@ -1043,6 +1043,7 @@ def warm_up() -> None:
     reflect_median_filter(np.zeros(3), 3)
     s, e = first_pass_lines(np.ones((1, 2), dtype=np.float32), np.ones(1), np.zeros(1), np.ones(2), np.ones(2), True)
     kept_median(s, e, 1e300)
+    run_counts(group_mask(np.zeros((2, 2), dtype=np.int32), 0, 2, 0, 2, np.ones(1, dtype=np.bool_)), 1)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
     running_median(np.zeros(3), 3)
     prof = np.zeros((1, 8))
@@ -1448,6 +1449,35 @@ def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
                 last = i
         for i in range(first if first >= 0 else h, last + 1):
             out[i, j] = True
+    return out
+
+
+@_jit()
+def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np.ndarray) -> np.ndarray:
+    """``in_group[lab[l0:l1, c0:c1]]``: the pixels of a group of labels in its box (:func:`ballscan.detection.detect`)."""
+    out = np.empty((l1 - l0, c1 - c0), dtype=np.bool_)
+    for i in range(l1 - l0):
+        for j in range(c1 - c0):
+            out[i, j] = in_group[lab[l0 + i, c0 + j]]
+    return out
+
+
+@_jit()
+def run_counts(m: np.ndarray, axis: int) -> np.ndarray:
+    """Number of separate runs of True in each line (``axis=1``) or column (``axis=0``) of the bool mask ``m`` (:func:`ballscan.detection._merged_runs`)."""
+    h, w = m.shape
+    if axis == 1:
+        out = np.zeros(h, dtype=np.int64)
+        for i in range(h):
+            for j in range(w):
+                out[i] += m[i, j] and (j == 0 or not m[i, j - 1])
+    else:
+        out = np.zeros(w, dtype=np.int64)
+        for j in range(w):
+            out[j] += m[0, j]
+        for i in range(1, h):
+            for j in range(w):
+                out[j] += m[i, j] and not m[i - 1, j]
     return out
 
 
