@@ -1426,29 +1426,31 @@ def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
 
 @_jit()
 def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
-    """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.detection._fill_lines_and_cols`)."""
+    """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.detection.detect`).
+
+    One sweep along the lines fills each line and finds each column's
+    first and last pixel; a second fills the columns (line by line, in
+    memory order).
+    """
     h, w = m.shape
     out = np.zeros((h, w), dtype=np.bool_)
+    first = np.full(w, h)
+    last = np.full(w, -1)
     for i in range(h):
-        first = -1
-        last = -1
+        a = -1
+        b = -1
         for j in range(w):
             if m[i, j]:
-                if first < 0:
-                    first = j
-                last = j
-        for j in range(first if first >= 0 else w, last + 1):
+                if a < 0:
+                    a = j
+                b = j
+                first[j] = min(first[j], i)
+                last[j] = i
+        for j in range(a if a >= 0 else w, b + 1):
             out[i, j] = True
-    for j in range(w):
-        first = -1
-        last = -1
-        for i in range(h):
-            if m[i, j]:
-                if first < 0:
-                    first = i
-                last = i
-        for i in range(first if first >= 0 else h, last + 1):
-            out[i, j] = True
+    for i in range(h):
+        for j in range(w):
+            out[i, j] |= (first[j] <= i) & (i <= last[j])
     return out
 
 

@@ -664,10 +664,8 @@ def detect(
             area = int(sizes[grp].sum())
             if area < min_area_px:
                 continue
-            l0 = int(boxes[grp, 0].min())
-            l1 = int(boxes[grp, 1].max())
-            c0 = int(boxes[grp, 2].min())
-            c1 = int(boxes[grp, 3].max())
+            first, stop = boxes[grp].min(axis=0), boxes[grp].max(axis=0)
+            l0, l1, c0, c1 = int(first[0]), int(stop[1]), int(first[2]), int(stop[3])
             if l1 - l0 < 2 or c1 - c0 < 2:
                 continue  # a hot pixel run along one line or one column
             in_group = np.zeros(nlab + 1, dtype=bool)
