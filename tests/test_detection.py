@@ -514,3 +514,21 @@ def test_run_counts_and_group_mask_equal_their_numpy_form():
         l0, c0 = int(rng.integers(0, m.shape[0])), int(rng.integers(0, m.shape[1]))
         l1, c1 = int(rng.integers(l0, m.shape[0] + 1)), int(rng.integers(c0, m.shape[1] + 1))
         assert np.array_equal(group_mask(lab, l0, l1, c0, c1, in_group), in_group[lab[l0:l1, c0:c1]])
+
+
+def test_detection_kernels_compile_one_signature_only():
+    # a second signature (a strided or read-only argument) would be compiled
+    # when first seen, inside a stream's ball
+    from ballscan import _kernels as K
+
+    K.warm_up()
+    rng = np.random.default_rng(9)
+    for name in ("pub_two_close", "pub_cut_first_line"):
+        detect(_scene(name)[0])
+    img, _ = _disc((80, 120), (40, 60), (20, 25), 200.0)
+    detect(_image(_noisy(img, 2.0, 1)))
+    detect(_image(_noisy(img, 2.0, 2)[:, ::2].T))  # strided, transposed data
+    detect(_image(np.round(rng.normal(3.0, 2.0, (60, 90)))), k_sigma=2.0)  # offset model
+    for kernel in (K.label_hits, K.first_pass_lines, K.kept_median, K.fill_lines_and_cols, K.region_values,
+                   K.integer_median_mad, K.reflect_median_filter, K.group_mask, K.run_counts):
+        assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)
