@@ -1206,20 +1206,24 @@ def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarra
     run_start = np.empty(cap, dtype=np.int64)
     run_stop = np.empty(cap, dtype=np.int64)
     parent = np.empty(cap, dtype=np.int64)
+    row = np.empty(w, dtype=np.bool_)
     n_run = 0
     prev_first = 0  # the runs of the line above: [prev_first, first)
     for i in range(n):
         first = n_run
         g = gain[i]
         o = offset[i]
+        # the test first, over the whole line (a loop without branches)
+        for j in range(w):
+            row[j] = abs(x[i, j] - (g * b[j] + o)) > thr[j]
         j = 0
         while j < w:
-            if not abs(x[i, j] - (g * b[j] + o)) > thr[j]:
+            if not row[j]:
                 j += 1
                 continue
             start = j
             j += 1
-            while j < w and abs(x[i, j] - (g * b[j] + o)) > thr[j]:
+            while j < w and row[j]:
                 j += 1
             run_line[n_run] = i
             run_start[n_run] = start
