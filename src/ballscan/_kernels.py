@@ -1388,20 +1388,32 @@ def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs:
     n, w = xs.shape
     s = np.empty((n, w))
     excluded = np.zeros(n, dtype=np.int64)
+    safe = np.empty(w)
+    for j in range(w):
+        safe[j] = bs[j] if bs[j] > 0 else 1.0
+    # one line at a time, in loops without branches (the compiler vectorises them)
+    x = np.empty(w)
     for i in range(n):
+        row = s[i]
         for j in range(w):
-            x = np.float64(xs[i, j])
-            if use_gain:
-                out = abs(x - gain0[i] * bs[j]) > thr[j] or bs[j] <= 0
-                v = x / (bs[j] if bs[j] > 0 else 1.0)
-            else:
-                v = x - bs[j]
-                out = abs(v - offset0[i]) > thr[j]
-            if out:
-                s[i, j] = np.inf
-                excluded[i] += 1
-            else:
-                s[i, j] = v
+            x[j] = xs[i, j]
+        e = 0
+        if use_gain:
+            g = gain0[i]
+            for j in range(w):
+                row[j] = x[j] / safe[j]
+            for j in range(w):
+                out = (abs(x[j] - g * bs[j]) > thr[j]) | (bs[j] <= 0)
+                row[j] = np.inf if out else row[j]
+                e += out
+        else:
+            o = offset0[i]
+            for j in range(w):
+                v = x[j] - bs[j]
+                out = abs(v - o) > thr[j]
+                row[j] = np.inf if out else v
+                e += out
+        excluded[i] = e
     return s, excluded
 
 
