@@ -370,6 +370,11 @@ def test_label_hits_equals_the_threshold_then_ndimage_label_bincount_and_find_ob
         objs = ndi.find_objects(ref)
         assert boxes.shape == (nlab, 4)
         assert [tuple(q) for q in boxes.tolist()] == [(o[0].start, o[0].stop, o[1].start, o[1].stop) for o in objs]
+    # far more runs than the first allocation holds (it grows)
+    x = (rng.random((60, 400)) < 0.5).astype(np.float32)
+    ref, nlab = ndi.label(x > 0.5, structure=np.ones((3, 3), dtype=bool))
+    lab, sizes, _ = label_hits(x, np.ones(60, np.float32), np.zeros(400, np.float32), np.zeros(60, np.float32), np.full(400, 0.5, np.float32))
+    assert np.array_equal(lab, ref) and sizes.size == nlab
 
 
 def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):

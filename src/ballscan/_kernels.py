@@ -1186,6 +1186,14 @@ def _root(parent: np.ndarray, q: int) -> int:
     return q
 
 
+@_jit(inline="always")
+def _grown(a: np.ndarray, size: int) -> np.ndarray:
+    """A copy of the 1-D ``a`` with room for ``size`` entries."""
+    out = np.empty(size, dtype=a.dtype)
+    out[: a.size] = a
+    return out
+
+
 @_jit()
 def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, thr: np.ndarray):
     """8-connected labels, sizes and boxes of the pixels with ``|x - (gain b + offset)| > thr`` (:func:`ballscan.detection.detect`).
@@ -1201,7 +1209,11 @@ def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarra
     """
     n, w = x.shape
     lab = np.zeros((n, w), dtype=np.int32)
-    cap = n * ((w + 1) // 2)  # the most runs the lines can hold
+    # room for the runs, doubled when a line might not fit (a line holds at
+    # most (w + 1) // 2; all lines that many would be a large image's
+    # memory many times over)
+    per_line = (w + 1) // 2
+    cap = 4 * n + per_line
     run_line = np.empty(cap, dtype=np.int64)
     run_start = np.empty(cap, dtype=np.int64)
     run_stop = np.empty(cap, dtype=np.int64)
@@ -1211,6 +1223,12 @@ def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarra
     prev_first = 0  # the runs of the line above: [prev_first, first)
     for i in range(n):
         first = n_run
+        if n_run + per_line > cap:
+            cap = 2 * cap + per_line
+            run_line = _grown(run_line, cap)
+            run_start = _grown(run_start, cap)
+            run_stop = _grown(run_stop, cap)
+            parent = _grown(parent, cap)
         g = gain[i]
         o = offset[i]
         # the test first, over the whole line (a loop without branches)
