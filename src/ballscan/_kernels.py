@@ -1394,7 +1394,9 @@ def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
     return out
 
 
-@_jit(error_model="numpy")  # no zero-division check (none is possible): the divisions vectorise, 0.04 -> 0.015 ms
+# error_model="numpy": no zero-division check (the divisors are positive),
+# so the divisions vectorise (40 -> 23 us on a stream crop)
+@_jit(error_model="numpy")
 def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs: np.ndarray, thr: np.ndarray, use_gain: bool):
     """Each line's drift samples with the first-pass ball pixels set to +inf, and their number per line (:func:`ballscan.detection._background`).
 
