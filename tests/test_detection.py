@@ -501,8 +501,15 @@ def test_reflect_median_filter_equals_ndimage_median_filter():
         assert np.array_equal(reflect_median_filter(x, size), ndi.median_filter(x, size=size, mode="reflect"))
 
 
-def test_run_counts_and_group_mask_equal_their_numpy_form():
-    from ballscan._kernels import group_mask, run_counts
+def test_multi_runs_and_group_mask_equal_their_numpy_form():
+    from ballscan._kernels import group_mask, multi_runs
+
+    def paired(multi):
+        pair = multi[:-1] & multi[1:]
+        out = np.zeros_like(multi)
+        out[:-1] |= pair
+        out[1:] |= pair
+        return out
 
     rng = np.random.default_rng(8)
     for _ in range(300):
@@ -513,7 +520,10 @@ def test_run_counts_and_group_mask_equal_their_numpy_form():
                 starts[:, 1:] &= ~m[:, :-1]
             else:
                 starts[1:] &= ~m[:-1]
-            assert np.array_equal(run_counts(m, axis), np.count_nonzero(starts, axis=axis))
+            multi = np.count_nonzero(starts, axis=axis) >= 2
+            got, lone = multi_runs(m, axis)
+            assert np.array_equal(got, paired(multi))
+            assert np.array_equal(lone, multi & ~paired(multi))
         lab = rng.integers(0, 6, m.shape).astype(np.int32)
         in_group = rng.random(6) < 0.5
         l0, c0 = int(rng.integers(0, m.shape[0])), int(rng.integers(0, m.shape[1]))
@@ -535,5 +545,5 @@ def test_detection_kernels_compile_one_signature_only():
     detect(_image(_noisy(img, 2.0, 2)[:, ::2].T))  # strided, transposed data
     detect(_image(np.round(rng.normal(3.0, 2.0, (60, 90)))), k_sigma=2.0)  # offset model
     for kernel in (K.label_hits, K.first_pass_lines, K.kept_median, K.fill_lines_and_cols, K.region_values,
-                   K.integer_median_mad, K.reflect_median_filter, K.group_mask, K.run_counts):
+                   K.integer_median_mad, K.reflect_median_filter, K.group_mask, K.multi_runs):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)

@@ -1043,7 +1043,7 @@ def warm_up() -> None:
     reflect_median_filter(np.zeros(3), 3)
     s, e = first_pass_lines(np.ones((1, 2), dtype=np.float32), np.ones(1), np.zeros(1), np.ones(2), np.ones(2), True)
     kept_median(s, e, 1e300)
-    run_counts(group_mask(np.zeros((2, 2), dtype=np.int32), 0, 2, 0, 2, np.ones(1, dtype=np.bool_)), 1)
+    multi_runs(group_mask(np.zeros((2, 2), dtype=np.int32), 0, 2, 0, 2, np.ones(1, dtype=np.bool_)), 1)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
     running_median(np.zeros(3), 3)
     prof = np.zeros((1, 8))
@@ -1501,22 +1501,31 @@ def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np
 
 
 @_jit()
-def run_counts(m: np.ndarray, axis: int) -> np.ndarray:
-    """Number of separate runs of True in each line (``axis=1``) or column (``axis=0``) of the bool mask ``m`` (:func:`ballscan.detection._merged_runs`)."""
+def multi_runs(m: np.ndarray, axis: int):
+    """Lines (``axis=1``) or columns (``axis=0``) of the bool mask ``m`` in two or more runs of True: those with such a neighbour, and the others (:func:`ballscan.detection._merged_runs`)."""
     h, w = m.shape
     if axis == 1:
-        out = np.zeros(h, dtype=np.int64)
+        runs = np.zeros(h, dtype=np.int64)
         for i in range(h):
             for j in range(w):
-                out[i] += m[i, j] and (j == 0 or not m[i, j - 1])
+                runs[i] += m[i, j] and (j == 0 or not m[i, j - 1])
     else:
-        out = np.zeros(w, dtype=np.int64)
+        runs = np.zeros(w, dtype=np.int64)
         for j in range(w):
-            out[j] += m[0, j]
+            runs[j] += m[0, j]
         for i in range(1, h):
             for j in range(w):
-                out[j] += m[i, j] and not m[i - 1, j]
-    return out
+                runs[j] += m[i, j] and not m[i - 1, j]
+    size = runs.size
+    paired = np.zeros(size, dtype=np.bool_)
+    lone = np.zeros(size, dtype=np.bool_)
+    for k in range(size):
+        if runs[k] >= 2:
+            if (k > 0 and runs[k - 1] >= 2) or (k + 1 < size and runs[k + 1] >= 2):
+                paired[k] = True
+            else:
+                lone[k] = True
+    return paired, lone
 
 
 @_jit()
