@@ -105,7 +105,7 @@ def test_every_kernel_compiles_one_signature_only():
         for pixels in (False, True):
             estimate_image(img, cam, 0.0335, pixels=pixels)
     for kernel in (K.averaged_samples, K.averaged_edges_jacobian, K.pixel_residuals, K.pixel_residuals_jacobian, K.coverage_grid, K.chord_edges, K.limb_values,
-                   K.mode_seek, K.running_median, K.walk_edges, K.inner_differences, K.edge_windows,
+                   K.mode_seek, K.running_medians, K.walk_edges, K.inner_differences, K.edge_windows,
                    K.limb_levels, K.shading_fit, K.line_level_sums, K.level_scatter, K.interior_normals):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)
 
@@ -190,15 +190,17 @@ def _running_median_numpy(x, n):
     return np.where(cnt > 0, out, np.nan)
 
 
-def test_running_median_equals_its_numpy_form():
+def test_running_medians_equal_their_numpy_form():
     rng = np.random.default_rng(6)
     for _ in range(200):
         x = np.round(rng.normal(size=int(rng.integers(1, 80))) * 4) / 4  # ties
         x[rng.random(x.size) < rng.random()] = np.nan
         for n in (2, 3, 9, 10, 41):
-            got = K.running_median(x, n)
+            got = K.running_medians(x, 1, n)
             assert np.array_equal(got, _running_median_numpy(x, n), equal_nan=True)
-    assert np.isnan(K.running_median(np.full(5, np.nan), 3)).all()
+            two = K.running_medians(np.concatenate([x, x[::-1]]), 2, n)
+            assert np.array_equal(two, np.concatenate([_running_median_numpy(x, n), _running_median_numpy(x[::-1], n)]), equal_nan=True)
+    assert np.isnan(K.running_medians(np.full(5, np.nan), 1, 3)).all()
 
 
 def _edge_profile(seed: int, n: int = 40, w: int = 30):

@@ -1045,7 +1045,6 @@ def warm_up() -> None:
     kept_median(s, e, 1e300)
     multi_runs(group_mask(np.zeros((2, 2), dtype=np.int32), 0, 2, 0, 2, np.ones(1, dtype=np.bool_)), 1)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
-    running_median(np.zeros(3), 3)
     prof = np.zeros((1, 8))
     k0 = np.zeros(1, dtype=np.int64)
     k1 = np.full(1, 7, dtype=np.int64)
@@ -1569,41 +1568,6 @@ def region_values(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.nda
 def _nan_last_less(a: float, b: float) -> bool:
     """``a`` sorts before ``b`` in numpy's order (NaN last)."""
     return a < b or (b != b and a == a)
-
-
-@_jit()
-def running_median(x: np.ndarray, n: int) -> np.ndarray:
-    """Median of the finite entries of ``x`` over centred windows of ``2 (n // 2) + 1`` entries (:func:`ballscan.edges._running_median`).
-
-    Each window (NaN beyond the ends) sorted in numpy's order (NaN last) and
-    its middle finite ranks averaged, as the numpy form does: the same
-    values.  NaN where a window has no finite entry.
-    """
-    size = x.shape[0]
-    h = n // 2
-    wl = 2 * h + 1
-    out = np.empty(size)
-    buf = np.empty(wl)
-    for i in range(size):
-        cnt = 0
-        for q in range(wl):
-            j = i - h + q
-            v = x[j] if 0 <= j < size else np.nan
-            if math.isfinite(v):
-                cnt += 1
-            # insertion sort: windows of a few entries
-            p = q
-            while p > 0 and _nan_last_less(v, buf[p - 1]):
-                buf[p] = buf[p - 1]
-                p -= 1
-            buf[p] = v
-        if cnt == 0:
-            out[i] = np.nan
-        else:
-            lo = max(cnt - 1, 0) // 2
-            hi = min(cnt // 2, wl - 1)
-            out[i] = 0.5 * (buf[lo] + buf[hi])
-    return out
 
 
 @_jit()
@@ -3140,7 +3104,7 @@ def level_gradients(
 
 @_jit()
 def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
-    """:func:`running_median` of each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
+    """The running median of :func:`ballscan.edges._running_median` over each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
 
     The same values: each window is kept sorted in numpy's order (NaN last)
     and, among equal values, in index order, as :func:`running_median`'s
