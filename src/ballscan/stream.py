@@ -36,8 +36,9 @@ Pipeline per chunk
    :class:`ballscan.detection.ColumnModel`, ``background="engine"``):
    learned on thousands of clean lines, where the crop alone holds a few
    dozen in the ball's columns and its own mode reads high there (limb
-   pixels in its window; the speed then reads 1.4-2.5 sigma high on the
-   benchmark's balls, docs/benchmarks.md), and 0.3 ms less per ball.
+   pixels in its window: V.x then read 1.6-3.4 of its sigmas high on
+   average on balls of 112-268 lines, ``bench_calibration.py --stream``,
+   docs/benchmarks.md), and 0.3 ms less per ball.
    :func:`process_stream` yields the result at once, before the rest of the
    chunk is tested: the latency does not include the lines after the piece
    that ended the event.
