@@ -1082,6 +1082,7 @@ def warm_up() -> None:
     finished_edges(rows4, rows4, rows4, rows4, ints4, rows4, flags4, rows4, flags4, yes, yes, 0)
     limb_pixels(k0, ints4, ints4, ints4, ints4, np.zeros((4, 2), dtype=np.int64), np.zeros((4, 2), dtype=np.int64))
     finite_rows(prof)
+    chord_rows(np.zeros((1, 2)), np.zeros((1, 2)), np.ones((1, 2)), z1, z1, k0, np.ones(1))
     warm_up_stream()
 
 
@@ -3393,3 +3394,44 @@ def finite_rows(a: np.ndarray) -> np.ndarray:
                 out[r] = False
                 break
     return out
+
+
+# ---------------------------------------------------------------------------
+# Limb profile: the rows' chord samples
+# ---------------------------------------------------------------------------
+# LimbProfile._chords turned each line's chord samples into each row's
+# offsets inwards from its edge with three gathers and two selections over
+# (R, 3, n) arrays; one pass does the same subtractions.
+
+
+@_jit()
+def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.ndarray, right: np.ndarray, inv: np.ndarray, sg: np.ndarray):
+    """The chord samples of rows as offsets inwards from their edge (:meth:`ballscan.shading.LimbProfile._chords`).
+
+    ``u_lo, u_hi, wgt`` (U, S) the samples' ends (pixels) and weights of
+    ``U`` lines, ``left, right`` (U,) their mean edges, ``inv`` (R,) each
+    row's line and ``sg`` (R,) its side (> 0 the left edge; else, NaN
+    too, the right one).  Returns ``lo, hi, w`` (R, S):
+    ``np.where(sg > 0, u_lo - left, right - u_hi)``, ``np.where(sg > 0, u_hi
+    - left, right - u_lo)`` and the weights, of each row's line.
+    """
+    R = inv.shape[0]
+    S = u_lo.shape[1]
+    lo = np.empty((R, S))
+    hi = np.empty((R, S))
+    w = np.empty((R, S))
+    for r in range(R):
+        k = inv[r]
+        if sg[r] > 0:
+            e = left[k]
+            for j in range(S):
+                lo[r, j] = u_lo[k, j] - e
+                hi[r, j] = u_hi[k, j] - e
+        else:
+            e = right[k]
+            for j in range(S):
+                lo[r, j] = e - u_hi[k, j]
+                hi[r, j] = e - u_lo[k, j]
+        for j in range(S):
+            w[r, j] = wgt[k, j]
+    return lo, hi, w
