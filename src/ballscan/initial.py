@@ -142,7 +142,7 @@ def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float =
 
 def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
     """Centroid of a non-negative profile and its 1-sigma from per-pixel noise."""
-    w = np.clip(row, 0.0, None)
+    w = np.maximum(row, 0.0)  # np.clip's values (it calls np.maximum without an upper bound)
     s = w.sum()
     if s <= 0:
         return math.nan, math.inf
@@ -183,7 +183,8 @@ def find_keypoints(
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
-    sig = np.broadcast_to(box_sigma, box.shape)
+    box_sigma = np.asarray(box_sigma)
+    sig = box_sigma if box_sigma.shape == box.shape else np.broadcast_to(box_sigma, box.shape)
     r_a, r_b = int(rows[0]), int(rows[-1])
 
     def line_centroid(r: int) -> tuple[float, float]:

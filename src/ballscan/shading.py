@@ -181,7 +181,7 @@ def fit_shading(
         return None
     # the pixels' indices in the lines' runs laid end to end, and only the
     # picked ones' lines and columns
-    pick = np.linspace(0, total - 1, max_pixels).astype(int) if total > max_pixels else np.arange(total)
+    pick = _even_picks(total, max_pixels) if total > max_pixels else np.arange(total)
     row = np.searchsorted(end, pick, side="right")
     col = pick - (end - counts)[row] + lo[row]
     # (compiled: surface_normals at the pixels' centres and the usable box)
@@ -479,6 +479,15 @@ class LimbProfile:
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
 
 
+def _even_picks(n: int, m: int) -> np.ndarray:
+    """``np.linspace(0, n - 1, m).astype(int)``: the same arithmetic (``k * step``, the last exactly ``n - 1``) without its overhead."""
+    if m < 2:
+        return np.linspace(0, n - 1, m).astype(int)
+    pick = (np.arange(m) * ((n - 1) / (m - 1))).astype(int)
+    pick[-1] = n - 1
+    return pick
+
+
 def _nan_to_num(a: np.ndarray) -> np.ndarray:
     """``np.nan_to_num`` of a float64 array (a new array), at a fraction of its cost where no value is infinite."""
     out = np.where(np.isnan(a), 0.0, a)
@@ -603,8 +612,8 @@ def ball_limb(
     # interior: inside both the model's and the measured edges (the model is
     # at a rough motion), and not saturated or another ball's (NaN in the
     # edges' profile)
-    left = np.fmax(me.left_px[0], edges.left_px)[both]
-    right = np.fmin(me.right_px[0], edges.right_px)[both]
+    inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+    left, right = inner[0][both], inner[1][both]
     # the edges' lines are consecutive: their profile is a box of the image
     usable = None if edges.profile is None else np.isfinite(edges.profile)
     shading = fit_shading(
@@ -613,11 +622,9 @@ def ball_limb(
     )
     if shading is None:
         return None
-    per_line = []
-    for arr in (me.spread_px[0], me.left_px[0], me.right_px[0]):
-        full = np.full(np.asarray(t_lines_s).size, np.nan)
-        full[edges.lines] = np.where(me.presence[0] > 0, arr, np.nan)
-        per_line.append(full)
+    # the spread and edges of every image line (rows of one array)
+    per_line = np.full((3, np.asarray(t_lines_s).size), np.nan)
+    per_line[:, edges.lines] = np.where(me.presence[0] > 0, np.stack((me.spread_px[0], me.left_px[0], me.right_px[0])), np.nan)
     limb = limb_profile(
         shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line,
         level_n_time=int(level_samples[0]), level_n_height=int(level_samples[1]),
@@ -631,8 +638,9 @@ def ball_limb(
     # is far lower)
     full = both & (me.presence[0] > 0.999)
     for _ in range(_level_margin(int(full.sum()))):
-        full = full & np.concatenate([[False], full[:-1]]) & np.concatenate([full[1:], [False]])
-    inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+        kept = np.zeros_like(full)
+        kept[1:-1] = full[:-2] & full[1:-1] & full[2:]
+        full = kept
     scatter, length = _line_level_scatter(limb, edges, full, me.spread_px[0], *inner)
     return replace(limb, level_rel_sigma=scatter, level_ref_px=length)
 
@@ -674,7 +682,7 @@ def _line_level_scatter(
         return math.nan, 1.0
     idx = np.flatnonzero(lines_ok)
     if idx.size > max_lines:
-        idx = idx[np.linspace(0, idx.size - 1, max_lines).astype(int)]
+        idx = idx[_even_picks(idx.size, max_lines)]
     inset = 1.5 + _nan_to_num(spread_px[idx])
     c0 = edges.profile_col0
     lo = np.ceil(left_px[idx] + inset).astype(int) - c0
