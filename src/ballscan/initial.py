@@ -183,14 +183,15 @@ def find_keypoints(
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
+    # one row of sigmas serves every line as it is (np.broadcast_to costs more than a line's centroid)
     box_sigma = np.asarray(box_sigma)
-    sig = box_sigma if box_sigma.shape == box.shape else np.broadcast_to(box_sigma, box.shape)
+    sig = box_sigma if box_sigma.shape in (box.shape, box.shape[1:]) else np.broadcast_to(box_sigma, box.shape)
     r_a, r_b = int(rows[0]), int(rows[-1])
 
     def line_centroid(r: int) -> tuple[float, float]:
         cols = np.flatnonzero(ball_mask[r])
         lo, hi = max(cols[0] - 2, 0), min(cols[-1] + 3, box.shape[1])
-        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi])
+        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi])
         return c + lo, math.hypot(s, 0.05)
 
     def line_edges(r: int) -> tuple[float, float]:

@@ -194,8 +194,9 @@ def fit_shading(
     )
     if not rays_ok:
         raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
-    y = data_dn[lines[row[hit]], col[hit]].astype(float)
-    n = n[hit]
+    if not hit.all():
+        row, col, n = row[hit], col[hit], n[hit]
+    y = data_dn[lines[row], col].astype(float)
     if y.size < 50:
         return None
     # The rounds (compiled): the law is linear in (A, b) on the lit pixels,
@@ -624,7 +625,9 @@ def ball_limb(
         return None
     # the spread and edges of every image line (rows of one array)
     per_line = np.full((3, np.asarray(t_lines_s).size), np.nan)
-    per_line[:, edges.lines] = np.where(me.presence[0] > 0, np.stack((me.spread_px[0], me.left_px[0], me.right_px[0])), np.nan)
+    seen = np.array((me.spread_px[0], me.left_px[0], me.right_px[0]))
+    seen[:, ~(me.presence[0] > 0)] = np.nan
+    per_line[:, edges.lines] = seen
     limb = limb_profile(
         shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line,
         level_n_time=int(level_samples[0]), level_n_height=int(level_samples[1]),
