@@ -442,3 +442,34 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
         rms[samples] = float(np.sqrt(np.mean(err**2)))
     assert rms[(3, 2)] > 0.010 and rms[(8, 4)] < 0.008
     assert rms[(8, 4)] < 0.65 * rms[(3, 2)]
+
+
+def test_fast_helpers_equal_the_numpy_forms():
+    from ballscan.shading import _even_picks, _nan_to_num, _unique_lines
+
+    rng = np.random.default_rng(3)
+    for n, m in [(801, 800), (3000, 800), (12345, 800), (41, 40), (500, 40), (5, 2), (7, 1), (7, 0)]:
+        assert np.array_equal(_even_picks(n, m), np.linspace(0, n - 1, m).astype(int))
+    a = rng.normal(size=50)
+    a[[3, 7]] = np.nan
+    for b in (a, np.r_[a, np.inf, -np.inf], np.r_[-0.0, 1.0]):
+        got, want = _nan_to_num(b), np.nan_to_num(b)
+        assert got.dtype == want.dtype and np.array_equal(got, want) and np.array_equal(np.signbit(got), np.signbit(want))
+    for lines in (np.r_[np.arange(40, 90), np.arange(40, 90), [95, 41]], np.array([7]), np.zeros(0, dtype=int)):
+        (u, i), (u0, i0) = _unique_lines(lines), np.unique(lines, return_inverse=True)
+        assert np.array_equal(u, u0) and np.array_equal(i, i0) and u.dtype == u0.dtype
+
+
+def test_chord_rows_equals_the_numpy_form():
+    from ballscan._kernels import chord_rows
+
+    rng = np.random.default_rng(4)
+    u_lo, u_hi, wgt = (rng.normal(size=(6, 3, 4)) for _ in range(3))
+    left, right = rng.normal(size=6), rng.normal(size=6)
+    inv = rng.integers(0, 6, 15)
+    sg = rng.choice([1.0, -1.0, np.nan], 15)
+    lo, hi, w = chord_rows(*(a.reshape(6, 12) for a in (u_lo, u_hi, wgt)), left, right, inv, sg)
+    s3, le, ri = sg[:, None, None], left[inv][:, None, None], right[inv][:, None, None]
+    assert np.array_equal(lo.reshape(15, 3, 4), np.where(s3 > 0, u_lo[inv] - le, ri - u_hi[inv]))
+    assert np.array_equal(hi.reshape(15, 3, 4), np.where(s3 > 0, u_hi[inv] - le, ri - u_lo[inv]))
+    assert np.array_equal(w.reshape(15, 3, 4), wgt[inv])
