@@ -128,8 +128,8 @@ def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float =
     if above.size == 0:
         return math.nan, math.nan
     j0, j1 = int(above[0]), int(above[-1])
-    lvl_left = level * float(np.max(profile[j0 : min(j0 + inner_px, j1 + 1)]))
-    lvl_right = level * float(np.max(profile[max(j1 - inner_px + 1, j0) : j1 + 1]))
+    lvl_left = level * float(profile[j0 : min(j0 + inner_px, j1 + 1)].max())
+    lvl_right = level * float(profile[max(j1 - inner_px + 1, j0) : j1 + 1].max())
     # walk inwards from the outermost detected pixel to the local half level
     jl = j0
     while jl < j1 and profile[jl] < lvl_left:
@@ -232,9 +232,9 @@ def find_keypoints(
     r0 = int(math.floor(r_o))
     r1 = min(r0 + 1, box.shape[0] - 1)
     w1 = r_o - r0
-    e0 = np.array(line_edges(r0))
-    e1 = np.array(line_edges(r1)) if w1 > 0 else e0
-    left, right = (1 - w1) * e0 + w1 * e1
+    e0 = line_edges(r0)
+    e1 = line_edges(r1) if w1 > 0 else e0
+    left, right = ((1 - w1) * a + w1 * b for a, b in zip(e0, e1))
     t = np.asarray(t_lines_s, dtype=float)
 
     def time_of(line: float) -> float:

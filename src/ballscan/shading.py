@@ -317,7 +317,7 @@ class LimbProfile:
         pad = _nan_to_num(spread) / 2.0 + 1.5
         span = _nan_to_num(right - left) + 2.0 * pad
         m = max(int(samples_per_px), 1)
-        n_pos = int(np.ceil(np.max(span) * m)) if np.all(np.isfinite(span)) else 1
+        n_pos = int(np.ceil(span.max() * m)) if np.isfinite(span).all() else 1
         offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
         inside = offsets <= (span - pad)[:, None]
         # the sums over the inside positions (compiled: the points' model and its sums in one pass)
