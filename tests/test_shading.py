@@ -473,3 +473,14 @@ def test_chord_rows_equals_the_numpy_form():
     assert np.array_equal(lo.reshape(15, 3, 4), np.where(s3 > 0, u_lo[inv] - le, ri - u_hi[inv]))
     assert np.array_equal(hi.reshape(15, 3, 4), np.where(s3 > 0, u_hi[inv] - le, ri - u_lo[inv]))
     assert np.array_equal(w.reshape(15, 3, 4), wgt[inv])
+
+
+@pytest.mark.parametrize("n_time, n_height", [(1, 1), (3, 2), (5, 4), (8, 3)])
+def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
+    from ballscan.shading import LimbProfile, ShadingModel
+
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 140000.0, 6.5e-6)
+    limb = LimbProfile(ShadingModel(0.0, (0.0, 0.0, 0.0), 1.0, 1), cam, MOTION, np.zeros(1), np.zeros((1, 1)), 1, 1.0, *np.zeros((3, 1)))
+    tk, hk = limb._samples_tk_hk(n_time, n_height)
+    assert np.array_equal(tk, ((np.arange(n_time) + 0.5) / n_time - 0.5) * cam.exposure)
+    assert np.array_equal(hk, (np.arange(n_height) + 0.5) / n_height - 0.5)

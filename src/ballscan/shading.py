@@ -435,8 +435,10 @@ class LimbProfile:
         """The instants over the exposure (s, from the line's centre time) and heights across the pixel (pixels) an unsharp edge is sampled at."""
         n_t = self.n_time if n_time is None else int(n_time)
         n_h = self.n_height if n_height is None else int(n_height)
-        tk = ((np.arange(n_t) + 0.5) / n_t - 0.5) * self.camera.exposure
-        hk = (np.arange(n_h) + 0.5) / n_h - 0.5
+        # (a few values: numpy's float64 arithmetic on Python floats, without its per-operation overhead)
+        exposure = float(self.camera.exposure)
+        tk = np.array([((k + 0.5) / n_t - 0.5) * exposure for k in range(n_t)], dtype=float)
+        hk = np.array([(k + 0.5) / n_h - 0.5 for k in range(n_h)], dtype=float)
         return tk, hk
 
     def _law(self) -> tuple:
