@@ -445,6 +445,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
 
 
 def test_fast_helpers_equal_the_numpy_forms():
+    """_even_picks, _nan_to_num and _unique_lines (compiled: _kernels.unique_lines) against the numpy forms they replace."""
     from ballscan.shading import _even_picks, _nan_to_num, _unique_lines
 
     rng = np.random.default_rng(3)

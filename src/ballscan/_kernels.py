@@ -1083,6 +1083,7 @@ def warm_up() -> None:
     limb_pixels(k0, ints4, ints4, ints4, ints4, np.zeros((4, 2), dtype=np.int64), np.zeros((4, 2), dtype=np.int64))
     finite_rows(prof)
     chord_rows(np.zeros((1, 2)), np.zeros((1, 2)), np.ones((1, 2)), z1, z1, k0, np.ones(1))
+    unique_lines(k0)
     warm_up_stream()
 
 
@@ -3435,3 +3436,23 @@ def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.nda
         for j in range(S):
             w[r, j] = wgt[k, j]
     return lo, hi, w
+
+
+@_jit()
+def unique_lines(lines: np.ndarray):
+    """``np.unique(lines, return_inverse=True)`` of a non-empty array of integers spanning a short range (a table of the range: no sort)."""
+    first = lines.min()
+    rank = np.zeros(lines.max() - first + 1, dtype=np.int64)
+    for i in range(lines.shape[0]):
+        rank[lines[i] - first] = 1
+    k = 0
+    for j in range(rank.shape[0]):
+        if rank[j]:
+            rank[j] = k
+            k += 1
+    uniq = np.empty(k, dtype=np.int64)
+    inv = np.empty(lines.shape[0], dtype=np.int64)
+    for i in range(lines.shape[0]):
+        inv[i] = rank[lines[i] - first]
+        uniq[inv[i]] = lines[i]
+    return uniq, inv

@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit
+from ._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit, unique_lines
 from .camera import LineScanCamera
 from .edges import EdgeMeasurements
 from .errors import GeometryError
@@ -501,15 +501,12 @@ def _unique_lines(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(lines, return_inverse=True)`` of image lines (1-D integers within an image's height), without its sort.
 
     The lines of a ball's rows span some hundred consecutive values: a table
-    of them gives the same sorted values and inverse at a fraction of the
-    cost.
+    of them (compiled, :func:`ballscan._kernels.unique_lines`) gives the same
+    sorted values and inverse at a fraction of the cost.
     """
     if lines.size == 0:
         return np.unique(lines, return_inverse=True)
-    first = int(lines.min())
-    seen = np.zeros(int(lines.max()) - first + 1, dtype=bool)
-    seen[lines - first] = True
-    return np.flatnonzero(seen) + first, (np.cumsum(seen) - 1)[lines - first]
+    return unique_lines(as_arg(lines, np.int64))
 
 
 def limb_profile(
