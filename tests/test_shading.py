@@ -485,3 +485,25 @@ def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
     tk, hk = limb._samples_tk_hk(n_time, n_height)
     assert np.array_equal(tk, ((np.arange(n_time) + 0.5) / n_time - 0.5) * cam.exposure)
     assert np.array_equal(hk, (np.arange(n_height) + 0.5) / n_height - 0.5)
+
+
+def test_level_spans_equals_the_numpy_form():
+    from ballscan._kernels import level_spans
+
+    rng = np.random.default_rng(5)
+    left, right, spread = rng.normal(100.0, 5.0, 30), rng.normal(140.0, 5.0, 30), rng.uniform(0.0, 2.0, 30)
+    left[3] = right[4] = spread[5] = np.nan
+    for m in (1, 2, 3):
+        pad = np.nan_to_num(spread) / 2.0 + 1.5
+        span = np.nan_to_num(right - left) + 2.0 * pad
+        got = level_spans(left, right, spread, m)
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * m
+    # an infinite spread as np.nan_to_num takes it; an infinite span: no maximum
+    spread[6] = np.inf
+    pad = np.nan_to_num(spread) / 2.0 + 1.5
+    span = np.nan_to_num(right - left) + 2.0 * pad
+    got = level_spans(left, right, spread, 2)
+    with np.errstate(over="ignore"):
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * 2
+    right[6] = np.inf
+    assert np.isnan(level_spans(left, right, spread, 2)[2])

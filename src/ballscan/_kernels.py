@@ -1084,6 +1084,7 @@ def warm_up() -> None:
     finite_rows(prof)
     chord_rows(np.zeros((1, 2)), np.zeros((1, 2)), np.ones((1, 2)), z1, z1, k0, np.ones(1))
     unique_lines(k0)
+    level_spans(z1, z1, z1, 2)
     warm_up_stream()
 
 
@@ -3456,3 +3457,36 @@ def unique_lines(lines: np.ndarray):
         inv[i] = rank[lines[i] - first]
         uniq[inv[i]] = lines[i]
     return uniq, inv
+
+
+@_jit(inline="always")
+def _nan_to_num(x: float) -> float:
+    """``np.nan_to_num`` of one float64."""
+    if x != x:
+        return 0.0
+    if x == np.inf:
+        return 1.7976931348623157e308
+    if x == -np.inf:
+        return -1.7976931348623157e308
+    return x
+
+
+@_jit()
+def level_spans(left: np.ndarray, right: np.ndarray, spread: np.ndarray, m: int):
+    """The sampled span of each line for :meth:`ballscan.shading.LimbProfile.line_levels`.
+
+    Returns ``pad = nan_to_num(spread) / 2 + 1.5`` and ``span =
+    nan_to_num(right - left) + 2 pad`` (R,), and ``max(span) * m`` (NaN
+    where a span is not finite), with numpy's arithmetic.
+    """
+    R = left.shape[0]
+    pad = np.empty(R)
+    span = np.empty(R)
+    top = -np.inf
+    finite = True
+    for r in range(R):
+        pad[r] = _nan_to_num(spread[r]) / 2.0 + 1.5
+        span[r] = _nan_to_num(right[r] - left[r]) + 2.0 * pad[r]
+        finite = finite and math.isfinite(span[r])
+        top = max(top, span[r])
+    return pad, span, top * m if finite else np.nan

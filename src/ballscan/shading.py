@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit, unique_lines
+from ._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from .camera import LineScanCamera
 from .edges import EdgeMeasurements
 from .errors import GeometryError
@@ -314,10 +314,11 @@ class LimbProfile:
         if lines.size == 0:
             return np.zeros(0), np.zeros(0)
         left, right, spread = self.left_px[lines], self.right_px[lines], self.spread_px[lines]
-        pad = _nan_to_num(spread) / 2.0 + 1.5
-        span = _nan_to_num(right - left) + 2.0 * pad
         m = max(int(samples_per_px), 1)
-        n_pos = int(np.ceil(span.max() * m)) if np.isfinite(span).all() else 1
+        # (compiled) each line's positions from pad outside its left edge over
+        # span, the NaN spreads and edges taken as 0 as by np.nan_to_num
+        pad, span, top = level_spans(as_arg(left), as_arg(right), as_arg(spread), m)
+        n_pos = int(np.ceil(top)) if top == top else 1
         offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
         inside = offsets <= (span - pad)[:, None]
         # the sums over the inside positions (compiled: the points' model and its sums in one pass)
