@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from ballscan.camera import LineScanCamera
-from ballscan.initial import KeyPoints, half_contrast_edges, initial_guess
+from ballscan.initial import KeyPoints, find_keypoints, half_contrast_edges, initial_guess
 from ballscan.motion import BallMotion
 from ballscan.silhouette import silhouette
 
@@ -100,3 +100,14 @@ def test_half_contrast_edges_follow_a_shaded_limb():
     left, right = half_contrast_edges(p)
     assert left == pytest.approx(2.0)
     assert right == pytest.approx(10 - 0.025 / 0.15)  # 0.15 between 0.3 (px 9) and 0.15 (px 10)
+
+
+def test_keypoints_the_same_with_a_row_or_a_box_of_sigmas():
+    box = np.zeros((9, 12))
+    box[2:7, 3:9] = 1.0
+    box[4, 2] = 0.4
+    sig = np.linspace(0.01, 0.05, 12)
+    a = find_keypoints(box, sig, box > 0.3, 10, 20, np.arange(40) * 1e-5)
+    b = find_keypoints(box, np.tile(sig, (9, 1)), box > 0.3, 10, 20, np.arange(40) * 1e-5)
+    c = find_keypoints(box, sig[None, :], box > 0.3, 10, 20, np.arange(40) * 1e-5)
+    assert a == b == c

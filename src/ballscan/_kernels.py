@@ -1081,6 +1081,9 @@ def warm_up() -> None:
     finished_edges(rows4, rows4, rows4, rows4, ints4, rows4, flags4, rows4, flags4, yes, yes, 0)
     limb_pixels(k0, ints4, ints4, ints4, ints4, np.zeros((4, 2), dtype=np.int64), np.zeros((4, 2), dtype=np.int64))
     finite_rows(prof)
+    chord_rows(np.zeros((1, 2)), np.zeros((1, 2)), np.ones((1, 2)), z1, z1, k0, np.ones(1))
+    unique_lines(k0)
+    level_spans(z1, z1, z1, 2)
     warm_up_stream()
 
 
@@ -3357,3 +3360,97 @@ def finite_rows(a: np.ndarray) -> np.ndarray:
                 out[r] = False
                 break
     return out
+
+
+# ---------------------------------------------------------------------------
+# Limb profile: the rows' chord samples
+# ---------------------------------------------------------------------------
+# LimbProfile._chords turned each line's chord samples into each row's
+# offsets inwards from its edge with three gathers and two selections over
+# (R, 3, n) arrays; one pass does the same subtractions.
+
+
+@_jit()
+def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.ndarray, right: np.ndarray, inv: np.ndarray, sg: np.ndarray):
+    """The chord samples of rows as offsets inwards from their edge (:meth:`ballscan.shading.LimbProfile._chords`).
+
+    ``u_lo, u_hi, wgt`` (U, S) the samples' ends (pixels) and weights of
+    ``U`` lines, ``left, right`` (U,) their mean edges, ``inv`` (R,) each
+    row's line and ``sg`` (R,) its side (> 0 the left edge; else, NaN
+    too, the right one).  Returns ``lo, hi, w`` (R, S):
+    ``np.where(sg > 0, u_lo - left, right - u_hi)``, ``np.where(sg > 0, u_hi
+    - left, right - u_lo)`` and the weights, of each row's line.
+    """
+    R = inv.shape[0]
+    S = u_lo.shape[1]
+    lo = np.empty((R, S))
+    hi = np.empty((R, S))
+    w = np.empty((R, S))
+    for r in range(R):
+        k = inv[r]
+        if sg[r] > 0:
+            e = left[k]
+            for j in range(S):
+                lo[r, j] = u_lo[k, j] - e
+                hi[r, j] = u_hi[k, j] - e
+        else:
+            e = right[k]
+            for j in range(S):
+                lo[r, j] = e - u_hi[k, j]
+                hi[r, j] = e - u_lo[k, j]
+        for j in range(S):
+            w[r, j] = wgt[k, j]
+    return lo, hi, w
+
+
+@_jit()
+def unique_lines(lines: np.ndarray):
+    """``np.unique(lines, return_inverse=True)`` of a non-empty array of integers spanning a short range (a table of the range: no sort)."""
+    first = lines.min()
+    rank = np.zeros(lines.max() - first + 1, dtype=np.int64)
+    for i in range(lines.shape[0]):
+        rank[lines[i] - first] = 1
+    k = 0
+    for j in range(rank.shape[0]):
+        if rank[j]:
+            rank[j] = k
+            k += 1
+    uniq = np.empty(k, dtype=np.int64)
+    inv = np.empty(lines.shape[0], dtype=np.int64)
+    for i in range(lines.shape[0]):
+        inv[i] = rank[lines[i] - first]
+        uniq[inv[i]] = lines[i]
+    return uniq, inv
+
+
+@_jit(inline="always")
+def _nan_to_num(x: float) -> float:
+    """``np.nan_to_num`` of one float64."""
+    if x != x:
+        return 0.0
+    if x == np.inf:
+        return 1.7976931348623157e308
+    if x == -np.inf:
+        return -1.7976931348623157e308
+    return x
+
+
+@_jit()
+def level_spans(left: np.ndarray, right: np.ndarray, spread: np.ndarray, m: int):
+    """The sampled span of each line for :meth:`ballscan.shading.LimbProfile.line_levels`.
+
+    Returns ``pad = nan_to_num(spread) / 2 + 1.5`` and ``span =
+    nan_to_num(right - left) + 2 pad`` (R,), and ``max(span) * m`` (NaN
+    where a span is not finite), with numpy's arithmetic.
+    """
+    R = left.shape[0]
+    pad = np.empty(R)
+    span = np.empty(R)
+    top = -np.inf
+    finite = True
+    for r in range(R):
+        pad[r] = _nan_to_num(spread[r]) / 2.0 + 1.5
+        span[r] = _nan_to_num(right[r] - left[r]) + 2.0 * pad[r]
+        finite = finite and math.isfinite(span[r])
+        top = max(top, span[r])
+    return pad, span, top * m if finite else np.nan

@@ -128,8 +128,8 @@ def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float =
     if above.size == 0:
         return math.nan, math.nan
     j0, j1 = int(above[0]), int(above[-1])
-    lvl_left = level * float(np.max(profile[j0 : min(j0 + inner_px, j1 + 1)]))
-    lvl_right = level * float(np.max(profile[max(j1 - inner_px + 1, j0) : j1 + 1]))
+    lvl_left = level * float(profile[j0 : min(j0 + inner_px, j1 + 1)].max())
+    lvl_right = level * float(profile[max(j1 - inner_px + 1, j0) : j1 + 1].max())
     # walk inwards from the outermost detected pixel to the local half level
     jl = j0
     while jl < j1 and profile[jl] < lvl_left:
@@ -142,7 +142,7 @@ def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float =
 
 def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
     """Centroid of a non-negative profile and its 1-sigma from per-pixel noise."""
-    w = np.clip(row, 0.0, None)
+    w = np.maximum(row, 0.0)  # np.clip's values (it calls np.maximum without an upper bound)
     s = w.sum()
     if s <= 0:
         return math.nan, math.inf
@@ -183,13 +183,15 @@ def find_keypoints(
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
-    sig = np.broadcast_to(box_sigma, box.shape)
+    # one row of sigmas serves every line as it is (np.broadcast_to costs more than a line's centroid)
+    box_sigma = np.asarray(box_sigma)
+    sig = box_sigma if box_sigma.shape in (box.shape, box.shape[1:]) else np.broadcast_to(box_sigma, box.shape)
     r_a, r_b = int(rows[0]), int(rows[-1])
 
     def line_centroid(r: int) -> tuple[float, float]:
         cols = np.flatnonzero(ball_mask[r])
         lo, hi = max(cols[0] - 2, 0), min(cols[-1] + 3, box.shape[1])
-        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi])
+        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi])
         return c + lo, math.hypot(s, 0.05)
 
     def line_edges(r: int) -> tuple[float, float]:
@@ -230,9 +232,9 @@ def find_keypoints(
     r0 = int(math.floor(r_o))
     r1 = min(r0 + 1, box.shape[0] - 1)
     w1 = r_o - r0
-    e0 = np.array(line_edges(r0))
-    e1 = np.array(line_edges(r1)) if w1 > 0 else e0
-    left, right = (1 - w1) * e0 + w1 * e1
+    e0 = line_edges(r0)
+    e1 = line_edges(r1) if w1 > 0 else e0
+    left, right = ((1 - w1) * a + w1 * b for a, b in zip(e0, e1))
     t = np.asarray(t_lines_s, dtype=float)
 
     def time_of(line: float) -> float:

@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from ._kernels import as_arg, interior_normals, level_scatter, limb_values, line_level_sums, shading_fit
+from ._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from .camera import LineScanCamera
 from .edges import EdgeMeasurements
 from .errors import GeometryError
@@ -171,17 +171,19 @@ def fit_shading(
         None when fewer than 50 interior pixels exist.
     """
     width = data_dn.shape[1]
-    lo = np.clip(np.ceil(np.asarray(left_px) + inset_px), 0, width - 1).astype(int)
-    hi = np.clip(np.floor(np.asarray(right_px) - inset_px), -1, width - 1).astype(int)
+    # (np.clip's values, without its overhead)
+    lo = np.minimum(np.maximum(np.ceil(np.asarray(left_px) + inset_px), 0), width - 1).astype(int)
+    hi = np.minimum(np.maximum(np.floor(np.asarray(right_px) - inset_px), -1), width - 1).astype(int)
     counts = np.maximum(hi - lo + 1, 0)
-    total = int(counts.sum())
+    end = np.cumsum(counts)
+    total = int(end[-1]) if end.size else 0
     if total < 50:
         return None
-    row = np.repeat(np.arange(lines.size), counts)
-    col = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts) + np.repeat(lo, counts)
-    if total > max_pixels:
-        pick = np.linspace(0, total - 1, max_pixels).astype(int)
-        row, col = row[pick], col[pick]
+    # the pixels' indices in the lines' runs laid end to end, and only the
+    # picked ones' lines and columns
+    pick = _even_picks(total, max_pixels) if total > max_pixels else np.arange(total)
+    row = np.searchsorted(end, pick, side="right")
+    col = pick - (end - counts)[row] + lo[row]
     # (compiled: surface_normals at the pixels' centres and the usable box)
     m = motion
     hit, n, rays_ok = interior_normals(
@@ -192,8 +194,9 @@ def fit_shading(
     )
     if not rays_ok:
         raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
-    y = data_dn[lines[row[hit]], col[hit]].astype(float)
-    n = n[hit]
+    if not hit.all():
+        row, col, n = row[hit], col[hit], n[hit]
+    y = data_dn[lines[row], col].astype(float)
     if y.size < 50:
         return None
     # The rounds (compiled): the law is linear in (A, b) on the lit pixels,
@@ -311,10 +314,11 @@ class LimbProfile:
         if lines.size == 0:
             return np.zeros(0), np.zeros(0)
         left, right, spread = self.left_px[lines], self.right_px[lines], self.spread_px[lines]
-        pad = np.nan_to_num(spread) / 2.0 + 1.5
-        span = np.nan_to_num(right - left) + 2.0 * pad
         m = max(int(samples_per_px), 1)
-        n_pos = int(np.ceil(np.max(span) * m)) if np.all(np.isfinite(span)) else 1
+        # (compiled) each line's positions from pad outside its left edge over
+        # span, the NaN spreads and edges taken as 0 as by np.nan_to_num
+        pad, span, top = level_spans(as_arg(left), as_arg(right), as_arg(spread), m)
+        n_pos = int(np.ceil(top)) if top == top else 1
         offsets = -pad[:, None] + (np.arange(max(n_pos, 1)) + 0.5)[None, :] / m
         inside = offsets <= (span - pad)[:, None]
         # the sums over the inside positions (compiled: the points' model and its sums in one pass)
@@ -382,18 +386,19 @@ class LimbProfile:
         """
         key = (int(n_nodes), lines.tobytes(), sg.tobytes())
         if key not in self._samples:
-            uniq, inv = np.unique(lines, return_inverse=True)
+            uniq, inv = _unique_lines(lines)
             me = averaged_model(
                 self.camera, self.motion.to_params()[None], self.motion.radius_m, self.t_lines_s[uniq],
                 self.motion.acceleration_mps2, n_nodes=n_nodes, return_samples=True,
             )
-            u_lo, u_hi, wgt = (a[0][inv] for a in me.samples)  # (R, 3, n)
-            left, right = me.left_px[0][inv][:, None, None], me.right_px[0][inv][:, None, None]
-            s3 = sg[:, None, None]
-            lo = np.where(s3 > 0, u_lo - left, right - u_hi)
-            hi = np.where(s3 > 0, u_hi - left, right - u_lo)
+            shape = me.samples[0].shape[1:]  # (U, 3, n)
+            # (compiled: each row's line's samples, from its edge)
+            lo, hi, wgt = chord_rows(
+                *(as_arg(a[0].reshape(shape[0], shape[1] * shape[2])) for a in me.samples), as_arg(me.left_px[0]), as_arg(me.right_px[0]),
+                as_arg(inv, np.int64), as_arg(sg),
+            )
             self._samples.clear()
-            self._samples[key] = (lo, hi, wgt)
+            self._samples[key] = tuple(a.reshape((lines.size,) + shape[1:]) for a in (lo, hi, wgt))
         return self._samples[key]
 
     def rows(self, lines: np.ndarray, sides: np.ndarray, n_nodes: int = 4) -> tuple:
@@ -431,8 +436,10 @@ class LimbProfile:
         """The instants over the exposure (s, from the line's centre time) and heights across the pixel (pixels) an unsharp edge is sampled at."""
         n_t = self.n_time if n_time is None else int(n_time)
         n_h = self.n_height if n_height is None else int(n_height)
-        tk = ((np.arange(n_t) + 0.5) / n_t - 0.5) * self.camera.exposure
-        hk = (np.arange(n_h) + 0.5) / n_h - 0.5
+        # (a few values: numpy's float64 arithmetic on Python floats, without its per-operation overhead)
+        exposure = float(self.camera.exposure)
+        tk = np.array([((k + 0.5) / n_t - 0.5) * exposure for k in range(n_t)], dtype=float)
+        hk = np.array([(k + 0.5) / n_h - 0.5 for k in range(n_h)], dtype=float)
         return tk, hk
 
     def _law(self) -> tuple:
@@ -474,6 +481,33 @@ class LimbProfile:
         )
         bad = ~np.isfinite(edge)[:, None]
         return np.where(bad, np.nan, val_out), np.where(bad, np.nan, cov_out)
+
+
+def _even_picks(n: int, m: int) -> np.ndarray:
+    """``np.linspace(0, n - 1, m).astype(int)``: the same arithmetic (``k * step``, the last exactly ``n - 1``) without its overhead."""
+    if m < 2:
+        return np.linspace(0, n - 1, m).astype(int)
+    pick = (np.arange(m) * ((n - 1) / (m - 1))).astype(int)
+    pick[-1] = n - 1
+    return pick
+
+
+def _nan_to_num(a: np.ndarray) -> np.ndarray:
+    """``np.nan_to_num`` of a float64 array (a new array), at a fraction of its cost where no value is infinite."""
+    out = np.where(np.isnan(a), 0.0, a)
+    return np.nan_to_num(a) if np.isinf(out).any() else out
+
+
+def _unique_lines(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(lines, return_inverse=True)`` of image lines (1-D integers within an image's height), without its sort.
+
+    The lines of a ball's rows span some hundred consecutive values: a table
+    of them (compiled, :func:`ballscan._kernels.unique_lines`) gives the same
+    sorted values and inverse at a fraction of the cost.
+    """
+    if lines.size == 0:
+        return np.unique(lines, return_inverse=True)
+    return unique_lines(as_arg(lines, np.int64))
 
 
 def limb_profile(
@@ -579,8 +613,8 @@ def ball_limb(
     # interior: inside both the model's and the measured edges (the model is
     # at a rough motion), and not saturated or another ball's (NaN in the
     # edges' profile)
-    left = np.fmax(me.left_px[0], edges.left_px)[both]
-    right = np.fmin(me.right_px[0], edges.right_px)[both]
+    inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+    left, right = inner[0][both], inner[1][both]
     # the edges' lines are consecutive: their profile is a box of the image
     usable = None if edges.profile is None else np.isfinite(edges.profile)
     shading = fit_shading(
@@ -589,11 +623,11 @@ def ball_limb(
     )
     if shading is None:
         return None
-    per_line = []
-    for arr in (me.spread_px[0], me.left_px[0], me.right_px[0]):
-        full = np.full(np.asarray(t_lines_s).size, np.nan)
-        full[edges.lines] = np.where(me.presence[0] > 0, arr, np.nan)
-        per_line.append(full)
+    # the spread and edges of every image line (rows of one array)
+    per_line = np.full((3, np.asarray(t_lines_s).size), np.nan)
+    seen = np.array((me.spread_px[0], me.left_px[0], me.right_px[0]))
+    seen[:, ~(me.presence[0] > 0)] = np.nan
+    per_line[:, edges.lines] = seen
     limb = limb_profile(
         shading, camera, motion, t_lines_s, background_dn, edges.polarity, edges.contrast_dn, *per_line,
         level_n_time=int(level_samples[0]), level_n_height=int(level_samples[1]),
@@ -607,8 +641,9 @@ def ball_limb(
     # is far lower)
     full = both & (me.presence[0] > 0.999)
     for _ in range(_level_margin(int(full.sum()))):
-        full = full & np.concatenate([[False], full[:-1]]) & np.concatenate([full[1:], [False]])
-    inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+        kept = np.zeros_like(full)
+        kept[1:-1] = full[:-2] & full[1:-1] & full[2:]
+        full = kept
     scatter, length = _line_level_scatter(limb, edges, full, me.spread_px[0], *inner)
     return replace(limb, level_rel_sigma=scatter, level_ref_px=length)
 
@@ -650,12 +685,13 @@ def _line_level_scatter(
         return math.nan, 1.0
     idx = np.flatnonzero(lines_ok)
     if idx.size > max_lines:
-        idx = idx[np.linspace(0, idx.size - 1, max_lines).astype(int)]
-    inset = 1.5 + np.nan_to_num(spread_px[idx])
+        idx = idx[_even_picks(idx.size, max_lines)]
+    inset = 1.5 + _nan_to_num(spread_px[idx])
     c0 = edges.profile_col0
     lo = np.ceil(left_px[idx] + inset).astype(int) - c0
     hi = np.floor(right_px[idx] - inset).astype(int) - c0
-    lo, hi = np.clip(lo, 0, edges.profile.shape[1]), np.clip(hi, -1, edges.profile.shape[1] - 1)
+    # (integers: np.clip's values, without its overhead)
+    lo, hi = np.minimum(np.maximum(lo, 0), edges.profile.shape[1]), np.minimum(np.maximum(hi, -1), edges.profile.shape[1] - 1)
     count = hi - lo + 1
     keep = count >= 3
     if keep.sum() < 3:
