@@ -481,3 +481,42 @@ def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
     assert np.array_equal(np.isnan(new), np.isnan(ref)) and np.isnan(new[1, 7]).all()
     assert np.nanmax(np.abs(new - ref)) < 1e-12
     assert np.nanmax(ref) > 0.99  # fully covered pixels are in the test
+
+
+def test_fit_kernels_equal_their_numpy_forms():
+    """The compiled residuals, Jacobian and block ratio give the numpy expressions' values bit for bit."""
+    from ballscan._kernels import block_ratio, fit_jacobian, fit_residuals
+
+    rng = np.random.default_rng(7)
+    n = 150
+    left, right, area = (rng.standard_normal(n) * 30.0 for _ in range(3))
+    dl, dr, da = (rng.standard_normal((n, 6)) * 10.0 ** rng.uniform(-3, 6, 6) for _ in range(3))
+    use_l, use_r, use_a = (rng.random(n) < p for p in (0.7, 0.6, 0.2))
+    il, ir, ia = (np.flatnonzero(u) for u in (use_l, use_r, use_a))
+    ml, mr, ma = (rng.standard_normal(i.size) for i in (il, ir, ia))
+    sl, sr, sa = (rng.uniform(0.01, 2.0, i.size) for i in (il, ir, ia))
+    tail = rng.standard_normal(17)
+    b = 0.0123
+    r = fit_residuals(left, right, area, il, ir, ia, b, ml, mr, ma, sl, sr, sa, tail)
+    ref = np.concatenate([(left[use_l] - b - ml) / sl, (right[use_r] + b - mr) / sr, (area[use_a] - ma) / sa, tail])
+    assert np.array_equal(r, ref)
+    jp = rng.standard_normal((17, 6))
+    for with_bias in (False, True):
+        J = fit_jacobian(dl, dr, da, il, ir, ia, sl, sr, sa, jp, with_bias)
+        ref = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], jp])
+        if with_bias:
+            jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size + jp.shape[0])])
+            ref = np.hstack([ref, jb[:, None]])
+        assert J.flags.c_contiguous and np.array_equal(J, ref)
+    for size in list(range(0, 70)) + [130, 257, 300]:
+        res = rng.standard_normal(size) * rng.uniform(0.5, 3.0) + np.linspace(0.0, rng.uniform(-2, 2), size)
+        best = 1.0
+        for B in (4, 8, 16):
+            nb = res.size // B
+            if nb < 4:
+                continue
+            m = res[: nb * B].reshape(nb, B).mean(axis=1)
+            ratio = B * float(np.mean(m * m))
+            if ratio > 1.0 + 3.0 * np.sqrt(2.0 / nb):
+                best = max(best, ratio)
+        assert block_ratio(res, (4, 8, 16)) == best

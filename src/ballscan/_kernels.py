@@ -1010,6 +1010,93 @@ def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.n
     return out
 
 
+@_jit()
+def fit_residuals(
+    left: np.ndarray, right: np.ndarray, area: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray, b: float,
+    ml: np.ndarray, mr: np.ndarray, ma: np.ndarray, sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray,
+) -> np.ndarray:
+    """The fit's whitened residuals (:func:`ballscan.fit.fit_motion`): selected edges and areas, then ``tail``.
+
+    ``(left[il] - b - ml) / sl``, ``(right[ir] + b - mr) / sr``, ``(area[ia]
+    - ma) / sa`` and ``tail`` (the pixel residuals) in one array, the same
+    operations as the numpy expressions.
+    """
+    nl, nr, na = il.shape[0], ir.shape[0], ia.shape[0]
+    r = np.empty(nl + nr + na + tail.shape[0])
+    for k in range(nl):
+        r[k] = (left[il[k]] - b - ml[k]) / sl[k]
+    o = nl
+    for k in range(nr):
+        r[o + k] = (right[ir[k]] + b - mr[k]) / sr[k]
+    o += nr
+    for k in range(na):
+        r[o + k] = (area[ia[k]] - ma[k]) / sa[k]
+    o += na
+    for k in range(tail.shape[0]):
+        r[o + k] = tail[k]
+    return r
+
+
+@_jit()
+def fit_jacobian(
+    dl: np.ndarray, dr: np.ndarray, da: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray,
+    sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray, with_bias: bool,
+) -> np.ndarray:
+    """The fit's whitened Jacobian (:func:`ballscan.fit.fit_motion`) from per-line derivatives (N, 6).
+
+    Rows ``dl[il] / sl``, ``dr[ir] / sr``, ``da[ia] / sa``, then ``tail``
+    (M, 6) (the pixel residuals'); with ``with_bias`` a seventh column, the
+    edge bias's ``-1 / sl``, ``1 / sr`` and 0.
+    """
+    nl, nr, na, nt = il.shape[0], ir.shape[0], ia.shape[0], tail.shape[0]
+    J = np.empty((nl + nr + na + nt, 7 if with_bias else 6))
+    for k in range(nl):
+        for j in range(6):
+            J[k, j] = dl[il[k], j] / sl[k]
+    o = nl
+    for k in range(nr):
+        for j in range(6):
+            J[o + k, j] = dr[ir[k], j] / sr[k]
+    o += nr
+    for k in range(na):
+        for j in range(6):
+            J[o + k, j] = da[ia[k], j] / sa[k]
+    o += na
+    for k in range(nt):
+        for j in range(6):
+            J[o + k, j] = tail[k, j]
+    if with_bias:
+        for k in range(nl):
+            J[k, 6] = -1.0 / sl[k]
+        for k in range(nr):
+            J[nl + k, 6] = 1.0 / sr[k]
+        for k in range(nl + nr, J.shape[0]):
+            J[k, 6] = 0.0
+    return J
+
+
+@_jit()
+def block_ratio(r: np.ndarray, sizes) -> float:
+    """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.fit._block_scale`), else 1.
+
+    numpy's sums (:func:`_pairwise_sum`) for the block means and their mean
+    square, so that the ratios are those of the numpy expressions.
+    """
+    best = 1.0
+    for B in sizes:
+        nb = r.shape[0] // B
+        if nb < 4:
+            continue
+        m2 = np.empty(nb)
+        for i in range(nb):
+            m = _pairwise_sum(r[i * B : (i + 1) * B]) / B
+            m2[i] = m * m
+        ratio = B * (_pairwise_sum(m2) / nb)
+        if ratio > 1.0 + 3.0 * math.sqrt(2.0 / nb):
+            best = max(best, ratio)
+    return best
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1031,6 +1118,11 @@ def warm_up() -> None:
     )
     coverage_grid(lo, hi, w, np.zeros((1, 1), dtype=np.int64), np.zeros(1), 1)
     chord_edges(th[0], np.zeros(1), 0.03, 3000.0, 0.0, 0.0, 0.0, np.zeros(3))
+    # the fit's residuals and Jacobian from its selection
+    i1, o1, d6 = np.zeros(1, dtype=np.int64), np.ones(1), np.zeros((1, 6))
+    fit_residuals(o1, o1, o1, i1, i1, i1, 0.0, o1, o1, o1, o1, o1, o1, np.zeros(0))
+    fit_jacobian(d6, d6, d6, i1, i1, i1, o1, o1, o1, np.zeros((0, 6)), True)
+    block_ratio(np.zeros(16), (4, 8, 16))
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

@@ -71,7 +71,9 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import as_arg, averaged_edges_jacobian, averaged_samples, chord_edges, coverage_grid
+from ._kernels import (
+    as_arg, averaged_edges_jacobian, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
+)
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from .camera import LineScanCamera
@@ -208,12 +210,8 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
     if th.shape[1] != 6 or t.shape[0] not in (1, th.shape[0]):
         raise ValueError(f"_model_core: parameter sets {th.shape} and line times {t.shape} do not match")
-    acc = np.array([float(a) for a in acceleration_mps2])
-    g, gw = _gauss(n_nodes)
-    exposure = float(camera.exposure)
     left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
-        th, t, float(R), exposure, float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
-        acc, as_arg(g), as_arg(gw), bool(full), bool(return_samples),
+        th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples)
     )
     samples = None
     if return_samples:
@@ -228,6 +226,34 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
         valid=valid if full else None,
         samples=samples,
     )
+
+
+def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
+    """:func:`ballscan._kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
+    g, gw = _gauss(n_nodes)
+    return (
+        float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
+        np.array([float(a) for a in acceleration_mps2]), as_arg(g), as_arg(gw),
+    )
+
+
+def _model_evaluator(camera, R, t_lines_s, acceleration_mps2, n_nodes):
+    """``averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)`` as a function of ``th`` (P, 6).
+
+    The fit evaluates the model at the same lines several times per ball:
+    with ``n_nodes <= 3`` (one kernel call on every line) the fixed
+    arguments are converted once.
+    """
+    if n_nodes > 3:
+        return lambda th: averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)
+    t = as_arg(np.asarray(t_lines_s, dtype=float).reshape(1, -1))
+    args = _kernel_args(camera, R, acceleration_mps2, n_nodes)
+
+    def evaluate(th):
+        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), t, *args, True, False)
+        return ModelEdges(left, right, presence, area, spread, valid)
+
+    return evaluate
 
 
 def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
@@ -1109,6 +1135,7 @@ def fit_motion(
     # residual selection and the solver: a round's selection and its first
     # residuals are taken at the same point
     model_cache: dict = {}
+    evaluate = _model_evaluator(camera, R, t, acc, nn)
     tables = _weight_tables(edges, settings)
     fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
@@ -1123,7 +1150,7 @@ def fit_motion(
         key = np.asarray(theta, dtype=float)[:6].tobytes()
         me = model_cache.get("me")
         if me is None or model_cache["key"] != key:
-            me = averaged_model(camera, np.asarray(theta, dtype=float)[None, :6], R, t, acc, nn)
+            me = evaluate(np.asarray(theta, dtype=float)[None, :6])
             model_cache["key"], model_cache["me"] = key, me
         return me
 
@@ -1171,6 +1198,10 @@ def fit_motion(
             return x[:6], (x[6] if fit_b else 0.0)
 
         used = use_l | use_r | use_a
+        # the selected lines and their values in the compiled kernels' form
+        il, ir, ia = np.flatnonzero(use_l), np.flatnonzero(use_r), np.flatnonzero(use_a)
+        ml, mr, ma, sl, sr, sa = (as_arg(a) for a in (ml, mr, ma, sl, sr, sa))
+        no_pixels = np.zeros(0)
         last: dict = {}
 
         def resid_and_jac(x):
@@ -1210,11 +1241,7 @@ def fit_motion(
 
         def assemble(dl, dr, da, jp):
             """Whitened Jacobian of this selection from per-line derivatives."""
-            J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], jp])
-            if fit_b:
-                jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size + n_pix)])
-                J = np.hstack([J, jb[:, None]])
-            return J
+            return fit_jacobian(as_arg(dl), as_arg(dr), as_arg(da), il, ir, ia, sl, sr, sa, as_arg(jp), fit_b)
 
         if start is None and pix is None and settings.solver == "gn" and jac_cache:
             # a later round (after rejecting edges) starts from the last
@@ -1227,14 +1254,8 @@ def fit_motion(
         def resid_only(x):
             th_, b_ = unpack(x)
             me = model_at(th_)
-            r = np.concatenate(
-                [
-                    (me.left_px[0, use_l] - b_ - ml) / sl,
-                    (me.right_px[0, use_r] + b_ - mr) / sr,
-                    (me.area_px[0, use_a] - ma) / sa,
-                    pixel_res(th_[None])[0],
-                ]
-            )
+            tail = no_pixels if pix is None else as_arg(pixel_res(th_[None])[0])
+            r = fit_residuals(me.left_px[0], me.right_px[0], me.area_px[0], il, ir, ia, float(b_), ml, mr, ma, sl, sr, sa, tail)
             last["key"], last["r"] = x.tobytes(), r
             return r
 
@@ -1684,16 +1705,10 @@ def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:
     white noise (``1 + 3 sqrt(2 / n_blocks)``) count as 1.  Returns the
     largest ratio, at most 100.
     """
+    # one compiled pass per side (numpy's summation order)
     best = 1.0
     for r in sides:
-        for B in sizes:
-            nb = r.size // B
-            if nb < 4:
-                continue
-            m = r[: nb * B].reshape(nb, B).mean(axis=1)
-            ratio = B * float(np.mean(m * m))
-            if ratio > 1.0 + 3.0 * math.sqrt(2.0 / nb):
-                best = max(best, ratio)
+        best = max(best, block_ratio(as_arg(r), tuple(int(B) for B in sizes)))
     return min(best, 100.0)
 
 
