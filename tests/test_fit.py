@@ -520,3 +520,33 @@ def test_fit_kernels_equal_their_numpy_forms():
             if ratio > 1.0 + 3.0 * np.sqrt(2.0 / nb):
                 best = max(best, ratio)
         assert block_ratio(res, (4, 8, 16)) == best
+
+
+def test_area_tables_kernel_equals_its_numpy_form():
+    """The compiled levelled areas give the numpy expressions' values bit for bit (NaN and infinite sigmas too)."""
+    from ballscan._kernels import area_tables
+
+    rng = np.random.default_rng(3)
+    n = 300
+    area = rng.normal(3.0, 4.0, n)
+    area[::37] = np.nan
+    area_sigma = rng.uniform(0.01, 1.0, n)
+    lev = rng.uniform(-0.2, 1.5, n)
+    lev[::11] = np.nan
+    lev[5::29] = np.inf
+    rel = rng.uniform(0.0, 0.3, n)
+    rel[::7] = np.nan
+    rel[3::13] = np.inf
+    rel[4::17] = -np.inf
+    f2, fp2 = 0.002**2, 0.005**2
+    with np.errstate(over="ignore", invalid="ignore"):  # an infinite sigma is the largest float, squared
+        rel_n = np.nan_to_num(rel, nan=np.inf)
+        ok = np.isfinite(lev) & (lev > 0.05) & np.isfinite(rel_n)
+        ls = np.where(ok, lev, 1.0)
+        ma = np.where(ok, area / ls, 0.0)
+        rel2 = np.where(ok, rel_n, 0.0) ** 2 + f2
+        sa = np.sqrt((area_sigma / ls) ** 2 + rel2 * np.maximum(ma, 0.0) ** 2 + fp2)
+    got = area_tables(area, area_sigma, lev, rel, f2, fp2)
+    assert np.array_equal(got[0], ma, equal_nan=True)
+    assert np.array_equal(got[1], np.where(ok, sa, np.inf), equal_nan=True)
+    assert np.array_equal(got[2], ok) and ok.any() and not ok.all()

@@ -1097,6 +1097,39 @@ def block_ratio(r: np.ndarray, sizes) -> float:
     return best
 
 
+@_jit()
+def area_tables(area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float):
+    """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.fit._area_tables`), per line.
+
+    The numpy form's operations, line by line: a NaN ``level_sigma`` counts
+    as infinite and an infinite one as the largest float (``np.nan_to_num``
+    with ``nan=inf``).
+    """
+    n = area.shape[0]
+    ma = np.empty(n)
+    sa = np.empty(n)
+    ok = np.empty(n, dtype=np.bool_)
+    big = np.finfo(np.float64).max
+    for i in range(n):
+        rel = level_sigma[i]
+        if math.isnan(rel):
+            rel = math.inf
+        elif math.isinf(rel):
+            rel = big if rel > 0.0 else -big
+        lev = level[i]
+        good = math.isfinite(lev) and lev > 0.05 and math.isfinite(rel)
+        ls = lev if good else 1.0
+        m = area[i] / ls if good else 0.0
+        r = rel if good else 0.0
+        rel2 = r * r + floor2
+        q = area_sigma[i] / ls
+        mp = 0.0 if m < 0.0 else m
+        ma[i] = m
+        sa[i] = math.sqrt(q * q + rel2 * (mp * mp) + floor_px2) if good else math.inf
+        ok[i] = good
+    return ma, sa, ok
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1123,6 +1156,7 @@ def warm_up() -> None:
     fit_residuals(o1, o1, o1, i1, i1, i1, 0.0, o1, o1, o1, o1, o1, o1, np.zeros(0))
     fit_jacobian(d6, d6, d6, i1, i1, i1, o1, o1, o1, np.zeros((0, 6)), True)
     block_ratio(np.zeros(16), (4, 8, 16))
+    area_tables(o1, o1, o1, o1, 0.0, 0.0)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

@@ -72,7 +72,7 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from ._kernels import (
-    as_arg, averaged_edges_jacobian, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
+    area_tables, as_arg, averaged_edges_jacobian, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -513,7 +513,7 @@ def hybrid_jacobian(
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
-    if analytic and not np.any(acceleration_mps2):
+    if analytic and not any(acceleration_mps2):
         # exact derivatives of the averaged model on those lines (one
         # compiled pass; no finite differences to reuse)
         g, gw = _gauss(n_nodes)
@@ -1810,14 +1810,11 @@ def _area_tables(edges: EdgeMeasurements, settings: FitSettings) -> tuple[np.nda
     if edges.area_level is None:
         z = np.zeros(n)
         return z, z, np.zeros(n, dtype=bool)
-    lev = np.asarray(edges.area_level, dtype=float)
-    rel = np.nan_to_num(np.asarray(edges.area_level_sigma, dtype=float), nan=np.inf)
-    ok = np.isfinite(lev) & (lev > 0.05) & np.isfinite(rel)
-    ls = np.where(ok, lev, 1.0)
-    ma = np.where(ok, edges.area_px / ls, 0.0)
-    rel2 = np.where(ok, rel, 0.0) ** 2 + settings.area_level_floor**2
-    sa = np.sqrt((edges.area_sigma_px / ls) ** 2 + rel2 * np.maximum(ma, 0.0) ** 2 + settings.area_level_floor_px**2)
-    return ma, np.where(ok, sa, np.inf), ok
+    # one compiled pass over the lines (:func:`ballscan._kernels.area_tables`)
+    return area_tables(
+        as_arg(edges.area_px), as_arg(edges.area_sigma_px), as_arg(edges.area_level), as_arg(edges.area_level_sigma),
+        settings.area_level_floor**2, settings.area_level_floor_px**2,
+    )
 
 
 def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray:
