@@ -550,3 +550,38 @@ def test_area_tables_kernel_equals_its_numpy_form():
     assert np.array_equal(got[0], ma, equal_nan=True)
     assert np.array_equal(got[1], np.where(ok, sa, np.inf), equal_nan=True)
     assert np.array_equal(got[2], ok) and ok.any() and not ok.all()
+
+
+@pytest.mark.parametrize("wide, end_line_areas", [(True, True), (False, True), (True, False)])
+def test_select_lines_kernel_equals_its_numpy_form(wide, end_line_areas):
+    """The compiled residual selection gives the numpy expressions' masks."""
+    from ballscan._kernels import select_lines
+
+    rng = np.random.default_rng(11)
+    n = 400
+    pres = np.where(rng.random(n) < 0.8, 1.0, rng.random(n))
+    valid, lo, ro, end, wlo, wro = (rng.random(n) < p for p in (0.95, 0.8, 0.8, 0.15, 0.7, 0.7))
+    spread = rng.uniform(0.0, 1.2, n)
+    spread[::23] = np.nan
+    el, er, ewl, ewr = (np.where(rng.random(n) < 0.1, np.nan, rng.normal(0, 50, n)) for _ in range(4))
+    ms, mw = 0.3, 0.8
+    full = (pres > 0.999) & valid
+    narrow = full & (spread <= ms)
+    use_l = lo & narrow & np.isfinite(el)
+    use_r = ro & narrow & np.isfinite(er)
+    wide_l = np.zeros(n, dtype=bool)
+    wide_r = np.zeros(n, dtype=bool)
+    if wide:
+        between = full & (spread > ms) & (spread <= mw)
+        wide_l = wlo & between & np.isfinite(ewl)
+        wide_r = wro & between & np.isfinite(ewr)
+        use_l, use_r = use_l | wide_l, use_r | wide_r
+    no_signal = ~((lo | ro) | end) & ~(lo | ro)
+    if end_line_areas:
+        use_a = ~(use_l | use_r) & (end | no_signal | (lo & ro))
+    else:
+        use_a = ~(use_l | use_r) & no_signal
+    got = select_lines(pres, valid, spread, lo, ro, el, er, end, wide, wlo, wro, ewl, ewr, ms, mw, end_line_areas)
+    for g, ref in zip(got, (use_l, use_r, use_a, wide_l, wide_r)):
+        assert g.dtype == bool and np.array_equal(g, ref)
+    assert use_a.any() and use_l.any() and (wide_l.any() or not wide)

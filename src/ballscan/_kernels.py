@@ -1130,6 +1130,47 @@ def area_tables(area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, lev
     return ma, sa, ok
 
 
+@_jit()
+def select_lines(
+    presence: np.ndarray, valid: np.ndarray, spread: np.ndarray, left_ok: np.ndarray, right_ok: np.ndarray,
+    left: np.ndarray, right: np.ndarray, end_line: np.ndarray, wide: bool, left_wide_ok: np.ndarray,
+    right_wide_ok: np.ndarray, left_wide: np.ndarray, right_wide: np.ndarray, max_spread: float, max_spread_wide: float,
+    end_line_areas: bool,
+):
+    """The fit's residual selection (:func:`ballscan.fit._select`), line by line.
+
+    Returns the masks ``(use_l, use_r, use_a, wide_l, wide_r)``; the wide
+    window's arrays are read only with ``wide``.
+    """
+    n = presence.shape[0]
+    use_l = np.empty(n, dtype=np.bool_)
+    use_r = np.empty(n, dtype=np.bool_)
+    use_a = np.empty(n, dtype=np.bool_)
+    wide_l = np.zeros(n, dtype=np.bool_)
+    wide_r = np.zeros(n, dtype=np.bool_)
+    for i in range(n):
+        full = presence[i] > 0.999 and valid[i]
+        narrow = full and spread[i] <= max_spread
+        ul = left_ok[i] and narrow and math.isfinite(left[i])
+        ur = right_ok[i] and narrow and math.isfinite(right[i])
+        if wide:
+            between = full and spread[i] > max_spread and spread[i] <= max_spread_wide
+            wide_l[i] = left_wide_ok[i] and between and math.isfinite(left_wide[i])
+            wide_r[i] = right_wide_ok[i] and between and math.isfinite(right_wide[i])
+            ul = ul or wide_l[i]
+            ur = ur or wide_r[i]
+        # no signal: neither edge measured nor an end line
+        no_signal = not (left_ok[i] or right_ok[i] or end_line[i])
+        if end_line_areas:
+            ua = not (ul or ur) and (end_line[i] or no_signal or (left_ok[i] and right_ok[i]))
+        else:
+            ua = not (ul or ur) and no_signal
+        use_l[i] = ul
+        use_r[i] = ur
+        use_a[i] = ua
+    return use_l, use_r, use_a, wide_l, wide_r
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1157,6 +1198,8 @@ def warm_up() -> None:
     fit_jacobian(d6, d6, d6, i1, i1, i1, o1, o1, o1, np.zeros((0, 6)), True)
     block_ratio(np.zeros(16), (4, 8, 16))
     area_tables(o1, o1, o1, o1, 0.0, 0.0)
+    b1 = np.ones(1, dtype=np.bool_)
+    select_lines(o1, b1, o1, b1, b1, o1, o1, b1, True, b1, b1, o1, o1, 0.3, 0.8, True)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

@@ -73,6 +73,7 @@ from scipy.special import chdtri
 
 from ._kernels import (
     area_tables, as_arg, averaged_edges_jacobian, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
+    select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -913,27 +914,25 @@ class FitResult:
 
 
 def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
-    """Which lines give edge residuals (narrow or wide window) and which give area residuals."""
-    full = (me.presence > 0.999) & me.valid
-    narrow = full & (me.spread_px <= settings.max_spread_px)
-    use_l = edges.left_ok & narrow & np.isfinite(edges.left_px)
-    use_r = edges.right_ok & narrow & np.isfinite(edges.right_px)
-    wide_l = np.zeros_like(use_l)
-    wide_r = np.zeros_like(use_r)
-    if edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px:
-        spread = full & (me.spread_px > settings.max_spread_px) & (me.spread_px <= settings.max_spread_wide_px)
-        wide_l = edges.left_wide_ok & spread & np.isfinite(edges.left_wide_px)
-        wide_r = edges.right_wide_ok & spread & np.isfinite(edges.right_wide_px)
-        use_l = use_l | wide_l
-        use_r = use_r | wide_r
-    # area lines: no usable edge, and the line's area is not spoiled
-    # (edges.end_line), or no signal at all (lines around the ball)
-    no_signal = ~edges.signal & ~(edges.left_ok | edges.right_ok)
-    if settings.end_line_areas:
-        use_a = ~(use_l | use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
-    else:
-        use_a = ~(use_l | use_r) & no_signal
-    return use_l, use_r, use_a, wide_l, wide_r
+    """Which lines give edge residuals (narrow or wide window) and which give area residuals.
+
+    Edges where the model sees the ball during the whole exposure, with its
+    edge spread at most ``max_spread_px`` (the narrow window's edges) or up
+    to ``max_spread_wide_px`` (the wide window's); area lines: no usable
+    edge, and the line's area is not spoiled (``edges.end_line``), or no
+    signal at all (lines around the ball).  Returns ``(use_l, use_r, use_a,
+    wide_l, wide_r)``; one compiled pass (:func:`ballscan._kernels.select_lines`).
+    """
+    wide = edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px
+    e = edges
+    masks = [as_arg(m, np.bool_) for m in (me.valid, e.left_ok, e.right_ok, e.end_line)]
+    # (the narrow window's arrays stand in for the wide one's, unread, when it is not used)
+    wl_ok, wr_ok, wl, wr = (e.left_wide_ok, e.right_wide_ok, e.left_wide_px, e.right_wide_px) if wide else (e.left_ok, e.right_ok, e.left_px, e.right_px)
+    return select_lines(
+        as_arg(me.presence), masks[0], as_arg(me.spread_px), masks[1], masks[2], as_arg(e.left_px), as_arg(e.right_px), masks[3],
+        wide, as_arg(wl_ok, np.bool_), as_arg(wr_ok, np.bool_), as_arg(wl), as_arg(wr),
+        float(settings.max_spread_px), float(settings.max_spread_wide_px), bool(settings.end_line_areas),
+    )
 
 
 def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
