@@ -585,3 +585,39 @@ def test_select_lines_kernel_equals_its_numpy_form(wide, end_line_areas):
     for g, ref in zip(got, (use_l, use_r, use_a, wide_l, wide_r)):
         assert g.dtype == bool and np.array_equal(g, ref)
     assert use_a.any() and use_l.any() and (wide_l.any() or not wide)
+
+
+@pytest.mark.parametrize("masks", [False, True])
+def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
+    """hybrid_jacobian's compiled analytic path gives the chord-and-averaged-model rows of the numpy form bit for bit."""
+    from ballscan._kernels import averaged_edges_jacobian, chord_edges, hybrid_rows
+    from ballscan.silhouette import _gauss
+
+    cam, m = _serve()
+    t = np.arange(-5, 250) / cam.line_rate_hz
+    theta = m.to_params()
+    R = m.radius_m
+    rng = np.random.default_rng(5)
+    fd_lines = rng.random(t.size) < 0.1 if masks else None
+    needed = rng.random(t.size) < 0.9 if masks else None
+    g, gw = _gauss(3)
+    _, J, ok, x0, z, _ = chord_edges(theta, t, R, cam.focal_px, cam.principal_px, cam.k1, cam.k2, np.zeros(3))
+    dl, dr = J[0], J[1]
+    reach = np.abs(x0) + abs(theta[3]) * (cam.exposure / 2.0) + np.maximum(z, 0.0) / (2.0 * cam.focal_px)
+    fd = ~ok | (reach > 0.8 * R)
+    if masks:
+        fd = (fd | fd_lines) & needed
+    da = dr - dl
+    _, _, _, fl, fr, fa = averaged_edges_jacobian(theta, t[fd], R, cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2, g, gw)
+    dl[fd], dr[fd], da[fd] = fl, fr, fa
+    none = np.zeros(0, dtype=bool)
+    got = hybrid_rows(
+        theta, t, R, cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2, g, gw, 0.8 * R,
+        none if fd_lines is None else fd_lines, none if needed is None else needed, masks, masks,
+    )
+    for a, b in zip(got, (dl, dr, da, fd)):
+        assert np.array_equal(a, b)
+    assert fd.any() and not fd.all()
+    memo = {}
+    via = hybrid_jacobian(cam, theta, R, t, param_scale(cam, m), fd_lines=fd_lines, needed=needed, memo=memo, analytic=True)
+    assert all(np.array_equal(a, b) for a, b in zip(via, (dl, dr, da))) and np.array_equal(memo["last_fd"], fd)

@@ -1171,6 +1171,57 @@ def select_lines(
     return use_l, use_r, use_a, wide_l, wide_r
 
 
+@_jit()
+def hybrid_rows(
+    th: np.ndarray, t: np.ndarray, radius_m: float, exposure_s: float, focal_px: float, principal_px: float, k1: float,
+    k2: float, g: np.ndarray, gw: np.ndarray, reach_max: float, fd_lines: np.ndarray, needed: np.ndarray,
+    with_fd_lines: bool, with_needed: bool,
+):
+    """:func:`ballscan.fit.hybrid_jacobian` with ``analytic`` and no acceleration, in one compiled call.
+
+    The chord's derivatives (:func:`chord_edges`) on every line, the
+    averaged model's exact ones (:func:`averaged_edges_jacobian`) on the
+    lines where the section offsets reach beyond ``reach_max`` (m) or the
+    chord has no edge, and on ``fd_lines`` (with ``with_fd_lines``), of
+    those only the ``needed`` ones (with ``with_needed``).  Returns ``(dl,
+    dr, da, fd)``: the derivatives (N, 6) and the lines of the averaged
+    model's.
+    """
+    N = t.shape[0]
+    _, J, ok, x0, z, _ = chord_edges(th, t, radius_m, focal_px, principal_px, k1, k2, np.zeros(3))
+    dl = J[0]
+    dr = J[1]
+    da = dr - dl
+    # the section offsets' half-widths: the exposure's and the pixel height's
+    vxt = abs(th[3])
+    half_exposure = exposure_s / 2.0
+    two_f = 2.0 * focal_px
+    fd = np.empty(N, dtype=np.bool_)
+    n_fd = 0
+    for i in range(N):
+        zi = z[i]
+        zp = 0.0 if zi < 0.0 else zi
+        reach = abs(x0[i]) + vxt * half_exposure + zp / two_f
+        f = (not ok[i]) or reach > reach_max
+        if with_fd_lines:
+            f = f or fd_lines[i]
+        if with_needed:
+            f = f and needed[i]
+        fd[i] = f
+        n_fd += f
+    if n_fd == 0:
+        return dl, dr, da, fd
+    idx = np.flatnonzero(fd)
+    _, _, _, fl, fr, fa = averaged_edges_jacobian(th, t[idx], radius_m, exposure_s, focal_px, principal_px, k1, k2, g, gw)
+    for k in range(n_fd):
+        i = idx[k]
+        for j in range(6):
+            dl[i, j] = fl[k, j]
+            dr[i, j] = fr[k, j]
+            da[i, j] = fa[k, j]
+    return dl, dr, da, fd
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1200,6 +1251,7 @@ def warm_up() -> None:
     area_tables(o1, o1, o1, o1, 0.0, 0.0)
     b1 = np.ones(1, dtype=np.bool_)
     select_lines(o1, b1, o1, b1, b1, o1, o1, b1, True, b1, b1, o1, o1, 0.3, 0.8, True)
+    hybrid_rows(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw, 0.024, b1, b1, True, True)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

@@ -72,8 +72,8 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from ._kernels import (
-    area_tables, as_arg, averaged_edges_jacobian, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
-    select_lines,
+    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
+    hybrid_rows, select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -498,6 +498,20 @@ def hybrid_jacobian(
     theta = np.asarray(theta, dtype=float)
     t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
+    if analytic and not any(acceleration_mps2):
+        # the chord's derivatives, the lines that need the averaged model's
+        # exact ones and those, in one compiled call
+        g, gw = _gauss(n_nodes)
+        no_lines = np.zeros(0, dtype=bool)
+        dl, dr, da, fd = hybrid_rows(
+            as_arg(theta), as_arg(t), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
+            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw), reach_limit * R,
+            no_lines if fd_lines is None else as_arg(fd_lines, np.bool_), no_lines if needed is None else as_arg(needed, np.bool_),
+            fd_lines is not None, needed is not None,
+        )
+        if memo is not None:
+            memo["last_fd"] = fd
+        return dl, dr, da
     u, J, chord_ok, x0, z, tau = _chord_core(camera, theta, R, t, acceleration_mps2)
     dl, dr = J[0], J[1]
     ax = float(acceleration_mps2[0])
@@ -514,16 +528,6 @@ def hybrid_jacobian(
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
-    if analytic and not any(acceleration_mps2):
-        # exact derivatives of the averaged model on those lines (one
-        # compiled pass; no finite differences to reuse)
-        g, gw = _gauss(n_nodes)
-        _, _, _, fl, fr, fa = averaged_edges_jacobian(
-            as_arg(theta), as_arg(t[fd]), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
-            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw),
-        )
-        dl[fd], dr[fd], da[fd] = fl, fr, fa
-        return dl, dr, da
     if memo is not None and memo.get("theta") is not None and memo["n"] == t.size and memo["have"][fd].all():
         # how far the model moved on those lines since (pixels, first order)
         step = theta - memo["theta"]
