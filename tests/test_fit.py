@@ -621,3 +621,23 @@ def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
     memo = {}
     via = hybrid_jacobian(cam, theta, R, t, param_scale(cam, m), fd_lines=fd_lines, needed=needed, memo=memo, analytic=True)
     assert all(np.array_equal(a, b) for a, b in zip(via, (dl, dr, da))) and np.array_equal(memo["last_fd"], fd)
+
+
+def test_step_matrix_kernels_equal_their_numpy_forms():
+    """The Levenberg-Marquardt step's equilibration and damping give the numpy expressions' matrices bit for bit."""
+    from ballscan._kernels import damped, equilibrated
+
+    rng = np.random.default_rng(13)
+    for p in (6, 7):
+        J = rng.standard_normal((200, p)) * 10.0 ** rng.uniform(-6, 4, p)
+        J[:, 1] *= rng.random() < 0.5  # a column of zeros (norm 1)
+        AJ = J.T @ J
+        cn = np.sqrt(np.diag(AJ))
+        cn = np.where(cn > 0, cn, 1.0)
+        A = AJ / np.outer(cn, cn)
+        got_cn, got_A = equilibrated(AJ)
+        assert np.array_equal(got_cn, cn) and np.array_equal(got_A, A, equal_nan=True)
+        for lam in (1e-9, 1e-3, 0.1, 1e10):
+            ref = A + lam * np.diag(np.diag(A))
+            out = damped(A, lam)
+            assert np.array_equal(out, ref, equal_nan=True) and np.array_equal(np.signbit(out), np.signbit(ref))

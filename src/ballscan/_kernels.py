@@ -1222,6 +1222,37 @@ def hybrid_rows(
     return dl, dr, da, fd
 
 
+@_jit()
+def equilibrated(AJ: np.ndarray):
+    """Column norms ``cn = sqrt(diag(AJ))`` (1 where not positive) of a normal matrix and ``AJ / outer(cn, cn)``.
+
+    The Levenberg-Marquardt steps' equilibration (:func:`ballscan.fit._levenberg_marquardt`),
+    the numpy expressions' operations.
+    """
+    n = AJ.shape[0]
+    cn = np.empty(n)
+    for i in range(n):
+        c = math.sqrt(AJ[i, i])
+        cn[i] = c if c > 0.0 else 1.0
+    A = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            A[i, j] = AJ[i, j] / (cn[i] * cn[j])
+    return cn, A
+
+
+@_jit()
+def damped(A: np.ndarray, lam: float) -> np.ndarray:
+    """``A + lam * diag(diag(A))`` (the numpy expression's operations: ``+ lam * 0`` off the diagonal)."""
+    n = A.shape[0]
+    out = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            d = A[i, i] if i == j else 0.0
+            out[i, j] = A[i, j] + lam * d
+    return out
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1252,6 +1283,7 @@ def warm_up() -> None:
     b1 = np.ones(1, dtype=np.bool_)
     select_lines(o1, b1, o1, b1, b1, o1, o1, b1, True, b1, b1, o1, o1, 0.3, 0.8, True)
     hybrid_rows(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw, 0.024, b1, b1, True, True)
+    damped(equilibrated(np.eye(2))[1], 1e-3)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

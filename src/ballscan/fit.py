@@ -73,7 +73,7 @@ from scipy.special import chdtri
 
 from ._kernels import (
     area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
-    hybrid_rows, select_lines,
+    damped, equilibrated, hybrid_rows, select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -1005,14 +1005,11 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
         if Jw is not normal_of:
             # the column-equilibrated normal matrix from J^T J (a chord step
             # with the same Jacobian reuses it)
-            AJ = Jw.T @ Jw
-            cn = np.sqrt(np.diag(AJ))
-            cn = np.where(cn > 0, cn, 1.0)
-            A = AJ / np.outer(cn, cn)
+            cn, A = equilibrated(Jw.T @ Jw)
             normal_of = Jw
         g = (Jw.T @ rw) / cn
         try:
-            step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
+            step = -np.linalg.solve(damped(A, lam), g)
         except np.linalg.LinAlgError:
             step = -np.linalg.lstsq(A + lam * np.eye(A.shape[0]), g, rcond=None)[0]
         predicted = -(g @ step)  # first-order decrease of 0.5 * chi2
