@@ -641,3 +641,17 @@ def test_step_matrix_kernels_equal_their_numpy_forms():
             ref = A + lam * np.diag(np.diag(A))
             out = damped(A, lam)
             assert np.array_equal(out, ref, equal_nan=True) and np.array_equal(np.signbit(out), np.signbit(ref))
+
+
+def test_on_both_sides_kernel_equals_its_numpy_form():
+    """The compiled test of lines before and after t_c agrees with the numpy expression."""
+    from ballscan._kernels import on_both_sides
+
+    rng = np.random.default_rng(17)
+    t = np.arange(60) * 1e-4
+    t[7] = np.nan
+    for _ in range(300):
+        lines = rng.random(t.size) < rng.choice([0.02, 0.1, 0.5])
+        t_c = float(rng.choice(t[rng.integers(0, t.size)], 1)[0]) if rng.random() < 0.3 else rng.uniform(-1e-3, 7e-3)
+        ref = bool(np.any(lines & (t < t_c)) and np.any(lines & (t > t_c)))
+        assert on_both_sides(lines, t, t_c) == ref

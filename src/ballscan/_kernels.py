@@ -1253,6 +1253,18 @@ def damped(A: np.ndarray, lam: float) -> np.ndarray:
     return out
 
 
+@_jit()
+def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
+    """Whether the mask ``lines`` holds lines both before and after ``t_c`` (line times ``t``; :func:`ballscan.fit._at_both_ends`)."""
+    before = False
+    after = False
+    for i in range(lines.shape[0]):
+        if lines[i]:
+            before = before or t[i] < t_c
+            after = after or t[i] > t_c
+    return before and after
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1284,6 +1296,7 @@ def warm_up() -> None:
     select_lines(o1, b1, o1, b1, b1, o1, o1, b1, True, b1, b1, o1, o1, 0.3, 0.8, True)
     hybrid_rows(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw, 0.024, b1, b1, True, True)
     damped(equilibrated(np.eye(2))[1], 1e-3)
+    on_both_sides(b1, o1, 0.0)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

@@ -73,7 +73,7 @@ from scipy.special import chdtri
 
 from ._kernels import (
     area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
-    damped, equilibrated, hybrid_rows, select_lines,
+    damped, equilibrated, hybrid_rows, on_both_sides, select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -953,7 +953,7 @@ def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
     raise ValueError(f"loss: expected 'linear', 'soft_l1' or 'huber', got {loss!r}")
 
 
-def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings", start=None):
+def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings", start=None, loss: str | None = None):
     """Levenberg-Marquardt with iteratively reweighted robust loss.
 
     Steps are solved on the column-equilibrated normal equations (the
@@ -966,19 +966,21 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     that lowered the cost by more than ``settings.jacobian_refresh`` (other
     steps are chord steps with the previous one); with ``settings.broyden``
     it is instead corrected after every trial step by Broyden's rank-one
-    update, so that a step costs one model evaluation.  Returns ``(x,
-    n_eval, status, message, cost, r, J)`` with the last Jacobian (taken at
-    or next to ``x``).
+    update, so that a step costs one model evaluation.  ``loss`` (default
+    ``settings.loss``) is the robust loss.  Returns ``(x, n_eval, status,
+    message, cost, r, J)`` with the last Jacobian (taken at or next to
+    ``x``).
     """
     f2 = settings.f_scale**2
     tol = settings.cost_tol
+    loss = settings.loss if loss is None else loss
 
-    linear = settings.loss == "linear"
+    linear = loss == "linear"
 
     def cost_of(r):
         if linear:
             return 0.5 * float(r @ r)
-        return 0.5 * f2 * float(_rho((r * r) / f2, settings.loss)[0].sum())
+        return 0.5 * f2 * float(_rho((r * r) / f2, loss)[0].sum())
 
     x = np.asarray(x0, dtype=float).copy()
     if start is None:
@@ -1000,7 +1002,7 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
         if linear:
             Jw, rw = J, r
         else:
-            w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
+            w = np.sqrt(_rho((r * r) / f2, loss)[1])
             Jw, rw = J * w[:, None], r * w
         if Jw is not normal_of:
             # the column-equilibrated normal matrix from J^T J (a chord step
@@ -1259,7 +1261,6 @@ def fit_motion(
             last["key"], last["r"] = x.tobytes(), r
             return r
 
-        st = replace(settings, loss=loss)
         if settings.solver == "scipy":
             cache: dict = {}
 
@@ -1287,7 +1288,7 @@ def fit_motion(
             r_end, J_end = resid_and_jac(res.x)
             out = (res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost), r_end, J_end)
         elif settings.solver == "gn":
-            out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, st, start=start)
+            out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, settings, start=start, loss=loss)
         else:
             raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
         return out, resid_and_jac
@@ -1458,7 +1459,7 @@ def _partial_lines(use_a: np.ndarray, me: ModelEdges, tables: dict) -> np.ndarra
 
 def _at_both_ends(lines: np.ndarray, t_s: np.ndarray, t_c_s: float) -> bool:
     """Whether the mask ``lines`` holds lines both before and after ``t_c_s`` (line times ``t_s``)."""
-    return bool(np.any(lines & (t_s < t_c_s)) and np.any(lines & (t_s > t_c_s)))
+    return bool(on_both_sides(as_arg(lines, np.bool_), as_arg(t_s), float(t_c_s)))
 
 
 def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: dict, settings: "FitSettings", t_s: np.ndarray, t_c_s: float) -> str:
