@@ -1265,6 +1265,49 @@ def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
     return before and after
 
 
+@_jit()
+def loose_rows(J: np.ndarray, r: np.ndarray, rows: np.ndarray, sa: np.ndarray, sa_loose: np.ndarray, model: np.ndarray, ma_loose: np.ndarray):
+    """The partial lines' rows made loose and both Jacobians equilibrated (:func:`ballscan.fit._partial_verdict`).
+
+    ``J`` (M, p) and ``r`` (M,) are the levelled fit's whitened Jacobian and
+    residuals, ``rows`` the partial lines' rows in them, ``sa`` their
+    levelled sigmas, ``sa_loose`` and ``ma_loose`` their loose sigmas and
+    areas, ``model`` the model's areas there.  Returns ``(r_l, Jl_n, Jt_n,
+    gn)``: the loose residuals, both Jacobians divided by the loose one's
+    column norms (1 where 0; summed row by row as numpy's ``norm(axis=0)``)
+    and the model's area derivatives on those rows, divided too.
+    """
+    M, p = J.shape
+    n = rows.shape[0]
+    J_l = J.copy()
+    r_l = r.copy()
+    g = np.empty((n, p))
+    for k in range(n):
+        i = rows[k]
+        for j in range(p):
+            g[k, j] = J[i, j] * sa[k]
+            J_l[i, j] = g[k, j] / sa_loose[k]
+        r_l[i] = (model[k] - ma_loose[k]) / sa_loose[k]
+    cn = np.zeros(p)
+    for i in range(M):
+        for j in range(p):
+            cn[j] += J_l[i, j] * J_l[i, j]
+    for j in range(p):
+        c = math.sqrt(cn[j])
+        cn[j] = c if c > 0.0 else 1.0
+    Jl_n = np.empty((M, p))
+    Jt_n = np.empty((M, p))
+    for i in range(M):
+        for j in range(p):
+            Jl_n[i, j] = J_l[i, j] / cn[j]
+            Jt_n[i, j] = J[i, j] / cn[j]
+    gn = np.empty((n, p))
+    for k in range(n):
+        for j in range(p):
+            gn[k, j] = g[k, j] / cn[j]
+    return r_l, Jl_n, Jt_n, gn
+
+
 def warm_up() -> None:
     """Load (or compile) every kernel now, on tiny inputs.
 
@@ -1297,6 +1340,7 @@ def warm_up() -> None:
     hybrid_rows(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw, 0.024, b1, b1, True, True)
     damped(equilibrated(np.eye(2))[1], 1e-3)
     on_both_sides(b1, o1, 0.0)
+    loose_rows(d6, o1, i1, o1, o1, o1, o1)
     limb_values(
         np.zeros(1), np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1, dtype=np.bool_), np.zeros(1), np.zeros(1),
         3000.0, th[0, :3].copy(), th[0, 3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,

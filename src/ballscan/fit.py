@@ -73,7 +73,7 @@ from scipy.special import chdtri
 
 from ._kernels import (
     area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
-    damped, equilibrated, hybrid_rows, on_both_sides, select_lines,
+    damped, equilibrated, hybrid_rows, loose_rows, on_both_sides, select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -1497,17 +1497,14 @@ def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: 
     pa = np.flatnonzero(partial[use_a])  # among the area rows
     rows = int(use_l.sum() + use_r.sum()) + pa
     lines = np.flatnonzero(use_a)[pa]
-    g = J[rows] * sa[pa][:, None]  # the model's area derivatives, pixels
     model = me.area_px[0][lines]
-    J_l, r_l = J.copy(), r.copy()
-    J_l[rows] = g / tables["sa"][lines][:, None]
-    r_l[rows] = (model - tables["ma"][lines]) / tables["sa"][lines]
-    cn = np.linalg.norm(J_l, axis=0)
-    cn = np.where(cn > 0, cn, 1.0)
-    Jl_n, Jt_n = J_l / cn, J / cn
+    # those rows loose (the model's area derivatives, pixels, over the loose
+    # sigmas), both Jacobians equilibrated by the loose one's column norms
+    r_l, Jl_n, Jt_n, gn = loose_rows(
+        as_arg(J), as_arg(r), rows, as_arg(sa[pa]), as_arg(tables["sa"][lines]), as_arg(model), as_arg(tables["ma"][lines])
+    )
     c_l, c_t = _pinv_sym(Jl_n.T @ Jl_n), _pinv_sym(Jt_n.T @ Jt_n)
     step = -c_l @ (Jl_n.T @ r_l)  # to the loose solution (equilibrated parameters)
-    gn = g / cn
     pred = model + gn @ step
     var_pred = np.einsum("ij,jk,ik->i", gn, c_l, gn)
     z = (pred - tables["ma_lev"][lines]) / np.sqrt(tables["sa_lev"][lines] ** 2 + var_pred)
