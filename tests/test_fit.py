@@ -608,7 +608,8 @@ def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
     if masks:
         fd = (fd | fd_lines) & needed
     da = dr - dl
-    _, _, _, fl, fr, fa = averaged_edges_jacobian(theta, t[fd], R, cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2, g, gw)
+    cam_args = (cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2)
+    _, _, _, fl, fr, fa = averaged_edges_jacobian(theta, t[fd], R, *cam_args, g, gw)
     dl[fd], dr[fd], da[fd] = fl, fr, fa
     none = np.zeros(0, dtype=bool)
     got = hybrid_rows(

@@ -1098,7 +1098,9 @@ def block_ratio(r: np.ndarray, sizes) -> float:
 
 
 @_jit()
-def area_tables(area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float):
+def area_tables(
+    area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float
+):
     """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.fit._area_tables`), per line.
 
     The numpy form's operations, line by line: a NaN ``level_sigma`` counts
@@ -1255,7 +1257,10 @@ def damped(A: np.ndarray, lam: float) -> np.ndarray:
 
 @_jit()
 def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
-    """Whether the mask ``lines`` holds lines both before and after ``t_c`` (line times ``t``; :func:`ballscan.fit._at_both_ends`)."""
+    """Whether the mask ``lines`` holds lines both before and after ``t_c`` (line times ``t``).
+
+    :func:`ballscan.fit._at_both_ends` in one pass.
+    """
     before = False
     after = False
     for i in range(lines.shape[0]):
@@ -1266,7 +1271,9 @@ def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
 
 
 @_jit()
-def loose_rows(J: np.ndarray, r: np.ndarray, rows: np.ndarray, sa: np.ndarray, sa_loose: np.ndarray, model: np.ndarray, ma_loose: np.ndarray):
+def loose_rows(
+    J: np.ndarray, r: np.ndarray, rows: np.ndarray, sa: np.ndarray, sa_loose: np.ndarray, model: np.ndarray, ma_loose: np.ndarray
+):
     """The partial lines' rows made loose and both Jacobians equilibrated (:func:`ballscan.fit._partial_verdict`).
 
     ``J`` (M, p) and ``r`` (M,) are the levelled fit's whitened Jacobian and

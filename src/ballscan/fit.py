@@ -72,8 +72,8 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from ._kernels import (
-    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, fit_jacobian, fit_residuals,
-    damped, equilibrated, hybrid_rows, loose_rows, on_both_sides, select_lines,
+    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
+    fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
 )
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
@@ -506,7 +506,8 @@ def hybrid_jacobian(
         dl, dr, da, fd = hybrid_rows(
             as_arg(theta), as_arg(t), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
             float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw), reach_limit * R,
-            no_lines if fd_lines is None else as_arg(fd_lines, np.bool_), no_lines if needed is None else as_arg(needed, np.bool_),
+            no_lines if fd_lines is None else as_arg(fd_lines, np.bool_),
+            no_lines if needed is None else as_arg(needed, np.bool_),
             fd_lines is not None, needed is not None,
         )
         if memo is not None:
@@ -931,7 +932,10 @@ def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
     e = edges
     masks = [as_arg(m, np.bool_) for m in (me.valid, e.left_ok, e.right_ok, e.end_line)]
     # (the narrow window's arrays stand in for the wide one's, unread, when it is not used)
-    wl_ok, wr_ok, wl, wr = (e.left_wide_ok, e.right_wide_ok, e.left_wide_px, e.right_wide_px) if wide else (e.left_ok, e.right_ok, e.left_px, e.right_px)
+    if wide:
+        wl_ok, wr_ok, wl, wr = e.left_wide_ok, e.right_wide_ok, e.left_wide_px, e.right_wide_px
+    else:
+        wl_ok, wr_ok, wl, wr = e.left_ok, e.right_ok, e.left_px, e.right_px
     return select_lines(
         as_arg(me.presence), masks[0], as_arg(me.spread_px), masks[1], masks[2], as_arg(e.left_px), as_arg(e.right_px), masks[3],
         wide, as_arg(wl_ok, np.bool_), as_arg(wr_ok, np.bool_), as_arg(wl), as_arg(wr),
