@@ -487,7 +487,9 @@ def hybrid_jacobian(
         On the lines that would get finite differences, the averaged
         model's exact derivatives instead
         (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
-        acceleration); ``memo`` is then only told the lines.
+        acceleration; one compiled call with the chord's,
+        :func:`ballscan._kernels.hybrid_rows`); ``memo`` is then only told
+        the lines.
 
     Returns
     -------
