@@ -71,7 +71,10 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
-from ._kernels import as_arg, averaged_edges_jacobian, averaged_samples, chord_edges, coverage_grid
+from ._kernels import (
+    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
+    fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
+)
 from ._kernels import pixel_residuals as _kernel_pixel_residuals
 from ._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from .camera import LineScanCamera
@@ -208,12 +211,8 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
     if th.shape[1] != 6 or t.shape[0] not in (1, th.shape[0]):
         raise ValueError(f"_model_core: parameter sets {th.shape} and line times {t.shape} do not match")
-    acc = np.array([float(a) for a in acceleration_mps2])
-    g, gw = _gauss(n_nodes)
-    exposure = float(camera.exposure)
     left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
-        th, t, float(R), exposure, float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
-        acc, as_arg(g), as_arg(gw), bool(full), bool(return_samples),
+        th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples)
     )
     samples = None
     if return_samples:
@@ -228,6 +227,34 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
         valid=valid if full else None,
         samples=samples,
     )
+
+
+def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
+    """:func:`ballscan._kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
+    g, gw = _gauss(n_nodes)
+    return (
+        float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
+        np.array([float(a) for a in acceleration_mps2]), as_arg(g), as_arg(gw),
+    )
+
+
+def _model_evaluator(camera, R, t_lines_s, acceleration_mps2, n_nodes):
+    """``averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)`` as a function of ``th`` (P, 6).
+
+    The fit evaluates the model at the same lines several times per ball:
+    with ``n_nodes <= 3`` (one kernel call on every line) the fixed
+    arguments are converted once.
+    """
+    if n_nodes > 3:
+        return lambda th: averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)
+    t = as_arg(np.asarray(t_lines_s, dtype=float).reshape(1, -1))
+    args = _kernel_args(camera, R, acceleration_mps2, n_nodes)
+
+    def evaluate(th):
+        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), t, *args, True, False)
+        return ModelEdges(left, right, presence, area, spread, valid)
+
+    return evaluate
 
 
 def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
@@ -460,7 +487,9 @@ def hybrid_jacobian(
         On the lines that would get finite differences, the averaged
         model's exact derivatives instead
         (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
-        acceleration); ``memo`` is then only told the lines.
+        acceleration; one compiled call with the chord's,
+        :func:`ballscan._kernels.hybrid_rows`); ``memo`` is then only told
+        the lines.
 
     Returns
     -------
@@ -471,6 +500,21 @@ def hybrid_jacobian(
     theta = np.asarray(theta, dtype=float)
     t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
+    if analytic and not any(acceleration_mps2):
+        # the chord's derivatives, the lines that need the averaged model's
+        # exact ones and those, in one compiled call
+        g, gw = _gauss(n_nodes)
+        no_lines = np.zeros(0, dtype=bool)
+        dl, dr, da, fd = hybrid_rows(
+            as_arg(theta), as_arg(t), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
+            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw), reach_limit * R,
+            no_lines if fd_lines is None else as_arg(fd_lines, np.bool_),
+            no_lines if needed is None else as_arg(needed, np.bool_),
+            fd_lines is not None, needed is not None,
+        )
+        if memo is not None:
+            memo["last_fd"] = fd
+        return dl, dr, da
     u, J, chord_ok, x0, z, tau = _chord_core(camera, theta, R, t, acceleration_mps2)
     dl, dr = J[0], J[1]
     ax = float(acceleration_mps2[0])
@@ -487,16 +531,6 @@ def hybrid_jacobian(
     if not fd.any():
         return dl, dr, da
     scale = np.asarray(scale, dtype=float)
-    if analytic and not np.any(acceleration_mps2):
-        # exact derivatives of the averaged model on those lines (one
-        # compiled pass; no finite differences to reuse)
-        g, gw = _gauss(n_nodes)
-        _, _, _, fl, fr, fa = averaged_edges_jacobian(
-            as_arg(theta), as_arg(t[fd]), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
-            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw),
-        )
-        dl[fd], dr[fd], da[fd] = fl, fr, fa
-        return dl, dr, da
     if memo is not None and memo.get("theta") is not None and memo["n"] == t.size and memo["have"][fd].all():
         # how far the model moved on those lines since (pixels, first order)
         step = theta - memo["theta"]
@@ -887,27 +921,28 @@ class FitResult:
 
 
 def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
-    """Which lines give edge residuals (narrow or wide window) and which give area residuals."""
-    full = (me.presence > 0.999) & me.valid
-    narrow = full & (me.spread_px <= settings.max_spread_px)
-    use_l = edges.left_ok & narrow & np.isfinite(edges.left_px)
-    use_r = edges.right_ok & narrow & np.isfinite(edges.right_px)
-    wide_l = np.zeros_like(use_l)
-    wide_r = np.zeros_like(use_r)
-    if edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px:
-        spread = full & (me.spread_px > settings.max_spread_px) & (me.spread_px <= settings.max_spread_wide_px)
-        wide_l = edges.left_wide_ok & spread & np.isfinite(edges.left_wide_px)
-        wide_r = edges.right_wide_ok & spread & np.isfinite(edges.right_wide_px)
-        use_l = use_l | wide_l
-        use_r = use_r | wide_r
-    # area lines: no usable edge, and the line's area is not spoiled
-    # (edges.end_line), or no signal at all (lines around the ball)
-    no_signal = ~edges.signal & ~(edges.left_ok | edges.right_ok)
-    if settings.end_line_areas:
-        use_a = ~(use_l | use_r) & (edges.end_line | no_signal | (edges.left_ok & edges.right_ok))
+    """Which lines give edge residuals (narrow or wide window) and which give area residuals.
+
+    Edges where the model sees the ball during the whole exposure, with its
+    edge spread at most ``max_spread_px`` (the narrow window's edges) or up
+    to ``max_spread_wide_px`` (the wide window's); area lines: no usable
+    edge, and the line's area is not spoiled (``edges.end_line``), or no
+    signal at all (lines around the ball).  Returns ``(use_l, use_r, use_a,
+    wide_l, wide_r)``; one compiled pass (:func:`ballscan._kernels.select_lines`).
+    """
+    wide = edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px
+    e = edges
+    masks = [as_arg(m, np.bool_) for m in (me.valid, e.left_ok, e.right_ok, e.end_line)]
+    # (the narrow window's arrays stand in for the wide one's, unread, when it is not used)
+    if wide:
+        wl_ok, wr_ok, wl, wr = e.left_wide_ok, e.right_wide_ok, e.left_wide_px, e.right_wide_px
     else:
-        use_a = ~(use_l | use_r) & no_signal
-    return use_l, use_r, use_a, wide_l, wide_r
+        wl_ok, wr_ok, wl, wr = e.left_ok, e.right_ok, e.left_px, e.right_px
+    return select_lines(
+        as_arg(me.presence), masks[0], as_arg(me.spread_px), masks[1], masks[2], as_arg(e.left_px), as_arg(e.right_px), masks[3],
+        wide, as_arg(wl_ok, np.bool_), as_arg(wr_ok, np.bool_), as_arg(wl), as_arg(wr),
+        float(settings.max_spread_px), float(settings.max_spread_wide_px), bool(settings.end_line_areas),
+    )
 
 
 def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
@@ -924,7 +959,7 @@ def _rho(z: np.ndarray, loss: str) -> tuple[np.ndarray, np.ndarray]:
     raise ValueError(f"loss: expected 'linear', 'soft_l1' or 'huber', got {loss!r}")
 
 
-def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings", start=None):
+def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "FitSettings", start=None, loss: str | None = None):
     """Levenberg-Marquardt with iteratively reweighted robust loss.
 
     Steps are solved on the column-equilibrated normal equations (the
@@ -937,19 +972,21 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
     that lowered the cost by more than ``settings.jacobian_refresh`` (other
     steps are chord steps with the previous one); with ``settings.broyden``
     it is instead corrected after every trial step by Broyden's rank-one
-    update, so that a step costs one model evaluation.  Returns ``(x,
-    n_eval, status, message, cost, r, J)`` with the last Jacobian (taken at
-    or next to ``x``).
+    update, so that a step costs one model evaluation.  ``loss`` (default
+    ``settings.loss``) is the robust loss.  Returns ``(x, n_eval, status,
+    message, cost, r, J)`` with the last Jacobian (taken at or next to
+    ``x``).
     """
     f2 = settings.f_scale**2
     tol = settings.cost_tol
+    loss = settings.loss if loss is None else loss
 
-    linear = settings.loss == "linear"
+    linear = loss == "linear"
 
     def cost_of(r):
         if linear:
             return 0.5 * float(r @ r)
-        return 0.5 * f2 * float(_rho((r * r) / f2, settings.loss)[0].sum())
+        return 0.5 * f2 * float(_rho((r * r) / f2, loss)[0].sum())
 
     x = np.asarray(x0, dtype=float).copy()
     if start is None:
@@ -971,19 +1008,16 @@ def _levenberg_marquardt(resid_only, resid_and_jac, x0: np.ndarray, settings: "F
         if linear:
             Jw, rw = J, r
         else:
-            w = np.sqrt(_rho((r * r) / f2, settings.loss)[1])
+            w = np.sqrt(_rho((r * r) / f2, loss)[1])
             Jw, rw = J * w[:, None], r * w
         if Jw is not normal_of:
             # the column-equilibrated normal matrix from J^T J (a chord step
             # with the same Jacobian reuses it)
-            AJ = Jw.T @ Jw
-            cn = np.sqrt(np.diag(AJ))
-            cn = np.where(cn > 0, cn, 1.0)
-            A = AJ / np.outer(cn, cn)
+            cn, A = equilibrated(Jw.T @ Jw)
             normal_of = Jw
         g = (Jw.T @ rw) / cn
         try:
-            step = -np.linalg.solve(A + lam * np.diag(np.diag(A)), g)
+            step = -np.linalg.solve(damped(A, lam), g)
         except np.linalg.LinAlgError:
             step = -np.linalg.lstsq(A + lam * np.eye(A.shape[0]), g, rcond=None)[0]
         predicted = -(g @ step)  # first-order decrease of 0.5 * chi2
@@ -1109,6 +1143,7 @@ def fit_motion(
     # residual selection and the solver: a round's selection and its first
     # residuals are taken at the same point
     model_cache: dict = {}
+    evaluate = _model_evaluator(camera, R, t, acc, nn)
     tables = _weight_tables(edges, settings)
     fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
@@ -1123,7 +1158,7 @@ def fit_motion(
         key = np.asarray(theta, dtype=float)[:6].tobytes()
         me = model_cache.get("me")
         if me is None or model_cache["key"] != key:
-            me = averaged_model(camera, np.asarray(theta, dtype=float)[None, :6], R, t, acc, nn)
+            me = evaluate(np.asarray(theta, dtype=float)[None, :6])
             model_cache["key"], model_cache["me"] = key, me
         return me
 
@@ -1171,6 +1206,10 @@ def fit_motion(
             return x[:6], (x[6] if fit_b else 0.0)
 
         used = use_l | use_r | use_a
+        # the selected lines and their values in the compiled kernels' form
+        il, ir, ia = np.flatnonzero(use_l), np.flatnonzero(use_r), np.flatnonzero(use_a)
+        ml, mr, ma, sl, sr, sa = (as_arg(a) for a in (ml, mr, ma, sl, sr, sa))
+        no_pixels = np.zeros(0)
         last: dict = {}
 
         def resid_and_jac(x):
@@ -1210,11 +1249,7 @@ def fit_motion(
 
         def assemble(dl, dr, da, jp):
             """Whitened Jacobian of this selection from per-line derivatives."""
-            J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None], jp])
-            if fit_b:
-                jb = np.concatenate([-1.0 / sl, 1.0 / sr, np.zeros(ma.size + n_pix)])
-                J = np.hstack([J, jb[:, None]])
-            return J
+            return fit_jacobian(as_arg(dl), as_arg(dr), as_arg(da), il, ir, ia, sl, sr, sa, as_arg(jp), fit_b)
 
         if start is None and pix is None and settings.solver == "gn" and jac_cache:
             # a later round (after rejecting edges) starts from the last
@@ -1227,18 +1262,11 @@ def fit_motion(
         def resid_only(x):
             th_, b_ = unpack(x)
             me = model_at(th_)
-            r = np.concatenate(
-                [
-                    (me.left_px[0, use_l] - b_ - ml) / sl,
-                    (me.right_px[0, use_r] + b_ - mr) / sr,
-                    (me.area_px[0, use_a] - ma) / sa,
-                    pixel_res(th_[None])[0],
-                ]
-            )
+            tail = no_pixels if pix is None else as_arg(pixel_res(th_[None])[0])
+            r = fit_residuals(me.left_px[0], me.right_px[0], me.area_px[0], il, ir, ia, float(b_), ml, mr, ma, sl, sr, sa, tail)
             last["key"], last["r"] = x.tobytes(), r
             return r
 
-        st = replace(settings, loss=loss)
         if settings.solver == "scipy":
             cache: dict = {}
 
@@ -1266,7 +1294,7 @@ def fit_motion(
             r_end, J_end = resid_and_jac(res.x)
             out = (res.x, int(res.nfev), int(res.status), str(res.message), float(res.cost), r_end, J_end)
         elif settings.solver == "gn":
-            out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, st, start=start)
+            out = _levenberg_marquardt(resid_only, resid_and_jac, x_start, settings, start=start, loss=loss)
         else:
             raise ValueError(f"settings.solver: expected 'gn' or 'scipy', got {settings.solver!r}")
         return out, resid_and_jac
@@ -1437,7 +1465,7 @@ def _partial_lines(use_a: np.ndarray, me: ModelEdges, tables: dict) -> np.ndarra
 
 def _at_both_ends(lines: np.ndarray, t_s: np.ndarray, t_c_s: float) -> bool:
     """Whether the mask ``lines`` holds lines both before and after ``t_c_s`` (line times ``t_s``)."""
-    return bool(np.any(lines & (t_s < t_c_s)) and np.any(lines & (t_s > t_c_s)))
+    return bool(on_both_sides(as_arg(lines, np.bool_), as_arg(t_s), float(t_c_s)))
 
 
 def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: dict, settings: "FitSettings", t_s: np.ndarray, t_c_s: float) -> str:
@@ -1475,17 +1503,14 @@ def _partial_verdict(me: ModelEdges, sel, r: np.ndarray, J: np.ndarray, tables: 
     pa = np.flatnonzero(partial[use_a])  # among the area rows
     rows = int(use_l.sum() + use_r.sum()) + pa
     lines = np.flatnonzero(use_a)[pa]
-    g = J[rows] * sa[pa][:, None]  # the model's area derivatives, pixels
     model = me.area_px[0][lines]
-    J_l, r_l = J.copy(), r.copy()
-    J_l[rows] = g / tables["sa"][lines][:, None]
-    r_l[rows] = (model - tables["ma"][lines]) / tables["sa"][lines]
-    cn = np.linalg.norm(J_l, axis=0)
-    cn = np.where(cn > 0, cn, 1.0)
-    Jl_n, Jt_n = J_l / cn, J / cn
+    # those rows loose (the model's area derivatives, pixels, over the loose
+    # sigmas), both Jacobians equilibrated by the loose one's column norms
+    r_l, Jl_n, Jt_n, gn = loose_rows(
+        as_arg(J), as_arg(r), rows, as_arg(sa[pa]), as_arg(tables["sa"][lines]), as_arg(model), as_arg(tables["ma"][lines])
+    )
     c_l, c_t = _pinv_sym(Jl_n.T @ Jl_n), _pinv_sym(Jt_n.T @ Jt_n)
     step = -c_l @ (Jl_n.T @ r_l)  # to the loose solution (equilibrated parameters)
-    gn = g / cn
     pred = model + gn @ step
     var_pred = np.einsum("ij,jk,ik->i", gn, c_l, gn)
     z = (pred - tables["ma_lev"][lines]) / np.sqrt(tables["sa_lev"][lines] ** 2 + var_pred)
@@ -1684,16 +1709,10 @@ def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:
     white noise (``1 + 3 sqrt(2 / n_blocks)``) count as 1.  Returns the
     largest ratio, at most 100.
     """
+    # one compiled pass per side (numpy's summation order)
     best = 1.0
     for r in sides:
-        for B in sizes:
-            nb = r.size // B
-            if nb < 4:
-                continue
-            m = r[: nb * B].reshape(nb, B).mean(axis=1)
-            ratio = B * float(np.mean(m * m))
-            if ratio > 1.0 + 3.0 * math.sqrt(2.0 / nb):
-                best = max(best, ratio)
+        best = max(best, block_ratio(as_arg(r), tuple(int(B) for B in sizes)))
     return min(best, 100.0)
 
 
@@ -1795,14 +1814,11 @@ def _area_tables(edges: EdgeMeasurements, settings: FitSettings) -> tuple[np.nda
     if edges.area_level is None:
         z = np.zeros(n)
         return z, z, np.zeros(n, dtype=bool)
-    lev = np.asarray(edges.area_level, dtype=float)
-    rel = np.nan_to_num(np.asarray(edges.area_level_sigma, dtype=float), nan=np.inf)
-    ok = np.isfinite(lev) & (lev > 0.05) & np.isfinite(rel)
-    ls = np.where(ok, lev, 1.0)
-    ma = np.where(ok, edges.area_px / ls, 0.0)
-    rel2 = np.where(ok, rel, 0.0) ** 2 + settings.area_level_floor**2
-    sa = np.sqrt((edges.area_sigma_px / ls) ** 2 + rel2 * np.maximum(ma, 0.0) ** 2 + settings.area_level_floor_px**2)
-    return ma, np.where(ok, sa, np.inf), ok
+    # one compiled pass over the lines (:func:`ballscan._kernels.area_tables`)
+    return area_tables(
+        as_arg(edges.area_px), as_arg(edges.area_sigma_px), as_arg(edges.area_level), as_arg(edges.area_level_sigma),
+        settings.area_level_floor**2, settings.area_level_floor_px**2,
+    )
 
 
 def _area_levelled(edges: EdgeMeasurements, settings: FitSettings) -> np.ndarray:
