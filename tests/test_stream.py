@@ -473,6 +473,18 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     printed = capsys.readouterr().out
     pngs = sorted(p.name for p in (tmp_path / "ev").glob("*.png"))
     assert sum(p.endswith(".overlay.png") for p in pngs) == 2 and len(pngs) == 4
+    # a saved event reproduces its estimate: the crop, its lines' times and the engine's columns
+    from ballscan.detection import ColumnModel
+    from ballscan.images import load_image
+
+    npz = sorted((tmp_path / "ev").glob("*.columns.npz"))
+    assert len(npz) == 2
+    z = np.load(npz[0])
+    crop = load_image(str(npz[0]).replace(".columns.npz", ".png")).data
+    cam = replace(crop_camera(CAM, *z["crop_cols"].tolist()), exposure_s=1.0 / CAM.line_rate_hz)
+    again = estimate_crop(crop, z["times_s"], cam, RADIUS, "fit", 255.0, 8, "crop", columns=ColumnModel(z["background_dn"], z["noise_dn"]))
+    first = json.loads(printed.splitlines()[0])
+    assert list(again[0].velocity_mps) == first["velocity_mps"] and again[0].t_c_s == first["t_c_s"]
     app = typer.Typer()
     app.command()(watch)
     app.command("other")(lambda: None)

@@ -16,6 +16,7 @@ import time
 from pathlib import Path
 from typing import Annotated, Optional
 
+import numpy as np
 import typer
 
 from .camera import LineScanCamera, load_camera
@@ -53,7 +54,7 @@ def open_source(
 
 
 def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_in_event: int) -> list[Path]:
-    """Write an event's crop (PNG, once per event) and a ball's overlay (PNG) and JSON.
+    """Write an event's crop (PNG, and the engine's background of its columns and the lines' times, NPZ: once per event) and a ball's overlay (PNG) and JSON.
 
     Parameters
     ----------
@@ -82,6 +83,19 @@ def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_
         if not png.exists():
             write_image(png, result.crop)
             written.append(png)
+        cols = folder / f"{stem}.columns.npz"
+        if result.crop_columns is not None and not cols.exists():
+            # the engine's background the estimate used: with it the saved
+            # crop gives the same estimate again (estimate_crop(..., columns=))
+            np.savez(
+                cols,
+                background_dn=result.crop_columns.background_dn,
+                noise_dn=result.crop_columns.noise_dn,
+                times_s=result.crop_times_s,
+                crop_lines=np.asarray(result.crop_lines),
+                crop_cols=np.asarray(result.crop_cols),
+            )
+            written.append(cols)
         cam = crop_camera(camera, *result.crop_cols)
         overlay = folder / f"{stem}_ball{ball_in_event}.overlay.png"
         est = result.estimate
@@ -175,7 +189,7 @@ def watch(
     k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
     margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
-    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs.")] = None,
+    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs (and the engine's background of the crop's columns and its lines' times, .columns.npz, with which the crop's estimate is reproduced).")] = None,
     status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
     workers: Annotated[int, typer.Option("--workers", help="Processes that run the estimates (0: in the reading process).")] = 0,
 ) -> int:
