@@ -44,7 +44,7 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUME
 
 import argparse  # noqa: E402
 from collections import Counter  # noqa: E402
-from dataclasses import dataclass  # noqa: E402
+from dataclasses import dataclass, replace  # noqa: E402
 
 import numpy as np  # noqa: E402
 from joblib import Parallel, delayed  # noqa: E402
@@ -133,18 +133,22 @@ def stream_balls(case: Case, ks: list[int], background: str) -> list[tuple[np.nd
     cam = case.camera
     app = Appearance(texture="none", shading=case.shaded, ball_level=0.8)
     noise_rng = np.random.default_rng(ks[0])
+    # the column gains (PRNU) are the sensor's fixed pattern: once per stream
+    sensor = SensorNoise()
+    gain = 1.0 + sensor.prnu_sigma * noise_rng.standard_normal(cam.width)
+    noise = replace(sensor, prnu_sigma=0.0)
     truths: list[BallMotion] = []
 
     def chunks():
         for i, k in enumerate(ks):
-            yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12), SensorNoise(), noise_rng)[0]
+            yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12 * gain), noise, noise_rng)[0]
             rng = np.random.default_rng(1000 + k)
             line = rng.uniform(300.0, STREAM_CHUNK - 300.0 - case.lines)
             m = _random_motion(case, rng, line / cam.line_rate_hz)
-            r = render(cam, [(m, app)], STREAM_CHUNK, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
+            r = render(cam, [(m, app)], STREAM_CHUNK, background_level=0.12, noise=None, settings=FINE)
             truths.append(BallMotion(RADIUS_M, ((2 * i + 1) * STREAM_CHUNK + line) / cam.line_rate_hz, m.position_m, m.velocity_mps))
-            yield r.image
-        yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12), SensorNoise(), noise_rng)[0]
+            yield apply_sensor(r.clean * gain[None, :], noise, noise_rng)[0]
+        yield apply_sensor(np.full((STREAM_CHUNK, cam.width), 0.12 * gain), noise, noise_rng)[0]
 
     none = np.full(6, np.nan)
     found = {}

@@ -33,6 +33,7 @@ for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMEXP
 import argparse  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
+from dataclasses import replace  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -47,21 +48,26 @@ W = 2048
 CHUNK = 1024
 RATE = 70000.0
 CAMERA = LineScanCamera(width=W, focal_px=4000.0, principal_px=1023.5, line_rate_hz=RATE)
+# the sensor's column gains (PRNU, the default 0.8 %) are a fixed pattern:
+# drawn once for the whole stream, as ballscan.sources.simulate_stream does
+_SENSOR = SensorNoise()
+GAIN = 1.0 + _SENSOR.prnu_sigma * np.random.default_rng(99).standard_normal(W)
+NOISE = replace(_SENSOR, prnu_sigma=0.0)
 
 
 def background_chunks(n_chunks: int, seed: int = 0) -> list[np.ndarray]:
     """A few distinct noisy background chunks (reused cyclically: generating noise is not the point)."""
     rng = np.random.default_rng(seed)
     clean = np.full((CHUNK, W), 0.12)
-    return [apply_sensor(clean, SensorNoise(), rng)[0] for _ in range(n_chunks)]
+    return [apply_sensor(clean * GAIN[None, :], NOISE, rng)[0] for _ in range(n_chunks)]
 
 
 def ball_chunk(line_in_chunk: float, seed: int) -> tuple[np.ndarray, BallMotion]:
     """A chunk with one ball crossing at ``line_in_chunk``; returns it and the ball's motion (times from the chunk's first line)."""
     rng = np.random.default_rng(seed)
     m = BallMotion(0.0335, line_in_chunk / RATE, (0.0, rng.uniform(-0.3, 0.3), 4.0), (40.0, 2.0, -3.0))
-    r = render(CAMERA, [(m, Appearance.flat(0.8))], CHUNK, background_level=0.12, noise=SensorNoise(), seed=seed)
-    return r.image, m
+    r = render(CAMERA, [(m, Appearance.flat(0.8))], CHUNK, background_level=0.12, noise=None)
+    return apply_sensor(r.clean * GAIN[None, :], NOISE, seed)[0], m
 
 
 def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: StreamConfig | None = None) -> dict:

@@ -244,8 +244,14 @@ def test_column_model_validated():
         ColumnModel(np.array([1.0, np.nan]), np.ones(2))
     with pytest.raises(ValueError, match="finite"):
         ColumnModel(np.ones(3), np.array([1.0, -1.0, 1.0]))
-    m = ColumnModel(np.arange(10.0), np.ones(10))
+    level = np.arange(10.0)
+    m = ColumnModel(level, np.ones(10, dtype=np.float32))
     assert np.array_equal(m.columns(2, 5).background_dn, [2.0, 3.0, 4.0])
+    # read-only float64 copies: the caller's arrays may change afterwards
+    level[0] = 99.0
+    assert m.background_dn[0] == 0.0 and m.noise_dn.dtype == np.float64
+    with pytest.raises(ValueError):
+        m.background_dn[1] = 5.0
     with pytest.raises(ValueError, match="a model of 10 columns for an image of 12"):
         detect(_image(np.zeros((20, 12))), columns=m)
 

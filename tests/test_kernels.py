@@ -106,8 +106,17 @@ def test_every_kernel_compiles_one_signature_only():
             estimate_image(img, cam, 0.0335, pixels=pixels)
     for kernel in (K.averaged_samples, K.averaged_edges_jacobian, K.pixel_residuals, K.pixel_residuals_jacobian, K.coverage_grid, K.chord_edges, K.limb_values,
                    K.mode_seek, K.running_medians, K.walk_edges, K.inner_differences, K.edge_windows,
-                   K.limb_levels, K.shading_fit, K.line_level_sums, K.level_scatter, K.interior_normals):
+                   K.limb_levels, K.shading_fit, K.line_level_sums, K.level_scatter, K.interior_normals,
+                   # session 11's loops of the edges, the fit and the shading pass
+                   K.rough_edges, K.shot_noise, K.level_gradients, K.shaded_sides, K.window_edges, K.line_coverage,
+                   K.finished_edges, K.finite_rows, K.limb_pixels, K.fit_residuals, K.fit_jacobian, K.area_tables,
+                   K.select_lines, K.hybrid_rows, K.block_ratio, K.equilibrated, K.damped, K.on_both_sides, K.loose_rows,
+                   K.chord_rows, K.unique_lines, K.level_spans):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)
+    # and no kernel of the module, listed or not, holds a second one
+    dispatchers = [v for v in vars(K).values() if hasattr(v, "signatures") and hasattr(v, "py_func")]
+    assert len(dispatchers) > 50
+    assert [d.__name__ for d in dispatchers if len(d.signatures) > 1] == []
 
 
 # ---------------------------------------------------------------------------

@@ -137,7 +137,7 @@ class BallRegion:
         return slice(self.col_start, self.col_stop)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ColumnModel:
     """A known per-column background (the stream engine's running model).
 
@@ -148,13 +148,20 @@ class ColumnModel:
         line gain (or offset) of the lines the model was learned on.
     noise_dn : numpy.ndarray
         float64, shape ``(W,)``: per-column noise sigma, DN.
+
+    Both are stored as read-only float64 copies; models compare by identity
+    (arrays have no single truth value).
     """
 
     background_dn: np.ndarray
     noise_dn: np.ndarray
 
     def __post_init__(self) -> None:
-        b, s = np.asarray(self.background_dn), np.asarray(self.noise_dn)
+        b = np.array(self.background_dn, dtype=np.float64)
+        s = np.array(self.noise_dn, dtype=np.float64)
+        for name, a in (("background_dn", b), ("noise_dn", s)):
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
         if b.ndim != 1 or s.shape != b.shape or b.size < 2:
             raise ValueError(f"ColumnModel: background_dn and noise_dn must be 1-D of one length >= 2, got {b.shape} and {s.shape}")
         if not (np.all(np.isfinite(b)) and np.all(np.isfinite(s)) and np.all(s >= 0)):

@@ -38,7 +38,7 @@ Pipeline per chunk
    dozen in the ball's columns and its own mode reads high there (limb
    pixels in its window: V.x then read 1.6-3.4 of its sigmas high on
    average on balls of 112-268 lines, ``bench_calibration.py --stream``,
-   docs/benchmarks.md), and 0.3 ms less per ball.
+   docs/benchmarks.md), and 0.2 ms less CPU per ball.
    :func:`process_stream` yields the result at once, before the rest of the
    chunk is tested: the latency does not include the lines after the piece
    that ended the event.
@@ -794,8 +794,9 @@ class StreamEngine:
             # timestamps are given; without a timestamps file the exact period is known.
             exposure = 1.0 / self.camera.line_rate_hz
         camera = crop_camera(self.camera, c0, c1, exposure_s=exposure)
-        # the model is frozen while the event lasts: these are its columns as the ball found them
-        columns = ColumnModel(self._bg[c0:c1].copy(), np.sqrt(self._var[c0:c1])) if cfg.background == "engine" else None
+        # the model learns nothing from the event's lines: these are its columns
+        # from the clean lines before the ball
+        columns = ColumnModel(self._bg[c0:c1], np.sqrt(self._var[c0:c1])) if cfg.background == "engine" else None
         args = (
             crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched,
             columns,

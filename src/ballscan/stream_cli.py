@@ -204,10 +204,11 @@ def watch(
     cam = load_camera(camera)
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    # the settings first: a bad one is reported before a pipe or a camera is opened
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, background=background, keep_crops=save_events is not None)
     src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, background=background, keep_crops=save_events is not None)
     stream = sys.stdout
     show = sys.stderr.isatty() if status is None else status
     st = _Status(bool(show))
