@@ -121,3 +121,19 @@ def test_truncated_raw_stream_keeps_its_balls(recordings, tmp_path):
     assert s.n_balls == 2 and len(s.errors) == 1 and "partial line of 7 bytes" in s.errors[0][1]
     assert len(_rows(tmp_path / "f.csv")) == 2
     assert run_batch([raw], tmp_path / "f.csv", RADIUS, camera=recordings / "one.camera.toml").n_skipped == 1
+
+
+def test_batch_background_reaches_raw_streams(recordings, tmp_path):
+    """--background: the stream's balls measured on the engine's columns (default, as watch) or the crop's own."""
+    rows = {}
+    for bg in ("engine", "crop"):
+        out = tmp_path / f"{bg}.csv"
+        s = run_batch([recordings / "stream.raw"], out, RADIUS, background=bg)
+        assert s.n_balls == 2 and not s.errors
+        with open(out) as fh:
+            rows[bg] = list(csv.DictReader(fh))
+    # the same balls, measured on different backgrounds
+    assert [r["first_line"] for r in rows["engine"]] == [r["first_line"] for r in rows["crop"]]
+    assert [r["t_c_s"] for r in rows["engine"]] != [r["t_c_s"] for r in rows["crop"]]
+    with pytest.raises(ValueError, match="background"):
+        run_batch([recordings / "stream.raw"], tmp_path / "x.csv", RADIUS, background="image")

@@ -132,7 +132,7 @@ def _row(source: str, k: int, est) -> dict:
     }  # fmt: skip
 
 
-def measure_input(path: str, camera_path: str | None, radius_m: float, method: str = "fit", dtype: str = "uint8") -> InputResult:
+def measure_input(path: str, camera_path: str | None, radius_m: float, method: str = "fit", dtype: str = "uint8", background: str = "engine") -> InputResult:
     """Measure every ball of one input; never raises (a failure is in ``error``).
 
     Parameters
@@ -146,6 +146,9 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
     method : {"fit", "paper"}
     dtype : {"uint8", "uint16"}
         Sample type of a raw stream.
+    background : {"engine", "crop"}
+        What a raw stream's balls are measured on (``StreamConfig.background``:
+        the engine's running model of the crop's columns, or the crop's own).
     """
     # Parallel workers: one thread each, the parallelism is across inputs.
     os.environ.setdefault("OMP_NUM_THREADS", "1")
@@ -168,7 +171,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             source = RawLineSource(p, camera.width, dtype, timestamps=ts_path, name=src)
             ests = []
             try:
-                for r in process_stream(source, camera, radius_m, StreamConfig(method=method), source=src):
+                for r in process_stream(source, camera, radius_m, StreamConfig(method=method, background=background), source=src):
                     ests.append(r.estimate)
             except StreamError as exc:
                 # A damaged stream (e.g. a truncated last line): keep the balls
@@ -212,6 +215,7 @@ def run_batch(
     method: str = "fit",
     dtype: str = "uint8",
     progress: bool = False,
+    background: str = "engine",
 ) -> BatchSummary:
     """Measure all inputs into ``out_csv`` (see the module docstring).
 
@@ -233,6 +237,8 @@ def run_batch(
         As for :func:`measure_input`.
     progress : bool
         Show a rich progress bar on stderr.
+    background : {"engine", "crop"}
+        As for :func:`measure_input` (raw streams only).
 
     Returns
     -------
@@ -242,6 +248,8 @@ def run_batch(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     if method not in ("fit", "paper"):
         raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
+    if background not in ("engine", "crop"):
+        raise ValueError(f"background: expected 'engine' or 'crop', got {background!r}")
     out = Path(out_csv)
     files = find_inputs(inputs)
     done = _done_sources(out)
@@ -258,7 +266,7 @@ def run_batch(
             fh.flush()
         bar = _progress(progress, len(todo))
         try:
-            for res in _results(todo, cam, radius_m, method, dtype, jobs, scheduler):
+            for res in _results(todo, cam, radius_m, method, dtype, jobs, scheduler, background):
                 if res.error is not None:
                     errors.append((res.source, res.error))
                 if res.error is None or res.rows:
@@ -276,7 +284,7 @@ def run_batch(
     return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors))
 
 
-def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dtype: str, jobs: int, scheduler: str | None):
+def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dtype: str, jobs: int, scheduler: str | None, background: str):
     """Results as inputs finish (any order)."""
     if not todo:
         return
@@ -290,7 +298,7 @@ def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dty
         except (OSError, TimeoutError) as exc:
             raise BallscanError(f"--scheduler {scheduler}: cannot connect ({' '.join(str(exc).split())[:160]})") from None
         try:
-            futures = [client.submit(measure_input, p, cam, radius_m, method, dtype, pure=False) for p in todo]
+            futures = [client.submit(measure_input, p, cam, radius_m, method, dtype, background, pure=False) for p in todo]
             for fut in as_completed(futures, loop=client.loop):
                 yield fut.result()
         finally:
@@ -298,12 +306,12 @@ def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dty
         return
     if jobs == 1 or len(todo) == 1:
         for p in todo:
-            yield measure_input(p, cam, radius_m, method, dtype)
+            yield measure_input(p, cam, radius_m, method, dtype, background)
         return
     from joblib import Parallel, delayed
 
     par = Parallel(n_jobs=jobs, return_as="generator_unordered")
-    yield from par(delayed(measure_input)(p, cam, radius_m, method, dtype) for p in todo)
+    yield from par(delayed(measure_input)(p, cam, radius_m, method, dtype, background) for p in todo)
 
 
 class _NoBar:

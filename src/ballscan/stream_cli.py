@@ -262,6 +262,7 @@ def batch(
     method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
     dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar (default: when stderr is a terminal).")] = None,
+    background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
@@ -274,7 +275,7 @@ def batch(
 
     summary = run_batch(
         inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
-        progress=sys.stderr.isatty() if progress is None else progress,
+        progress=sys.stderr.isatty() if progress is None else progress, background=background,
     )
     for src, msg in summary.errors:
         print(f"ballscan: error: {msg}", file=sys.stderr)
