@@ -246,7 +246,6 @@ def test_column_model_validated():
         ColumnModel(np.ones(3), np.array([1.0, -1.0, 1.0]))
     level = np.arange(10.0)
     m = ColumnModel(level, np.ones(10, dtype=np.float32))
-    assert np.array_equal(m.columns(2, 5).background_dn, [2.0, 3.0, 4.0])
     # read-only float64 copies: the caller's arrays may change afterwards
     level[0] = 99.0
     assert m.background_dn[0] == 0.0 and m.noise_dn.dtype == np.float64

@@ -90,6 +90,7 @@ def test_limb_values_equal_the_surface_normals_and_the_shading_law():
 def test_every_kernel_compiles_one_signature_only():
     # a second signature (a read-only or strided argument) is compiled when
     # first seen: 0.5 s inside a stream's ball
+    from ballscan.detection import ColumnModel, detect
     from ballscan.estimate import estimate_image
     from ballscan.images import LineImage
     from ballscan.render import Appearance, SensorNoise, render
@@ -104,6 +105,9 @@ def test_every_kernel_compiles_one_signature_only():
         img = LineImage(r.image.astype(float), float(noise.max_dn), 16, "k")
         for pixels in (False, True):
             estimate_image(img, cam, 0.0335, pixels=pixels)
+        # and on known columns (the stream's engine background: read-only arrays)
+        own = detect(img)
+        estimate_image(img, cam, 0.0335, columns=ColumnModel(own.background_dn, own.noise_dn))
     for kernel in (K.averaged_samples, K.averaged_edges_jacobian, K.pixel_residuals, K.pixel_residuals_jacobian, K.coverage_grid, K.chord_edges, K.limb_values,
                    K.mode_seek, K.running_medians, K.walk_edges, K.inner_differences, K.edge_windows,
                    K.limb_levels, K.shading_fit, K.line_level_sums, K.level_scatter, K.interior_normals,

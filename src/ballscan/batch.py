@@ -248,8 +248,10 @@ def run_batch(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     if method not in ("fit", "paper"):
         raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
-    if background not in ("engine", "crop"):
-        raise ValueError(f"background: expected 'engine' or 'crop', got {background!r}")
+    from .stream import BACKGROUNDS
+
+    if background not in BACKGROUNDS:
+        raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
     out = Path(out_csv)
     files = find_inputs(inputs)
     done = _done_sources(out)

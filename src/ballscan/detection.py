@@ -167,10 +167,6 @@ class ColumnModel:
         if not (np.all(np.isfinite(b)) and np.all(np.isfinite(s)) and np.all(s >= 0)):
             raise ValueError("ColumnModel: levels must be finite and noise sigmas finite and >= 0")
 
-    def columns(self, start: int, stop: int) -> "ColumnModel":
-        """The model of sensor pixels ``[start, stop)`` (a crop's columns)."""
-        return ColumnModel(self.background_dn[start:stop], self.noise_dn[start:stop])
-
 
 @dataclass(frozen=True)
 class Detection:
@@ -385,8 +381,10 @@ def _background(
         sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
         b, sig, gain0, offset0, use_gain = _column_modes(x, level, sigma0, noise_floor_dn)
     else:
-        b = np.array(known.background_dn, dtype=np.float64)
-        sig = np.maximum(np.asarray(known.noise_dn, dtype=np.float64), noise_floor_dn)
+        # a writeable copy: the kernels below take writeable arrays (a
+        # read-only one would compile a second signature on a stream ball)
+        b = known.background_dn.copy()
+        sig = np.maximum(known.noise_dn, noise_floor_dn)
         # the known levels hold the drift of the lines they were learned on:
         # this image's lines are measured relative to them
         ref = float(median(b[::step]))

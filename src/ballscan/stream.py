@@ -78,6 +78,7 @@ from .images import LineImage
 from .results import BallEstimate
 
 __all__ = [
+    "BACKGROUNDS",
     "StreamConfig",
     "StreamError",
     "StreamResult",
@@ -89,6 +90,11 @@ __all__ = [
     "estimate_crop",
     "preload_estimator",
 ]
+
+
+#: What a crop's estimate is measured on (StreamConfig.background): the
+#: engine's running model of its columns, or the crop's own
+BACKGROUNDS = ("engine", "crop")
 
 
 class StreamError(BallscanError):
@@ -238,7 +244,7 @@ class StreamConfig:
         need(self.method in ("fit", "paper"), "method", "must be 'fit' or 'paper'")
         need(isinstance(self.offset_columns, (int, np.integer)) and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
         need(self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
-        need(self.background in ("engine", "crop"), "background", "must be 'engine' or 'crop'")
+        need(self.background in BACKGROUNDS, "background", "must be 'engine' or 'crop'")
 
 
 @dataclass(frozen=True)
