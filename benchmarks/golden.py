@@ -1,0 +1,142 @@
+"""Golden outputs: what ``ballscan estimate --json`` and the stream engine print.
+
+The golden record holds, for every reference scene in ``tests/data/scenes``,
+the ``--json`` output of ``ballscan estimate`` with both methods, and the
+estimates of the stream bench's engine run (``bench_stream.run``'s chunks,
+a ball every 10 000 lines), every key except the run times (``run_time_s``
+and ``time_*_s``).  Restructurings keep it; a change that moves it on
+purpose says so and by how much.
+
+Usage::
+
+    python benchmarks/golden.py --write tests/data/golden.json   # record
+    python benchmarks/golden.py --check tests/data/golden.json   # rtol 1e-12
+    python benchmarks/golden.py --check tests/data/golden.json --exact
+
+``tests/test_golden.py`` runs the check with rtol 1e-12 (numpy's
+CPU-specific paths differ between machines); ``benchmarks/golden_compare.sh OLD NEW``
+records two commits on one machine and compares them bit for bit.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+# with --src, the checkout whose package is measured (its src/ first on the path)
+_BOOT = (
+    "import os, sys, pathlib\n"
+    "src = os.environ.get('GOLDEN_SRC')\n"
+    "if src: sys.path[:] = [src] + [p for p in sys.path if not (pathlib.Path(p or '.') / 'ballscan').is_dir()]\n"
+    "from ballscan.cli import main\n"
+    "sys.exit(main(sys.argv[1:]))\n"
+)
+METHODS = ("fit", "paper")
+STREAM_CHUNKS = 60
+
+
+def _strip_times(v):
+    """``v`` without its run-time keys (``run_time_s``, ``time_*_s``)."""
+    if isinstance(v, dict):
+        return {k: _strip_times(x) for k, x in v.items() if not (k == "run_time_s" or (k.startswith("time_") and k.endswith("_s")))}
+    if isinstance(v, list):
+        return [_strip_times(x) for x in v]
+    return v
+
+
+def _ballscan() -> list[str]:
+    return [sys.executable, "-c", _BOOT]
+
+
+def use_checkout(root: Path) -> None:
+    """Measure the package of the checkout ``root`` (its ``src`` first on the path, here and in the CLI runs)."""
+    global ROOT
+    ROOT = root.resolve()
+    src = str(ROOT / "src")
+    os.environ["GOLDEN_SRC"] = src
+    sys.path[:] = [src] + [p for p in sys.path if not (Path(p or ".") / "ballscan").is_dir()]
+
+
+def estimate_scenes() -> dict:
+    """``ballscan estimate --json`` on each scene with each method."""
+    out = {}
+    for png in sorted((ROOT / "tests" / "data" / "scenes").glob("*.png")):
+        stem = png.name[: -len(".png")]
+        truth = json.loads((png.parent / f"{stem}.truth.json").read_text())
+        radius = (truth["balls"][0] if "balls" in truth else truth)["radius_m"]
+        for method in METHODS:
+            cmd = [*_ballscan(), "estimate", str(png), "--camera", str(png.parent / f"{stem}.camera.toml"), "--radius", repr(radius), "--method", method, "--json"]
+            res = subprocess.run(cmd, capture_output=True, text=True, check=True)
+            out[f"{stem}/{method}"] = _strip_times(json.loads(res.stdout))
+    return out
+
+
+def stream_estimates(n_chunks: int = STREAM_CHUNKS) -> list:
+    """The stream engine's estimates on the stream bench's chunks (a ball every 10 000 lines)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import bench_stream as B
+
+    from ballscan.stream import StreamConfig, process_stream
+
+    bgs = B.background_chunks(8)
+    every = 10_000 // B.CHUNK
+    balls = {k: B.ball_chunk(400.0 + 37 * (k % 7), seed=k)[0] for k in range(every // 2, n_chunks, every)}
+    chunks = (balls[k] if k in balls else bgs[k % len(bgs)] for k in range(n_chunks))
+    results = process_stream(chunks, B.CAMERA, 0.0335, StreamConfig(), source="bench")
+    return [_strip_times(r.estimate.to_dict(B.CAMERA)) for r in results]
+
+
+def collect() -> dict:
+    return {"estimate": estimate_scenes(), "stream": stream_estimates()}
+
+
+def compare(a, b, rtol: float, path: str = "") -> list[str]:
+    """Where ``a`` and ``b`` differ beyond ``rtol`` (numbers) or at all (everything else)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        diffs = [f"{path}/{k}: only in one" for k in sorted(set(a) ^ set(b))]
+        for k in sorted(set(a) & set(b)):
+            diffs += compare(a[k], b[k], rtol, f"{path}/{k}")
+        return diffs
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{path}: length {len(a)} != {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in compare(x, y, rtol, f"{path}[{i}]")]
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool) and not isinstance(b, bool):
+        if a == b or (math.isnan(a) and math.isnan(b)):
+            return []
+        if rtol > 0 and math.isclose(a, b, rel_tol=rtol, abs_tol=rtol * 1e-9):
+            return []
+        return [f"{path}: {a!r} != {b!r}"]
+    return [] if a == b else [f"{path}: {a!r} != {b!r}"]
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    g = ap.add_mutually_exclusive_group(required=True)
+    g.add_argument("--write", type=Path, help="record the golden outputs into this JSON file")
+    g.add_argument("--check", type=Path, help="compare the outputs with this JSON file")
+    ap.add_argument("--root", type=Path, help="measure this checkout's package (default: the installed one)")
+    ap.add_argument("--exact", action="store_true", help="with --check: bit for bit instead of rtol 1e-12")
+    args = ap.parse_args(argv)
+    if args.root:
+        use_checkout(args.root)
+    now = collect()
+    if args.write:
+        args.write.write_text(json.dumps(now, indent=1, sort_keys=True) + "\n")
+        print(f"{args.write}: {len(now['estimate'])} scene runs, {len(now['stream'])} stream estimates")
+        return 0
+    diffs = compare(json.loads(args.check.read_text()), now, 0.0 if args.exact else 1e-12)
+    for d in diffs[:50]:
+        print(d)
+    print(f"{len(diffs)} differences ({'bit for bit' if args.exact else 'rtol 1e-12'})")
+    return 1 if diffs else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
