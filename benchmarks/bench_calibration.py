@@ -16,14 +16,14 @@ mean within ``1 / sqrt(N)`` of 0; RMS z = 2 means the reported sigma is half
 the actual error.  Also the edges used (``extra["edges"]``).
 
 ``--start``, ``--level-samples``, ``--refined-background`` and ``--refit-law`` set the
-shading pass's diagnostic options (:class:`ballscan.estimate.ShadingSetup`).
+shading pass's diagnostic options (:class:`ballscan.pipeline.estimate.ShadingSetup`).
 ``--clean`` also renders each ball noise-free (16 bits, no PRNU) and prints
 its errors in units of the noisy image's sigmas: the estimator's own
 (model) error, which no noise averages away.
 
 ``--stream`` measures the balls as ``ballscan watch`` does instead: each
 ball in a 1024-line chunk of its own between background chunks, one
-stream per worker, through :func:`ballscan.stream.process_stream` with
+stream per worker, through :func:`ballscan.stream.engine.process_stream` with
 ``StreamConfig(background=...)`` (the engine's running background of the
 crop's columns, or the crop's own); ``--clean`` and the shading options
 do not apply there.
@@ -49,12 +49,12 @@ from dataclasses import dataclass, replace  # noqa: E402
 import numpy as np  # noqa: E402
 from joblib import Parallel, delayed  # noqa: E402
 
-from ballscan.camera import LineScanCamera  # noqa: E402
-from ballscan.estimate import ShadingSetup, estimate_image  # noqa: E402
-from ballscan.images import LineImage  # noqa: E402
-from ballscan.motion import BallMotion  # noqa: E402
-from ballscan.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render  # noqa: E402
-from ballscan.stream import StreamConfig, process_stream  # noqa: E402
+from ballscan.geometry.camera import LineScanCamera  # noqa: E402
+from ballscan.pipeline.estimate import ShadingSetup, estimate_image  # noqa: E402
+from ballscan.measure.images import LineImage  # noqa: E402
+from ballscan.geometry.motion import BallMotion  # noqa: E402
+from ballscan.model.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render  # noqa: E402
+from ballscan.stream.engine import StreamConfig, process_stream  # noqa: E402
 
 RADIUS_M = 0.0335
 FINE = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)

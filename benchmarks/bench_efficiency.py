@@ -4,7 +4,7 @@
         [--seeds 32] [--first 0] [--variants default,pixels,noprnu,truegain,fine] [--jobs 2]
         [--out FILE.npz] [--spread pixel_nodes=8,pixel_window_px=3.0]
 
-Renders the trials of the quick sweep (:func:`ballscan.experiments.fig5_quick_config`:
+Renders the trials of the quick sweep (:func:`ballscan.lab.experiments.fig5_quick_config`:
 the test ``test_quick_fit_within_1p5_of_cramer_rao``'s sensor, ball and
 seeds; trial ``k`` of a point is the test's trial ``k`` for ``k < 8``) and
 measures each image with the estimator variants:
@@ -28,7 +28,7 @@ measures each image with the estimator variants:
 
 and prints, per point, variant and parameter (t_c, y0, z0, V.x, V.y, V.z,
 speed), the RMSE over the trials divided by the bound's 1-sigma
-(:func:`ballscan.precision.sensor_crlb` at the point's nominal motion, as the
+(:func:`ballscan.solve.precision.sensor_crlb` at the point's nominal motion, as the
 experiment), the mean error in bound sigmas (with its standard error), the
 RMS of the errors in the estimate's own reported sigmas, and the median
 ``|relative speed error|`` over 0.6745 sigma (the test's ratio).  The trial
@@ -56,7 +56,7 @@ FINE = dict(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
 
 
 def _spec(factor: str, value: float, trial: int):
-    from ballscan import experiments as ex
+    from ballscan.lab import experiments as ex
 
     cfg = ex.fig5_quick_config()
     scene = cfg.scene.with_factor(factor, value)
@@ -77,7 +77,7 @@ def _vector(b, truth) -> tuple[np.ndarray, np.ndarray, dict]:
 
 def trial_scene(factor: str, value: float, trial: int):
     """The experiment's trial ``trial`` at ``factor = value``: its spec, seed state, geometry and untextured appearance (as the experiment renders it)."""
-    from ballscan import experiments as ex
+    from ballscan.lab import experiments as ex
 
     spec = _spec(factor, value, trial)
     state = np.random.SeedSequence(spec.seed).generate_state(3, dtype=np.uint32)
@@ -87,15 +87,15 @@ def trial_scene(factor: str, value: float, trial: int):
 
 def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
     """Render trial ``trial`` of a point and measure it with each variant."""
-    from ballscan import experiments as ex
-    from ballscan.estimate import estimate_image
-    from ballscan.images import LineImage
-    from ballscan.render import render
+    from ballscan.lab import experiments as ex
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.measure.images import LineImage
+    from ballscan.model.render import render
 
     factor, value, trial, variants, spread = args
     if spread:
         # an experiment: the final fit's settings changed (estimate._SPREAD_PIXELS)
-        import ballscan.estimate as E
+        import ballscan.pipeline.estimate as E
 
         E._SPREAD_PIXELS = replace(E._SPREAD_PIXELS, **spread)
     spec, state, geom, app = trial_scene(factor, value, trial)
@@ -126,7 +126,7 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
             r0 = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=replace(noise, prnu_sigma=0.0), seed=int(state[0]))
             measure(v, r0.image)
         elif v == "fine":
-            from ballscan.render import RenderSettings
+            from ballscan.model.render import RenderSettings
 
             rf = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=noise, seed=int(state[0]), settings=RenderSettings(**FINE))
             measure(v, rf.image)
@@ -137,8 +137,8 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
 
 def bound_sigmas(factor: str, value: float, flat_field: bool = False) -> np.ndarray:
     """The bound's 1-sigma of (t_c, y0, z0, vx, vy, vz, speed) at the point's nominal motion."""
-    from ballscan import experiments as ex
-    from ballscan.precision import sensor_crlb
+    from ballscan.lab import experiments as ex
+    from ballscan.solve.precision import sensor_crlb
 
     sc = _spec(factor, value, 0).scene
     geom = ex.scene_geometry(sc, 0.0)
@@ -185,7 +185,7 @@ def main() -> None:
 
     from joblib import Parallel, delayed
 
-    from ballscan.fit import FitSettings
+    from ballscan.solve.fit import FitSettings
 
     variants = tuple(a.variants.split(","))
     spread = {}

@@ -19,7 +19,7 @@ the interruptions of a shared machine, whose single timings move by tens
 of per cent), the speed's bias and RMSE over the runs, the RMSE of ``vz`` against its
 bound, the 1-sigma coverage of the reported speed sigma, and the speed
 RMSE's ratio to the
-Cramér–Rao bound of the pixel intensities (:func:`ballscan.precision.pixel_crlb`:
+Cramér–Rao bound of the pixel intensities (:func:`ballscan.solve.precision.pixel_crlb`:
 the same pixel noise and contrast, not the fit's residuals).  One core.
 """
 
@@ -38,13 +38,13 @@ import time  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from ballscan.camera import LineScanCamera, line_times  # noqa: E402
-from ballscan.detection import detect  # noqa: E402
-from ballscan.estimate import estimate_region  # noqa: E402
-from ballscan.images import LineImage  # noqa: E402
-from ballscan.motion import BallMotion  # noqa: E402
-from ballscan.precision import pixel_crlb  # noqa: E402
-from ballscan.render import Appearance, RenderSettings, render  # noqa: E402
+from ballscan.geometry.camera import LineScanCamera, line_times  # noqa: E402
+from ballscan.measure.detection import detect  # noqa: E402
+from ballscan.pipeline.estimate import estimate_region  # noqa: E402
+from ballscan.measure.images import LineImage  # noqa: E402
+from ballscan.geometry.motion import BallMotion  # noqa: E402
+from ballscan.solve.precision import pixel_crlb  # noqa: E402
+from ballscan.model.render import Appearance, RenderSettings, render  # noqa: E402
 
 CAMERA = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
 RADIUS_M = 0.0335

@@ -20,11 +20,11 @@ import statistics
 import time
 
 
-from ballscan.camera import LineScanCamera
-from ballscan.estimate import estimate_image
-from ballscan.images import LineImage
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, render
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.measure.images import LineImage
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, render
 
 SCENES = {
     "tennis 30 m/s perpendicular": (LineScanCamera(2048, 3000.0, 1023.5, 50000.0), BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 0, 0)), 150),

@@ -24,9 +24,9 @@ import time  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from ballscan.camera import LineScanCamera  # noqa: E402
-from ballscan.motion import BallMotion  # noqa: E402
-from ballscan.render import Appearance, RenderSettings, SensorNoise, _sample_pattern, _sample_pixels, apply_sensor, render  # noqa: E402
+from ballscan.geometry.camera import LineScanCamera  # noqa: E402
+from ballscan.geometry.motion import BallMotion  # noqa: E402
+from ballscan.model.render import Appearance, RenderSettings, SensorNoise, _sample_pattern, _sample_pixels, apply_sensor, render  # noqa: E402
 
 TARGET_S = 0.3
 N_LINES = 500

@@ -33,9 +33,9 @@ from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from ballscan.camera import load_camera  # noqa: E402
-from ballscan.estimate import estimate_image  # noqa: E402
-from ballscan.images import LineImage, load_image  # noqa: E402
+from ballscan.geometry.camera import load_camera  # noqa: E402
+from ballscan.pipeline.estimate import estimate_image  # noqa: E402
+from ballscan.measure.images import LineImage, load_image  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_DIRS = (HERE.parent.parent / "shared" / "scenes", HERE.parent / "tests" / "data" / "scenes")

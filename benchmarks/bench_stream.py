@@ -5,7 +5,7 @@
 * lines per second with no ball present, and with a ball every 10 000 lines
   (the estimates included);
 * latency from the arrival of the chunk holding a ball's last line to its
-  result, through :func:`ballscan.stream.process_stream` as ``ballscan
+  result, through :func:`ballscan.stream.engine.process_stream` as ``ballscan
   watch`` sees it: from the chunk leaving the source to the result leaving
   ``process_stream`` (the wait for the ``margin_lines`` clean lines after the
   ball is included when they fall into the next chunk: that chunk is pushed
@@ -13,9 +13,9 @@
   ends the event, event cut, hand-off), ``detect()`` on the crop, and the
   estimator's key points, edges and fit;
 * the same latency with the fit's shading pass off (``watch --no-shading``);
-* baselines in the same run: :func:`ballscan.detection.detect` on each
+* baselines in the same run: :func:`ballscan.measure.detection.detect` on each
   chunk as a whole image (what a naive stream would do) for the rate, and
-  :func:`ballscan.estimate.estimate_image` on the whole chunk that holds a
+  :func:`ballscan.pipeline.estimate.estimate_image` on the whole chunk that holds a
   ball for the latency.
 
 Targets: >= 140 000 lines/s, latency <= 10 ms. Rates are given per wall
@@ -37,19 +37,19 @@ from dataclasses import replace  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from ballscan.camera import LineScanCamera  # noqa: E402
-from ballscan.detection import detect  # noqa: E402
-from ballscan.images import LineImage  # noqa: E402
-from ballscan.motion import BallMotion  # noqa: E402
-from ballscan.render import Appearance, SensorNoise, apply_sensor, render  # noqa: E402
-from ballscan.stream import StreamConfig, preload_estimator, process_stream  # noqa: E402
+from ballscan.geometry.camera import LineScanCamera  # noqa: E402
+from ballscan.measure.detection import detect  # noqa: E402
+from ballscan.measure.images import LineImage  # noqa: E402
+from ballscan.geometry.motion import BallMotion  # noqa: E402
+from ballscan.model.render import Appearance, SensorNoise, apply_sensor, render  # noqa: E402
+from ballscan.stream.engine import StreamConfig, preload_estimator, process_stream  # noqa: E402
 
 W = 2048
 CHUNK = 1024
 RATE = 70000.0
 CAMERA = LineScanCamera(width=W, focal_px=4000.0, principal_px=1023.5, line_rate_hz=RATE)
 # the sensor's column gains (PRNU, the default 0.8 %) are a fixed pattern:
-# drawn once for the whole stream, as ballscan.sources.simulate_stream does
+# drawn once for the whole stream, as ballscan.stream.sources.simulate_stream does
 _SENSOR = SensorNoise()
 GAIN = 1.0 + _SENSOR.prnu_sigma * np.random.default_rng(99).standard_normal(W)
 NOISE = replace(_SENSOR, prnu_sigma=0.0)
@@ -134,12 +134,12 @@ def baseline(n_chunks: int) -> tuple[float, float]:
 
 
 def naive_latency(n_balls: int = 8) -> float:
-    """Median seconds of :func:`ballscan.estimate.estimate_image` on a whole 1024-line chunk holding a ball.
+    """Median seconds of :func:`ballscan.pipeline.estimate.estimate_image` on a whole 1024-line chunk holding a ball.
 
     The latency of a stream without an engine: detect and estimate on every
     chunk as one image (the baseline of the engine's latency, in the same run).
     """
-    from ballscan.estimate import estimate_image
+    from ballscan.pipeline.estimate import estimate_image
 
     times = []
     for k in range(n_balls):

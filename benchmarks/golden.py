@@ -34,7 +34,7 @@ _BOOT = (
     "import os, sys, pathlib\n"
     "src = os.environ.get('GOLDEN_SRC')\n"
     "if src: sys.path[:] = [src] + [p for p in sys.path if not (pathlib.Path(p or '.') / 'ballscan').is_dir()]\n"
-    "from ballscan.cli import main\n"
+    "from ballscan.cli.app import main\n"
     "sys.exit(main(sys.argv[1:]))\n"
 )
 METHODS = ("fit", "paper")
@@ -82,7 +82,7 @@ def stream_estimates(n_chunks: int = STREAM_CHUNKS) -> list:
     sys.path.insert(0, str(ROOT / "benchmarks"))
     import bench_stream as B
 
-    from ballscan.stream import StreamConfig, process_stream
+    from ballscan.stream.engine import StreamConfig, process_stream
 
     bgs = B.background_chunks(8)
     every = 10_000 // B.CHUNK

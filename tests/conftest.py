@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera
-from ballscan.motion import BallMotion
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.geometry.motion import BallMotion
 
 DATA = Path(__file__).parent / "data"
 

@@ -1,4 +1,4 @@
-"""Tests of ``ballscan batch`` (ballscan.batch, ballscan.stream_cli.batch)."""
+"""Tests of ``ballscan batch`` (ballscan.stream.batch, ballscan.cli.stream.batch)."""
 
 from __future__ import annotations
 
@@ -9,12 +9,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.batch import COLUMNS, find_inputs, measure_input, run_batch
-from ballscan.camera import LineScanCamera, save_camera
+from ballscan.stream.batch import COLUMNS, find_inputs, measure_input, run_batch
+from ballscan.geometry.camera import LineScanCamera, save_camera
 from ballscan.errors import BallscanError
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, render, write_image
-from ballscan.stream_cli import batch
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, render, write_image
+from ballscan.cli.stream import batch
 
 RADIUS = 0.0335
 CAM = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ballscan.camera import (
+from ballscan.geometry.camera import (
     LineScanCamera,
     camera_from_eq1,
     line_times,

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from ballscan.cli import main
+from ballscan.cli.app import main
 
 from .conftest import DATA
 

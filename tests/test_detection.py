@@ -1,4 +1,4 @@
-"""Tests of ballscan.detection: background model, regions and flags."""
+"""Tests of ballscan.measure.detection: background model, regions and flags."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.detection import ColumnModel, background_at, detect, region_background
-from ballscan.images import LineImage, load_image
+from ballscan.measure.detection import ColumnModel, background_at, detect, region_background
+from ballscan.measure.images import LineImage, load_image
 
 SCENES = Path(__file__).parent / "data" / "scenes"
 SCENE_NAMES = [
@@ -329,7 +329,7 @@ def test_k_sigma_validated():
 def test_separable_closing_equals_the_2d_structuring_element():
     from scipy import ndimage as ndi
 
-    from ballscan.detection import _close
+    from ballscan.measure.detection import _close
 
     rng = np.random.default_rng(0)
     for _ in range(100):
@@ -342,7 +342,7 @@ def test_separable_closing_equals_the_2d_structuring_element():
 
 
 def test_median_is_numpys_median():
-    from ballscan.detection import median
+    from ballscan.measure.detection import median
 
     rng = np.random.default_rng(1)
     for a in (
@@ -366,7 +366,7 @@ def test_median_is_numpys_median():
 
 
 def test_masked_median_is_the_median_of_the_plus_minus_big_row():
-    from ballscan.detection import _BIG, _masked_median
+    from ballscan.measure.detection import _BIG, _masked_median
 
     rng = np.random.default_rng(2)
     for _ in range(300):
@@ -420,8 +420,8 @@ def test_label_hits_equals_the_threshold_then_ndimage_label_bincount_and_find_ob
 
 
 def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):
-    """The numpy form of the first-pass samples and their masked line medians (ballscan.detection._background)."""
-    from ballscan.detection import _BIG
+    """The numpy form of the first-pass samples and their masked line medians (ballscan.measure.detection._background)."""
+    from ballscan.measure.detection import _BIG
 
     if use_gain:
         resid = np.multiply.outer(gain0, bs)
@@ -453,7 +453,7 @@ def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):
 
 def test_first_pass_lines_and_masked_median_equal_their_numpy_form():
     from ballscan._kernels import first_pass_lines
-    from ballscan.detection import _masked_median
+    from ballscan.measure.detection import _masked_median
 
     rng = np.random.default_rng(4)
     for trial in range(200):
@@ -515,7 +515,7 @@ def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
 
 def test_integer_median_mad_equals_the_two_selections():
     from ballscan._kernels import integer_median_mad
-    from ballscan.detection import median
+    from ballscan.measure.detection import median
 
     rng = np.random.default_rng(6)
     for trial in range(500):

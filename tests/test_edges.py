@@ -8,7 +8,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from ballscan.edges import EdgeMeasurements, measure_edges
+from ballscan.measure.edges import EdgeMeasurements, measure_edges
 
 SCENES = Path(__file__).parent / "data" / "scenes"
 
@@ -171,15 +171,15 @@ def test_edge_bias_on_reference_scenes():
 # ------------------------------------------------------------ matched edges
 def _flat_ball_edges(noise_dn: float, seed: int):
     """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, the truth model, its narrow lines and the limb model."""
-    from ballscan.camera import LineScanCamera, line_times
-    from ballscan.detection import detect
-    from ballscan.edges import matched_edges, with_limb
-    from ballscan.estimate import _full_background
-    from ballscan.fit import averaged_model
-    from ballscan.images import LineImage
-    from ballscan.motion import BallMotion
-    from ballscan.render import Appearance, RenderSettings, render
-    from ballscan.shading import ball_limb
+    from ballscan.geometry.camera import LineScanCamera, line_times
+    from ballscan.measure.detection import detect
+    from ballscan.measure.edges import matched_edges, with_limb
+    from ballscan.pipeline.estimate import _full_background
+    from ballscan.solve.fit import averaged_model
+    from ballscan.measure.images import LineImage
+    from ballscan.geometry.motion import BallMotion
+    from ballscan.model.render import Appearance, RenderSettings, render
+    from ballscan.measure.shading import ball_limb
 
     cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
@@ -236,7 +236,7 @@ def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
 def test_matched_edges_leave_unusable_edges_alone():
     from dataclasses import replace
 
-    from ballscan.edges import matched_edges
+    from ballscan.measure.edges import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:5]
@@ -255,7 +255,7 @@ def test_matched_edges_leave_unusable_edges_alone():
 def test_matched_edges_keep_the_window_value_where_they_do_not_converge():
     from dataclasses import replace
 
-    from ballscan.edges import matched_edges
+    from ballscan.measure.edges import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:6]
@@ -271,9 +271,9 @@ def test_matched_edges_keep_the_window_value_where_they_do_not_converge():
 def test_matched_edges_get_their_own_floor_in_the_fit():
     from dataclasses import replace
 
-    from ballscan.camera import LineScanCamera
-    from ballscan.fit import FitSettings, _weight_tables, synthetic_edges
-    from ballscan.motion import BallMotion
+    from ballscan.geometry.camera import LineScanCamera
+    from ballscan.solve.fit import FitSettings, _weight_tables, synthetic_edges
+    from ballscan.geometry.motion import BallMotion
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 0.0))
@@ -294,7 +294,7 @@ def test_matched_edges_get_their_own_floor_in_the_fit():
 # the first pass's compiled loops against the numpy forms they replace
 # ---------------------------------------------------------------------------
 def _expected_signal_numpy(p):
-    """Each pixel's signal for its noise model from its column neighbours (the former ballscan.edges._expected_signal)."""
+    """Each pixel's signal for its noise model from its column neighbours (the former ballscan.measure.edges._expected_signal)."""
     if p.shape[0] < 2:
         return p
     q = np.empty_like(p)
@@ -391,7 +391,7 @@ def test_finished_edges_is_the_numpy_forms_bit_for_bit():
         L_run = rng.uniform(0.5, 1.2, R)
         has_signal, spoiled = rng.random(n) < 0.8, rng.random(n) < 0.1
         c0 = int(rng.integers(0, 300))
-        # the numpy form of ballscan.edges._finish
+        # the numpy form of ballscan.measure.edges._finish
         Ls = np.where(L > 0, L, 1.0)
         uncovered = n_win - S / Ls
         with np.errstate(invalid="ignore"):
@@ -472,7 +472,7 @@ def test_level_gradients_and_window_edges_are_the_numpy_forms_bit_for_bit():
             hs4 = rng.random(R) < 0.8
             n_in = np.array([0, 1])
             n_in_r = np.repeat(n_in, 2 * n)
-            # the numpy form of ballscan.edges._edge_pass
+            # the numpy form of ballscan.measure.edges._edge_pass
             grad = (pl1 - pl0) / (n_level - 1) if n_level >= 2 else (pd - L_run) / n_level
             dist = n_in_r + 1 + (n_level - 1) / 2.0 - 0.25
             Lsafe = np.where(np.abs(L_run) > 0, L_run, 1.0)
@@ -527,7 +527,7 @@ def test_limb_pixels_and_finite_rows_are_the_numpy_forms():
     lev = np.stack([win_last + sgn, win_last + 2 * sgn], axis=1)
     deep = lev + 2 * sgn[:, None]
     rows = np.flatnonzero(rng.random(R) < 0.7)
-    # the numpy form of ballscan.edges._limb_levels
+    # the numpy form of ballscan.measure.edges._limb_levels
     sg = sgn[rows].astype(float)
     k = np.arange(int(n_win[rows].max()))
     first = np.where(sg > 0, np.minimum(win_first, win_last)[rows], np.maximum(win_first, win_last)[rows])

@@ -7,11 +7,11 @@ import json
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera, load_camera
-from ballscan.estimate import estimate_image
-from ballscan.images import LineImage, load_image
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, render
+from ballscan.geometry.camera import LineScanCamera, load_camera
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.measure.images import LineImage, load_image
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, render
 
 from .conftest import DATA
 
@@ -119,7 +119,7 @@ def test_json_of_a_degenerate_fit_is_valid_json():
     """A ball cut by the sensor end whose fit does not converge still gives strict JSON (NaN -> null)."""
     import json as _json
 
-    from ballscan.results import BallEstimate, EstimateReport
+    from ballscan.pipeline.results import BallEstimate, EstimateReport
 
     est = BallEstimate(
         method="fit", radius_m=0.0335, t_c_s=0.001, position_m=(0, 0.1, 3.0), velocity_mps=(30.0, 0.0, 0.0),
@@ -176,7 +176,7 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
                 seen[prnu, tex, matched] = b
                 assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
     # the length gate off: the short PRNU ball flat-fielded
-    from ballscan import estimate as est
+    from ballscan.pipeline import estimate as est
 
     img_prnu = LineImage(
         render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008), seed=4).image.astype(float),
@@ -228,8 +228,8 @@ def test_refined_background_of_a_ball_s_columns():
     # ball covers by less than 4.5 noise sigmas (R = 0.11 m of the quick
     # sweep: 0.09-0.10 sigma high); refine_background measures them away
     # from it (0.003-0.015 sigma measured)
-    from ballscan.detection import background_at, detect
-    from ballscan.estimate import refine_background
+    from ballscan.measure.detection import background_at, detect
+    from ballscan.pipeline.estimate import refine_background
 
     cam = LineScanCamera(2048, 4000.0, 1023.5, 35000.0)
     m = BallMotion(0.11, 0.0082, (0.0, 0.1, 3.0), (18.0, 0.0, 0.0))
@@ -291,7 +291,7 @@ def test_long_ball_on_a_flat_fielded_sensor_measured_on_its_refined_background()
 
 
 def test_shading_setup_is_checked_and_its_default_is_the_estimator():
-    from ballscan.estimate import ShadingSetup
+    from ballscan.pipeline.estimate import ShadingSetup
 
     for bad in (dict(start="truth"), dict(level_samples=(0, 2)), dict(level_samples="32"), dict(level_samples=(2.7, 1.9)),
                 dict(level_samples=(True, True)), dict(level_samples=3), dict(refit_law="no"), dict(refined_background=1)):

@@ -1,4 +1,4 @@
-"""Tests of ballscan.experiments: the paper's trends on --quick, determinism, resume, configs, Dask."""
+"""Tests of ballscan.lab.experiments: the paper's trends on --quick, determinism, resume, configs, Dask."""
 
 from __future__ import annotations
 
@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from ballscan import experiments as ex
-from ballscan.camera import LineScanCamera
+from ballscan.lab import experiments as ex
+from ballscan.geometry.camera import LineScanCamera
 from ballscan.errors import BallscanError
-from ballscan.experiment_cli import experiment_app
+from ballscan.cli.experiment import experiment_app
 
 
 # --------------------------------------------------------------------------- a tiny, fast experiment

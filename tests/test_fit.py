@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera
-from ballscan.fit import (
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.solve.fit import (
     FitSettings,
     averaged_model,
     chord_jacobian,
@@ -17,8 +17,8 @@ from ballscan.fit import (
     propagate,
     synthetic_edges,
 )
-from ballscan.motion import PARAM_NAMES, BallMotion
-from ballscan.silhouette import silhouette
+from ballscan.geometry.motion import PARAM_NAMES, BallMotion
+from ballscan.model.silhouette import silhouette
 
 
 def _serve():
@@ -342,7 +342,7 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
     """Synthetic edges plus the exact averaged coverage of every pixel as their profile (flat ball, level 1)."""
     from dataclasses import replace
 
-    from ballscan.fit import _model_core, pixel_coverage
+    from ballscan.solve.fit import _model_core, pixel_coverage
 
     me = _model_core(cam, m.to_params()[None], m.radius_m, e.t_s, m.acceleration_mps2, 16, True)
     lo = int(np.floor(np.nanmin(e.left_px))) - 12
@@ -355,7 +355,7 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
 @pytest.mark.parametrize("groups", ["end", "window"])
 def test_pixel_fit_is_exact_on_its_own_model(groups):
     """The pixel residuals vanish at the truth for a profile made by the model; the fit returns there from afar."""
-    from ballscan.fit import _pixel_residuals, _pixel_spec
+    from ballscan.solve.fit import _pixel_residuals, _pixel_spec
 
     cam, m = _serve()
     e = _with_profile(cam, m, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False))
@@ -386,7 +386,7 @@ def test_averaged_edges_jacobian_equals_central_differences(distorted, deg):
     hundred times smaller than its other columns), 1e-4 relative.
     """
     from ballscan._kernels import averaged_edges_jacobian
-    from ballscan.silhouette import _gauss
+    from ballscan.model.silhouette import _gauss
 
     a = np.radians(deg)
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
@@ -426,7 +426,7 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     off).  The forward differences the fit used before (step 1e-3) were 4 %
     off in the t_c column at 30 degrees.
     """
-    from ballscan.fit import _pixel_residuals, _pixel_residuals_jacobian, _pixel_spec
+    from ballscan.solve.fit import _pixel_residuals, _pixel_residuals_jacobian, _pixel_spec
 
     a = np.radians(deg)
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
@@ -458,7 +458,7 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
 @pytest.mark.parametrize("grid", ["shared", "compacted", "descending_fractional", "wide"])
 def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
     """The cumulative-histogram coverage (unit-step grids) against the direct sum over samples and pixels."""
-    from ballscan.fit import _model_core, _pixel_coverage_direct, pixel_coverage
+    from ballscan.solve.fit import _model_core, _pixel_coverage_direct, pixel_coverage
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 0.0, 15.0))
@@ -591,7 +591,7 @@ def test_select_lines_kernel_equals_its_numpy_form(wide, end_line_areas):
 def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
     """hybrid_jacobian's compiled analytic path gives the chord-and-averaged-model rows of the numpy form bit for bit."""
     from ballscan._kernels import averaged_edges_jacobian, chord_edges, hybrid_rows
-    from ballscan.silhouette import _gauss
+    from ballscan.model.silhouette import _gauss
 
     cam, m = _serve()
     t = np.arange(-5, 250) / cam.line_rate_hz

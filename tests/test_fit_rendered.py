@@ -34,11 +34,11 @@ import math
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera, load_camera
-from ballscan.estimate import estimate_image
-from ballscan.images import LineImage, load_image
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render
+from ballscan.geometry.camera import LineScanCamera, load_camera
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.measure.images import LineImage, load_image
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render
 
 from .conftest import DATA
 
@@ -176,8 +176,8 @@ def test_speed_sigma_is_honest_over_noisy_renders():
 
 def _noisy_flat_runs(m: BallMotion, seed: int, pixels: bool = False, runs: int = 40):
     """Speed errors, reported sigmas and estimates over ``runs`` noisy copies (5 DN on 700) of a finely rendered flat ball."""
-    from ballscan.detection import detect
-    from ballscan.estimate import estimate_region
+    from ballscan.measure.detection import detect
+    from ballscan.pipeline.estimate import estimate_region
 
     clean = render(CAM, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
     t = np.arange(200) / CAM.line_rate_hz
@@ -193,7 +193,7 @@ def _noisy_flat_runs(m: BallMotion, seed: int, pixels: bool = False, runs: int =
 @pytest.mark.slow
 def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
     """pixels=True: exact on a noise-free render, near the pixel bound with noise, sigma not too small."""
-    from ballscan.precision import pixel_crlb
+    from ballscan.solve.precision import pixel_crlb
 
     m0 = _oblique(0.0)
     clean = render(CAM, (m0, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
@@ -221,7 +221,7 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
 @pytest.mark.slow
 def test_default_fit_near_the_cramer_rao_bound_on_a_flat_fielded_sensor():
     """The default on a uniform ball and a sensor without PRNU: matched edges and the spread lines' pixels."""
-    from ballscan.precision import pixel_crlb
+    from ballscan.solve.precision import pixel_crlb
 
     m = _oblique(30.0)
     bound = pixel_crlb(CAM, m, 5.0, 700.0)

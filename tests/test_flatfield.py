@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.flatfield import _column_median_mad, _masked_median, column_gains, flat_fielded
+from ballscan.measure.flatfield import _column_median_mad, _masked_median, column_gains, flat_fielded
 
 
 def _disc(n_lines: int, n_cols: int, prnu: float, noise: float, seed: int, shade: float = 0.0):
@@ -99,7 +99,7 @@ def test_a_stuck_column_is_no_gain_and_flat_fielding_stays_below_saturation():
 
 
 def _masked_median_numpy(values, mask, axis):
-    """The numpy form of ballscan.flatfield._masked_median (one sort, the mask's counts and two gathers)."""
+    """The numpy form of ballscan.measure.flatfield._masked_median (one sort, the mask's counts and two gathers)."""
     v = np.sort(np.where(mask, values, np.inf), axis=axis)
     n = mask.sum(axis=axis)
     lo = np.expand_dims(np.maximum((n - 1) // 2, 0), axis)

@@ -1,4 +1,4 @@
-"""Tests of ballscan.images: loading line-scan images and timestamps."""
+"""Tests of ballscan.measure.images: loading line-scan images and timestamps."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ import pytest
 import tifffile
 
 from ballscan.errors import ImageFileError
-from ballscan.images import LineImage, load_image, load_timestamps
+from ballscan.measure.images import LineImage, load_image, load_timestamps
 
 SCENES = Path(__file__).parent / "data" / "scenes"
 

@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera
-from ballscan.initial import KeyPoints, find_keypoints, half_contrast_edges, initial_guess
-from ballscan.motion import BallMotion
-from ballscan.silhouette import silhouette
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.solve.initial import KeyPoints, find_keypoints, half_contrast_edges, initial_guess
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.silhouette import silhouette
 
 
 def exact_keypoints(cam: LineScanCamera, m: BallMotion, u_sigma: float = 0.05) -> KeyPoints:

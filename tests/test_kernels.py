@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from ballscan import _kernels as K
-from ballscan.camera import LineScanCamera
-from ballscan.fit import _model_core, param_scale, pixel_coverage
-from ballscan.motion import BallMotion
-from ballscan.shading import surface_normals
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.solve.fit import _model_core, param_scale, pixel_coverage
+from ballscan.geometry.motion import BallMotion
+from ballscan.measure.shading import surface_normals
 
 CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
 MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 2.0, 15.0))
@@ -90,11 +90,11 @@ def test_limb_values_equal_the_surface_normals_and_the_shading_law():
 def test_every_kernel_compiles_one_signature_only():
     # a second signature (a read-only or strided argument) is compiled when
     # first seen: 0.5 s inside a stream's ball
-    from ballscan.detection import ColumnModel, detect
-    from ballscan.estimate import estimate_image
-    from ballscan.images import LineImage
-    from ballscan.render import Appearance, SensorNoise, render
-    from ballscan.stream import preload_estimator
+    from ballscan.measure.detection import ColumnModel, detect
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.measure.images import LineImage
+    from ballscan.model.render import Appearance, SensorNoise, render
+    from ballscan.stream.engine import preload_estimator
 
     preload_estimator()
     cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
@@ -129,7 +129,7 @@ def test_every_kernel_compiles_one_signature_only():
 # the detection's and the edges' kernels against their former numpy forms
 # ---------------------------------------------------------------------------
 def _mode_seek_numpy(s, start, sigma, floor):
-    """The numpy form of ballscan.detection._mode_seek (one searchsorted over all rows, shifted apart)."""
+    """The numpy form of ballscan.measure.detection._mode_seek (one searchsorted over all rows, shifted apart)."""
     w, n = s.shape
     rows = np.arange(w)
     base = s[:, 0].astype(np.float64)
@@ -195,7 +195,7 @@ def test_mode_seek_equals_its_numpy_form():
 
 
 def _running_median_numpy(x, n):
-    """The numpy form of ballscan.edges._running_median (sorted sliding windows)."""
+    """The numpy form of ballscan.measure.edges._running_median (sorted sliding windows)."""
     h = n // 2
     pad = np.concatenate([np.full(h, np.nan), x, np.full(h, np.nan)])
     win = np.sort(np.lib.stride_tricks.sliding_window_view(pad, 2 * h + 1), axis=1)
@@ -243,7 +243,7 @@ def test_walk_edges_equals_its_numpy_form():
         w = p.shape[1]
         rows = np.arange(p.shape[0])
         kl, kr = k_left.copy(), k_right.copy()
-        # all lines stepped at once, as ballscan.edges._edge_pass did in numpy
+        # all lines stepped at once, as ballscan.measure.edges._edge_pass did in numpy
         for _ in range(12):
             cand = kl - 1
             pc = p[rows, np.clip(cand, 0, w - 1)]
@@ -288,7 +288,7 @@ def test_edge_windows_equal_their_numpy_form():
         other = rng.random((n, w)) < 0.02
         variants = ((1, 0), (3, 1)) if seed % 2 else ((2, 1), (4, 2))
         n_level = 2 if seed % 3 else 3
-        # the numpy form of ballscan.edges._edge_pass
+        # the numpy form of ballscan.measure.edges._edge_pass
         nv = 2 * len(variants)
         k = np.tile(np.concatenate([k_left, k_right]), len(variants))
         sgn = np.tile(np.concatenate([np.ones(n, dtype=int), -np.ones(n, dtype=int)]), len(variants))[:, None]
@@ -464,7 +464,7 @@ def test_stream_block_sums_equal_their_numpy_form():
 
 
 def test_stream_kernels_compile_one_signature_only():
-    from ballscan.stream import StreamEngine
+    from ballscan.stream.engine import StreamEngine
 
     cam = LineScanCamera(600, 1100.0, 299.5, 20000.0, None)
     rng = np.random.default_rng(13)

@@ -1,4 +1,4 @@
-"""The compiled limb and shading kernels against the numpy code they replace (ballscan.edges, ballscan.shading)."""
+"""The compiled limb and shading kernels against the numpy code they replace (ballscan.measure.edges, ballscan.measure.shading)."""
 
 from __future__ import annotations
 
@@ -8,23 +8,23 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from ballscan import edges as E
-from ballscan.camera import LineScanCamera, line_times
-from ballscan.detection import median as _median
-from ballscan.detection import detect
+from ballscan.measure import edges as E
+from ballscan.geometry.camera import LineScanCamera, line_times
+from ballscan.measure.detection import median as _median
+from ballscan.measure.detection import detect
 from ballscan.errors import GeometryError
-from ballscan.estimate import _full_background
-from ballscan.images import LineImage
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, render
-from ballscan.shading import ball_limb
+from ballscan.pipeline.estimate import _full_background
+from ballscan.measure.images import LineImage
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, render
+from ballscan.measure.shading import ball_limb
 
 MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 8.0))
 
 
 # ------------------------------------------------------- numpy references
 def _reference_limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol, stats):
-    """The numpy form of :func:`ballscan.edges._limb_levels` (same arguments; ``stats["missing"]``: pixels the nearest-pixel fill was asked for)."""
+    """The numpy form of :func:`ballscan.measure.edges._limb_levels` (same arguments; ``stats["missing"]``: pixels the nearest-pixel fill was asked for)."""
     stats["missing"] = 0
     edge, var, L = e.copy(), var0.copy(), L0.copy()
     rows = np.flatnonzero(valid & np.isfinite(e))
@@ -251,7 +251,7 @@ def test_normalised_coordinate_equals_the_camera_and_reports_divergence():
 
 # ----------------------------------------------------------- shading fit
 def _reference_shading_fit(y, n, huber_k, n_iterations, diverged, flat_tol):
-    """The numpy form of :func:`ballscan._kernels.shading_fit` (the rounds of :func:`ballscan.shading.fit_shading`)."""
+    """The numpy form of :func:`ballscan._kernels.shading_fit` (the rounds of :func:`ballscan.measure.shading.fit_shading`)."""
     X = np.column_stack([np.ones(y.size), n])
     X_dark = np.zeros((1, 4))
     X_dark[0, 0] = 1.0
@@ -306,7 +306,7 @@ def _huber_round(r: np.ndarray, huber_k: float) -> tuple[float, np.ndarray]:
 
 def _interior(texture: str, light: bool = True, seed: int = 2):
     """The interior pixels and normals fit_shading fits on a rendered ball (noisy, textured or not, lit or flat)."""
-    from ballscan import shading
+    from ballscan.measure import shading as shading
 
     cam = _camera()
     app = Appearance(ball_level=0.7, shading=light, light_dir=(-0.35, -0.45, -0.82), ambient=0.35, texture=texture, orientation_seed=1)
@@ -372,7 +372,7 @@ def test_shading_fit_on_few_and_odd_pixels():
 
 # ------------------------------------------------- line levels and scatter
 def _reference_line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
-    """The numpy form of :meth:`ballscan.shading.LimbProfile.line_levels` (``self`` the profile)."""
+    """The numpy form of :meth:`ballscan.measure.shading.LimbProfile.line_levels` (``self`` the profile)."""
     lines = np.asarray(lines, dtype=int)
     if lines.size == 0:
         return np.zeros(0), np.zeros(0)
@@ -395,7 +395,7 @@ def _reference_line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> 
 def _reference_line_level_scatter(
     limb, edges, lines_ok: np.ndarray, spread_px: np.ndarray, left_px: np.ndarray, right_px: np.ndarray, max_lines: int = 40
 ) -> tuple[float, float]:
-    """The numpy form of :func:`ballscan.shading._line_level_scatter` (its arguments)."""
+    """The numpy form of :func:`ballscan.measure.shading._line_level_scatter` (its arguments)."""
     if edges.profile is None or edges.profile_sigma is None:
         return math.nan, 1.0
     idx = np.flatnonzero(lines_ok)
@@ -454,8 +454,8 @@ def test_line_levels_equal_the_numpy_form(shaded_ball):
 
 
 def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
-    from ballscan.fit import averaged_model
-    from ballscan.shading import _line_level_scatter
+    from ballscan.solve.fit import averaged_model
+    from ballscan.measure.shading import _line_level_scatter
 
     edges, limb = shaded_ball
     me = averaged_model(limb.camera, MOTION.to_params()[None], MOTION.radius_m, edges.t_s, MOTION.acceleration_mps2)
@@ -482,7 +482,7 @@ def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
 @pytest.mark.parametrize("k1", [0.0, -0.4])
 def test_interior_normals_equal_the_surface_normals_and_the_usable_box(k1):
     from ballscan._kernels import interior_normals
-    from ballscan.shading import surface_normals
+    from ballscan.measure.shading import surface_normals
 
     cam = _camera(k1)
     rng = np.random.default_rng(7)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.motion import BallMotion
+from ballscan.geometry.motion import BallMotion
 
 
 def test_centre_and_velocity_with_acceleration():

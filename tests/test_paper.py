@@ -5,12 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera, line_times
-from ballscan.estimate import estimate_image
-from ballscan.images import LineImage
-from ballscan.motion import BallMotion
-from ballscan.paper import gradient_image, render_coverage
-from ballscan.render import Appearance, SensorNoise, render
+from ballscan.geometry.camera import LineScanCamera, line_times
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.measure.images import LineImage
+from ballscan.geometry.motion import BallMotion
+from ballscan.solve.paper import gradient_image, render_coverage
+from ballscan.model.render import Appearance, SensorNoise, render
 
 
 def _image(cam, motion, n_lines, app, background, seed=3, noise=SensorNoise()):
@@ -24,7 +24,7 @@ def test_render_coverage_matches_silhouette_area():
     m = BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 2.0, -1.0))
     t = line_times(cam, 150)
     cov = render_coverage(cam, m, t, np.arange(950, 1120))
-    from ballscan.silhouette import silhouette
+    from ballscan.model.silhouette import silhouette
 
     np.testing.assert_allclose(cov.sum(axis=1), silhouette(cam, m, t).area_px, atol=1e-9)
     g = gradient_image(cov)

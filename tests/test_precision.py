@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera
-from ballscan.fit import FitSettings, fit_motion, synthetic_edges
-from ballscan.motion import BallMotion
-from ballscan.precision import PrecisionBound, _pixel_fisher, _pixel_model, edge_crlb, pixel_crlb, sensor_crlb
-from ballscan.render import SensorNoise
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.solve.fit import FitSettings, fit_motion, synthetic_edges
+from ballscan.geometry.motion import BallMotion
+from ballscan.solve.precision import PrecisionBound, _pixel_fisher, _pixel_model, edge_crlb, pixel_crlb, sensor_crlb
+from ballscan.model.render import SensorNoise
 
 
 def _serve():

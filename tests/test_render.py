@@ -9,12 +9,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ballscan.camera import LineScanCamera
+from ballscan.geometry.camera import LineScanCamera
 from ballscan.errors import GeometryError
-from ballscan.motion import BallMotion
-from ballscan.presets import PRESETS, get_preset
-from ballscan.render import Appearance, RenderSettings, SensorNoise, _cap_lines, render, truth_dict, write_image
-from ballscan.silhouette import silhouette, visible_line_count
+from ballscan.geometry.motion import BallMotion
+from ballscan.lab.presets import PRESETS, get_preset
+from ballscan.model.render import Appearance, RenderSettings, SensorNoise, _cap_lines, render, truth_dict, write_image
+from ballscan.model.silhouette import silhouette, visible_line_count
 
 BG = 0.1
 LEVEL = 0.8

@@ -1,4 +1,4 @@
-"""The ball's fitted shading and the shading-aware edges (ballscan.shading)."""
+"""The ball's fitted shading and the shading-aware edges (ballscan.measure.shading)."""
 
 from __future__ import annotations
 
@@ -8,15 +8,15 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera, line_times
-from ballscan.detection import detect
-from ballscan.edges import EdgeMeasurements, measure_edges, with_limb
-from ballscan.estimate import _full_background, estimate_image
-from ballscan.fit import averaged_model
-from ballscan.images import LineImage
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, render
-from ballscan.shading import ball_limb, fit_shading, surface_normals
+from ballscan.geometry.camera import LineScanCamera, line_times
+from ballscan.measure.detection import detect
+from ballscan.measure.edges import EdgeMeasurements, measure_edges, with_limb
+from ballscan.pipeline.estimate import _full_background, estimate_image
+from ballscan.solve.fit import averaged_model
+from ballscan.measure.images import LineImage
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, render
+from ballscan.measure.shading import ball_limb, fit_shading, surface_normals
 
 from .conftest import DATA
 
@@ -250,7 +250,7 @@ def test_no_area_level_where_a_line_is_saturated():
 
 def test_shade_profile_against_the_rendered_surface():
     """The pixel model's surface brightness: the law where the ball covers a pixel, 1 on the sharp lines."""
-    from ballscan.shading import shade_profile
+    from ballscan.measure.shading import shade_profile
 
     r, img, _ = _shaded()
     e, reg, t = _edges(img, False)
@@ -349,7 +349,7 @@ def test_flat_ball_shading_fit_does_not_run_away(monkeypatch):
     # gave moved V.x by 21 times its Cramér-Rao bound (the largest error of
     # the benchmark's 100 draws, which by itself had doubled the pixel fit's
     # speed RMSE).  The best round is kept now.
-    import ballscan.shading as sh
+    import ballscan.measure.shading as sh
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 0.0))
@@ -415,7 +415,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
     With the default the end lines' levels carry a sigma of 0.1-0.3 %:
     part of the shaded balls' bias (docs/benchmarks.md, calibration).
     """
-    from ballscan.render import RenderSettings
+    from ballscan.model.render import RenderSettings
 
     cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
     n = 700
@@ -446,7 +446,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
 
 def test_fast_helpers_equal_the_numpy_forms():
     """_even_picks, _nan_to_num and _unique_lines (compiled: _kernels.unique_lines) against the numpy forms they replace."""
-    from ballscan.shading import _even_picks, _nan_to_num, _unique_lines
+    from ballscan.measure.shading import _even_picks, _nan_to_num, _unique_lines
 
     rng = np.random.default_rng(3)
     for n, m in [(801, 800), (3000, 800), (12345, 800), (41, 40), (500, 40), (5, 2), (7, 1), (7, 0)]:
@@ -478,7 +478,7 @@ def test_chord_rows_equals_the_numpy_form():
 
 @pytest.mark.parametrize("n_time, n_height", [(1, 1), (3, 2), (5, 4), (8, 3)])
 def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
-    from ballscan.shading import LimbProfile, ShadingModel
+    from ballscan.measure.shading import LimbProfile, ShadingModel
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 140000.0, 6.5e-6)
     limb = LimbProfile(ShadingModel(0.0, (0.0, 0.0, 0.0), 1.0, 1), cam, MOTION, np.zeros(1), np.zeros((1, 1)), 1, 1.0, *np.zeros((3, 1)))

@@ -7,9 +7,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ballscan.camera import LineScanCamera
-from ballscan.motion import BallMotion
-from ballscan.silhouette import LineStatus, silhouette, tangent_normalised, visible_line_count
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.silhouette import LineStatus, silhouette, tangent_normalised, visible_line_count
 
 
 def _ray_hits(centre: np.ndarray, R: float, s: float, n: np.ndarray) -> np.ndarray:

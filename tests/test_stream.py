@@ -1,4 +1,4 @@
-"""Tests of the stream engine, the line sources and ``watch`` (ballscan.stream, .sources, .stream_cli)."""
+"""Tests of the stream engine, the line sources and ``watch`` (ballscan.stream.engine, .sources, .stream_cli)."""
 
 from __future__ import annotations
 
@@ -13,12 +13,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.camera import LineScanCamera, save_camera
-from ballscan.estimate import estimate_image
-from ballscan.images import LineImage
-from ballscan.motion import BallMotion
-from ballscan.render import Appearance, SensorNoise, apply_sensor, render, write_image
-from ballscan.sources import (
+from ballscan.geometry.camera import LineScanCamera, save_camera
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.measure.images import LineImage
+from ballscan.geometry.motion import BallMotion
+from ballscan.model.render import Appearance, SensorNoise, apply_sensor, render, write_image
+from ballscan.stream.sources import (
     ArraySource,
     ImageFolderSource,
     RawLineSource,
@@ -29,8 +29,8 @@ from ballscan.sources import (
     simulate_stream,
     stream_balls,
 )
-from ballscan.stream import Chunk, StreamConfig, StreamEngine, StreamError, estimate_crop, crop_camera, process_stream
-from ballscan.stream_cli import watch
+from ballscan.stream.engine import Chunk, StreamConfig, StreamEngine, StreamError, estimate_crop, crop_camera, process_stream
+from ballscan.cli.stream import watch
 
 RADIUS = 0.0335
 CAM = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
@@ -483,8 +483,8 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     pngs = sorted(p.name for p in (tmp_path / "ev").glob("*.png"))
     assert sum(p.endswith(".overlay.png") for p in pngs) == 2 and len(pngs) == 4
     # a saved event reproduces its estimate: the crop, its lines' times and the engine's columns
-    from ballscan.detection import ColumnModel
-    from ballscan.images import load_image
+    from ballscan.measure.detection import ColumnModel
+    from ballscan.measure.images import load_image
 
     npz = sorted((tmp_path / "ev").glob("*.columns.npz"))
     assert len(npz) == 2
@@ -515,7 +515,7 @@ def test_pylon_emulated_camera_plays_rendered_chunks(tmp_path, monkeypatch):
     if importlib.util.find_spec("pypylon") is None:
         pytest.skip("pypylon not installed (optional extra)")
     monkeypatch.setenv("PYLON_CAMEMU", "1")
-    from ballscan.sources import PylonSource
+    from ballscan.stream.sources import PylonSource
 
     data = small_stream(3072)
     folder = tmp_path / "frames"
@@ -539,7 +539,7 @@ def test_chunk_dataclass_is_frozen():
 
 
 def test_a_failing_estimate_is_a_value_not_a_crash(monkeypatch):
-    import ballscan.estimate as est_mod
+    import ballscan.pipeline.estimate as est_mod
 
     def boom(*args, **kwargs):
         raise ValueError("synthetic failure")
@@ -561,7 +561,7 @@ def test_watch_reads_stdin_and_shows_status(tmp_path):
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     code = (
-        "import typer; from ballscan.stream_cli import watch; app = typer.Typer(); app.command()(watch); "
+        "import typer; from ballscan.cli.stream import watch; app = typer.Typer(); app.command()(watch); "
         "app.command('other')(lambda: None); app()"
     )
     with open(raw, "rb") as fh:
@@ -599,7 +599,7 @@ def test_per_line_offset_follows_lamp_flicker():
 
 
 def test_watch_ctrl_c_ends_the_stream_and_measures_the_ball_in_view(tmp_path, monkeypatch, capsys):
-    import ballscan.stream_cli as sc
+    import ballscan.cli.stream as sc
 
     data = small_stream(3000, balls=((900.0, 0.0), (2990.0, 0.1)))
 

@@ -40,7 +40,7 @@ U_BANDS = (0.0, 0.5, 0.8, 0.9, 0.95, 0.98, 0.995, 1.0, 9.0)
 
 
 def _install_recorder(log: list) -> None:
-    from ballscan import fit as F
+    from ballscan.solve import fit as F
 
     if getattr(F, "_recorder_installed", None) is not None:
         return F._recorder_installed
@@ -69,10 +69,10 @@ def _install_recorder(log: list) -> None:
 
 
 def run_one(args):
-    from ballscan import experiments as ex
-    from ballscan.estimate import estimate_image
-    from ballscan.images import LineImage
-    from ballscan.render import render
+    from ballscan.lab import experiments as ex
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.measure.images import LineImage
+    from ballscan.model.render import render
     from bench_efficiency import trial_scene
 
     factor, value, trial, variant = args
@@ -89,7 +89,7 @@ def run_one(args):
     if variant == "truegain":
         data = (data - noise.black_dn) / rd.column_gain[None, :] + noise.black_dn
     log.clear()
-    import ballscan.estimate as E
+    import ballscan.pipeline.estimate as E
 
     if truebg:
         # the background's expectation (DN) in place of the detector's / refined one
@@ -141,9 +141,9 @@ def nominal_pixel_model(factor, value, nodes):
     ``t`` (their times, s), ``var`` (the pixels' noise variance, DN^2) and
     ``G`` (the DN derivatives, (6, lines, columns)).
     """
-    from ballscan import experiments as ex
-    from ballscan.fit import averaged_model
-    from ballscan.precision import _n_lines_for, _pixel_model
+    from ballscan.lab import experiments as ex
+    from ballscan.solve.fit import averaged_model
+    from ballscan.solve.precision import _n_lines_for, _pixel_model
     from bench_efficiency import _spec
 
     sc = _spec(factor, value, 0).scene

@@ -2,10 +2,10 @@
 import sys, math, numpy as np
 sys.path.insert(0, __import__('os').path.join(__import__('os').path.dirname(__file__), '..'))
 from bench_efficiency import _spec
-from ballscan import experiments as ex
-from ballscan.render import render
-from ballscan.precision import _pixel_model, _n_lines_for
-from ballscan.fit import averaged_model
+from ballscan.lab import experiments as ex
+from ballscan.model.render import render
+from ballscan.solve.precision import _pixel_model, _n_lines_for
+from ballscan.solve.fit import averaged_model
 f,v=sys.argv[1],float(sys.argv[2]); trials=[int(x) for x in sys.argv[3].split(",")]
 out=[]
 for k in trials:

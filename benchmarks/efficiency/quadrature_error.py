@@ -3,8 +3,8 @@ import sys, math
 sys.path.insert(0, __import__('os').path.join(__import__('os').path.dirname(__file__), '..'))
 import numpy as np
 from bench_efficiency import _spec
-from ballscan import experiments as ex
-from ballscan.precision import _pixel_model
+from ballscan.lab import experiments as ex
+from ballscan.solve.precision import _pixel_model
 
 for f, v in (("radius_m", 0.11), ("speed_mps", 4.7), ("line_rate_hz", 140000.0)):
     sc = _spec(f, v, 0).scene

@@ -1,13 +1,13 @@
 """Compiled kernels of the averaged silhouette (numba).
 
 The fit, the shading pass and the bounds evaluate the averaged silhouette
-(:func:`ballscan.fit.averaged_model`) tens of times per ball on a few
+(:func:`ballscan.solve.fit.averaged_model`) tens of times per ball on a few
 thousand chord samples.  As numpy expressions that is some hundred array
 operations per call, whose fixed cost (a few microseconds each) was most of
 the time on a ball's hundred lines; one loop over the samples does the same
 arithmetic in one call.  The mathematics is that of
-:func:`ballscan.silhouette.silhouette` with ``model="averaged"`` (see its
-Notes; :func:`ballscan.fit._model_core` documents the layout), which the
+:func:`ballscan.model.silhouette.silhouette` with ``model="averaged"`` (see its
+Notes; :func:`ballscan.solve.fit._model_core` documents the layout), which the
 tests compare it against.
 
 Compiled on first use and cached on disk (``cache=True``, where numba finds
@@ -318,7 +318,7 @@ def pixel_residuals(
     n_groups: int,
     n_out: int,
 ) -> np.ndarray:
-    """Whitened pixel residuals ``(B_g s cov - p) w`` of ``P`` parameter sets (:func:`ballscan.fit._pixel_residuals`).
+    """Whitened pixel residuals ``(B_g s cov - p) w`` of ``P`` parameter sets (:func:`ballscan.solve.fit._pixel_residuals`).
 
     ``s_lo, s_hi, s_w`` (P, Np, S) are the chord samples of the fitted
     lines; ``cols, mask, shade, w, p, group`` (Np, K) the pixels' centres,
@@ -806,7 +806,7 @@ def pixel_residuals_jacobian(
 
 @_jit()
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
-    """The chord model's edges and their analytic derivatives (:func:`ballscan.fit.chord_jacobian`).
+    """The chord model's edges and their analytic derivatives (:func:`ballscan.solve.fit.chord_jacobian`).
 
     Returns ``(u (2, N), J (2, N, 6), ok (N,), x (N,), w (N,), tau (N,))``:
     left (row 0) and right (row 1) edges in pixels and their derivatives
@@ -959,7 +959,7 @@ def limb_values(
     ambient: float,
     scale: float,
 ):
-    """The shading law's normalised brightness and the ball's coverage at sensor positions (:meth:`ballscan.shading.LimbProfile.__call__`).
+    """The shading law's normalised brightness and the ball's coverage at sensor positions (:meth:`ballscan.measure.shading.LimbProfile.__call__`).
 
     Row ``r`` (an edge of line time ``t_rows[r]``) has positions of
     normalised coordinate ``n_u[r]`` over the background ``bg[r]`` (DN); a
@@ -989,7 +989,7 @@ def limb_values(
 
 @_jit()
 def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.ndarray, base: np.ndarray, span: int) -> np.ndarray:
-    """Averaged pixel coverage on unit grids (:func:`ballscan.fit.pixel_coverage`).
+    """Averaged pixel coverage on unit grids (:func:`ballscan.solve.fit.pixel_coverage`).
 
     ``u_lo, u_hi, wgt`` (P, N, S) chord samples; line ``n``'s pixels are
     ``base[n] + idx[n]`` (pixel centres, ``idx`` (N, C) integers from 0 to
@@ -1015,7 +1015,7 @@ def fit_residuals(
     left: np.ndarray, right: np.ndarray, area: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray, b: float,
     ml: np.ndarray, mr: np.ndarray, ma: np.ndarray, sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray,
 ) -> np.ndarray:
-    """The fit's whitened residuals (:func:`ballscan.fit.fit_motion`): selected edges and areas, then ``tail``.
+    """The fit's whitened residuals (:func:`ballscan.solve.fit.fit_motion`): selected edges and areas, then ``tail``.
 
     ``(left[il] - b - ml) / sl``, ``(right[ir] + b - mr) / sr``, ``(area[ia]
     - ma) / sa`` and ``tail`` (the pixel residuals) in one array, the same
@@ -1042,7 +1042,7 @@ def fit_jacobian(
     dl: np.ndarray, dr: np.ndarray, da: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray,
     sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray, with_bias: bool,
 ) -> np.ndarray:
-    """The fit's whitened Jacobian (:func:`ballscan.fit.fit_motion`) from per-line derivatives (N, 6).
+    """The fit's whitened Jacobian (:func:`ballscan.solve.fit.fit_motion`) from per-line derivatives (N, 6).
 
     Rows ``dl[il] / sl``, ``dr[ir] / sr``, ``da[ia] / sa``, then ``tail``
     (M, 6) (the pixel residuals'); with ``with_bias`` a seventh column, the
@@ -1077,7 +1077,7 @@ def fit_jacobian(
 
 @_jit()
 def block_ratio(r: np.ndarray, sizes) -> float:
-    """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.fit._block_scale`), else 1.
+    """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.solve.fit._block_scale`), else 1.
 
     numpy's sums (:func:`_pairwise_sum`) for the block means and their mean
     square, so that the ratios are those of the numpy expressions.
@@ -1101,7 +1101,7 @@ def block_ratio(r: np.ndarray, sizes) -> float:
 def area_tables(
     area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float
 ):
-    """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.fit._area_tables`), per line.
+    """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.solve.fit._area_tables`), per line.
 
     The numpy form's operations, line by line: a NaN ``level_sigma`` counts
     as infinite and an infinite one as the largest float (``np.nan_to_num``
@@ -1139,7 +1139,7 @@ def select_lines(
     right_wide_ok: np.ndarray, left_wide: np.ndarray, right_wide: np.ndarray, max_spread: float, max_spread_wide: float,
     end_line_areas: bool,
 ):
-    """The fit's residual selection (:func:`ballscan.fit._select`), line by line.
+    """The fit's residual selection (:func:`ballscan.solve.fit._select`), line by line.
 
     Returns the masks ``(use_l, use_r, use_a, wide_l, wide_r)``; the wide
     window's arrays are read only with ``wide``.
@@ -1179,7 +1179,7 @@ def hybrid_rows(
     k2: float, g: np.ndarray, gw: np.ndarray, reach_max: float, fd_lines: np.ndarray, needed: np.ndarray,
     with_fd_lines: bool, with_needed: bool,
 ):
-    """:func:`ballscan.fit.hybrid_jacobian` with ``analytic`` and no acceleration, in one compiled call.
+    """:func:`ballscan.solve.fit.hybrid_jacobian` with ``analytic`` and no acceleration, in one compiled call.
 
     The chord's derivatives (:func:`chord_edges`) on every line, the
     averaged model's exact ones (:func:`averaged_edges_jacobian`) on the
@@ -1228,7 +1228,7 @@ def hybrid_rows(
 def equilibrated(AJ: np.ndarray):
     """Column norms ``cn = sqrt(diag(AJ))`` (1 where not positive) of a normal matrix and ``AJ / outer(cn, cn)``.
 
-    The Levenberg-Marquardt steps' equilibration (:func:`ballscan.fit._levenberg_marquardt`),
+    The Levenberg-Marquardt steps' equilibration (:func:`ballscan.solve.fit._levenberg_marquardt`),
     the numpy expressions' operations.
     """
     n = AJ.shape[0]
@@ -1259,7 +1259,7 @@ def damped(A: np.ndarray, lam: float) -> np.ndarray:
 def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
     """Whether the mask ``lines`` holds lines both before and after ``t_c`` (line times ``t``).
 
-    :func:`ballscan.fit._at_both_ends` in one pass.
+    :func:`ballscan.solve.fit._at_both_ends` in one pass.
     """
     before = False
     after = False
@@ -1274,7 +1274,7 @@ def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
 def loose_rows(
     J: np.ndarray, r: np.ndarray, rows: np.ndarray, sa: np.ndarray, sa_loose: np.ndarray, model: np.ndarray, ma_loose: np.ndarray
 ):
-    """The partial lines' rows made loose and both Jacobians equilibrated (:func:`ballscan.fit._partial_verdict`).
+    """The partial lines' rows made loose and both Jacobians equilibrated (:func:`ballscan.solve.fit._partial_verdict`).
 
     ``J`` (M, p) and ``r`` (M,) are the levelled fit's whitened Jacobian and
     residuals, ``rows`` the partial lines' rows in them, ``sa`` their
@@ -1434,7 +1434,7 @@ def _search_keys(s: np.ndarray, i: int, shift: float, x: float, right: bool) -> 
 def _window_spread(s: np.ndarray, i: int, m: float, half: float):
     """Spread, count and mean offset of the values of row ``i`` of ``s`` within ``half`` of ``m``.
 
-    In ``s``'s float32 like :func:`ballscan.detection._mode_seek`'s numpy
+    In ``s``'s float32 like :func:`ballscan.measure.detection._mode_seek`'s numpy
     form (offsets ``s - m`` and the window test in float32), the sums in
     float64 (one running sum, where numpy sums pairwise: the same to
     round-off).
@@ -1459,7 +1459,7 @@ def _window_spread(s: np.ndarray, i: int, m: float, half: float):
 
 @_jit()
 def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float):
-    """Mode, noise sigma and final window count of each row of the row-sorted float32 ``s`` (:func:`ballscan.detection._mode_seek`).
+    """Mode, noise sigma and final window count of each row of the row-sorted float32 ``s`` (:func:`ballscan.measure.detection._mode_seek`).
 
     The windows are found as there, by a search among the keys
     ``s - (s[:, 0] - row * span)`` (``span`` one more than the largest
@@ -1531,7 +1531,7 @@ def _grown(a: np.ndarray, size: int) -> np.ndarray:
 
 @_jit()
 def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, thr: np.ndarray):
-    """8-connected labels, sizes and boxes of the pixels with ``|x - (gain b + offset)| > thr`` (:func:`ballscan.detection.detect`).
+    """8-connected labels, sizes and boxes of the pixels with ``|x - (gain b + offset)| > thr`` (:func:`ballscan.measure.detection.detect`).
 
     The test is in float32 like the numpy form (``x``, ``gain``, ``b``,
     ``offset`` and ``thr`` float32).  The labels are numbered as
@@ -1635,7 +1635,7 @@ def _rank_in_counts(counts: np.ndarray, k: int) -> int:
 
 @_jit()
 def integer_median_mad(d: np.ndarray):
-    """``median(d)`` and ``median(|d - median(d)|)`` of float32 ``d`` holding small integers, by counting (:func:`ballscan.detection._global_noise`).
+    """``median(d)`` and ``median(|d - median(d)|)`` of float32 ``d`` holding small integers, by counting (:func:`ballscan.measure.detection._global_noise`).
 
     Returns ``(ok, med, mad)``; ``ok`` is False (and the values 0) unless
     every value is an integer and their range is at most ``2 d.size +
@@ -1683,7 +1683,7 @@ def integer_median_mad(d: np.ndarray):
 
 @_jit()
 def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
-    """``scipy.ndimage.median_filter(x, size, mode="reflect")`` of a 1-D float64 ``x`` without NaN, ``size`` odd and below ``2 x.size`` (:func:`ballscan.detection._background`).
+    """``scipy.ndimage.median_filter(x, size, mode="reflect")`` of a 1-D float64 ``x`` without NaN, ``size`` odd and below ``2 x.size`` (:func:`ballscan.measure.detection._background`).
 
     The windows hold the entries of ``x`` (mirrored at the ends, once, as
     ``d c b a | a b c d | d c b a``) with multiplicities 0 to 2; they are
@@ -1733,7 +1733,7 @@ def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
 # so the divisions vectorise (40 -> 23 us on a stream crop)
 @_jit(error_model="numpy")
 def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs: np.ndarray, thr: np.ndarray, use_gain: bool):
-    """Each line's drift samples with the first-pass ball pixels set to +inf, and their number per line (:func:`ballscan.detection._background`).
+    """Each line's drift samples with the first-pass ball pixels set to +inf, and their number per line (:func:`ballscan.measure.detection._background`).
 
     With ``use_gain`` a sample is ``xs / bs`` (``bs`` <= 0: excluded, divided
     by 1) and a pixel is excluded where ``|xs - gain0 bs| > thr``; else it
@@ -1774,7 +1774,7 @@ def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs:
 
 @_jit()
 def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
-    """Per row of the row-sorted ``s`` (excluded values +inf, ``excluded`` of them): the masked median and the kept count (:func:`ballscan.detection._masked_median`)."""
+    """Per row of the row-sorted ``s`` (excluded values +inf, ``excluded`` of them): the masked median and the kept count (:func:`ballscan.measure.detection._masked_median`)."""
     n_row, n = s.shape
     med = np.zeros(n_row)
     count = n - excluded
@@ -1797,7 +1797,7 @@ def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
 
 @_jit()
 def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
-    """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.detection.detect`).
+    """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.measure.detection.detect`).
 
     One sweep along the lines fills each line and finds each column's
     first and last pixel; a second fills the columns (line by line, in
@@ -1827,7 +1827,7 @@ def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
 
 @_jit()
 def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np.ndarray) -> np.ndarray:
-    """``in_group[lab[l0:l1, c0:c1]]``: the pixels of a group of labels in its box (:func:`ballscan.detection.detect`)."""
+    """``in_group[lab[l0:l1, c0:c1]]``: the pixels of a group of labels in its box (:func:`ballscan.measure.detection.detect`)."""
     out = np.empty((l1 - l0, c1 - c0), dtype=np.bool_)
     for i in range(l1 - l0):
         for j in range(c1 - c0):
@@ -1837,7 +1837,7 @@ def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np
 
 @_jit()
 def multi_runs(m: np.ndarray, axis: int):
-    """Lines (``axis=1``) or columns (``axis=0``) of the bool mask ``m`` in two or more runs of True: those with such a neighbour, and the others (:func:`ballscan.detection._merged_runs`)."""
+    """Lines (``axis=1``) or columns (``axis=0``) of the bool mask ``m`` in two or more runs of True: those with such a neighbour, and the others (:func:`ballscan.measure.detection._merged_runs`)."""
     h, w = m.shape
     if axis == 1:
         runs = np.zeros(h, dtype=np.int64)
@@ -1865,10 +1865,10 @@ def multi_runs(m: np.ndarray, axis: int):
 
 @_jit()
 def region_values(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, l0: int, c0: int, mask: np.ndarray, sat: float):
-    """Ball-minus-background values of the mask's pixels (in raster order) and whether any is at or above ``sat`` (:func:`ballscan.detection.detect`).
+    """Ball-minus-background values of the mask's pixels (in raster order) and whether any is at or above ``sat`` (:func:`ballscan.measure.detection.detect`).
 
     The box's background is ``gain * b + offset`` as in
-    :func:`ballscan.detection.background_at` (the same float64 operations).
+    :func:`ballscan.measure.detection.background_at` (the same float64 operations).
     """
     h, w = mask.shape
     vals = np.empty(h * w)
@@ -1892,7 +1892,7 @@ def _nan_last_less(a: float, b: float) -> bool:
 
 @_jit()
 def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, floor_p: np.ndarray, fraction: float, max_walk: int):
-    """The rough edges of :func:`ballscan.edges._edge_pass` walked outwards towards a darker (shaded) limb.
+    """The rough edges of :func:`ballscan.measure.edges._edge_pass` walked outwards towards a darker (shaded) limb.
 
     On each line with signal, the left edge ``k`` moves to ``k - 1`` while
     that pixel holds ``fraction`` of its inner neighbour's value (``k + 1``)
@@ -1926,7 +1926,7 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
 
 @_jit()
 def inner_differences(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray):
-    """Second differences inside the segments of :func:`ballscan.edges._edge_pass` (the ball's own noise).
+    """Second differences inside the segments of :func:`ballscan.measure.edges._edge_pass` (the ball's own noise).
 
     The pixels at least 3 inside both rough edges of a line with signal
     whose neighbours are such pixels too (not the box's first or last
@@ -1971,7 +1971,7 @@ def edge_windows(
     n_in: np.ndarray,
     n_level: int,
 ):
-    """The window and level-run sums of every edge estimate of :func:`ballscan.edges._edge_pass`.
+    """The window and level-run sums of every edge estimate of :func:`ballscan.measure.edges._edge_pass`.
 
     Rows ``4 n``: for each window variant ``v`` (``n_out[v]`` pixels outside
     the rough edge pixel besides the one next to it, ``n_in[v]`` inside) the
@@ -2456,7 +2456,7 @@ def warm_up_stream() -> None:
 # ---------------------------------------------------------------------------
 # Limb and shading: the edges' limb levels from the shading model
 # ---------------------------------------------------------------------------
-# The second edge pass (ballscan.edges._limb_levels) evaluates the shading
+# The second edge pass (ballscan.measure.edges._limb_levels) evaluates the shading
 # model on the ten pixels of each of some three hundred edge windows, three
 # times (two placements of the edge and the texture test).  As numpy
 # expressions that was some two hundred operations on arrays of a few
@@ -2470,7 +2470,7 @@ def warm_up_stream() -> None:
 
 @_jit(inline="always")
 def _normalised(u: float, principal: float, focal: float, k1: float, k2: float):
-    """Undistorted normalised coordinate of sensor position ``u`` and whether it converged (:meth:`ballscan.camera.LineScanCamera.backproject`).
+    """Undistorted normalised coordinate of sensor position ``u`` and whether it converged (:meth:`ballscan.geometry.camera.LineScanCamera.backproject`).
 
     Newton's method on ``n (1 + k1 n^2 + k2 n^4) = (u - principal) / focal``
     to 1e-12 pixels a step, as the camera's (which stops when every
@@ -2508,7 +2508,7 @@ def _limb_row_profile(
     r, at, sg, px, c_lo, c_hi, c_w, span, hwb, frac, want_point, point, wk, n_use, run_lo, run_hi,
     edge_m, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
 ):
-    """Row ``r``'s model values and coverage of its pixels with the mean edge at ``at`` (the ``profile`` of :func:`ballscan.edges._limb_levels`).
+    """Row ``r``'s model values and coverage of its pixels with the mean edge at ``at`` (the ``profile`` of :func:`ballscan.measure.edges._limb_levels`).
 
     Into ``wk`` (4, K): the pixels' offsets inwards from ``at``, coverage,
     brightness and values (coverage times brightness), the values only of
@@ -2630,7 +2630,7 @@ def limb_levels(
     ambient: float,
     scale: float,
 ):
-    """The edges' inner levels and edges from the shading model (:func:`ballscan.edges._limb_levels`).
+    """The edges' inner levels and edges from the shading model (:func:`ballscan.measure.edges._limb_levels`).
 
     Row ``r`` is an edge (side ``sg[r]``: +1 left, -1 right) with model-free
     edge ``e0``, variance ``var0`` (px^2) and level ``L0``, window sum ``S``
@@ -2641,7 +2641,7 @@ def limb_levels(
     its pixel centres ``px[r]`` (box pixels, the coordinates of ``e0``) are
     the window from its outermost pixel inwards (``kw`` columns, the first
     ``n_win[r]`` used), the ``n_level`` pixels of the level run and those of
-    the run inside it.  The model (:meth:`ballscan.shading.LimbProfile.rows`)
+    the run inside it.  The model (:meth:`ballscan.measure.shading.LimbProfile.rows`)
     gives each row its chord samples ``c_lo, c_hi, c_w`` (offsets inwards
     from its mean edge ``edge_m``, pixels: the same coordinates less the
     mean edge; NaN: the model has no edge), line time ``t_rows``, whether
@@ -2763,7 +2763,7 @@ def limb_levels(
 # ---------------------------------------------------------------------------
 # Limb and shading: the shading law's robust fit
 # ---------------------------------------------------------------------------
-# ballscan.shading.fit_shading reweights a four-parameter least-squares fit
+# ballscan.measure.shading.fit_shading reweights a four-parameter least-squares fit
 # of some 800 interior pixels four times, then the flat law four times: as
 # numpy that was some hundred and fifty calls (the rounds' lstsq, two full
 # sorts for each round's median and MAD, the weights), 0.6 ms a ball.  The
@@ -2803,7 +2803,7 @@ def _pairwise_sum(a: np.ndarray) -> float:
 
 @_jit(inline="always")
 def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray) -> float:
-    """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (the Huber rounds of :func:`ballscan.shading.fit_shading`)."""
+    """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (the Huber rounds of :func:`ballscan.measure.shading.fit_shading`)."""
     med = np.median(r)
     for i in range(r.shape[0]):
         buf[i] = abs(r[i] - med)
@@ -2817,7 +2817,7 @@ def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray
 
 @_jit()
 def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations: int, diverged: float, flat_tol: float):
-    """The robust fit of ``I = A + max(0, n . b)`` to interior pixels (:func:`ballscan.shading.fit_shading`).
+    """The robust fit of ``I = A + max(0, n . b)`` to interior pixels (:func:`ballscan.measure.shading.fit_shading`).
 
     ``y`` (N,) the pixels (DN), ``normals`` (N, 3) the unit surface normals
     they see.  Each of ``n_iterations`` rounds solves the weighted least
@@ -2892,7 +2892,7 @@ def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations
 # Limb and shading: the model's line levels and their measured scatter
 # ---------------------------------------------------------------------------
 # The ends' line levels (LimbProfile.line_levels) and their scatter on the
-# plateau lines (ballscan.shading._line_level_scatter) evaluate the model on
+# plateau lines (ballscan.measure.shading._line_level_scatter) evaluate the model on
 # some forty lines each; as numpy they were some sixty operations on arrays
 # of a few thousand entries (0.5 ms a ball together).  The rows' sums are
 # numpy's pairwise sums (_pairwise_sum), so the results are its bits.
@@ -2922,7 +2922,7 @@ def line_level_sums(
     ambient: float,
     scale: float,
 ):
-    """Sums of the model's normalised value and coverage over the ``inside`` positions of each row (:meth:`ballscan.shading.LimbProfile.line_levels`).
+    """Sums of the model's normalised value and coverage over the ``inside`` positions of each row (:meth:`ballscan.measure.shading.LimbProfile.line_levels`).
 
     Row ``r`` is the left edge of image line ``line_rows[r]`` (mean edge
     ``edge_m[r]``, pixels; NaN: the model does not see the ball, the sums
@@ -3000,7 +3000,7 @@ def level_scatter(
     ambient: float,
     scale: float,
 ):
-    """The relative scatter of lines' mean brightness about the model's, pixel noise removed (:func:`ballscan.shading._line_level_scatter`).
+    """The relative scatter of lines' mean brightness about the model's, pixel noise removed (:func:`ballscan.measure.shading._line_level_scatter`).
 
     Line ``i`` (image line ``lines_img[i]``, row ``rows[i]`` of the edges'
     normalised ``profile`` and its sigmas, whose column 0 is sensor pixel
@@ -3096,7 +3096,7 @@ def interior_normals(
     t_c: float,
     radius_m: float,
 ):
-    """Which pixels see the ball and its unit normals there (:func:`ballscan.shading.surface_normals` at the pixels' centres, for :func:`ballscan.shading.fit_shading`).
+    """Which pixels see the ball and its unit normals there (:func:`ballscan.measure.shading.surface_normals` at the pixels' centres, for :func:`ballscan.measure.shading.fit_shading`).
 
     Pixel ``i`` is column ``cols[i]`` of image line ``lines[i]`` at time
     ``t_rows[i]`` (s); its ray through the pixel's centre meets the sphere
@@ -3152,7 +3152,7 @@ def interior_normals(
 
 
 # ---------------------------------------------------------------------------
-# Column gains: the masked medians of ballscan.flatfield.column_gains
+# Column gains: the masked medians of ballscan.measure.flatfield.column_gains
 # ---------------------------------------------------------------------------
 # column_gains takes three medians of the masked pixels of a ball's box: each
 # line's, each column's and each column's absolute deviation from it.  numpy's
@@ -3165,7 +3165,7 @@ def interior_normals(
 
 @_jit()
 def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
-    """Medians of the masked values from the sorted box of :func:`ballscan.flatfield._masked_median`.
+    """Medians of the masked values from the sorted box of :func:`ballscan.measure.flatfield._masked_median`.
 
     ``v`` is ``where(mask, values, inf)`` sorted along ``axis`` (0 or 1) of
     a 2-D array: along it each line (or column) of ``n`` masked values has
@@ -3195,7 +3195,7 @@ def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
 
 @_jit()
 def median_deviations(v: np.ndarray, mask: np.ndarray):
-    """Each row's median of the masked values and their median absolute deviation from it (:func:`ballscan.flatfield._column_median_mad`).
+    """Each row's median of the masked values and their median absolute deviation from it (:func:`ballscan.measure.flatfield._column_median_mad`).
 
     ``v`` is ``where(mask, values, inf)`` sorted along its rows (the box's
     columns, transposed); the median as :func:`sorted_medians`.  Where a
@@ -3262,7 +3262,7 @@ def median_deviations(v: np.ndarray, mask: np.ndarray):
 # ---------------------------------------------------------------------------
 # Edge measurement: the first pass's and the finish's small array passes
 # ---------------------------------------------------------------------------
-# After the windows' sums (edge_windows) ballscan.edges._edge_pass and
+# After the windows' sums (edge_windows) ballscan.measure.edges._edge_pass and
 # _finish were some hundred numpy expressions of a few microseconds each on
 # the box (the rough edges, the shot noise's sigmas, the lines' summed
 # coverage) or on the edges' rows (the level gradients and their running
@@ -3278,7 +3278,7 @@ _FLOAT_MAX = float(np.finfo(np.float64).max)
 
 @_jit()
 def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
-    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.edges._edge_pass`).
+    """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.measure.edges._edge_pass`).
 
     Returns
     -------
@@ -3302,7 +3302,7 @@ def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
 
 @_jit(error_model="numpy")
 def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.ndarray:
-    """The pixels' noise with the ball's shot noise, ``sqrt(sp**2 + excess * clip(q / p_in, 0, 2))`` (:func:`ballscan.edges._edge_pass`).
+    """The pixels' noise with the ball's shot noise, ``sqrt(sp**2 + excess * clip(q / p_in, 0, 2))`` (:func:`ballscan.measure.edges._edge_pass`).
 
     ``q`` is each pixel's signal from the lines before and after it (same
     column): the mean of the two neighbours (the one neighbour on the box's
@@ -3340,7 +3340,7 @@ def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.
 
 @_jit(error_model="numpy")
 def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, c0: int):
-    """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.edges._edge_pass`).
+    """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.measure.edges._edge_pass`).
 
     Over the columns ``k_left - 3`` to ``k_right + 3`` of a line with
     signal, else the whole line: ``area = sum p``, ``area_sig = sqrt(sum
@@ -3388,7 +3388,7 @@ def level_gradients(
     n_level: int,
     slope_lines: int,
 ):
-    """The relative level gradient of each edge row of :func:`ballscan.edges._edge_pass` and its variance as a median of ``slope_lines``.
+    """The relative level gradient of each edge row of :func:`ballscan.measure.edges._edge_pass` and its variance as a median of ``slope_lines``.
 
     Rows as :func:`edge_windows` (``2 n`` per window variant, ``n_in[v]``
     its pixels inside the rough edge): the gradient per pixel across the
@@ -3424,7 +3424,7 @@ def level_gradients(
 
 @_jit()
 def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
-    """The running median of :func:`ballscan.edges._running_median` over each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
+    """The running median of :func:`ballscan.measure.edges._running_median` over each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
 
     The same values: each window is kept sorted in numpy's order (NaN last)
     and, among equal values, in index order, as :func:`running_median`'s
@@ -3479,7 +3479,7 @@ def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
 
 @_jit()
 def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides: int, threshold: float) -> np.ndarray:
-    """The smoothed relative level gradients of :func:`ballscan.edges._edge_pass` that are applied, 0 elsewhere.
+    """The smoothed relative level gradients of :func:`ballscan.measure.edges._edge_pass` that are applied, 0 elsewhere.
 
     ``rel`` holds ``n_sides`` equal blocks of rows (a window's left or
     right edges); NaN becomes 0 and an infinity the largest float (as
@@ -3526,7 +3526,7 @@ def window_edges(
     kap: float,
     kap2: float,
 ):
-    """The model-free edges of :func:`ballscan.edges._edge_pass`: level, edge and variance of each edge row.
+    """The model-free edges of :func:`ballscan.measure.edges._edge_pass`: level, edge and variance of each edge row.
 
     The level ``L = L_run (1 + kap rel)`` (``rel`` the applied relative
     gradient, 0 where not), the edge from the window's uncovered length
@@ -3576,7 +3576,7 @@ def finished_edges(
     spoiled: np.ndarray,
     c0: int,
 ):
-    """The per-line fields of :func:`ballscan.edges._finish` from the edges' rows (4 n: narrow left, right, wide left, right).
+    """The per-line fields of :func:`ballscan.measure.edges._finish` from the edges' rows (4 n: narrow left, right, wide left, right).
 
     Each edge is usable where ``usable``, its level run is (``run_ok``) and
     its level plausible: ``L > L_run / 2`` and the uncovered length ``n_win
@@ -3634,7 +3634,7 @@ def finished_edges(
 
 @_jit()
 def limb_pixels(rows: np.ndarray, sgn: np.ndarray, win_first: np.ndarray, win_last: np.ndarray, n_win: np.ndarray, lev: np.ndarray, deep: np.ndarray):
-    """The pixel centres of :func:`limb_levels`'s rows ``rows`` of the edges of :func:`ballscan.edges._edge_pass`.
+    """The pixel centres of :func:`limb_levels`'s rows ``rows`` of the edges of :func:`ballscan.measure.edges._edge_pass`.
 
     Each row's window from its outermost pixel inwards (as many as the
     longest window of the rows: ``kw``), then its level run ``lev`` and the
@@ -3689,7 +3689,7 @@ def finite_rows(a: np.ndarray) -> np.ndarray:
 
 @_jit()
 def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.ndarray, right: np.ndarray, inv: np.ndarray, sg: np.ndarray):
-    """The chord samples of rows as offsets inwards from their edge (:meth:`ballscan.shading.LimbProfile._chords`).
+    """The chord samples of rows as offsets inwards from their edge (:meth:`ballscan.measure.shading.LimbProfile._chords`).
 
     ``u_lo, u_hi, wgt`` (U, S) the samples' ends (pixels) and weights of
     ``U`` lines, ``left, right`` (U,) their mean edges, ``inv`` (R,) each
@@ -3754,7 +3754,7 @@ def _nan_to_num(x: float) -> float:
 
 @_jit()
 def level_spans(left: np.ndarray, right: np.ndarray, spread: np.ndarray, m: int):
-    """The sampled span of each line for :meth:`ballscan.shading.LimbProfile.line_levels`.
+    """The sampled span of each line for :meth:`ballscan.measure.shading.LimbProfile.line_levels`.
 
     Returns ``pad = nan_to_num(spread) / 2 + 1.5`` and ``span =
     nan_to_num(right - left) + 2 pad`` (R,), and ``max(span) * m`` (NaN

@@ -1,0 +1,243 @@
+"""The ``ballscan`` command: a thin layer over the library (geometry.md "Command line contract").
+
+Every error the library raises as :class:`~ballscan.errors.BallscanError`
+(or a ``ValueError`` from argument checking) is printed as one line on
+stderr with exit status 2; nothing prints a traceback.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from ..errors import BallscanError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, help="Ball position and velocity from line-scan images.")
+
+
+def _vec(text: str, name: str) -> tuple[float, float, float]:
+    try:
+        vals = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise typer.BadParameter(f"expected three comma-separated numbers, got {text!r}", param_hint=name) from None
+    if len(vals) != 3:
+        raise typer.BadParameter(f"expected three comma-separated numbers, got {text!r}", param_hint=name)
+    return (vals[0], vals[1], vals[2])
+
+
+# ---------------------------------------------------------------- simulate
+@app.command()
+def simulate(
+    out: Optional[Path] = typer.Option(None, "--out", help="Output name: writes OUT.png, OUT.camera.toml, OUT.truth.json."),
+    camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
+    preset: Optional[str] = typer.Option(None, "--preset", help="Named scene: tennis-serve, table-tennis, golf-drive, baseball-pitch, paper-rail."),
+    radius: Optional[float] = typer.Option(None, "--radius", help="Ball radius R, metres."),
+    position: Optional[str] = typer.Option(None, "--position", help="Centre at t_c: X,Y,Z in metres (X = 0)."),
+    velocity: Optional[str] = typer.Option(None, "--velocity", help="Velocity VX,VY,VZ in m/s."),
+    t_c: Optional[float] = typer.Option(None, "--t-c", help="Crossing time t_c, seconds."),
+    lines: Optional[int] = typer.Option(None, "--lines", help="Number of scan lines."),
+    noise: str = typer.Option("default", "--noise", help="'default' (8-bit sensor noise) or 'none' (clean 16-bit render)."),
+    seed: int = typer.Option(0, "--seed", help="Seed of the sensor noise."),
+    bits: Optional[int] = typer.Option(None, "--bits", help="Output bit depth 8, 12 or 16 (default: 8 with noise, 16 without)."),
+    texture: str = typer.Option("none", "--texture", help="'none' or 'tennis' (seam band)."),
+    ball_level: Optional[float] = typer.Option(None, "--ball-level", help="Ball albedo, linear 0..1."),
+    background: float = typer.Option(0.1, "--background", help="Background level, linear 0..1 (above the ball's for a dark ball)."),
+    flat: bool = typer.Option(False, "--flat", help="No shading (uniform ball)."),
+    extra_ball: list[str] = typer.Option([], "--add-ball", help="Another ball: 'R;X,Y,Z;VX,VY,VZ;T_C' (repeatable)."),
+    stream: Optional[Path] = typer.Option(None, "--stream", help="Render a raw line stream instead: writes STREAM, STREAM.camera.toml, STREAM.truth.jsonl (needs --lines and --balls)."),
+    balls: int = typer.Option(10, "--balls", help="With --stream: number of balls at random times and positions."),
+) -> None:
+    """Render a synthetic line-scan image (or, with --stream, a raw line stream) with its camera file and ground truth."""
+    from ..lab.simulate import SimulationRequest, run_simulation
+
+    if stream is not None:
+        from ..geometry.camera import load_camera
+        from ..stream.sources import simulate_stream
+
+        if camera is None and preset is None:
+            raise ValueError("simulate --stream: give --camera CAMERA.toml or --preset NAME")
+        if lines is None or lines < 1:
+            raise ValueError("simulate --stream: give --lines N (lines in the stream)")
+        from ..lab.presets import get_preset
+
+        chosen = get_preset(preset) if preset is not None else None
+        cam = load_camera(camera) if camera is not None else chosen.camera
+        r_m = radius if radius is not None else (chosen.motion.radius_m if chosen is not None else None)
+        if r_m is None:
+            raise ValueError("simulate --stream: give --radius R (or a --preset)")
+        simulate_stream(stream, cam, lines, balls, seed, radius_m=r_m)
+        for p in (stream, Path(f"{stream}.camera.toml"), Path(f"{stream}.truth.jsonl")):
+            typer.echo(str(p))
+        return
+    if out is None:
+        raise ValueError("simulate: give --out NAME (or --stream FILE)")
+    req = SimulationRequest(
+        out=out,
+        camera_path=camera,
+        preset=preset,
+        radius_m=radius,
+        position_m=_vec(position, "--position") if position else None,
+        velocity_mps=_vec(velocity, "--velocity") if velocity else None,
+        t_c_s=t_c,
+        n_lines=lines,
+        noise=noise,
+        seed=seed,
+        bits=bits,
+        texture=texture,
+        ball_level=ball_level,
+        background_level=background,
+        shading=not flat,
+        extra_balls=tuple(extra_ball),
+    )
+    written = run_simulation(req)
+    for p in written:
+        typer.echo(str(p))
+
+
+# ---------------------------------------------------------------- estimate
+@app.command()
+def estimate(
+    image: Path = typer.Argument(..., help="Line-scan image (PNG or TIFF, rows = scan lines)."),
+    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
+    method: str = typer.Option("fit", "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
+    as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess red, estimate green)."),
+    timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
+    lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
+    saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
+    shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
+    pixels: bool = typer.Option(
+        False, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
+    ),
+    matched: bool = typer.Option(
+        True, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."
+    ),
+    flat_field: bool = typer.Option(
+        True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
+    ),
+) -> None:
+    """Measure every ball in a line-scan image."""
+    from ..geometry.camera import line_times, load_camera
+    from ..pipeline.estimate import estimate_image
+    from ..measure.images import load_image, load_timestamps
+    from ..pipeline.report import format_table
+
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    cam = load_camera(camera)
+    img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
+    ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
+    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
+    if as_json:
+        typer.echo(report.to_json(cam))
+    else:
+        typer.echo(format_table(report))
+    if plot is not None:
+        from ..pipeline.plot import save_overlay
+
+        save_overlay(plot, img.data, cam, report, line_times(cam, img.data.shape[0], ts))
+
+
+# ---------------------------------------------------------------- precision
+@app.command()
+def precision(
+    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
+    velocity: str = typer.Option(..., "--velocity", help="Velocity VX,VY,VZ in m/s (camera frame)."),
+    position: str = typer.Option(..., "--position", help="Centre at the crossing, X,Y,Z in metres (X = 0)."),
+    edge_noise: Optional[float] = typer.Option(None, "--edge-noise", help="1-sigma of one edge measurement, pixels."),
+    pixel_noise: Optional[float] = typer.Option(None, "--pixel-noise", help="Pixel noise 1-sigma in DN (with --contrast): bound for any estimator on the image."),
+    contrast: Optional[float] = typer.Option(None, "--contrast", help="Ball/background contrast in DN (with --pixel-noise)."),
+    prnu: float = typer.Option(0.0, "--prnu", help="Relative 1-sigma of the columns' gains (PRNU) not flat-fielded, e.g. 0.008 (with --pixel-noise)."),
+) -> None:
+    """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a rig."""
+    from ..geometry.camera import load_camera
+    from ..geometry.motion import BallMotion
+    from ..solve.precision import edge_crlb, pixel_crlb
+
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    cam = load_camera(camera)
+    pos = _vec(position, "--position")
+    vel = _vec(velocity, "--velocity")
+    if vel[0] == 0:
+        raise typer.BadParameter("VX must be non-zero (the ball must cross the viewing plane)", param_hint="--velocity")
+    # the bound assumes an image starting at line 0 that holds the whole ball:
+    # put the crossing after half the ball's visible duration plus a margin
+    from ..model.silhouette import visible_line_count
+
+    probe = BallMotion(radius, 0.0, pos, vel)
+    t_c = (0.6 * visible_line_count(cam, probe) + 5.0) / cam.line_rate_hz
+    motion = BallMotion(radius, t_c, pos, vel)
+    if edge_noise is None and pixel_noise is None:
+        raise ValueError("precision: give --edge-noise PX, or --pixel-noise DN with --contrast DN")
+    if prnu and pixel_noise is None:
+        raise ValueError("precision: --prnu is a property of the pixels: give it with --pixel-noise DN and --contrast DN")
+    if edge_noise is not None:
+        if not edge_noise > 0:
+            raise typer.BadParameter(f"must be positive, got {edge_noise}", param_hint="--edge-noise")
+        typer.echo(edge_crlb(cam, motion, edge_noise).to_text())
+    if pixel_noise is not None:
+        if contrast is None or not contrast != 0 or not pixel_noise > 0:
+            raise ValueError("precision: --pixel-noise needs a positive noise and a non-zero --contrast")
+        if not 0 <= prnu < 1:
+            raise typer.BadParameter(f"must be in [0, 1), got {prnu}", param_hint="--prnu")
+        typer.echo(pixel_crlb(cam, motion, pixel_noise, abs(contrast), prnu_sigma=prnu).to_text())
+
+
+# ---------------------------------------------------------------- demo
+@app.command()
+def demo(
+    out: Path = typer.Option(Path("demo_out"), "--out", help="Folder for the example files."),
+    preset: str = typer.Option("tennis-serve", "--preset", help="Scene to render."),
+) -> None:
+    """Render an example, estimate it with both methods and plot the result."""
+    from ..lab.demo import run_demo
+
+    for line in run_demo(out, preset):
+        typer.echo(line)
+
+
+def _register_subcommands() -> None:
+    """Experiments and line streams live in their own modules; the commands are theirs."""
+    from .experiment import experiment_app
+    from .stream import batch, watch
+
+    app.add_typer(experiment_app, name="experiment")
+    app.command()(watch)
+    app.command()(batch)
+
+
+_register_subcommands()
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: run the CLI, turning library errors into one-line messages."""
+    try:
+        app(args=argv, prog_name="ballscan", standalone_mode=False)
+    except BallscanError as exc:
+        print(f"ballscan: error: {exc}", file=sys.stderr)
+        return 2
+    except (ValueError, OSError) as exc:
+        print(f"ballscan: error: {exc}", file=sys.stderr)
+        return 2
+    except typer.Exit as exc:
+        return exc.exit_code
+    except typer.Abort:
+        print("ballscan: aborted", file=sys.stderr)
+        return 1
+    except Exception as exc:
+        # usage errors of the (vendored) click parser: show them the click way
+        if hasattr(exc, "show") and hasattr(exc, "exit_code"):
+            exc.show()
+            return int(exc.exit_code)
+        raise
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

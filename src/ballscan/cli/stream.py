@@ -1,0 +1,288 @@
+"""Command functions for line streams: ``ballscan watch`` and ``ballscan batch``.
+
+The functions take typer ``Annotated`` parameters with real defaults, so
+they are both typer commands (``app.command()(watch)``) and plain Python
+functions. They hold no logic: :mod:`ballscan.stream.engine`,
+:mod:`ballscan.stream.sources` and :mod:`ballscan.stream.batch` do the work. Faults are
+raised as :class:`~ballscan.errors.BallscanError` (one-line messages) after
+every result measured before them has been printed.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Annotated, Optional
+
+import numpy as np
+import typer
+
+from ..geometry.camera import LineScanCamera, load_camera
+from ..errors import BallscanError
+from ..stream.engine import StreamConfig, StreamResult, crop_camera, process_stream
+
+__all__ = ["watch", "batch", "open_source", "save_event"]
+
+
+def open_source(
+    source: str,
+    camera: LineScanCamera,
+    *,
+    width: int | None = None,
+    dtype: str = "uint8",
+    chunk_lines: int = 1024,
+    timestamps: Path | None = None,
+    timeout_s: float | None = None,
+):
+    """The line source named by ``source``.
+
+    ``-`` is standard input (raw lines), a folder is a folder of image
+    chunks, ``pylon`` or ``pylon:SERIAL`` a Basler camera, anything else a
+    raw file or named pipe.
+    """
+    from ..stream.sources import ImageFolderSource, PylonSource, RawLineSource
+
+    w = int(width) if width is not None else camera.width
+    if source.startswith("pylon"):
+        serial = source.split(":", 1)[1] if ":" in source else None
+        return PylonSource(serial, timeout_s=timeout_s or 5.0)
+    if source != "-" and Path(source).is_dir():
+        return ImageFolderSource(source, w, timestamps=timestamps)
+    return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps)
+
+
+def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_in_event: int) -> list[Path]:
+    """Write an event's crop (PNG, and the engine's background of its columns and the lines' times, NPZ: once per event) and a ball's overlay (PNG) and JSON.
+
+    Parameters
+    ----------
+    folder : Path
+    result : StreamResult
+        Made with ``keep_crops=True``.
+    camera : LineScanCamera
+        The full camera (the crop's is derived from it).
+    ball_in_event : int
+        Index of the ball within its event (names the overlay).
+
+    Returns
+    -------
+    list of Path
+        Files written.
+    """
+    from ..pipeline.plot import save_overlay
+    from ..model.render import write_image
+    from ..pipeline.results import EstimateReport
+
+    folder.mkdir(parents=True, exist_ok=True)
+    stem = f"event_{result.event_index:05d}_lines_{result.crop_lines[0]}-{result.crop_lines[1]}"
+    written = []
+    if result.crop is not None:
+        png = folder / f"{stem}.png"
+        if not png.exists():
+            write_image(png, result.crop)
+            written.append(png)
+        cols = folder / f"{stem}.columns.npz"
+        if result.crop_columns is not None and not cols.exists():
+            # the engine's background the estimate used: with it the saved
+            # crop gives the same estimate again (estimate_crop(..., columns=))
+            np.savez(
+                cols,
+                background_dn=result.crop_columns.background_dn,
+                noise_dn=result.crop_columns.noise_dn,
+                times_s=result.crop_times_s,
+                crop_lines=np.asarray(result.crop_lines),
+                crop_cols=np.asarray(result.crop_cols),
+            )
+            written.append(cols)
+        cam = crop_camera(camera, *result.crop_cols)
+        overlay = folder / f"{stem}_ball{ball_in_event}.overlay.png"
+        est = result.estimate
+        save_overlay(overlay, result.crop.astype(float), cam, EstimateReport(png.name, (est,)), result.crop_times_s)
+        written.append(overlay)
+    js = folder / f"{stem}_ball{ball_in_event}.json"
+    js.write_text(json.dumps(result.to_dict(camera), indent=2, allow_nan=False))
+    written.append(js)
+    return written
+
+
+class _Status:
+    """A live status line on stderr (only when it is a terminal)."""
+
+    def __init__(self, enabled: bool) -> None:
+        self.enabled = enabled
+        self.t0 = time.perf_counter()
+        self.last = 0.0
+        self.state = (0, 0, 0.0)
+
+    def update(self, lines: int, balls: int, stream_time_s: float, force: bool = False) -> None:
+        self.state = (lines, balls, stream_time_s)
+        if not self.enabled:
+            return
+        now = time.perf_counter()
+        if not force and now - self.last < 0.25:
+            return
+        self.last = now
+        wall = now - self.t0
+        # Lag: how far the stream time read so far is behind the wall clock
+        # (meaningful for a real-time source; negative = faster than real time).
+        lag = wall - stream_time_s
+        rate = lines / wall if wall > 0 else 0.0
+        sys.stderr.write(f"\r{lines:>12,d} lines | {rate / 1e3:8.1f} k lines/s | {balls:5d} balls | lag {lag * 1e3:9.1f} ms ")
+        sys.stderr.flush()
+
+    def close(self, balls: int) -> None:
+        if self.enabled:
+            self.update(self.state[0], balls, self.state[2], force=True)
+            sys.stderr.write("\n")
+            sys.stderr.flush()
+
+
+class _Watched:
+    """Chunk iterator that feeds the status line."""
+
+    def __init__(self, src, status: _Status, line_rate_hz: float) -> None:
+        self._it = iter(src)
+        self.status = status
+        self.rate = line_rate_hz
+        self.lines = 0
+        self.balls = 0
+        self.interrupted = False
+        self._t_first: float | None = None
+
+    def __iter__(self):
+        return self
+
+    def __next__(self):
+        try:
+            ch = next(self._it)
+        except KeyboardInterrupt:
+            # Ctrl-C while waiting for lines (where a watch spends its time):
+            # end the stream normally so the ball in view is still measured.
+            self.interrupted = True
+            raise StopIteration from None
+        self.lines += int(ch.lines.shape[0])
+        if ch.timestamps_s is not None and ch.timestamps_s.size:
+            if self._t_first is None:
+                self._t_first = float(ch.timestamps_s[0])
+            span = float(ch.timestamps_s[-1]) - self._t_first
+        else:
+            span = self.lines / self.rate
+        self.status.update(self.lines, self.balls, span)
+        return ch
+
+
+def watch(
+    source: Annotated[str, typer.Argument(help="Raw lines: a file, a named pipe or '-' (stdin); a folder of PNG/TIFF chunks; or 'pylon[:SERIAL]'.")],
+    camera: Annotated[Path, typer.Option("--camera", help="Camera TOML (geometry.md).")],
+    radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
+    width: Annotated[Optional[int], typer.Option("--width", help="Pixels per raw line (default: the camera's width).")] = None,
+    dtype: Annotated[str, typer.Option("--dtype", help="Raw sample type: uint8 or uint16 (little-endian).")] = "uint8",
+    chunk_lines: Annotated[int, typer.Option("--chunk-lines", help="Lines read at a time from a raw source.")] = 1024,
+    timestamps: Annotated[Optional[Path], typer.Option("--timestamps", help="Per-line timestamps (text or .npy), seconds.")] = None,
+    timeout: Annotated[Optional[float], typer.Option("--timeout", help="Give up when a pipe sends nothing for this many seconds.")] = None,
+    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
+    shading: Annotated[bool, typer.Option("--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate).")] = True,
+    matched: Annotated[bool, typer.Option("--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on).")] = True,
+    background: Annotated[str, typer.Option("--background", help="Background a ball's crop is measured on: 'engine' (the stream's running model of its columns, default) or 'crop' (learned on the crop alone, as 'ballscan estimate' on the saved crop).")] = "engine",
+    k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
+    margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
+    buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
+    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs (and the engine's background of the crop's columns and its lines' times, .columns.npz, with which the crop's estimate is reproduced).")] = None,
+    status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
+    workers: Annotated[int, typer.Option("--workers", help="Processes that run the estimates (0: in the reading process).")] = 0,
+) -> int:
+    """Measure balls in a continuous line stream, one JSON line per ball as it is measured.
+
+    Each line holds geometry.md's estimate keys plus source, first_line and
+    last_line (stream line numbers). The end of the stream or Ctrl-C
+    measures the ball in view and stops; a reader that goes away (| head)
+    ends the watch quietly. Called from Python it returns the number of
+    balls printed.
+    """
+    cam = load_camera(camera)
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    # the settings first: a bad one is reported before a pipe or a camera is opened
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, background=background, keep_crops=save_events is not None)
+    src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
+    if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
+        raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
+    stream = sys.stdout
+    show = sys.stderr.isatty() if status is None else status
+    st = _Status(bool(show))
+    name = getattr(src, "name", source)
+    n = 0
+    per_event: dict[int, int] = {}
+    gen = _Watched(src, st, cam.line_rate_hz)
+    executor = None
+    if workers < 0:
+        raise typer.BadParameter(f"must be >= 0, got {workers}", param_hint="--workers")
+    if workers:
+        # Estimates (tens of ms each) in other processes: reading and the
+        # per-line test keep up with the camera while balls are measured.
+        from concurrent.futures import ProcessPoolExecutor
+
+        from ..stream.engine import preload_estimator
+
+        executor = ProcessPoolExecutor(workers, initializer=preload_estimator)
+    try:
+        for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None, executor=executor):
+            try:
+                stream.write(json.dumps(res.to_dict(cam), allow_nan=False) + "\n")
+                stream.flush()
+            except BrokenPipeError:
+                # The reader went away (e.g. `| head`): stop quietly.
+                return n
+            n += 1
+            if save_events is not None:
+                k = per_event.get(res.event_index, 0)
+                per_event[res.event_index] = k + 1
+                save_event(save_events, res, cam, k)
+            gen.balls = n
+    except KeyboardInterrupt:
+        gen.interrupted = True
+    finally:
+        st.close(n)
+        if executor is not None:
+            executor.shutdown(wait=False, cancel_futures=True)
+    if gen.interrupted:
+        print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
+    return n
+
+
+def batch(
+    inputs: Annotated[list[Path], typer.Argument(help="Images (PNG/TIFF), raw streams (.raw/.bin) or folders of them.")],
+    out_csv: Annotated[Path, typer.Option("--out", help="CSV file: one row per ball; inputs already in it are skipped.")],
+    radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
+    camera: Annotated[Optional[Path], typer.Option("--camera", help="Camera TOML for all inputs (default: NAME.camera.toml beside each).")] = None,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Parallel processes on this machine (-1: all cores).")] = 1,
+    scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Dask distributed scheduler address (tcp://HOST:PORT).")] = None,
+    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
+    dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
+    progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar (default: when stderr is a terminal).")] = None,
+    background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
+) -> int:
+    """Measure every ball of many recorded images or raw streams into one CSV (restartable).
+
+    Inputs already in the CSV are skipped. Each input that fails is printed
+    as one line on stderr and the command exits with status 1; the others
+    are in the CSV. Called from Python it returns the number of balls
+    written (and raises typer.Exit(1) after failures).
+    """
+    from ..stream.batch import run_batch
+
+    summary = run_batch(
+        inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
+        progress=sys.stderr.isatty() if progress is None else progress, background=background,
+    )
+    for src, msg in summary.errors:
+        print(f"ballscan: error: {msg}", file=sys.stderr)
+    print(
+        f"{summary.n_done} inputs measured ({summary.n_balls} balls), {summary.n_skipped} skipped (already in {out_csv}), {len(summary.errors)} failed",
+        file=sys.stderr,
+    )
+    if summary.errors:
+        raise typer.Exit(code=1)
+    return summary.n_balls

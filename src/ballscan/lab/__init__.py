@@ -1,0 +1,1 @@
+"""Scenes and experiments: presets, simulation, the demo and the paper's Monte-Carlo experiments."""

@@ -1,0 +1,805 @@
+"""Finding balls in a line-scan image: background model, threshold, regions, flags.
+
+Background model
+----------------
+A stationary line-scan camera sees the same scene line after line, so the
+background of pixel ``(i, j)`` is modelled as
+
+    B[i, j] = line_gain[i] * background_dn[j] + line_offset_dn[i]
+
+* ``background_dn[j]`` is a per-column level: the *mode* of the column,
+  found by mode seeking (a median restricted to a window of +-4.5 noise
+  sigmas, iterated) started from the level of the neighbouring columns (a
+  wide running median of the column medians). This stays on the background
+  even where a ball covers most of a column's lines (a plain median fails
+  there once the ball covers more than half of them), and, because the
+  window is re-centred on the column's own values, follows hot/cold columns,
+  PRNU and vignetting. Where a column has almost no values near its
+  neighbours' level (a strongly defective column) its own median is used.
+* Slow illumination drift along time is one factor per line, estimated as a
+  median over the background pixels of the line (pixels of a first-pass
+  ball mask excluded), so a ball never biases it. The drift is a gain
+  (``line_gain``, multiplicative: illumination) when the background is well
+  above zero, and an offset (``line_offset_dn``) when the background is near
+  zero, where a ratio would be unstable. The other one is then 1 / 0.
+* ``noise_dn[j]`` is a per-column noise sigma (DN): the interquartile range
+  of the column's background values / 1.349, floored at
+  ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
+  at a fraction of the image's median noise.
+* A caller that already knows the columns' level and noise (the stream
+  engine's running model, learned on thousands of lines before the ball)
+  passes them as a :class:`ColumnModel`: the per-column mode seeking is
+  skipped, and only the per-line drift is estimated from the image.
+
+Regions
+-------
+Pixels whose residual ``|X - B|`` exceeds ``k_sigma * noise_dn[j]`` are
+labelled (8-connected); pieces closer than ``merge_gap_px`` are grouped (a
+textured ball's seam or shaded limb can match the background and cut its
+silhouette into pieces); a group smaller than ``min_area_px`` is rejected
+(noise and hot pixels give single pixels at this threshold). A region's mask
+is the group's pixels with holes filled along each line and each column
+(between the first and last ball pixel of a line, or of a column, is ball).
+A group whose lines or columns contain two separate runs of ball pixels (on
+two or more neighbouring lines or columns: one alone is a ragged edge) is
+two merged balls: it is split at the gap when the two parts are cleanly
+apart along one axis, and flagged ``"overlap"`` either way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage as ndi
+
+from .._kernels import (
+    as_arg,
+    fill_lines_and_cols,
+    first_pass_lines,
+    group_mask,
+    integer_median_mad,
+    kept_median,
+    label_hits,
+    mode_seek,
+    multi_runs,
+    reflect_median_filter,
+    region_values,
+)
+from .images import LineImage
+
+__all__ = [
+    "BallRegion",
+    "ColumnModel",
+    "Detection",
+    "detect",
+    "background_at",
+    "region_background",
+    "median",
+    "FLAG_WORDS",
+]
+
+#: Flags a region can carry (geometry.md vocabulary).
+FLAG_WORDS = ("cut_first_line", "cut_last_line", "cut_sensor_end", "overlap", "saturated")
+
+_BIG = 1e300  # stand-in for "excluded" in masked medians (finite: no inf-inf NaNs)
+_MAD_TO_SIGMA = 1.482602218505602
+_IQR_TO_SIGMA = 1.0 / 1.3489795003921634
+
+
+@dataclass(frozen=True)
+class BallRegion:
+    """One ball's image region.
+
+    Attributes
+    ----------
+    index : int
+        Position in :attr:`Detection.regions` (0-based).
+    line_start, line_stop : int
+        Scan lines ``[line_start, line_stop)`` holding ball pixels.
+    col_start, col_stop : int
+        Sensor pixels ``[col_start, col_stop)`` holding ball pixels.
+    mask : numpy.ndarray
+        bool, shape ``(line_stop - line_start, col_stop - col_start)``: ball
+        pixels of the box, holes filled along lines and columns. Partially
+        covered limb pixels below the threshold are not in it: the edge
+        extractor should look one or two pixels beyond the mask.
+    polarity : int
+        +1 if the ball is brighter than the background, -1 if darker.
+    contrast_dn : float
+        Robust (median) ball-minus-background level over the mask, DN,
+        signed (same sign as ``polarity``).
+    flags : tuple of str
+        Words from :data:`FLAG_WORDS` (geometry.md).
+    n_pixels : int
+        Number of pixels above threshold (before hole filling).
+    """
+
+    index: int
+    line_start: int
+    line_stop: int
+    col_start: int
+    col_stop: int
+    mask: np.ndarray
+    polarity: int
+    contrast_dn: float
+    flags: tuple[str, ...]
+    n_pixels: int = 0
+
+    @property
+    def lines(self) -> slice:
+        """Slice of the box along the scan lines (rows)."""
+        return slice(self.line_start, self.line_stop)
+
+    @property
+    def cols(self) -> slice:
+        """Slice of the box along the sensor (columns)."""
+        return slice(self.col_start, self.col_stop)
+
+
+@dataclass(frozen=True, eq=False)
+class ColumnModel:
+    """A known per-column background (the stream engine's running model).
+
+    Attributes
+    ----------
+    background_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column background level, DN, at the
+        line gain (or offset) of the lines the model was learned on.
+    noise_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column noise sigma, DN.
+
+    Both are stored as read-only float64 copies; models compare by identity
+    (arrays have no single truth value).
+    """
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+
+    def __post_init__(self) -> None:
+        b = np.array(self.background_dn, dtype=np.float64)
+        s = np.array(self.noise_dn, dtype=np.float64)
+        for name, a in (("background_dn", b), ("noise_dn", s)):
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
+        if b.ndim != 1 or s.shape != b.shape or b.size < 2:
+            raise ValueError(f"ColumnModel: background_dn and noise_dn must be 1-D of one length >= 2, got {b.shape} and {s.shape}")
+        if not (np.all(np.isfinite(b)) and np.all(np.isfinite(s)) and np.all(s >= 0)):
+            raise ValueError("ColumnModel: levels must be finite and noise sigmas finite and >= 0")
+
+
+@dataclass(frozen=True)
+class Detection:
+    """Background model and ball regions of one image.
+
+    Attributes
+    ----------
+    background_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column background level (DN) at a line
+        gain of 1. The background of line ``i`` is
+        ``line_gain[i] * background_dn + line_offset_dn[i]``; use
+        :func:`background_at` for the 2-D value.
+    noise_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column noise sigma (DN), floored.
+    regions : tuple of BallRegion
+        Ordered by first line, then by mid line (~ t_c), then first column.
+    saturation_dn : float
+        Level (DN) at or above which pixels are clipped.
+    line_gain : numpy.ndarray
+        float64, shape ``(n_lines,)``: multiplicative drift per line.
+    line_offset_dn : numpy.ndarray
+        float64, shape ``(n_lines,)``: additive drift per line (DN).
+    drift_model : str
+        ``"gain"`` or ``"offset"``: which of the two is estimated.
+    threshold_sigma : float
+        The ``k_sigma`` used.
+    """
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+    regions: tuple[BallRegion, ...]
+    saturation_dn: float
+    line_gain: np.ndarray
+    line_offset_dn: np.ndarray
+    drift_model: str = "gain"
+    threshold_sigma: float = 4.0
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """``(n_lines, W)`` of the image."""
+        return (int(self.line_gain.shape[0]), int(self.background_dn.shape[0]))
+
+
+def background_at(detection: Detection, lines, cols) -> np.ndarray:
+    """Background level (DN) on the grid ``lines x cols``.
+
+    Parameters
+    ----------
+    detection : Detection
+    lines, cols : slice, int array or int
+        Scan lines and sensor pixels (anything that indexes a 1-D array).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(len(lines), len(cols))``.
+    """
+    g = np.atleast_1d(detection.line_gain[lines])
+    o = np.atleast_1d(detection.line_offset_dn[lines])
+    b = np.atleast_1d(detection.background_dn[cols])
+    return g[:, None] * b[None, :] + o[:, None]
+
+
+def region_background(
+    detection: Detection, region: BallRegion, margin: int = 0
+) -> tuple[np.ndarray, np.ndarray, tuple[slice, slice]]:
+    """Background and noise around one region, for the edge extractor.
+
+    Parameters
+    ----------
+    detection : Detection
+    region : BallRegion
+    margin : int, optional
+        Pixels added on every side of the region's box (clipped to the image).
+
+    Returns
+    -------
+    background : numpy.ndarray
+        float64, shape of the (padded) box: background level (DN).
+    noise : numpy.ndarray
+        float64, one value per column of the box: noise sigma (DN).
+    box : tuple of slice
+        ``(lines, cols)`` of the padded box in image coordinates.
+    """
+    n, w = detection.shape
+    m = max(int(margin), 0)
+    ls = slice(max(region.line_start - m, 0), min(region.line_stop + m, n))
+    cs = slice(max(region.col_start - m, 0), min(region.col_stop + m, w))
+    return background_at(detection, ls, cs), detection.noise_dn[cs].copy(), (ls, cs)
+
+
+# --------------------------------------------------------------------------
+# Robust statistics helpers (vectorised)
+# --------------------------------------------------------------------------
+def median(a: np.ndarray) -> np.floating:
+    """``np.median`` of all of ``a``, by one selection.
+
+    The same value and type as ``np.median``: the middle order statistic, or
+    the mean of the two middle ones, of the same dtype (NaN if any value is
+    NaN).  ``np.median`` partitions at both middle ranks at once, and
+    numpy's partition at several ranks is several times slower than at one
+    (15 300 values: 146 against 19 us); here it partitions at the upper
+    middle rank and takes the lower one as the largest value below it.  A
+    compiled selection (numba's ``np.partition``) was slower still on the
+    crops' thousands of values (110 us on 15 300).
+
+    Raises
+    ------
+    ValueError
+        If ``a`` is empty.
+    """
+    a = np.asarray(a)
+    if a.size == 0:
+        raise ValueError("median: empty array")
+    if a.dtype.kind in "biu":
+        a = a.astype(np.float64)  # as np.median: integers average in float64
+    a = a.ravel()
+    if a.dtype.kind == "f" and np.isnan(a).any():
+        return a.dtype.type(np.nan)
+    h = a.size // 2
+    p = np.partition(a, h)
+    hi = p[h]
+    if a.size % 2:
+        return hi
+    # numpy scalars of a's dtype: the mean of the two in that precision, as np.median
+    return (p[:h].max() + hi) / 2
+
+
+def _row_median(a: np.ndarray) -> np.ndarray:
+    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows (see :func:`median`)."""
+    s = np.sort(a, axis=1)
+    h = s.shape[1] // 2
+    return s[:, h] if s.shape[1] % 2 else (s[:, h - 1] + s[:, h]) / 2
+
+
+def _masked_median(s: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Median of the non-excluded values of each row and their count.
+
+    ``s`` holds the rows with their excluded values set to +inf (sorted here,
+    in place) and ``excluded`` the number of them per row.  The median is
+    defined as that of the row with its excluded values replaced by
+    alternately +BIG and -BIG (in the order they occur), so that they cancel
+    in pairs: the median of the kept values, to half a rank when the number
+    excluded is odd. Computed without building that row: the middle ranks of
+    the virtual row ``[-BIG] * (e // 2) + kept + [+BIG] * ((e + 1) // 2)``
+    are looked up among the sorted kept values. Rows with no kept value
+    give 0; check the count.
+    """
+    s.sort(axis=1)
+    # compiled (_kernels.kept_median): the look-up as numpy index arithmetic
+    # was some ten operations on per-line arrays, 50 us on a stream crop
+    return kept_median(s, as_arg(excluded, np.int64), _BIG)
+
+
+def _mode_seek(
+    s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Mode and noise of each row of the row-sorted ``s`` by mode seeking.
+
+    Each iteration takes the values within +-4.5 sigma of the current centre
+    and moves the centre to their median (the final level is their mean). After two iterations sigma becomes
+    the standard deviation of the window's values (a +-4.5 sigma window keeps
+    99.9993 % of Gaussian noise, so that is the noise sigma; an IQR would be
+    coarse on integer data), and two more iterations follow with it. Ball
+    values far from the background never enter the window.
+
+    Because the rows are sorted, a window is an index range, found by a
+    binary search in O(log n) per row (``s`` is float32: the window test and
+    the offsets from the centre are in float32, the sums in float64).
+
+    Returns
+    -------
+    centre, sigma, count : numpy.ndarray
+        Per row: the mode, the noise sigma and the number of values in the
+        final window.
+    """
+    # compiled (_kernels.mode_seek): the numpy form of these rounds, some
+    # sixty whole-array operations, took 0.75 ms on a stream crop (150 x 200)
+    return mode_seek(as_arg(s, np.float32), as_arg(start), as_arg(sigma), float(floor))
+
+
+def _global_noise(x: np.ndarray) -> float:
+    """Noise sigma (DN) from differences of consecutive lines (balls are rare outliers); ``x`` float32."""
+    if x.shape[0] < 2:
+        return 0.0
+    d = np.diff(x, axis=0).ravel()
+    # ~100k differences pin sigma to well under 1 %: no need for more.
+    d = d[:: max(1, d.size // 100_000)]
+    if d.size == 0:
+        return 0.0
+    # Integer data (the usual case): both medians by counting, exact, at a
+    # quarter of the two selections' cost (15 000 values: 10 against 39 us).
+    ok, _, mad = integer_median_mad(as_arg(d, np.float32))
+    mad = np.float32(mad) if ok else median(np.abs(d - median(d)))
+    return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
+
+
+# --------------------------------------------------------------------------
+# Background model
+# --------------------------------------------------------------------------
+def _background(
+    x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+    n, w = x.shape
+    # Column subsample for per-line statistics: a few hundred columns give a
+    # per-line level to a small fraction of the noise, at a fraction of the cost.
+    step = max(1, w // 512)
+    xs = x[:, ::step]
+    # Per-line level from the line medians: balls cover a minority of a line.
+    level = _row_median(xs)
+    if known is None:
+        sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
+        b, sig, gain0, offset0, use_gain = _column_modes(x, level, sigma0, noise_floor_dn)
+    else:
+        # a writeable copy: the kernels below take writeable arrays (a
+        # read-only one would compile a second signature on a stream ball)
+        b = known.background_dn.copy()
+        sig = np.maximum(known.noise_dn, noise_floor_dn)
+        # the known levels hold the drift of the lines they were learned on:
+        # this image's lines are measured relative to them
+        ref = float(median(b[::step]))
+        use_gain = ref > 10.0 * max(float(median(sig)), noise_floor_dn) and float(level.min()) > 0.0
+        gain0 = level / ref if use_gain else np.ones(n)
+        offset0 = np.zeros(n) if use_gain else level - ref
+    return _line_drift(xs, step, b, sig, gain0, offset0, use_gain, noise_floor_dn, first_pass_k)
+
+
+def _column_modes(
+    x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
+    """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
+    n, w = x.shape
+    ref = float(median(level))
+    use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
+    # Per-column mode, started from the neighbours' level, on the columns with
+    # the per-line level removed: s is (W, n), each column sorted. It is
+    # written transposed and sorted in place (sorting a transposed view
+    # copies every row first).
+    s = np.empty((w, n), dtype=x.dtype)
+    if use_gain:
+        gain0 = level / ref
+        offset0 = np.zeros(n)
+        np.divide(x.T, gain0.astype(x.dtype)[None, :], out=s)
+    else:
+        gain0 = np.ones(n)
+        offset0 = level - ref
+        np.subtract(x.T, offset0.astype(x.dtype)[None, :], out=s)
+    s.sort(axis=1)
+    col_med = (s[:, n // 2] if n % 2 else 0.5 * (s[:, n // 2 - 1] + s[:, n // 2])).astype(np.float64)
+    # Wide enough to out-vote a run of up to ~127 ball-dominated columns (a
+    # median filter leaves monotone profiles such as vignetting unchanged).
+    win = max(w // 4, 255) | 1
+    # "reflect", not "nearest": at a sensor end "nearest" repeats the end column
+    # half a window long, and a ball covering that end would out-vote the background.
+    size = min(win, 2 * w - 1)
+    if np.isnan(col_med).any():
+        neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
+    else:
+        # compiled (_kernels.reflect_median_filter): the same values, 4 against 17 us
+        neighbours = reflect_median_filter(col_med, size)
+    sig_start = np.full(w, sigma0)
+    b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
+    min_support = max(3, int(np.ceil(0.03 * n)))
+    weak = cnt < min_support
+    if np.any(weak):
+        # A column whose values are nowhere near its neighbours' level is a
+        # defective (hot/cold) column, not a ball: use its own mode.
+        b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
+        b[weak] = b2
+        sig[weak] = sig2
+    return b, sig, gain0, offset0, use_gain
+
+
+def _line_drift(
+    xs: np.ndarray,
+    step: int,
+    b: np.ndarray,
+    sig: np.ndarray,
+    gain0: np.ndarray,
+    offset0: np.ndarray,
+    use_gain: bool,
+    noise_floor_dn: float,
+    first_pass_k: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+    """Per-line gain or offset from the background pixels of the subsampled columns ``xs``, and the floored noise."""
+    n = xs.shape[0]
+    # First-pass ball mask on the subsampled columns, then per-line drift from
+    # background pixels only.
+    bs = b[::step]
+    thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
+    # compiled (_kernels.first_pass_lines): the residual, the exclusion and
+    # the samples as numpy passes were some ten whole-array operations and
+    # temporaries, 0.1 ms on a stream crop
+    samples, n_excluded = first_pass_lines(
+        as_arg(xs, np.float32), as_arg(gain0), as_arg(offset0), as_arg(bs), as_arg(thr), use_gain
+    )
+    v, c = _masked_median(samples, n_excluded)
+    good = c >= max(3, xs.shape[1] // 10)
+    if use_gain:
+        gain = _fill_bad(v, good, gain0)
+        offset = np.zeros(n)
+    else:
+        offset = _fill_bad(v, good, offset0)
+        gain = np.ones(n)
+
+    # Noise floor: the quantisation floor, and not less than a quarter of the
+    # typical column noise (a column with too few background values to
+    # measure must not get a tiny sigma and flood the mask).
+    typical = float(median(sig)) if sig.size else noise_floor_dn
+    noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
+    return b, noise, gain, offset, ("gain" if use_gain else "offset")
+
+
+def _fill_bad(values: np.ndarray, good: np.ndarray, fallback: np.ndarray) -> np.ndarray:
+    """Replace values of lines without enough background by interpolation (or the fallback)."""
+    if np.all(good):
+        return values
+    if not np.any(good):
+        return fallback.astype(np.float64)
+    idx = np.arange(values.size)
+    return np.interp(idx, idx[good], values[good])
+
+
+# --------------------------------------------------------------------------
+# Regions
+# --------------------------------------------------------------------------
+# the closing that tells a ragged edge from a notch between two balls (pixels)
+_NOTCH_CLOSE_PX = 2
+
+
+def _merged_runs(m: np.ndarray, closed: np.ndarray, axis: int) -> np.ndarray:
+    """Lines (``axis=1``) or columns (``axis=0``) of ``closed`` (the closed ``m``) in two or more runs, less a ragged edge.
+
+    A line (column) in two runs counts where its neighbour is in two runs
+    too, in ``closed`` or, with ``m`` closed by only ``_NOTCH_CLOSE_PX``
+    pixels, there: a notch between two touching balls shows on several
+    neighbouring lines of the lightly closed mask even where the full
+    closing leaves it on one line at each end of their overlap (a small
+    ball beside a large one; a review found such pairs passed as one clean
+    ball).  One such line alone in both is a ragged edge: on a long ball the
+    column at its widest point is covered by a fraction of a pixel for
+    hundreds of lines, its pixels cross the threshold only now and then,
+    and gaps longer than the closing's leave it in two runs (the quick
+    Fig. 5 sweep's 140 000 lines/s ball, 700 lines: 2 of 128 noisy renders
+    split at such a column into two "overlapping" balls, V.x 6 and 43 sigma
+    of the bound off).
+    """
+    # compiled (_kernels.multi_runs): 3 against 9 us as numpy on a ball's box
+    out, lone = multi_runs(as_arg(closed, np.bool_), axis)
+    if np.any(lone):
+        light, _ = multi_runs(as_arg(_close(m, _NOTCH_CLOSE_PX), np.bool_), axis)
+        out |= lone & light
+    return out
+
+
+def _valid_run(f: np.ndarray, k: int, op: np.ufunc, axis: int) -> np.ndarray:
+    """``op`` (logical or / and) over every window of ``k`` entries along ``axis`` (0 or 1), windows inside ``f`` only.
+
+    Entry ``i`` of the result combines ``f[i : i + k]`` along ``axis`` (the
+    result is ``k - 1`` shorter). Built by doubling: windows of 1, 2, 4, ...
+    entries, then two overlapping windows of the largest such length (or and
+    and are idempotent, so the overlap does not matter): a few whole-array
+    boolean operations instead of a per-pixel running filter.
+    """
+
+    def head(g: np.ndarray, d: int) -> np.ndarray:
+        return g[:-d] if axis == 0 else g[:, :-d]
+
+    def tail(g: np.ndarray, d: int) -> np.ndarray:
+        return g[d:] if axis == 0 else g[:, d:]
+
+    g = f
+    length = 1
+    while 2 * length <= k:
+        g = op(head(g, length), tail(g, length))
+        length *= 2
+    if length < k:
+        g = op(head(g, k - length), tail(g, k - length))
+    return g
+
+
+def _close(m: np.ndarray, r: int) -> np.ndarray:
+    """Binary closing by a (2r+1)^2 square, as if the mask were surrounded by background (no edge effects).
+
+    A square is the sum of a horizontal and a vertical segment, so the
+    dilation and the erosion are each two 1-D window operations. The mask is
+    padded by ``2 r`` background pixels and only windows inside the padded
+    array are formed: the dilation then sees all the background it would see
+    in an unbounded plane, and the erosion of the ``r``-wide dilated border
+    never needs a pixel beyond it (this runs on every stream event's crop).
+    """
+    if r <= 0:
+        return m
+    k = 2 * r + 1
+    p = np.zeros((m.shape[0] + 4 * r, m.shape[1] + 4 * r), dtype=bool)
+    p[2 * r : -2 * r, 2 * r : -2 * r] = m
+    d = _valid_run(_valid_run(p, k, np.logical_or, 0), k, np.logical_or, 1)
+    return _valid_run(_valid_run(d, k, np.logical_and, 0), k, np.logical_and, 1)
+
+
+def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndarray]] | None:
+    """Try to split a merged mask into two parts cleanly apart along one axis.
+
+    Returns ``[(dl, dc, mask), ...]`` (offsets in the box) or None.
+    """
+    closed = _close(m, r)
+    for axis in (1, 0):  # first apart along the sensor (same time), then in time
+        multi = _merged_runs(m, closed, axis)
+        if not np.any(multi):
+            continue
+        # Gap centres along the other axis, on the lines (or columns) with two runs.
+        sub = closed[multi, :] if axis == 1 else closed[:, multi].T
+        centres = []
+        for row in sub:
+            idx = np.flatnonzero(row)
+            gaps = np.flatnonzero(np.diff(idx) > 1)
+            if gaps.size:
+                g = gaps[0]
+                centres.append(0.5 * (idx[g] + idx[g + 1]))
+        if not centres:
+            continue
+        cut = int(np.floor(np.median(centres))) + 1
+        if axis == 1:
+            a, b = m[:, :cut], m[:, cut:]
+            offs = ((0, 0), (0, cut))
+        else:
+            a, b = m[:cut, :], m[cut:, :]
+            offs = ((0, 0), (cut, 0))
+        if a.sum() < min_area or b.sum() < min_area:
+            continue
+        parts = []
+        for (dl, dc), part in zip(offs, (a, b)):
+            rows = np.flatnonzero(part.any(axis=1))
+            cols = np.flatnonzero(part.any(axis=0))
+            crop = part[rows[0] : rows[-1] + 1, cols[0] : cols[-1] + 1]
+            cc = _close(crop, r)
+            if np.any(_merged_runs(crop, cc, 1)) or np.any(_merged_runs(crop, cc, 0)):
+                parts = None
+                break
+            parts.append((dl + rows[0], dc + cols[0], crop))
+        if parts:
+            return parts
+    return None
+
+
+def _group_components(
+    lab: np.ndarray, boxes: np.ndarray, sizes: np.ndarray, gap: int, min_piece: int
+) -> list[list[int]]:
+    """Group labelled pieces closer than ``gap`` pixels (union-find on boxes, checked on pixels).
+
+    ``boxes[k]`` is ``(line_start, line_stop, col_start, col_stop)`` and
+    ``sizes[k]`` the pixel count of label ``k + 1``.
+    """
+    ids = np.flatnonzero(sizes >= min_piece).tolist()
+    if not ids:
+        return []
+    box = boxes[ids]
+    parent = list(range(len(ids)))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    if len(ids) > 1:
+        l0, l1, c0, c1 = (box[:, q] for q in range(4))
+        near = (
+            (l0[:, None] - gap < l1[None, :])
+            & (l0[None, :] - gap < l1[:, None])
+            & (c0[:, None] - gap < c1[None, :])
+            & (c0[None, :] - gap < c1[:, None])
+        )
+        ii, jj = np.nonzero(np.triu(near, 1))
+        st = np.ones((2 * gap + 1, 2 * gap + 1), dtype=bool)
+        for i, j in zip(ii.tolist(), jj.tolist()):
+            if find(i) == find(j):
+                continue
+            # Pixel-level check in the joint box.
+            ls = slice(min(l0[i], l0[j]), max(l1[i], l1[j]))
+            cs = slice(min(c0[i], c0[j]), max(c1[i], c1[j]))
+            sub = lab[ls, cs]
+            mi = ndi.binary_dilation(sub == ids[i] + 1, st)
+            if np.any(mi & (sub == ids[j] + 1)):
+                parent[find(i)] = find(j)
+    groups: dict[int, list[int]] = {}
+    for i in range(len(ids)):
+        groups.setdefault(find(i), []).append(ids[i])
+    return list(groups.values())
+
+
+def detect(
+    image: LineImage,
+    *,
+    k_sigma: float = 4.0,
+    min_area_px: int = 12,
+    merge_gap_px: int = 6,
+    noise_floor_dn: float = 0.5,
+    columns: ColumnModel | None = None,
+) -> Detection:
+    """Find the balls in a line-scan image.
+
+    Parameters
+    ----------
+    image : LineImage
+        The image (rows = scan lines).
+    k_sigma : float, optional
+        Threshold on ``|X - background|`` in units of the column's noise sigma.
+    min_area_px : int, optional
+        Smallest region (pixels above threshold) kept as a ball; smaller blobs
+        are noise, hot pixels or debris.
+    merge_gap_px : int, optional
+        Pieces closer than this (pixels) are one ball (seams or shaded limbs
+        at background level cut a textured ball into pieces).
+    noise_floor_dn : float, optional
+        Smallest noise sigma (DN) used for thresholds: keeps a noise-free or
+        flat image from dividing by zero.
+    columns : ColumnModel, optional
+        The columns' background level and noise when they are known (the
+        stream engine's model of a crop's columns): used as they are (the
+        noise floored as the detector's own), and only the per-line drift is
+        estimated from the image.
+
+    Returns
+    -------
+    Detection
+        Background model and regions; no regions for an empty, flat or fully
+        saturated image.
+    """
+    if not (np.isfinite(k_sigma) and k_sigma > 0):
+        raise ValueError(f"k_sigma must be a positive number, got {k_sigma}")
+    x = np.asarray(image.data, dtype=np.float64)
+    if x.ndim != 2 or x.shape[0] < 2 or x.shape[1] < 2:
+        raise ValueError(f"image must be 2-D with at least 2 lines and 2 columns, got shape {x.shape}")
+    n, w = x.shape
+    if columns is not None and np.shape(columns.background_dn) != (w,):
+        raise ValueError(f"columns: a model of {np.shape(columns.background_dn)[0]} columns for an image of {w}")
+    sat = float(image.saturation_dn)
+    floor = max(float(noise_floor_dn), 1e-12)
+
+    # float32 for the whole-image passes: exact for 16-bit integers, and the
+    # statistics are accumulated in float64.
+    x32 = x.astype(np.float32)
+    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0, known=columns)
+    # The pixels with |x - background| > k_sigma noise (in float32), labelled
+    # 8-connected, with their sizes and boxes: compiled
+    # (_kernels.label_hits), where the threshold's numpy passes, ndi.label,
+    # np.bincount and ndi.find_objects took 0.25 ms on a stream crop; the
+    # same labels.  The offset is 0 in the gain model: adding it there
+    # changes no residual.
+    lab, sizes, boxes = label_hits(
+        as_arg(x32, np.float32),
+        gain.astype(np.float32),
+        b.astype(np.float32),
+        offset.astype(np.float32),
+        (k_sigma * noise).astype(np.float32),
+    )
+    nlab = sizes.size
+    regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
+    if nlab:
+        gap = max(int(merge_gap_px), 0)
+        for grp in _group_components(lab, boxes, sizes, gap, min_piece=2):
+            area = int(sizes[grp].sum())
+            if area < min_area_px:
+                continue
+            first, stop = boxes[grp].min(axis=0), boxes[grp].max(axis=0)
+            l0, l1, c0, c1 = int(first[0]), int(stop[1]), int(first[2]), int(stop[3])
+            if l1 - l0 < 2 or c1 - c0 < 2:
+                continue  # a hot pixel run along one line or one column
+            in_group = np.zeros(nlab + 1, dtype=bool)
+            in_group[np.asarray(grp) + 1] = True
+            # compiled (_kernels.group_mask): in_group[lab[l0:l1, c0:c1]], 3 against 15 us
+            m = group_mask(lab, l0, l1, c0, c1, in_group)
+            closed = _close(m, gap)
+            merged = bool(np.any(_merged_runs(m, closed, 1)) or np.any(_merged_runs(m, closed, 0)))
+            if merged:
+                parts = _split(m, gap, min_area_px)
+                if parts:
+                    for dl, dc, pm in parts:
+                        regions_raw.append((l0 + dl, c0 + dc, pm, True))
+                    continue
+            regions_raw.append((l0, c0, m, merged))
+
+    built = []
+    x64 = as_arg(x)
+    for l0, c0, m, merged in regions_raw:
+        # compiled (_kernels.fill_lines_and_cols, _kernels.region_values): as
+        # numpy the fill and the values took 0.15 ms per ball
+        filled = fill_lines_and_cols(as_arg(m, np.bool_))
+        h, wd = filled.shape
+        vals, saturated = region_values(x64, gain, b, offset, l0, c0, filled, sat)
+        contrast = float(median(vals)) if vals.size else 0.0
+        polarity = 1 if contrast >= 0 else -1
+        flags = []
+        if l0 == 0:
+            flags.append("cut_first_line")
+        if l0 + h >= n:
+            flags.append("cut_last_line")
+        if c0 == 0 or c0 + wd >= w:
+            flags.append("cut_sensor_end")
+        if merged:
+            flags.append("overlap")
+        if saturated:
+            flags.append("saturated")
+        # a mask's box is its pixels' box: its first and last lines hold pixels
+        mid_line = l0 + 0.5 * (h - 1)
+        filled.setflags(write=False)
+        built.append((l0, mid_line, c0, filled, polarity, contrast, tuple(flags), int(m.sum())))
+    built.sort(key=lambda t: (t[0], t[1], t[2]))
+    regions = tuple(
+        BallRegion(
+            index=i,
+            line_start=int(l0),
+            line_stop=int(l0 + f.shape[0]),
+            col_start=int(c0),
+            col_stop=int(c0 + f.shape[1]),
+            mask=f,
+            polarity=pol,
+            contrast_dn=con,
+            flags=fl,
+            n_pixels=npx,
+        )
+        for i, (l0, _, c0, f, pol, con, fl, npx) in enumerate(built)
+    )
+    for arr in (b, noise, gain, offset):
+        arr.setflags(write=False)
+    return Detection(
+        background_dn=b,
+        noise_dn=noise,
+        regions=regions,
+        saturation_dn=sat,
+        line_gain=gain,
+        line_offset_dn=offset,
+        drift_model=model,
+        threshold_sigma=float(k_sigma),
+    )

@@ -1,0 +1,407 @@
+"""Loading line-scan images and per-line timestamps (geometry.md, "Images").
+
+A line-scan image is a 2-D array of shape ``(n_lines, W)``: row ``i`` is scan
+line ``i``, column ``j`` is sensor pixel ``j``. Values are kept as stored (a
+12-bit camera's data in a 16-bit file stays 0..4095); the saturation level is
+the type's maximum unless the caller overrides it.
+
+Accepted files
+--------------
+* PNG, 8- or 16-bit grey, 8-bit grey+alpha, 8-bit RGB(A) or palette. 16-bit
+  colour PNGs are refused because the decoder (Pillow) would silently reduce
+  them to 8 bits; save those as 16-bit grey PNG or as TIFF.
+* TIFF (one page), ``uint8`` or ``uint16``, grey or RGB(A), contiguous or
+  planar samples.
+* Colour is converted to grey with the Rec. 601 luma weights
+  0.299, 0.587, 0.114; alpha is dropped.
+* Floating-point and signed-integer images are refused: the contract is 8-
+  or 16-bit data whose saturation level is the type's maximum, and a float
+  file has no such level (decision documented here, see geometry.md).
+
+Every problem is reported as one :class:`~ballscan.errors.ImageFileError`
+naming the file. The file's format is decided from its magic bytes, not its
+extension. Before any pixel data is decoded, the dimensions claimed by the
+PNG ``IHDR`` chunk or the TIFF directory are checked against ``max_pixels``
+so that a crafted header ("decompression bomb") cannot make us allocate
+memory; every PNG chunk's CRC is verified, so a flipped byte is reported
+rather than decoded into wrong pixels.
+"""
+
+from __future__ import annotations
+
+import os
+import struct
+import warnings
+import zlib
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ImageFileError
+
+__all__ = ["LineImage", "load_image", "load_timestamps", "DEFAULT_MAX_PIXELS"]
+
+#: Default refusal limit on ``n_lines * W`` (about 268 million pixels, 2 GiB
+#: as float64): far above any real line-scan capture, far below what a forged
+#: header can claim.
+DEFAULT_MAX_PIXELS = 2**28
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+_TIFF_MAGICS = (b"II*\x00", b"MM\x00*", b"II+\x00", b"MM\x00+")
+_LUMA = np.array([0.299, 0.587, 0.114])
+
+
+@dataclass(frozen=True)
+class LineImage:
+    """A line-scan image as stored in its file.
+
+    Attributes
+    ----------
+    data : numpy.ndarray
+        float64, shape ``(n_lines, W)``; row = scan line, column = sensor
+        pixel. Digital numbers (DN) as stored, e.g. 0..255 or 0..4095.
+    saturation_dn : float
+        Level (DN) at or above which a pixel is clipped: the dtype's maximum
+        (255 or 65535) unless overridden when loading.
+    bits : int
+        Bits per sample of the file, 8 or 16.
+    source : str
+        Path of the file (used in messages).
+    """
+
+    data: np.ndarray
+    saturation_dn: float
+    bits: int
+    source: str
+
+    @property
+    def n_lines(self) -> int:
+        """Number of scan lines (rows)."""
+        return int(self.data.shape[0])
+
+    @property
+    def width(self) -> int:
+        """Number of sensor pixels per line (columns)."""
+        return int(self.data.shape[1])
+
+
+# --------------------------------------------------------------------------
+# PNG
+# --------------------------------------------------------------------------
+def _check_png(raw: bytes, src: str, max_pixels: int) -> tuple[int, int, int, int]:
+    """Walk the PNG chunks, verify CRCs and IHDR; return (W, H, depth, colour type)."""
+    pos = len(_PNG_SIGNATURE)
+    n = len(raw)
+    ihdr = None
+    seen_idat = False
+    seen_iend = False
+    while pos < n:
+        if pos + 8 > n:
+            raise ImageFileError(src, "truncated PNG (incomplete chunk header)")
+        length, ctype = struct.unpack(">I4s", raw[pos : pos + 8])
+        if length > 2**31 - 1:
+            raise ImageFileError(src, f"corrupt PNG (chunk length {length} out of range)")
+        end = pos + 8 + length + 4
+        if end > n:
+            raise ImageFileError(src, f"truncated PNG (chunk {ctype!r} runs past the end of the file)")
+        body = raw[pos + 4 : pos + 8 + length]
+        (crc,) = struct.unpack(">I", raw[pos + 8 + length : end])
+        if zlib.crc32(body) & 0xFFFFFFFF != crc:
+            name = ctype.decode("latin-1", "replace")
+            raise ImageFileError(src, f"corrupt PNG (CRC mismatch in {name} chunk at byte {pos})")
+        if ihdr is None:
+            if ctype != b"IHDR" or length != 13:
+                raise ImageFileError(src, "corrupt PNG (first chunk is not a valid IHDR)")
+            ihdr = struct.unpack(">IIBBBBB", raw[pos + 8 : pos + 8 + 13])
+            width, height = ihdr[0], ihdr[1]
+            # Refuse before anything is decoded or allocated.
+            if width == 0 or height == 0:
+                raise ImageFileError(src, f"empty PNG image ({width} x {height} pixels)")
+            if width * height > max_pixels:
+                raise ImageFileError(
+                    src,
+                    f"PNG header claims {height} lines x {width} pixels = {width * height} pixels, "
+                    f"more than the limit of {max_pixels}",
+                )
+        elif ctype == b"IDAT":
+            seen_idat = True
+        elif ctype == b"IEND":
+            seen_iend = True
+            break
+        pos = end
+    if ihdr is None:
+        raise ImageFileError(src, "truncated PNG (no IHDR chunk)")
+    if not seen_idat:
+        raise ImageFileError(src, "truncated PNG (no image data)")
+    if not seen_iend:
+        raise ImageFileError(src, "truncated PNG (no IEND chunk)")
+    width, height, depth, colour = ihdr[0], ihdr[1], ihdr[2], ihdr[3]
+    if depth not in (8, 16) and not (colour == 3 and depth in (1, 2, 4)):
+        raise ImageFileError(src, f"unsupported PNG bit depth {depth} (need 8 or 16)")
+    if depth == 16 and colour != 0:
+        raise ImageFileError(
+            src, "16-bit colour or grey+alpha PNG is not supported (save as 16-bit grey PNG or TIFF)"
+        )
+    return width, height, depth, colour
+
+
+def _read_png(path: Path, raw: bytes, src: str, max_pixels: int) -> tuple[np.ndarray, int]:
+    from PIL import Image, PngImagePlugin
+
+    _, _, depth, colour = _check_png(raw, src, max_pixels)
+    try:
+        with warnings.catch_warnings():
+            # Our own max_pixels check has run; Pillow's global bomb limit is not ours.
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            # The plugin class is used directly: Image.open would apply Pillow's
+            # process-wide MAX_IMAGE_PIXELS instead of the caller's max_pixels.
+            with PngImagePlugin.PngImageFile(str(path)) as im:
+                im.load()
+                if im.mode == "P":
+                    im = im.convert("RGBA" if "transparency" in im.info else "RGB")
+                elif im.mode in ("1",):
+                    im = im.convert("L")
+                arr = np.array(im)
+    except ImageFileError:
+        raise
+    except Exception as exc:  # Pillow raises many types for damaged streams
+        raise ImageFileError(src, f"cannot decode PNG ({_one_line(exc)})") from None
+    if depth == 16 and arr.dtype != np.uint16:
+        # Pillow gives mode I;16 -> uint16, or "I" -> int32 holding 0..65535.
+        if arr.dtype.kind in "iu" and arr.size and (arr.min() < 0 or arr.max() > 65535):
+            raise ImageFileError(src, "16-bit PNG decoded out of range")
+        arr = arr.astype(np.uint16)
+    return arr, (16 if depth == 16 else 8)
+
+
+# --------------------------------------------------------------------------
+# TIFF
+# --------------------------------------------------------------------------
+def _read_tiff(path: Path, size: int, src: str, max_pixels: int) -> tuple[np.ndarray, int]:
+    import logging
+
+    import tifffile
+
+    tiff_log = logging.getLogger("tifffile")
+    level = tiff_log.level
+    tiff_log.setLevel(logging.CRITICAL)  # its notes on odd tags would break the one-line contract
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # tifffile logs/warns on odd tags; errors are ours
+            with tifffile.TiffFile(str(path)) as tif:
+                n_pages = len(tif.pages)
+                if n_pages != 1:
+                    raise ImageFileError(
+                        src, f"TIFF has {n_pages} pages/images, need exactly one 2-D image"
+                    )
+                page = tif.pages[0]
+                shape = tuple(int(s) for s in page.shape)
+                count = int(np.prod(shape, dtype=np.float64)) if shape else 0
+                if count == 0:
+                    raise ImageFileError(src, f"empty TIFF image (shape {shape})")
+                if count > max_pixels * 4:  # allow up to 4 samples per pixel
+                    raise ImageFileError(
+                        src,
+                        f"TIFF header claims shape {shape} = {count} samples, more than the limit",
+                    )
+                dtype = np.dtype(page.dtype) if page.dtype is not None else None
+                if dtype is None or dtype not in (np.dtype(np.uint8), np.dtype(np.uint16)):
+                    raise ImageFileError(
+                        src, f"unsupported TIFF sample type {dtype} (need 8- or 16-bit unsigned)"
+                    )
+                # Truncation: every strip/tile must lie inside the file.
+                offsets = page.dataoffsets
+                counts = page.databytecounts
+                if offsets and counts:
+                    last = max(int(o) + int(c) for o, c in zip(offsets, counts))
+                    if last > size:
+                        raise ImageFileError(
+                            src, f"truncated TIFF (image data ends at byte {last}, file has {size})"
+                        )
+                axes = page.axes
+                arr = page.asarray()
+    except ImageFileError:
+        raise
+    except Exception as exc:
+        raise ImageFileError(src, f"cannot read TIFF ({_one_line(exc)})") from None
+    finally:
+        tiff_log.setLevel(level)
+    arr = np.asarray(arr)
+    # Bring a samples axis (RGB / planar) to the end, refuse any other extra axis.
+    if "S" in axes and arr.ndim == len(axes):
+        arr = np.moveaxis(arr, axes.index("S"), -1)
+        rest = [s for a, s in zip(axes, arr.shape) if a != "S"]
+        if len(rest) != 2:
+            raise ImageFileError(src, f"TIFF is not a 2-D image (axes {axes}, shape {shape})")
+    return arr, (16 if arr.dtype == np.uint16 else 8)
+
+
+# --------------------------------------------------------------------------
+def _one_line(exc: BaseException) -> str:
+    text = " ".join(str(exc).split()) or type(exc).__name__
+    return text[:200]
+
+
+def _to_grey(arr: np.ndarray, src: str) -> np.ndarray:
+    """Grey float64 2-D array from a decoded grey / grey+alpha / RGB(A) array."""
+    if arr.ndim == 2:
+        return arr.astype(np.float64)
+    if arr.ndim == 3 and arr.shape[2] in (1, 2, 3, 4):
+        c = arr.shape[2]
+        if c <= 2:  # grey or grey+alpha: drop alpha
+            return arr[:, :, 0].astype(np.float64)
+        # Rec. 601 luma of the stored values; alpha (4th sample) dropped.
+        return arr[:, :, :3].astype(np.float64) @ _LUMA
+    raise ImageFileError(src, f"not a 2-D image (decoded array shape {arr.shape})")
+
+
+def load_image(
+    path: str | os.PathLike[str],
+    *,
+    lines_as_columns: bool = False,
+    saturation_dn: float | None = None,
+    max_pixels: int = DEFAULT_MAX_PIXELS,
+) -> LineImage:
+    """Load a line-scan image from a PNG or TIFF file.
+
+    Parameters
+    ----------
+    path : str or path-like
+        PNG or TIFF file (format decided by its magic bytes).
+    lines_as_columns : bool, optional
+        The file stores time along its columns: transpose it so that rows are
+        scan lines.
+    saturation_dn : float, optional
+        Level (DN) at or above which a pixel is clipped. Default: the file's
+        type maximum (255 or 65535). Must be > 0.
+    max_pixels : int, optional
+        Refuse images whose header claims more pixels than this, before
+        decoding (default :data:`DEFAULT_MAX_PIXELS` = 2**28).
+
+    Returns
+    -------
+    LineImage
+        ``data`` is float64 of shape ``(n_lines, W)`` with the stored values.
+
+    Raises
+    ------
+    ImageFileError
+        One-line message naming the file: missing, empty, unknown format,
+        truncated, corrupt, not 2-D, unsupported type, too large, or fewer than
+        2 lines or 2 columns.
+    """
+    src = os.fspath(path)
+    p = Path(src)
+    if not p.exists():
+        raise ImageFileError(src, "no such file")
+    if p.is_dir():
+        raise ImageFileError(src, "is a directory, not an image file")
+    try:
+        size = p.stat().st_size
+        with open(p, "rb") as fh:
+            head = fh.read(8)
+    except OSError as exc:
+        raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
+    if size == 0:
+        raise ImageFileError(src, "empty file (0 bytes)")
+    if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
+        raise ImageFileError(src, f"saturation level must be a positive number, got {saturation_dn}")
+
+    if head[:4] == _PNG_SIGNATURE[:4]:
+        if head != _PNG_SIGNATURE:
+            raise ImageFileError(src, "truncated or corrupt PNG signature")
+        try:
+            raw = p.read_bytes()
+        except OSError as exc:
+            raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
+        arr, bits = _read_png(p, raw, src, max_pixels)
+    elif head[:4] in _TIFF_MAGICS:
+        arr, bits = _read_tiff(p, size, src, max_pixels)
+    else:
+        raise ImageFileError(src, "unknown image format (need PNG or TIFF)")
+
+    grey = _to_grey(np.asarray(arr), src)
+    if lines_as_columns:
+        grey = np.ascontiguousarray(grey.T)
+    if grey.ndim != 2:
+        raise ImageFileError(src, f"not a 2-D image (shape {grey.shape})")
+    n_lines, width = grey.shape
+    if n_lines < 2 or width < 2:
+        raise ImageFileError(
+            src, f"image of {n_lines} lines x {width} pixels: need at least 2 lines and 2 pixels"
+        )
+    sat = float(saturation_dn) if saturation_dn is not None else float(2**bits - 1)
+    grey.setflags(write=False)
+    return LineImage(data=grey, saturation_dn=sat, bits=bits, source=src)
+
+
+def load_timestamps(path: str | os.PathLike[str], n_lines: int) -> np.ndarray:
+    """Load per-line timestamps (seconds) for an image of ``n_lines`` lines.
+
+    Parameters
+    ----------
+    path : str or path-like
+        ``.npy`` file holding a 1-D array, or a text file with one number per
+        line (blank lines and lines starting with ``#`` are ignored).
+    n_lines : int
+        Number of scan lines of the image; the file must hold exactly this
+        many values.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(n_lines,)``, finite and strictly increasing (s).
+
+    Raises
+    ------
+    ImageFileError
+        One-line message naming the file.
+    """
+    src = os.fspath(path)
+    p = Path(src)
+    if not p.is_file():
+        raise ImageFileError(src, "no such timestamps file")
+    if p.suffix.lower() == ".npy":
+        try:
+            arr = np.load(p, allow_pickle=False)
+        except Exception as exc:
+            raise ImageFileError(src, f"cannot read .npy timestamps ({_one_line(exc)})") from None
+        arr = np.asarray(arr)
+        if arr.ndim == 2 and 1 in arr.shape:
+            arr = arr.reshape(-1)
+        if arr.ndim != 1:
+            raise ImageFileError(src, f"timestamps must be a 1-D array, got shape {arr.shape}")
+        if arr.dtype.kind not in "iuf":
+            raise ImageFileError(src, f"timestamps must be numbers, got dtype {arr.dtype}")
+        t = arr.astype(np.float64)
+    else:
+        try:
+            text = p.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise ImageFileError(src, f"cannot read timestamps ({_one_line(exc)})") from None
+        values = []
+        for k, line in enumerate(text.splitlines(), start=1):
+            s = line.strip()
+            if not s or s.startswith("#"):
+                continue
+            try:
+                values.append(float(s))
+            except ValueError:
+                raise ImageFileError(src, f"line {k}: not a number: {s[:40]!r}") from None
+        t = np.asarray(values, dtype=np.float64)
+    if t.size == 0:
+        raise ImageFileError(src, "no timestamps in file")
+    if t.size != n_lines:
+        raise ImageFileError(src, f"{t.size} timestamps for an image of {n_lines} lines")
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        raise ImageFileError(src, f"timestamp {bad[0]} is not finite ({t[bad[0]]})")
+    steps = np.diff(t)
+    bad = np.flatnonzero(steps <= 0)
+    if bad.size:
+        i = int(bad[0])
+        raise ImageFileError(
+            src, f"timestamps must be strictly increasing: line {i + 1} ({float(t[i + 1])!r} s) <= line {i} ({float(t[i])!r} s)"
+        )
+    return t

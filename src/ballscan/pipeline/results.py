@@ -1,0 +1,224 @@
+"""Estimates and their serialisation (geometry.md "Ground truth and result files").
+
+An estimate that cannot be made is still a value: its ``undetermined`` names
+the keys the image does not determine, those keys are ``None`` (JSON
+``null``) and ``flags`` says why, never a guessed number.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..geometry.camera import LineScanCamera
+from ..geometry.motion import BallMotion
+
+__all__ = ["BallEstimate", "EstimateReport", "FLAGS"]
+
+#: The flag vocabulary of geometry.md.
+FLAGS = (
+    "cut_first_line",
+    "cut_last_line",
+    "cut_sensor_end",
+    "overlap",
+    "saturated",
+    "dropped_lines",
+    "initial_degenerate",
+    "not_converged",
+    "degenerate",
+)
+
+
+def _tuple3(v) -> tuple[float, float, float] | None:
+    if v is None:
+        return None
+    a = np.asarray(v, dtype=float).reshape(3)
+    return (float(a[0]), float(a[1]), float(a[2]))
+
+
+@dataclass(frozen=True)
+class BallEstimate:
+    """One ball's estimated motion in the camera frame.
+
+    Attributes
+    ----------
+    method : str
+        ``"paper"`` or ``"fit"``.
+    radius_m : float
+        The known radius used.
+    t_c_s, position_m, velocity_mps, speed_mps
+        The estimate (seconds, metres, m/s); ``None`` where undetermined.
+    t_c_sigma_s, position_sigma_m, velocity_sigma_mps, speed_sigma_mps
+        1-sigma uncertainties where the method provides them.
+    initial : BallEstimate or None
+        The key-point initial guess (paper Eq. (3)-(7)).
+    flags : tuple of str
+        Words of :data:`FLAGS`.
+    undetermined : tuple of str
+        Keys the image cannot determine.
+    first_line, last_line : int
+        Lines of the image the ball was measured on.
+    run_time_s : float
+        Seconds spent on this ball.
+    extra : dict
+        Method-specific diagnostics (energy, evaluations, chi-square ...).
+    """
+
+    method: str
+    radius_m: float
+    t_c_s: float | None
+    position_m: tuple[float, float, float] | None
+    velocity_mps: tuple[float, float, float] | None
+    speed_mps: float | None = None
+    t_c_sigma_s: float | None = None
+    position_sigma_m: tuple[float, float, float] | None = None
+    velocity_sigma_mps: tuple[float, float, float] | None = None
+    speed_sigma_mps: float | None = None
+    initial: "BallEstimate | None" = None
+    flags: tuple[str, ...] = ()
+    undetermined: tuple[str, ...] = ()
+    first_line: int | None = None
+    last_line: int | None = None
+    run_time_s: float = 0.0
+    extra: dict[str, Any] = field(default_factory=dict, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "position_m", _tuple3(self.position_m))
+        object.__setattr__(self, "velocity_mps", _tuple3(self.velocity_mps))
+        object.__setattr__(self, "position_sigma_m", _tuple3(self.position_sigma_m))
+        object.__setattr__(self, "velocity_sigma_mps", _tuple3(self.velocity_sigma_mps))
+        if self.speed_mps is None and self.velocity_mps is not None:
+            object.__setattr__(self, "speed_mps", float(np.linalg.norm(self.velocity_mps)))
+        unknown = set(self.flags) - set(FLAGS)
+        if unknown:
+            raise ValueError(f"flags: unknown words {sorted(unknown)} (geometry.md lists {FLAGS})")
+        # keep flags unique and in vocabulary order
+        object.__setattr__(self, "flags", tuple(f for f in FLAGS if f in self.flags))
+
+    @classmethod
+    def from_motion(cls, motion: BallMotion, method: str, **kw: Any) -> "BallEstimate":
+        return cls(
+            method=method,
+            radius_m=motion.radius_m,
+            t_c_s=motion.t_c_s,
+            position_m=motion.position_m,
+            velocity_mps=motion.velocity_mps,
+            **kw,
+        )
+
+    @classmethod
+    def undetermined_estimate(cls, method: str, radius_m: float, reason: str, flags: tuple[str, ...] = (), **kw: Any) -> "BallEstimate":
+        """An estimate the image cannot give: every motion key ``None``, flagged ``degenerate``.
+
+        ``reason`` (one line) is kept in ``extra["reason"]``.
+        """
+        return cls(
+            method=method,
+            radius_m=radius_m,
+            t_c_s=None,
+            position_m=None,
+            velocity_mps=None,
+            speed_mps=None,
+            flags=tuple(flags) + ("degenerate",),
+            undetermined=("t_c_s", "position_m", "velocity_mps", "speed_mps"),
+            extra={"reason": " ".join(reason.split())},
+            **kw,
+        )
+
+    def motion(self) -> BallMotion | None:
+        """The estimate as a :class:`BallMotion` (None when undetermined)."""
+        if self.t_c_s is None or self.position_m is None or self.velocity_mps is None:
+            return None
+        return BallMotion(self.radius_m, self.t_c_s, self.position_m, self.velocity_mps)
+
+    # ---------------------------------------------------------- serialisation
+    def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
+        """geometry.md estimate keys (plus diagnostics), JSON-ready."""
+        d: dict[str, Any] = {
+            "method": self.method,
+            "radius_m": self.radius_m,
+            "t_c_s": self.t_c_s,
+            "position_m": _list(self.position_m),
+            "velocity_mps": _list(self.velocity_mps),
+            "speed_mps": self.speed_mps,
+        }
+        if self.t_c_sigma_s is not None:
+            d["t_c_sigma_s"] = self.t_c_sigma_s
+        if self.position_sigma_m is not None:
+            d["position_sigma_m"] = _list(self.position_sigma_m)
+        if self.velocity_sigma_mps is not None:
+            d["velocity_sigma_mps"] = _list(self.velocity_sigma_mps)
+        if self.speed_sigma_mps is not None:
+            d["speed_sigma_mps"] = self.speed_sigma_mps
+        d["flags"] = list(self.flags)
+        d["undetermined"] = list(self.undetermined)
+        d["first_line"] = self.first_line
+        d["last_line"] = self.last_line
+        d["run_time_s"] = self.run_time_s
+        if camera is not None and camera.has_pose:
+            d["world"] = self._world(camera)
+        if self.initial is not None:
+            d["initial"] = self.initial.to_dict(camera)
+        for k, v in self.extra.items():
+            d.setdefault(k, v)
+        # NaN (a sigma of a parameter the fit could not determine) is not JSON: null
+        return _jsonable(d)
+
+    def _world(self, camera: LineScanCamera) -> dict[str, Any]:
+        w: dict[str, Any] = {}
+        if self.position_m is not None:
+            w["position_m"] = _list(camera.camera_to_world(np.asarray(self.position_m)))
+        else:
+            w["position_m"] = None
+        if self.velocity_mps is not None:
+            w["velocity_mps"] = _list(camera.vectors_to_world(np.asarray(self.velocity_mps)))
+        else:
+            w["velocity_mps"] = None
+        w["speed_mps"] = self.speed_mps
+        cov_p = self.extra.get("position_cov_m2")
+        cov_v = self.extra.get("velocity_cov_m2ps2")
+        R = camera.rotation_matrix.T  # camera -> world for free vectors
+        if cov_p is not None:
+            w["position_sigma_m"] = _list(np.sqrt(np.diag(R @ np.asarray(cov_p) @ R.T)))
+        if cov_v is not None:
+            w["velocity_sigma_mps"] = _list(np.sqrt(np.diag(R @ np.asarray(cov_v) @ R.T)))
+        return w
+
+
+@dataclass(frozen=True)
+class EstimateReport:
+    """All balls of one image, in the order of ``t_c_s``."""
+
+    image: str
+    balls: tuple[BallEstimate, ...]
+
+    def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
+        return {"image": self.image, "balls": [b.to_dict(camera) for b in self.balls]}
+
+    def to_json(self, camera: LineScanCamera | None = None) -> str:
+        return json.dumps(self.to_dict(camera), indent=2, allow_nan=False)
+
+
+def _list(v) -> list[float | None] | None:
+    if v is None:
+        return None
+    return [float(x) if math.isfinite(x) else None for x in np.asarray(v, dtype=float).reshape(-1)]
+
+
+def _jsonable(v: Any) -> Any:
+    """JSON-ready value: arrays to lists, numpy scalars to Python, NaN/inf to null."""
+    if isinstance(v, np.ndarray):
+        return _jsonable(v.tolist())
+    if isinstance(v, (np.floating, np.integer)):
+        return _jsonable(v.item())
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, dict):
+        return {k: _jsonable(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_jsonable(x) for x in v]
+    return v

@@ -1,0 +1,365 @@
+"""Cramér–Rao lower bounds on the ball's position and velocity.
+
+Two bounds are provided:
+
+:func:`edge_crlb`
+    Fisher information of the *edge measurements* under the fit's own model
+    and weights, ``F = J^T W J`` (:func:`ballscan.solve.fit.whitened_jacobian`):
+    the best any unbiased estimator using these edges can do, and what
+    :func:`ballscan.solve.fit.fit_motion` should reach with edges of the stated noise.
+:func:`pixel_crlb`
+    Fisher information of the *pixel intensities* of an untextured, flat
+    ball under the averaged coverage model,
+    ``I_ij = bg + contrast * coverage_ij(theta) + N(0, sigma_dn^2)``, with
+    ``coverage_ij`` the exposure- and pixel-height-averaged overlap of the
+    ball's segment with pixel ``j`` of line ``i``.  This bounds every
+    estimator working on the image, whatever its edge detector.
+
+Both return a :class:`PrecisionBound` with 1-sigma bounds on ``t_c``, the
+centre at ``t_c``, the velocity, the speed and the direction.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry.camera import LineScanCamera
+from .fit import FitSettings, averaged_model, param_scale, pixel_coverage, propagate, synthetic_edges, whitened_jacobian
+from ..geometry.motion import BallMotion
+from ..model.render import SensorNoise
+from ..model.silhouette import visible_line_count
+
+__all__ = ["PrecisionBound", "edge_crlb", "pixel_crlb", "sensor_crlb"]
+
+
+@dataclass(frozen=True)
+class PrecisionBound:
+    """1-sigma Cramér–Rao bounds.
+
+    Attributes
+    ----------
+    method : str
+        ``"edges"`` or ``"pixels"``.
+    motion : BallMotion
+        The motion at which the bound is evaluated.
+    fisher : ndarray (p, p)
+        Fisher information (parameter units of :data:`PARAM_NAMES`, plus the
+        edge bias in pixels when it is a nuisance parameter).
+    covariance : ndarray (6, 6)
+        Inverse Fisher information restricted to the six motion parameters
+        (nuisance parameters marginalised).
+    t_c_sigma_s : float
+    position_sigma_m : ndarray (3,)
+        Of the centre at ``t_c`` (x is 0 by definition).
+    velocity_sigma_mps : ndarray (3,)
+    speed_sigma_mps : float
+        RMS error about the true speed of the reported (bias-corrected)
+        speed of an efficient velocity estimate (:func:`ballscan.solve.fit.propagate`
+        of the bound's covariance with ``at_truth``): not the linearised
+        bound alone, which ignores a poorly determined ``vz`` when ``vz = 0``.
+    direction_sigma_deg : ndarray (2,)
+        Of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``.
+    n_measurements : int
+        Edges (``"edges"``) or pixels (``"pixels"``) that carry information.
+    noise : str
+        Description of the noise assumed.
+    """
+
+    method: str
+    motion: BallMotion
+    fisher: np.ndarray
+    covariance: np.ndarray
+    t_c_sigma_s: float
+    position_sigma_m: np.ndarray
+    velocity_sigma_mps: np.ndarray
+    speed_sigma_mps: float
+    direction_sigma_deg: np.ndarray
+    n_measurements: int
+    noise: str
+
+    @property
+    def sigmas(self) -> np.ndarray:
+        """1-sigma of ``(t_c, y0, z0, vx, vy, vz)``."""
+        return np.sqrt(np.diag(self.covariance))
+
+    def to_text(self) -> str:
+        """A plain-text table of the bounds (units in the header)."""
+        m = self.motion
+        rows = [
+            ("t_c", "s", m.t_c_s, self.t_c_sigma_s),
+            ("y0", "m", m.position_m[1], self.position_sigma_m[1]),
+            ("z0", "m", m.position_m[2], self.position_sigma_m[2]),
+            ("vx", "m/s", m.velocity_mps[0], self.velocity_sigma_mps[0]),
+            ("vy", "m/s", m.velocity_mps[1], self.velocity_sigma_mps[1]),
+            ("vz", "m/s", m.velocity_mps[2], self.velocity_sigma_mps[2]),
+            ("speed", "m/s", m.speed_mps, self.speed_sigma_mps),
+        ]
+        v = np.asarray(m.velocity_mps)
+        rows.append(("psi_y", "deg", math.degrees(math.atan2(v[1], v[0])), self.direction_sigma_deg[0]))
+        rows.append(("psi_z", "deg", math.degrees(math.atan2(v[2], v[0])), self.direction_sigma_deg[1]))
+        lines = [
+            f"Cramér–Rao bound ({self.method}; {self.noise}; {self.n_measurements} measurements)",
+            f"{'quantity':<9} {'unit':<5} {'value':>14} {'1-sigma':>12} {'relative':>10}",
+        ]
+        for name, unit, val, sig in rows:
+            rel = f"{abs(sig / val):10.2e}" if val != 0 and np.isfinite(sig) else f"{'-':>10}"
+            lines.append(f"{name:<9} {unit:<5} {val:14.6g} {sig:12.3e} {rel}")
+        return "\n".join(lines)
+
+
+def _bound(method: str, motion: BallMotion, camera: LineScanCamera, F: np.ndarray, n_meas: int, noise: str) -> PrecisionBound:
+    # Equilibrate before inverting: the parameters' sizes differ by ~1e8.
+    d = np.sqrt(np.where(np.diag(F) > 0, np.diag(F), 1.0))
+    Fn = F / np.outer(d, d)
+    evals = np.linalg.eigvalsh(Fn)
+    if evals.min() <= 1e-12 * evals.max():
+        cov_full = np.full_like(F, np.inf)
+    else:
+        cov_full = np.linalg.inv(Fn) / np.outer(d, d)
+    cov = cov_full[:6, :6]
+    if np.all(np.isfinite(cov)):
+        u = propagate(camera, motion, cov, at_truth=True)
+        pos, vel, spd, dire = u.position_sigma_m, u.velocity_sigma_mps, u.speed_sigma_mps, u.direction_sigma_deg
+    else:
+        pos, vel, spd, dire = np.full(3, np.inf), np.full(3, np.inf), math.inf, np.full(2, np.inf)
+    return PrecisionBound(
+        method=method,
+        motion=motion,
+        fisher=F,
+        covariance=cov,
+        t_c_sigma_s=float(math.sqrt(cov[0, 0])),
+        position_sigma_m=pos,
+        velocity_sigma_mps=vel,
+        speed_sigma_mps=float(spd),
+        direction_sigma_deg=dire,
+        n_measurements=int(n_meas),
+        noise=noise,
+    )
+
+
+def _n_lines_for(camera: LineScanCamera, motion: BallMotion) -> int:
+    t_end = motion.t_c_s + 1.5 * visible_line_count(camera, motion) / camera.line_rate_hz
+    return int(math.ceil(t_end * camera.line_rate_hz)) + 3
+
+
+def edge_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    edge_noise_px: float,
+    *,
+    area_noise_px: float | None = None,
+    settings: FitSettings = FitSettings(fit_edge_bias=False, edge_floor_px=0.0),
+) -> PrecisionBound:
+    """Cramér–Rao bound of the edge measurements under the fit's model.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+        Radius, ``t_c`` (s), centre at ``t_c`` (m) and velocity (m/s); the
+        image is assumed to start at line 0 and to contain the whole ball.
+    edge_noise_px : float
+        1-sigma of each edge, pixels.
+    area_noise_px : float, optional
+        1-sigma of an end line's summed coverage, pixels; ``None`` leaves the
+        area residuals out (only the fit's edges count, a conservative bound).
+    settings : FitSettings
+        Residual selection and weights (by default the bare edge noise and
+        no edge-bias nuisance; pass the fit's settings to bound the fit).
+
+    Returns
+    -------
+    PrecisionBound
+    """
+    if not (edge_noise_px > 0 and math.isfinite(edge_noise_px)):
+        raise ValueError(f"edge_noise_px: must be positive and finite, got {edge_noise_px!r}")
+    n_lines = _n_lines_for(camera, motion)
+    a_sig = area_noise_px if area_noise_px is not None else 1e9
+    edges = synthetic_edges(
+        camera, motion, n_lines, edge_sigma_px=edge_noise_px, area_sigma_px=a_sig, max_spread_px=settings.max_spread_px, add_noise=False
+    )
+    J, names = whitened_jacobian(camera, edges, motion, settings)
+    F = J.T @ J
+    n = int(edges.left_ok.sum() + edges.right_ok.sum())
+    noise = f"edge noise {edge_noise_px:g} px" + (f", area noise {area_noise_px:g} px" if area_noise_px is not None else "")
+    return _bound("edges", motion, camera, F, n, noise)
+
+
+def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """Averaged coverage of the ball's pixels and its derivatives.
+
+    Returns ``(coverage, d_coverage)``: ``(N, C)`` and ``(6, N, C)`` (per
+    unit of each parameter of :data:`ballscan.geometry.motion.PARAM_NAMES`) on the
+    lines that see the ball and the columns it touches plus two on each
+    side; derivatives by central differences (step ``1e-3`` of
+    :func:`ballscan.solve.fit.param_scale`).
+    """
+    n_lines = _n_lines_for(camera, motion)
+    t = np.arange(n_lines) / camera.line_rate_hz
+    theta = motion.to_params()
+    me = averaged_model(camera, theta[None], motion.radius_m, t, motion.acceleration_mps2, n_nodes)
+    keep = np.flatnonzero(me.presence[0] > 0)
+    if keep.size == 0:
+        raise ValueError("pixel_crlb: the ball is not seen on any line")
+    t = t[keep]
+    lo = np.nanmin(me.left_px[0, keep])
+    hi = np.nanmax(me.right_px[0, keep])
+    cols = np.arange(math.floor(lo) - 2, math.ceil(hi) + 3, dtype=float)
+    h = 1e-3 * param_scale(camera, motion)
+    thetas = np.vstack([theta[None], theta + np.diag(h), theta - np.diag(h)])
+    ms = averaged_model(camera, thetas, motion.radius_m, t, motion.acceleration_mps2, n_nodes, return_samples=True)
+    u_lo, u_hi, wgt = ms.samples  # type: ignore[misc]
+    cov = pixel_coverage(u_lo, u_hi, wgt, cols)  # (13, N, C)
+    return cov[0], (cov[1:7] - cov[7:]) / (2.0 * h[:, None, None])
+
+
+def _pixel_fisher(G: np.ndarray, var: np.ndarray, signal: np.ndarray | None = None, prnu_sigma: float = 0.0) -> np.ndarray:
+    """Fisher information of independent columns of Gaussian pixels.
+
+    Column ``c`` of the image has the covariance
+    ``diag(var[:, c]) + prnu_sigma^2 s_c s_c^T`` with ``s_c = signal[:, c]``:
+    white noise plus an unknown gain ``1 + prnu_sigma N(0, 1)`` of the
+    column applied to the ball's signal above the column's background (the
+    background itself, gain included, is what every line of that column
+    without the ball measures).  By the Woodbury identity
+    ``F = sum_c G_c^T D_c^-1 G_c - k (G_c^T D_c^-1 s_c)(s_c^T D_c^-1 G_c) / (1 + k s_c^T D_c^-1 s_c)``
+    with ``k = prnu_sigma^2``.  The information in the covariance's own
+    dependence on the parameters is left out (below 1e-4 of the mean's here).
+
+    Parameters
+    ----------
+    G : ndarray (p, N, C)
+        Derivatives of the pixels' mean, DN per parameter unit.
+    var : ndarray (N, C)
+        White-noise variance of each pixel, DN^2.
+    signal : ndarray (N, C), optional
+        The ball's signal above the background that the column gain scales, DN.
+    prnu_sigma : float
+        Relative 1-sigma of the column gain.
+    """
+    Gw = G / var
+    F = np.einsum("pnc,qnc->pq", Gw, G)
+    if prnu_sigma > 0 and signal is not None:
+        k = prnu_sigma**2
+        u = np.einsum("pnc,nc->pc", Gw, signal)  # G_c^T D^-1 s_c
+        q = np.einsum("nc,nc->c", signal / var, signal)  # s_c^T D^-1 s_c
+        F = F - (u * (k / (1.0 + k * q))) @ u.T
+    return F
+
+
+def pixel_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise_dn: float,
+    contrast_dn: float,
+    *,
+    prnu_sigma: float = 0.0,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixel intensities of a flat, untextured ball.
+
+    ``I_ij = bg_j + g_j contrast_dn coverage_ij(theta) + N(0, noise_dn^2)``;
+    ``bg_j`` and ``contrast_dn`` are treated as known (they are measured on
+    thousands of pixels); the column gain ``g_j = 1 + prnu_sigma N(0, 1)``
+    (fixed-pattern photo-response non-uniformity, PRNU) is unknown and
+    enters as noise correlated along each column (:func:`_pixel_fisher`).
+    The coverage derivatives are central differences of the averaged
+    coverage model.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+    noise_dn : float
+        Gaussian pixel noise, DN (1-sigma).
+    contrast_dn : float
+        ``|ball - background|``, DN.
+    prnu_sigma : float
+        Relative 1-sigma of the columns' gain, unknown to the estimator
+        (0: a flat-field corrected or ideal sensor).
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+
+    See Also
+    --------
+    sensor_crlb : the same with the renderer's full sensor model (shot noise per pixel).
+    """
+    if not (noise_dn > 0 and math.isfinite(noise_dn)):
+        raise ValueError(f"noise_dn: must be positive and finite, got {noise_dn!r}")
+    if not (contrast_dn != 0 and math.isfinite(contrast_dn)):
+        raise ValueError(f"contrast_dn: must be non-zero and finite, got {contrast_dn!r}")
+    _check_prnu(prnu_sigma)
+    cov, dcov = _pixel_model(camera, motion, n_nodes)
+    G = contrast_dn * dcov
+    F = _pixel_fisher(G, np.full(cov.shape, float(noise_dn) ** 2), contrast_dn * cov, prnu_sigma)
+    n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
+    noise = f"pixel noise {noise_dn:g} DN, contrast {abs(contrast_dn):g} DN" + (f", PRNU {prnu_sigma:g}" if prnu_sigma > 0 else "")
+    return _bound("pixels", motion, camera, F, n_pix, noise)
+
+
+def sensor_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise: SensorNoise,
+    ball_level: float,
+    background_level: float,
+    *,
+    flat_field: bool = False,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixels of a flat ball seen by a modelled sensor.
+
+    The sensor of :class:`ballscan.model.render.SensorNoise`: pixel ``(i, j)`` of
+    linear grey ``Y_ij = bg + (ball - bg) coverage_ij(theta)`` has the mean
+    ``black + white g_j Y_ij`` DN and the white-noise variance
+    ``read^2 + white^2 Y_ij / full_well + 1/12`` DN^2 (read, shot and
+    uniform quantisation noise, each pixel its own), and the column gain
+    ``g_j = 1 + prnu_sigma N(0, 1)`` is unknown (``flat_field=False``): it
+    scales the ball's signal ``white (ball - bg) coverage_ij`` of every
+    line of column ``j`` alike, a fixed pattern that does not average out
+    over the lines a slow ball's edge spends in one column
+    (:func:`_pixel_fisher`).  The background of each column, gain included,
+    is treated as known (every line without the ball measures it), as are
+    the two levels.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+    noise : SensorNoise
+    ball_level, background_level : float
+        Linear grey of the (flat) ball and of the background, 0..1.
+    flat_field : bool
+        The column gains are known (a flat-field corrected camera): PRNU
+        then costs nothing.
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+    """
+    for name, v in (("ball_level", ball_level), ("background_level", background_level)):
+        if not (math.isfinite(v) and v >= 0):
+            raise ValueError(f"{name}: must be a finite number >= 0, got {v!r}")
+    if ball_level == background_level:
+        raise ValueError("ball_level: must differ from background_level (no contrast, no bound)")
+    cov, dcov = _pixel_model(camera, motion, n_nodes)
+    dy = ball_level - background_level
+    y = background_level + dy * cov
+    var = noise.read_dn**2 + 1.0 / 12.0 + (y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else 0.0)
+    var = np.broadcast_to(var, cov.shape)
+    prnu = 0.0 if flat_field else noise.prnu_sigma
+    G = noise.white_dn * dy * dcov
+    F = _pixel_fisher(G, var, noise.white_dn * dy * cov, prnu)
+    n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
+    fw = f"{noise.full_well_e:g} e-" if noise.full_well_e else "no shot noise"
+    desc = (
+        f"sensor: read {noise.read_dn:g} DN, {fw}, white {noise.white_dn:g} DN, {noise.bits}-bit, "
+        f"PRNU {noise.prnu_sigma:g}" + (" (flat-fielded)" if flat_field else "") + f"; levels {ball_level:g} / {background_level:g}"
+    )
+    return _bound("pixels", motion, camera, F, n_pix, desc)
+
+
+def _check_prnu(prnu_sigma: float) -> None:
+    if not (math.isfinite(prnu_sigma) and 0 <= prnu_sigma < 1):
+        raise ValueError(f"prnu_sigma: must be in [0, 1), got {prnu_sigma!r}")

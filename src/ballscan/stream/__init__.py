@@ -1,0 +1,1 @@
+"""Continuous line streams: the chunked engine, line sources and batches of recordings."""

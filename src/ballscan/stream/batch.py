@@ -1,0 +1,344 @@
+"""Measure every ball of many recordings into one CSV, in parallel and restartably.
+
+Inputs are line-scan images (PNG/TIFF) or raw line streams (``.raw``,
+``.bin``, ``.u8``, ``.u16``), or folders of them (not recursive). Each input
+needs a camera: ``camera=`` for all of them, or ``NAME.camera.toml`` beside
+it (``NAME`` with or without the input's suffix, e.g. ``shot1.camera.toml``
+or ``stream.raw.camera.toml``). Per-line timestamps are picked up from
+``NAME.timestamps.npy`` / ``NAME.timestamps.txt`` beside the input.
+
+The CSV holds one row per ball (:data:`COLUMNS`). Rows are appended as each
+input finishes, so a crash loses at most the inputs in progress; a rerun
+skips every input already in the CSV or listed in the sidecar
+``OUT.done`` (which also records inputs without any ball).
+
+Work is spread over local processes with joblib, or over a Dask
+distributed cluster (``scheduler="tcp://host:port"``; ``pip install
+"dask[distributed]"``, imported only then).
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BallscanError
+
+__all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "measure_input", "run_batch"]
+
+IMAGE_SUFFIXES = (".png", ".tif", ".tiff")
+RAW_SUFFIXES = (".raw", ".bin", ".u8", ".u16")
+
+#: CSV columns: one row per ball (metres, seconds, m/s; sigmas are 1-sigma).
+COLUMNS = (
+    "source", "ball", "first_line", "last_line",
+    "t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps", "speed_mps",
+    "t_c_sigma_s", "x_sigma_m", "y_sigma_m", "z_sigma_m", "vx_sigma_mps", "vy_sigma_mps", "vz_sigma_mps", "speed_sigma_mps",
+    "flags", "undetermined", "method",
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class InputResult:
+    """What one input gave: its CSV rows and, if it failed, why.
+
+    A raw stream with a fault (e.g. a truncated last line) has both: the
+    balls measured before the fault and the message.
+    """
+
+    source: str
+    rows: tuple[dict, ...]
+    error: str | None = None
+
+
+@dataclass(frozen=True)
+class BatchSummary:
+    """Outcome of :func:`run_batch`.
+
+    Attributes
+    ----------
+    n_inputs, n_skipped, n_done, n_balls : int
+        Inputs found, skipped (already done), measured now, balls written now.
+    errors : tuple of (str, str)
+        ``(source, one-line message)`` of each input that failed. An input
+        that failed without any ball is not marked done (a rerun tries it
+        again); a raw stream with a fault after some balls keeps them.
+    """
+
+    n_inputs: int
+    n_skipped: int
+    n_done: int
+    n_balls: int
+    errors: tuple[tuple[str, str], ...]
+
+
+def find_inputs(inputs: Sequence[str | os.PathLike[str]]) -> list[Path]:
+    """Expand folders into their image and raw files (sorted); keep files as given."""
+    out: list[Path] = []
+    for item in inputs:
+        p = Path(item)
+        if p.is_dir():
+            out.extend(sorted(q for q in p.iterdir() if q.is_file() and q.suffix.lower() in IMAGE_SUFFIXES + RAW_SUFFIXES))
+        else:
+            out.append(p)
+    return out
+
+
+def _beside(path: Path, suffix: str) -> Path | None:
+    for stem in (path.with_suffix("").name, path.name):
+        q = path.with_name(stem + suffix)
+        if q.is_file():
+            return q
+    return None
+
+
+def camera_beside(path: Path) -> Path | None:
+    """``NAME.camera.toml`` beside ``path`` (``NAME`` with or without its suffix), or None."""
+    return _beside(path, ".camera.toml")
+
+
+def _timestamps_beside(path: Path) -> Path | None:
+    return _beside(path, ".timestamps.npy") or _beside(path, ".timestamps.txt")
+
+
+def _row(source: str, k: int, est) -> dict:
+    def v3(v, i):
+        return "" if v is None else repr(float(v[i]))
+
+    def num(v):
+        return "" if v is None else repr(float(v))
+
+    return {
+        "source": source,
+        "ball": k,
+        "first_line": "" if est.first_line is None else int(est.first_line),
+        "last_line": "" if est.last_line is None else int(est.last_line),
+        "t_c_s": num(est.t_c_s),
+        "x_m": v3(est.position_m, 0), "y_m": v3(est.position_m, 1), "z_m": v3(est.position_m, 2),
+        "vx_mps": v3(est.velocity_mps, 0), "vy_mps": v3(est.velocity_mps, 1), "vz_mps": v3(est.velocity_mps, 2),
+        "speed_mps": num(est.speed_mps),
+        "t_c_sigma_s": num(est.t_c_sigma_s),
+        "x_sigma_m": v3(est.position_sigma_m, 0), "y_sigma_m": v3(est.position_sigma_m, 1), "z_sigma_m": v3(est.position_sigma_m, 2),
+        "vx_sigma_mps": v3(est.velocity_sigma_mps, 0), "vy_sigma_mps": v3(est.velocity_sigma_mps, 1), "vz_sigma_mps": v3(est.velocity_sigma_mps, 2),
+        "speed_sigma_mps": num(est.speed_sigma_mps),
+        "flags": " ".join(est.flags),
+        "undetermined": " ".join(est.undetermined),
+        "method": est.method,
+    }  # fmt: skip
+
+
+def measure_input(path: str, camera_path: str | None, radius_m: float, method: str = "fit", dtype: str = "uint8", background: str = "engine") -> InputResult:
+    """Measure every ball of one input; never raises (a failure is in ``error``).
+
+    Parameters
+    ----------
+    path : str
+        Image or raw stream.
+    camera_path : str or None
+        Camera TOML; None to look beside the input.
+    radius_m : float
+        Ball radius, metres.
+    method : {"fit", "paper"}
+    dtype : {"uint8", "uint16"}
+        Sample type of a raw stream.
+    background : {"engine", "crop"}
+        What a raw stream's balls are measured on (``StreamConfig.background``:
+        the engine's running model of the crop's columns, or the crop's own).
+    """
+    # Parallel workers: one thread each, the parallelism is across inputs.
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    src = str(path)
+    try:
+        p = Path(src)
+        cam_path = Path(camera_path) if camera_path is not None else camera_beside(p)
+        if cam_path is None:
+            raise BallscanError(f"{src}: no camera file (give --camera or put {p.with_suffix('').name}.camera.toml beside it)")
+        from ..geometry.camera import load_camera
+
+        camera = load_camera(cam_path)
+        ts_path = _timestamps_beside(p)
+        if p.suffix.lower() in RAW_SUFFIXES:
+            from .sources import RawLineSource
+            from .engine import StreamConfig, process_stream
+
+            from .engine import StreamError
+
+            source = RawLineSource(p, camera.width, dtype, timestamps=ts_path, name=src)
+            ests = []
+            try:
+                for r in process_stream(source, camera, radius_m, StreamConfig(method=method, background=background), source=src):
+                    ests.append(r.estimate)
+            except StreamError as exc:
+                # A damaged stream (e.g. a truncated last line): keep the balls
+                # measured before the fault, and report it.
+                rows = tuple(_row(src, k, e) for k, e in enumerate(ests))
+                return InputResult(src, rows, " ".join(str(exc).split()))
+        else:
+            from ..pipeline.estimate import estimate_image
+            from ..measure.images import load_image, load_timestamps
+
+            img = load_image(p)
+            ts = load_timestamps(ts_path, img.n_lines) if ts_path is not None else None
+            ests = list(estimate_image(img, camera, radius_m, method=method, timestamps_s=ts).balls)
+        return InputResult(src, tuple(_row(src, k, e) for k, e in enumerate(ests)))
+    except (BallscanError, ValueError, OSError) as exc:
+        msg = " ".join(str(exc).split())
+        return InputResult(src, (), msg if src in msg else f"{src}: {msg}")
+
+
+def _done_sources(out_csv: Path) -> set[str]:
+    done: set[str] = set()
+    if out_csv.is_file():
+        with open(out_csv, newline="") as fh:
+            for row in csv.DictReader(fh):
+                if row.get("source"):
+                    done.add(row["source"])
+    side = out_csv.with_name(out_csv.name + ".done")
+    if side.is_file():
+        done.update(s for s in side.read_text().splitlines() if s)
+    return done
+
+
+def run_batch(
+    inputs: Sequence[str | os.PathLike[str]],
+    out_csv: str | os.PathLike[str],
+    radius_m: float,
+    *,
+    camera: str | os.PathLike[str] | None = None,
+    jobs: int = 1,
+    scheduler: str | None = None,
+    method: str = "fit",
+    dtype: str = "uint8",
+    progress: bool = False,
+    background: str = "engine",
+) -> BatchSummary:
+    """Measure all inputs into ``out_csv`` (see the module docstring).
+
+    Parameters
+    ----------
+    inputs : sequence of path
+        Files and folders.
+    out_csv : path
+        Appended to; created with a header if missing.
+    radius_m : float
+        Ball radius, metres.
+    camera : path or None
+        Camera TOML for all inputs.
+    jobs : int
+        Local processes (joblib; -1 = all cores).
+    scheduler : str or None
+        Dask distributed scheduler address; overrides ``jobs``.
+    method, dtype
+        As for :func:`measure_input`.
+    progress : bool
+        Show a rich progress bar on stderr.
+    background : {"engine", "crop"}
+        As for :func:`measure_input` (raw streams only).
+
+    Returns
+    -------
+    BatchSummary
+    """
+    if not (np.isfinite(radius_m) and radius_m > 0):
+        raise ValueError(f"radius: must be positive, got {radius_m!r}")
+    if method not in ("fit", "paper"):
+        raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
+    from .engine import BACKGROUNDS
+
+    if background not in BACKGROUNDS:
+        raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
+    out = Path(out_csv)
+    files = find_inputs(inputs)
+    done = _done_sources(out)
+    todo = [str(p) for p in files if str(p) not in done]
+    cam = None if camera is None else str(camera)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    new_file = not out.is_file() or out.stat().st_size == 0
+    n_done = n_balls = 0
+    errors: list[tuple[str, str]] = []
+    with open(out, "a", newline="") as fh, open(out.with_name(out.name + ".done"), "a") as side:
+        writer = csv.DictWriter(fh, fieldnames=COLUMNS)
+        if new_file:
+            writer.writeheader()
+            fh.flush()
+        bar = _progress(progress, len(todo))
+        try:
+            for res in _results(todo, cam, radius_m, method, dtype, jobs, scheduler, background):
+                if res.error is not None:
+                    errors.append((res.source, res.error))
+                if res.error is None or res.rows:
+                    # Rows measured before a fault are kept; the input then
+                    # counts as done (rerunning a damaged file changes nothing).
+                    writer.writerows(res.rows)
+                    fh.flush()
+                    side.write(res.source + "\n")
+                    side.flush()
+                    n_done += 1
+                    n_balls += len(res.rows)
+                bar.advance()
+        finally:
+            bar.stop()
+    return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors))
+
+
+def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dtype: str, jobs: int, scheduler: str | None, background: str):
+    """Results as inputs finish (any order)."""
+    if not todo:
+        return
+    if scheduler is not None:
+        try:
+            from distributed import Client, as_completed
+        except ImportError:
+            raise BallscanError('--scheduler needs Dask distributed: pip install "dask[distributed]"') from None
+        try:
+            client = Client(scheduler, timeout="10s", set_as_default=False)
+        except (OSError, TimeoutError) as exc:
+            raise BallscanError(f"--scheduler {scheduler}: cannot connect ({' '.join(str(exc).split())[:160]})") from None
+        try:
+            futures = [client.submit(measure_input, p, cam, radius_m, method, dtype, background, pure=False) for p in todo]
+            for fut in as_completed(futures, loop=client.loop):
+                yield fut.result()
+        finally:
+            client.close()
+        return
+    if jobs == 1 or len(todo) == 1:
+        for p in todo:
+            yield measure_input(p, cam, radius_m, method, dtype, background)
+        return
+    from joblib import Parallel, delayed
+
+    par = Parallel(n_jobs=jobs, return_as="generator_unordered")
+    yield from par(delayed(measure_input)(p, cam, radius_m, method, dtype, background) for p in todo)
+
+
+class _NoBar:
+    def advance(self) -> None:
+        pass
+
+    def stop(self) -> None:
+        pass
+
+
+class _RichBar:
+    def __init__(self, total: int) -> None:
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+        self._p = Progress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(), console=Console(stderr=True), transient=False)
+        self._task = self._p.add_task("batch", total=total)
+        self._p.start()
+
+    def advance(self) -> None:
+        self._p.advance(self._task)
+
+    def stop(self) -> None:
+        self._p.stop()
+
+
+def _progress(enabled: bool, total: int):
+    return _RichBar(total) if enabled and total else _NoBar()

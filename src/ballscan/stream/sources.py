@@ -1,0 +1,761 @@
+"""Line sources for :mod:`ballscan.stream.engine`: raw files and pipes, image folders, rendered streams, Basler cameras.
+
+Every source is an iterable of :class:`~ballscan.stream.engine.Chunk` (consecutive
+lines, optional per-line timestamps). A chunk may be a view of a buffer the
+source reuses: consume it before asking for the next one. A fault is raised
+as a :class:`SourceError` with a one-line message *after* every complete line
+before it has been yielded, so nothing measured before a fault is lost.
+
+Raw lines
+---------
+A raw stream is ``W`` samples per line, no header, ``uint8`` or little-endian
+``uint16`` (``--dtype``), from a file, a named pipe or standard input
+(``-``). Reads go with ``readinto`` into one preallocated buffer. A stream
+whose length is not a whole number of lines ends with a partial line: the
+complete lines are delivered, then a :class:`TruncatedStream` error says so
+(a wrong ``--width`` usually shows up this way). On a pipe, a ``timeout_s``
+turns a silent source into a :class:`SourceStalled` error.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import select
+import stat
+import sys
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, BinaryIO
+
+import numpy as np
+
+from ..geometry.camera import LineScanCamera, save_camera
+from ..geometry.motion import BallMotion
+from .engine import Chunk, StreamError
+
+__all__ = [
+    "SourceError",
+    "TruncatedStream",
+    "SourceStalled",
+    "TimestampReader",
+    "RawLineSource",
+    "ImageFolderSource",
+    "ArraySource",
+    "PylonSource",
+    "SimulatedStream",
+    "simulate_stream",
+    "stream_balls",
+]
+
+
+class SourceError(StreamError):
+    """A line source cannot deliver (more) lines."""
+
+
+class TruncatedStream(SourceError):
+    """The stream ends inside a line."""
+
+
+class SourceStalled(SourceError):
+    """No data arrived within the timeout."""
+
+
+# --------------------------------------------------------------------------
+# Timestamps
+# --------------------------------------------------------------------------
+class TimestampReader:
+    """Per-line timestamps read incrementally (seconds; text, one per line, or ``.npy``).
+
+    Memory stays small however long the file is: ``.npy`` files are memory
+    mapped, text files are read line by line.
+
+    Parameters
+    ----------
+    path : str or path-like
+    """
+
+    def __init__(self, path: str | os.PathLike[str]) -> None:
+        self.path = os.fspath(path)
+        p = Path(self.path)
+        if not p.is_file():
+            raise SourceError(f"{self.path}: no such timestamps file")
+        self._pos = 0
+        self._arr = None
+        self._fh = None
+        if p.suffix.lower() == ".npy":
+            try:
+                arr = np.load(p, mmap_mode="r", allow_pickle=False)
+            except Exception as exc:  # noqa: BLE001 - any decoding problem is one message
+                raise SourceError(f"{self.path}: cannot read .npy timestamps ({exc})") from None
+            if arr.ndim != 1 or arr.dtype.kind not in "iuf":
+                raise SourceError(f"{self.path}: timestamps must be a 1-D array of numbers, got {arr.dtype} {arr.shape}")
+            self._arr = arr
+        else:
+            self._fh = open(p, encoding="utf-8")
+            self._lineno = 0
+
+    def take(self, n: int) -> np.ndarray:
+        """The next ``n`` timestamps (float64).
+
+        Raises
+        ------
+        SourceError
+            If the file ends first or holds a value that is not a number.
+        """
+        if self._arr is not None:
+            out = np.asarray(self._arr[self._pos : self._pos + n], dtype=np.float64)
+        else:
+            vals: list[float] = []
+            while len(vals) < n:
+                line = self._fh.readline()
+                if not line:
+                    break
+                self._lineno += 1
+                s = line.strip()
+                if not s or s.startswith("#"):
+                    continue
+                try:
+                    vals.append(float(s))
+                except ValueError:
+                    raise SourceError(f"{self.path}: line {self._lineno}: not a number: {s[:40]!r}") from None
+            out = np.asarray(vals, dtype=np.float64)
+        if out.size < n:
+            raise SourceError(f"{self.path}: only {self._pos + out.size} timestamps, but the stream has more lines")
+        self._pos += n
+        return out
+
+    def close(self) -> None:
+        if self._fh is not None:
+            self._fh.close()
+
+
+# --------------------------------------------------------------------------
+# Raw lines from a file, a pipe or standard input
+# --------------------------------------------------------------------------
+class RawLineSource:
+    """Raw 8/16-bit lines from a file, a named pipe or standard input.
+
+    Parameters
+    ----------
+    path : str, path-like or binary file object
+        ``"-"`` for standard input.
+    width : int
+        Pixels per line.
+    dtype : {"uint8", "uint16"}
+        Sample type (``uint16`` little-endian).
+    chunk_lines : int
+        Most lines per chunk (the preallocated buffer's size).
+    timeout_s : float or None
+        On a pipe or terminal: raise :class:`SourceStalled` when no byte
+        arrives for this long. Regular files never stall.
+    timestamps : str, path-like or None
+        Per-line timestamps file (text or ``.npy``), read along.
+    name : str, optional
+        Name in messages and results (default: the path).
+    """
+
+    def __init__(
+        self,
+        path: str | os.PathLike[str] | BinaryIO,
+        width: int,
+        dtype: str | np.dtype = "uint8",
+        *,
+        chunk_lines: int = 1024,
+        timeout_s: float | None = None,
+        timestamps: str | os.PathLike[str] | None = None,
+        name: str | None = None,
+    ) -> None:
+        if isinstance(width, bool) or not isinstance(width, (int, np.integer)) or width < 2:
+            raise ValueError(f"--width: must be an integer >= 2, got {width!r}")
+        dt = np.dtype(dtype)
+        if dt not in (np.dtype(np.uint8), np.dtype(np.uint16)):
+            raise ValueError(f"--dtype: must be uint8 or uint16, got {dtype!r}")
+        if isinstance(chunk_lines, bool) or not isinstance(chunk_lines, (int, np.integer)) or chunk_lines < 1:
+            raise ValueError(f"chunk_lines: must be a positive integer, got {chunk_lines!r}")
+        if timeout_s is not None and not (timeout_s > 0):
+            raise ValueError(f"--timeout: must be positive, got {timeout_s!r}")
+        self.path = path
+        self.width = int(width)
+        self.dtype = dt.newbyteorder("<") if dt.itemsize > 1 else dt
+        self.chunk_lines = int(chunk_lines)
+        self.timeout_s = timeout_s
+        self.timestamps = timestamps
+        if name is None:
+            name = "<stdin>" if path == "-" else (os.fspath(path) if isinstance(path, (str, os.PathLike)) else getattr(path, "name", "<stream>"))
+        self.name = str(name)
+        self.lines_read = 0
+
+    def _open(self) -> tuple[Any, bool]:
+        """A raw (unbuffered) binary reader and whether we opened it."""
+        if self.path == "-":
+            return sys.stdin.buffer.raw, False
+        if isinstance(self.path, (str, os.PathLike)):
+            p = os.fspath(self.path)
+            if not os.path.exists(p):
+                raise SourceError(f"{self.name}: no such file")
+            if os.path.isdir(p):
+                raise SourceError(f"{self.name}: is a directory (use an image folder source for chunk files)")
+            return open(p, "rb", buffering=0), True
+        return self.path, False
+
+    def __iter__(self) -> Iterator[Chunk]:
+        fh, owned = self._open()
+        ts_reader = TimestampReader(self.timestamps) if self.timestamps is not None else None
+        try:
+            yield from self._chunks(fh, ts_reader)
+        finally:
+            if owned:
+                fh.close()
+            if ts_reader is not None:
+                ts_reader.close()
+
+    def _chunks(self, fh: Any, ts_reader: TimestampReader | None) -> Iterator[Chunk]:
+        line_bytes = self.width * self.dtype.itemsize
+        buf = np.empty((self.chunk_lines, self.width), dtype=self.dtype)
+        mv = memoryview(buf).cast("B")
+        total = mv.nbytes
+        fd = None
+        try:
+            fd = fh.fileno()
+            mode = os.fstat(fd).st_mode
+            is_stream = stat.S_ISFIFO(mode) or stat.S_ISCHR(mode) or stat.S_ISSOCK(mode)
+        except (OSError, AttributeError, ValueError):
+            is_stream = False
+        filled = 0
+        eof = False
+        while not eof:
+            while filled < total:
+                if is_stream and fd is not None:
+                    ready = self._wait(fd, filled >= line_bytes)
+                    if not ready:
+                        if filled >= line_bytes:
+                            break  # deliver the complete lines we have: latency matters
+                        continue
+                try:
+                    got = fh.readinto(mv[filled:])
+                except BlockingIOError:
+                    continue
+                except OSError as exc:
+                    raise SourceError(f"{self.name}: read failed after line {self.lines_read} ({exc.strerror or exc})") from None
+                if got is None:
+                    continue
+                if got == 0:
+                    eof = True
+                    break
+                filled += got
+            n = filled // line_bytes
+            if n:
+                self.lines_read += n
+                ts = ts_reader.take(n) if ts_reader is not None else None
+                yield Chunk(buf[:n], ts)
+                rest = filled - n * line_bytes
+                if rest:
+                    mv[:rest] = mv[n * line_bytes : filled]
+                filled = rest
+            if eof and filled:
+                raise TruncatedStream(
+                    f"{self.name}: ends with a partial line of {filled} bytes (a line is {line_bytes} bytes: "
+                    f"--width {self.width}, --dtype {self.dtype.name}); the {self.lines_read} complete lines before it were processed"
+                )
+
+    def _wait(self, fd: int, have_lines: bool) -> bool:
+        """Wait until ``fd`` is readable; False means "nothing now" when lines are pending."""
+        if have_lines:
+            r, _, _ = select.select([fd], [], [], 0.0)
+            return bool(r)
+        r, _, _ = select.select([fd], [], [], self.timeout_s)
+        if not r:
+            raise SourceStalled(
+                f"{self.name}: no data for {self.timeout_s:g} s after line {self.lines_read} (source stalled; --timeout)"
+            )
+        return True
+
+
+# --------------------------------------------------------------------------
+# A folder of image chunks
+# --------------------------------------------------------------------------
+def _natural_key(p: Path) -> list:
+    return [int(t) if t.isdigit() else t.lower() for t in re.split(r"(\d+)", p.name)]
+
+
+class ImageFolderSource:
+    """Chunks of lines stored as PNG/TIFF images in a folder, in natural name order.
+
+    Parameters
+    ----------
+    folder : str or path-like
+    width : int or None
+        Expected pixels per line (default: the first image's).
+    lines_as_columns : bool
+        The images store time along their columns.
+    timestamps : str, path-like or None
+        Per-line timestamps file for the whole stream (text or ``.npy``).
+    """
+
+    SUFFIXES = (".png", ".tif", ".tiff")
+
+    def __init__(self, folder: str | os.PathLike[str], width: int | None = None, *, lines_as_columns: bool = False, timestamps=None) -> None:
+        self.folder = Path(folder)
+        if not self.folder.is_dir():
+            raise SourceError(f"{self.folder}: not a folder")
+        self.files = sorted((p for p in self.folder.iterdir() if p.suffix.lower() in self.SUFFIXES and p.is_file()), key=_natural_key)
+        if not self.files:
+            raise SourceError(f"{self.folder}: no PNG or TIFF images")
+        self.width = width
+        self.lines_as_columns = lines_as_columns
+        self.timestamps = timestamps
+        self.name = str(self.folder)
+        self.dtype: np.dtype | None = None
+        self.lines_read = 0
+
+    def __iter__(self) -> Iterator[Chunk]:
+        from ..measure.images import load_image
+
+        ts_reader = TimestampReader(self.timestamps) if self.timestamps is not None else None
+        try:
+            for p in self.files:
+                img = load_image(p, lines_as_columns=self.lines_as_columns)
+                dt = np.dtype(np.uint8 if img.bits == 8 else np.uint16)
+                if self.width is None:
+                    self.width = img.width
+                if img.width != self.width:
+                    raise SourceError(
+                        f"{p}: {img.width} pixels per line, expected {self.width}; the {self.lines_read} lines before it were processed"
+                    )
+                if self.dtype is None:
+                    self.dtype = dt
+                elif dt != self.dtype:
+                    raise SourceError(f"{p}: {img.bits}-bit image in a {8 * self.dtype.itemsize}-bit stream")
+                self.lines_read += img.n_lines
+                ts = ts_reader.take(img.n_lines) if ts_reader is not None else None
+                yield Chunk(np.rint(img.data).astype(dt), ts)
+        finally:
+            if ts_reader is not None:
+                ts_reader.close()
+
+
+class ArraySource:
+    """Lines of an in-memory array (or a memory-mapped raw file) in chunks of ``chunk_lines``.
+
+    Parameters
+    ----------
+    data : numpy.ndarray
+        ``(n_lines, W)`` uint8/uint16.
+    chunk_lines : int
+    timestamps_s : numpy.ndarray or None
+    name : str
+    """
+
+    def __init__(self, data: np.ndarray, chunk_lines: int = 1024, timestamps_s: np.ndarray | None = None, name: str = "<array>") -> None:
+        self.data = data
+        self.chunk_lines = int(chunk_lines)
+        self.timestamps_s = timestamps_s
+        self.name = name
+
+    def __iter__(self) -> Iterator[Chunk]:
+        n = self.data.shape[0]
+        for a in range(0, n, self.chunk_lines):
+            b = min(a + self.chunk_lines, n)
+            yield Chunk(np.asarray(self.data[a:b]), None if self.timestamps_s is None else np.asarray(self.timestamps_s[a:b], dtype=np.float64))
+
+
+# --------------------------------------------------------------------------
+# Basler cameras through pypylon (optional extra)
+# --------------------------------------------------------------------------
+def _import_pylon():
+    """``(genicam, pylon)`` from pypylon, or a one-line SourceError when it is missing."""
+    import warnings
+
+    try:
+        with warnings.catch_warnings():
+            # pypylon's SWIG modules emit DeprecationWarnings on import
+            # ("builtin type SwigPyPacked has no __module__"); as errors
+            # (pytest -W error) they abort the import half-way and crash.
+            warnings.simplefilter("ignore", DeprecationWarning)
+            from pypylon import genicam, pylon
+    except ImportError:
+        raise SourceError("pylon source: pypylon is not installed (pip install pypylon, the Basler pylon SDK for Python)") from None
+    return genicam, pylon
+
+
+class PylonSource:
+    """Lines grabbed from a Basler camera with pypylon (optional extra: ``pip install pypylon``).
+
+    Each grabbed frame of a line-scan camera is ``Height`` lines of
+    ``Width`` pixels; it becomes one chunk (``Mono8`` -> ``uint8``,
+    ``Mono12``/``Mono16`` -> ``uint16``).
+
+    Parameters
+    ----------
+    serial : str or None
+        Serial number of the camera (default: the first found). With the
+        environment variable ``PYLON_CAMEMU=1`` (set before pypylon is
+        imported) pylon offers emulated cameras.
+    frames : int or None
+        Stop after this many frames (default: run until interrupted).
+    timeout_s : float
+        Grab timeout (s); a camera that sends nothing for this long raises
+        :class:`SourceStalled`.
+    width, height : int or None
+        Set the camera's ``Width`` (pixels per line) and ``Height`` (lines
+        per frame) before grabbing.
+    image_folder : str or None
+        For an emulated camera: play back the images of this folder
+        (``ImageFilename``, ``ImageFileMode = On``, ``TestImageSelector =
+        Off``; pylon plays them in name order and loops).
+    camera_timestamps : bool
+        Give each line the frame's timestamp (camera ticks, taken as ns) plus
+        its index times ``line_period_s``. Off by default: lines then get
+        ``line / line_rate`` from the engine.
+    line_period_s : float or None
+        Line period for ``camera_timestamps``.
+    """
+
+    def __init__(
+        self,
+        serial: str | None = None,
+        *,
+        frames: int | None = None,
+        timeout_s: float = 5.0,
+        width: int | None = None,
+        height: int | None = None,
+        image_folder: str | os.PathLike[str] | None = None,
+        camera_timestamps: bool = False,
+        line_period_s: float | None = None,
+    ) -> None:
+        _import_pylon()
+        if camera_timestamps and not (line_period_s and line_period_s > 0):
+            raise ValueError("line_period_s: needed (positive) with camera_timestamps")
+        self.serial = serial
+        self.frames = frames
+        self.timeout_s = float(timeout_s)
+        self.set_width = width
+        self.set_height = height
+        self.image_folder = None if image_folder is None else os.fspath(image_folder)
+        self.camera_timestamps = camera_timestamps
+        self.line_period_s = line_period_s
+        self.name = f"pylon:{serial or 'first'}"
+        self.width: int | None = width
+        self.lines_read = 0
+
+    def __iter__(self) -> Iterator[Chunk]:
+        genicam, pylon = _import_pylon()
+
+        factory = pylon.TlFactory.GetInstance()
+        dev = None
+        for d in factory.EnumerateDevices():
+            if self.serial is None or d.GetSerialNumber() == self.serial:
+                dev = d
+                break
+        if dev is None:
+            raise SourceError(f"{self.name}: no Basler camera found (PYLON_CAMEMU=1 offers emulated ones)")
+        try:
+            cam = pylon.InstantCamera(factory.CreateDevice(dev))
+            cam.Open()
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.name}: cannot open the camera ({' '.join(str(exc).split())[:160]})") from None
+        try:
+            if self.set_width is not None:
+                cam.Width.SetValue(int(self.set_width))
+            if self.set_height is not None:
+                cam.Height.SetValue(int(self.set_height))
+            if self.image_folder is not None:
+                cam.ImageFilename.SetValue(self.image_folder)
+                cam.ImageFileMode.SetValue("On")
+                cam.TestImageSelector.SetValue("Off")
+            self.width = int(cam.Width.GetValue())
+            cam.StartGrabbing(pylon.GrabStrategy_OneByOne)
+            n = 0
+            while cam.IsGrabbing() and (self.frames is None or n < self.frames):
+                try:
+                    res = cam.RetrieveResult(int(self.timeout_s * 1000), pylon.TimeoutHandling_ThrowException)
+                except genicam.TimeoutException:
+                    raise SourceStalled(f"{self.name}: no frame for {self.timeout_s:g} s after line {self.lines_read} (camera stalled)") from None
+                try:
+                    if not res.GrabSucceeded():
+                        raise SourceError(f"{self.name}: grab failed after line {self.lines_read}: {res.GetErrorDescription()}")
+                    arr = np.array(res.GetArray())
+                    tick_s = res.GetTimeStamp() * 1e-9
+                finally:
+                    res.Release()
+                if arr.ndim != 2:
+                    raise SourceError(f"{self.name}: frame {n} is not a grey image (shape {arr.shape}; use a Mono pixel format)")
+                ts = tick_s + np.arange(arr.shape[0]) * self.line_period_s if self.camera_timestamps else None
+                n += 1
+                self.lines_read += arr.shape[0]
+                yield Chunk(arr, ts)
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.name}: pylon error after line {self.lines_read}: {' '.join(str(exc).split())[:200]}") from None
+        finally:
+            if cam.IsGrabbing():
+                cam.StopGrabbing()
+            cam.Close()
+
+
+# --------------------------------------------------------------------------
+# Rendered streams (demos and tests)
+# --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class SimulatedStream:
+    """Files written by :func:`simulate_stream`.
+
+    Attributes
+    ----------
+    raw : Path
+        Raw lines (``n_lines x W`` samples).
+    camera_path : Path
+        ``NAME.camera.toml``.
+    truth_path : Path
+        ``NAME.truth.jsonl``: one geometry.md truth object per ball, with
+        ``first_line`` and ``last_line`` (stream lines where its silhouette is).
+    timestamps_path : Path or None
+        ``NAME.timestamps.npy`` when lines were dropped.
+    balls : tuple of dict
+        The truth objects.
+    n_lines, width : int
+    dtype : str
+    """
+
+    raw: Path
+    camera_path: Path
+    truth_path: Path
+    timestamps_path: Path | None
+    balls: tuple[dict, ...]
+    n_lines: int
+    width: int
+    dtype: str = "uint8"
+    meta: dict = field(default_factory=dict, compare=False)
+
+
+def _visible_lines(camera: LineScanCamera, m: BallMotion) -> float:
+    """Lines a ball spans (geometry.md: line_rate * ((2R + z0/f)/|Vx| + tau))."""
+    return camera.line_rate_hz * ((2 * m.radius_m + m.position_m[2] / camera.focal_px) / abs(m.velocity_mps[0]) + camera.exposure)
+
+
+def stream_balls(
+    camera: LineScanCamera,
+    n_lines: int,
+    n_balls: int,
+    seed: int,
+    *,
+    radius_m: float = 0.0335,
+    speed_mps: tuple[float, float] = (25.0, 45.0),
+    depth_m: tuple[float, float] = (3.0, 5.0),
+    close_pairs: int = 0,
+    pair_gap_lines: float = 6.0,
+    side_by_side: int = 0,
+    start_lines: int = 600,
+    t_lines_s: np.ndarray | None = None,
+) -> list[BallMotion]:
+    """Random, non-overlapping ball motions for a stream (camera frame).
+
+    Balls are spread over ``[start_lines, n_lines - 100)`` in slots, one ball
+    per slot at a random place in it; the first ``close_pairs`` slots hold two
+    balls, the second starting ``pair_gap_lines`` clean lines after the first
+    ends; the next ``side_by_side`` slots hold two balls crossing at nearly
+    the same time (within 3 lines) in opposite halves of the sensor. Every
+    ball is wholly on the sensor with a margin.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    n_lines, n_balls, seed : int
+    radius_m : float
+    speed_mps, depth_m : (float, float)
+        Ranges of ``|V|`` (m/s) and of ``z0`` (m).
+    close_pairs : int
+    pair_gap_lines : float
+    side_by_side : int
+    start_lines : int
+        No ball before this line (room for the engine's first model).
+    t_lines_s : numpy.ndarray or None
+        Line times (with dropped lines); default ``line / line_rate``.
+    """
+    rng = np.random.default_rng(seed)
+    t = np.arange(n_lines) / camera.line_rate_hz if t_lines_s is None else np.asarray(t_lines_s)
+    n_slots = n_balls - close_pairs - side_by_side
+    if n_slots < 1 or n_slots < close_pairs + side_by_side:
+        raise ValueError(f"n_balls: {n_balls} balls cannot hold {close_pairs} close pairs and {side_by_side} side-by-side pairs")
+    slot = (n_lines - 100 - start_lines) / n_slots
+    out: list[BallMotion] = []
+    W = camera.width
+    for k in range(n_slots):
+        pair = k < close_pairs
+        twin = close_pairs <= k < close_pairs + side_by_side
+        for _ in range(200):
+            z0 = rng.uniform(*depth_m)
+            speed = rng.uniform(*speed_mps)
+            vy = rng.uniform(-0.1, 0.1) * speed
+            vz = rng.uniform(-0.1, 0.1) * speed
+            vx = math.sqrt(max(speed**2 - vy**2 - vz**2, 1.0))
+            rad_px = camera.focal_px * radius_m / z0
+            half_span = rad_px + abs(vy) / vx * camera.focal_px * radius_m / z0 * 1.2 + 8
+            lo_u, hi_u = half_span + 4, W - 1 - half_span - 4
+            if lo_u >= hi_u:
+                continue
+            if twin:
+                hi_u = min(hi_u, W / 2 - half_span - 8)  # left half; the twin goes right
+                if lo_u >= hi_u:
+                    continue
+            u = rng.uniform(lo_u, hi_u)
+            y0 = (u - camera.principal_px) / camera.focal_px * z0
+            m0 = BallMotion(radius_m, 0.0, (0.0, y0, z0), (vx, vy, vz))
+            span = _visible_lines(camera, m0)
+            need = span * (2.0 if pair else 1.0) + (pair_gap_lines if pair else 0.0) + 8
+            if need < slot:
+                break
+        else:
+            raise ValueError("simulate_stream: balls do not fit; use more lines or fewer balls")
+        a = start_lines + k * slot + 4 + span / 2
+        b = start_lines + (k + 1) * slot - 4 - need + span / 2
+        centre = rng.uniform(a, max(a, b))
+        out.append(BallMotion(radius_m, float(np.interp(centre, np.arange(n_lines), t)), (0.0, y0, z0), (vx, vy, vz)))
+        if pair:
+            # A second ball right after the first, elsewhere on the sensor.
+            z1 = rng.uniform(*depth_m)
+            u1 = rng.uniform(lo_u, hi_u)
+            m1 = BallMotion(radius_m, 0.0, (0.0, (u1 - camera.principal_px) / camera.focal_px * z1, z1), (vx, -vy, vz))
+            c1 = centre + span / 2 + pair_gap_lines + _visible_lines(camera, m1) / 2 + 1
+            out.append(BallMotion(radius_m, float(np.interp(c1, np.arange(n_lines), t)), m1.position_m, m1.velocity_mps))
+        if twin:
+            # Same moment, right half of the sensor, same depth and speed.
+            u1 = rng.uniform(W / 2 + half_span + 8, W - 1 - half_span - 8)
+            c1 = centre + rng.uniform(-3.0, 3.0)
+            y1 = (u1 - camera.principal_px) / camera.focal_px * z0
+            out.append(BallMotion(radius_m, float(np.interp(c1, np.arange(n_lines), t)), (0.0, y1, z0), (vx, -vy, vz)))
+    out.sort(key=lambda m: m.t_c_s)
+    return out
+
+
+def simulate_stream(
+    out_raw: str | os.PathLike[str],
+    camera: LineScanCamera,
+    n_lines: int,
+    n_balls: int,
+    seed: int = 0,
+    *,
+    radius_m: float = 0.0335,
+    close_pairs: int = 0,
+    side_by_side: int = 0,
+    ramp: float = 0.0,
+    dropped: tuple[int, int] | None = None,
+    noise: Any = None,
+    background_level: float = 0.12,
+    ball_level: float = 0.8,
+    block_lines: int = 4096,
+    speed_mps: tuple[float, float] = (25.0, 45.0),
+    depth_m: tuple[float, float] = (3.0, 5.0),
+) -> SimulatedStream:
+    """Render a long line stream with balls to a raw file, with its truth beside it.
+
+    Writes ``OUT`` (raw lines), ``OUT.camera.toml``, ``OUT.truth.jsonl`` (one
+    truth object per ball plus ``first_line`` / ``last_line``) and, with
+    dropped lines, ``OUT.timestamps.npy``. Lines are rendered in blocks of
+    ``block_lines``: memory does not grow with ``n_lines``.
+
+    Parameters
+    ----------
+    out_raw : str or path-like
+    camera : LineScanCamera
+    n_lines : int
+        Lines written (after dropping).
+    n_balls : int
+    seed : int
+        Seeds the balls and the sensor noise.
+    radius_m : float
+    close_pairs : int
+        Pairs of balls close in time (a few clean lines apart).
+    side_by_side : int
+        Pairs of balls crossing at the same time in opposite halves of the
+        sensor (they overlap in time, not on the sensor).
+    ramp : float
+        Slow illumination ramp: the scene's brightness goes linearly from 1
+        to ``1 + ramp`` over the stream.
+    dropped : (int, int) or None
+        ``(line, count)``: ``count`` line periods are missing after written
+        line ``line`` (the timestamps jump).
+    noise : SensorNoise or None
+        Sensor model (default :class:`~ballscan.model.render.SensorNoise` 8-bit).
+    background_level, ball_level : float
+        Linear grey levels (0..1).
+    block_lines : int
+    speed_mps, depth_m : (float, float)
+        Ranges of the balls' speed (m/s) and depth (m).
+
+    Returns
+    -------
+    SimulatedStream
+    """
+    from dataclasses import replace as _replace
+
+    from ..model.render import Appearance, SensorNoise, apply_sensor, render
+    from ..model.silhouette import silhouette
+
+    if isinstance(n_lines, bool) or not isinstance(n_lines, (int, np.integer)) or n_lines < 1000:
+        raise ValueError(f"n_lines: must be an integer >= 1000, got {n_lines!r}")
+    noise = SensorNoise() if noise is None else noise
+    out = Path(out_raw)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    idx = np.arange(n_lines, dtype=np.float64)
+    if dropped is not None:
+        line, count = int(dropped[0]), int(dropped[1])
+        if not (0 < line < n_lines - 1 and count >= 1):
+            raise ValueError(f"dropped: expected (line, count) inside the stream, got {dropped!r}")
+        idx[line + 1 :] += count
+    t = idx / camera.line_rate_hz
+    balls = stream_balls(camera, n_lines, n_balls, seed, radius_m=radius_m, close_pairs=close_pairs, side_by_side=side_by_side, t_lines_s=t, speed_mps=speed_mps, depth_m=depth_m)
+    rng = np.random.default_rng([seed, 1])
+    # Fixed-pattern column gain drawn once for the whole stream.
+    gain = 1.0 + noise.prnu_sigma * rng.standard_normal(camera.width) if noise.prnu_sigma > 0 else np.ones(camera.width)
+    noise_blocks = _replace(noise, prnu_sigma=0.0)
+    app = Appearance.flat(ball_level)
+    # Lines of each ball (silhouette present) and their spans for block selection.
+    truths = []
+    spans = []
+    for m in balls:
+        half = _visible_lines(camera, m)
+        c = float(np.searchsorted(t, m.t_c_s))
+        lo = max(int(c - half) - 4, 0)
+        hi = min(int(c + half) + 5, n_lines)
+        sil = silhouette(camera, m, t[lo:hi])
+        present = np.flatnonzero(sil.present)
+        first, last = (lo + int(present[0]), lo + int(present[-1])) if present.size else (lo, lo)
+        spans.append((lo, hi))
+        d = m.to_dict()
+        d["first_line"] = first
+        d["last_line"] = last
+        truths.append(d)
+    dtype = noise.dtype
+    with open(out, "wb") as fh:
+        for a in range(0, n_lines, block_lines):
+            b = min(a + block_lines, n_lines)
+            inside = [(m, app) for m, (lo, hi) in zip(balls, spans) if lo < b and hi > a]
+            # Separate renders for disjoint groups keep the supersampling local.
+            rendered = render(camera, inside, b - a, background_level=background_level, noise=None, t_lines_s=t[a:b])
+            clean = rendered.clean
+            if ramp:
+                clean = clean * (1.0 + ramp * (np.arange(a, b) / n_lines))[:, None]
+            img, _ = apply_sensor(clean * gain[None, :], noise_blocks, rng)
+            fh.write(np.ascontiguousarray(img.astype(np.dtype(dtype).newbyteorder("<"))).tobytes())
+    save_camera(camera, out.with_name(out.name + ".camera.toml"), comment=f"written by ballscan simulate --stream for {out.name}")
+    truth_path = out.with_name(out.name + ".truth.jsonl")
+    truth_path.write_text("".join(json.dumps(d) + "\n" for d in truths))
+    ts_path = None
+    if dropped is not None:
+        ts_path = out.with_name(out.name + ".timestamps.npy")
+        np.save(ts_path, t)
+    meta = {"ramp": ramp, "dropped": dropped, "close_pairs": close_pairs, "side_by_side": side_by_side, "seed": seed, "noise": noise.to_dict()}
+    return SimulatedStream(out, out.with_name(out.name + ".camera.toml"), truth_path, ts_path, tuple(truths), int(n_lines), int(camera.width), np.dtype(dtype).name, meta)
+
+
+def load_truth_lines(path: str | os.PathLike[str]) -> list[dict]:
+    """Read a ``.truth.jsonl`` file written by :func:`simulate_stream`."""
+    return [json.loads(s) for s in Path(path).read_text().splitlines() if s.strip()]
+
+
+__all__.append("load_truth_lines")
+
