@@ -71,8 +71,9 @@ def estimate_scenes() -> dict:
         truth = json.loads((png.parent / f"{stem}.truth.json").read_text())
         radius = (truth["balls"][0] if "balls" in truth else truth)["radius_m"]
         for method in METHODS:
-            cmd = [*_ballscan(), "estimate", str(png), "--camera", str(png.parent / f"{stem}.camera.toml"), "--radius", repr(radius), "--method", method, "--json"]
-            res = subprocess.run(cmd, capture_output=True, text=True, check=True)
+            rel = png.relative_to(ROOT)  # the JSON names the image as given: relative, the same in every checkout
+            cmd = [*_ballscan(), "estimate", str(rel), "--camera", str(rel.parent / f"{stem}.camera.toml"), "--radius", repr(radius), "--method", method, "--json"]
+            res = subprocess.run(cmd, capture_output=True, text=True, check=True, cwd=ROOT)
             out[f"{stem}/{method}"] = _strip_times(json.loads(res.stdout))
     return out
 
