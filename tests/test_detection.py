@@ -341,30 +341,6 @@ def test_separable_closing_equals_the_2d_structuring_element():
         assert np.array_equal(_close(m, r), ref)
 
 
-def test_median_is_numpys_median():
-    from ballscan.measure.detection import median
-
-    rng = np.random.default_rng(1)
-    for a in (
-        rng.normal(size=101),
-        rng.normal(size=(12, 10)).astype(np.float32),
-        np.round(rng.normal(size=64) * 4),
-        rng.integers(0, 255, 33).astype(np.uint8),
-        np.array([2.0, np.nan, 1.0]),
-        # the compiled selection: even sizes, many ties, views, other dtypes
-        rng.normal(size=5336).astype(np.float32),
-        np.round(rng.normal(size=(90, 100)) * 3)[:, ::3],
-        rng.integers(-50, 50, 1000),
-        rng.normal(size=40).astype(np.float16),
-        np.array([np.nan, 1.0, 2.0, 3.0], dtype=np.float32),
-    ):
-        got, ref = median(a), np.median(a)
-        assert type(got) is type(ref)
-        assert got == ref or (np.isnan(got) and np.isnan(ref))
-    with pytest.raises(ValueError, match="empty"):
-        median(np.array([]))
-
-
 def test_masked_median_is_the_median_of_the_plus_minus_big_row():
     from ballscan.measure.detection import _BIG, _masked_median
 
@@ -515,7 +491,7 @@ def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
 
 def test_integer_median_mad_equals_the_two_selections():
     from ballscan._kernels import integer_median_mad
-    from ballscan.measure.detection import median
+    from ballscan.measure.robust import median
 
     rng = np.random.default_rng(6)
     for trial in range(500):

@@ -40,7 +40,7 @@ from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
 from .._kernels import as_arg, median_deviations, sorted_medians
-from .detection import median as _median
+from .robust import median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
 
@@ -250,8 +250,8 @@ def column_gains(
         d = med[ok] / trend[ok] - 1.0
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
-        dev = np.abs(d - _median(d))
-        scatter = _MAD_SIGMA * float(_median(dev))
+        dev = np.abs(d - median(d))
+        scatter = _MAD_SIGMA * float(median(dev))
         # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
         z = dev / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
@@ -259,7 +259,7 @@ def column_gains(
             break
         far_all[np.flatnonzero(ok)[worst]] = True
     d_far = np.abs(med[far_all] / np.where(trend[far_all] > 0, trend[far_all], 1.0) - 1.0)
-    tau2 = max(scatter**2 - float(_median(var[ok])), 0.0)
+    tau2 = max(scatter**2 - float(median(var[ok])), 0.0)
     gain = np.ones(n_c)
     sigma = np.full(n_c, math.sqrt(tau2))
     if tau2 > 0:

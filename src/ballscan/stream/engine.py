@@ -71,7 +71,8 @@ import numpy as np
 
 from .. import _kernels
 from ..geometry.camera import LineScanCamera, crop_camera
-from ..measure.detection import ColumnModel, detect, median
+from ..measure.detection import ColumnModel, detect
+from ..measure.robust import median
 from ..errors import BallscanError
 from ..measure.images import LineImage
 from ..pipeline.results import BallEstimate
