@@ -173,7 +173,8 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, the truth model, its narrow lines and the limb model."""
     from ballscan.geometry.camera import LineScanCamera, line_times
     from ballscan.measure.detection import detect
-    from ballscan.measure.edges import matched_edges, with_limb
+    from ballscan.measure.edges import with_limb
+    from ballscan.measure.matched import matched_edges
     from ballscan.pipeline.estimate import _full_background
     from ballscan.solve.fit import averaged_model
     from ballscan.measure.images import LineImage
@@ -236,7 +237,7 @@ def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
 def test_matched_edges_leave_unusable_edges_alone():
     from dataclasses import replace
 
-    from ballscan.measure.edges import matched_edges
+    from ballscan.measure.matched import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:5]
@@ -255,7 +256,7 @@ def test_matched_edges_leave_unusable_edges_alone():
 def test_matched_edges_keep_the_window_value_where_they_do_not_converge():
     from dataclasses import replace
 
-    from ballscan.measure.edges import matched_edges
+    from ballscan.measure.matched import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:6]

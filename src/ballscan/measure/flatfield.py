@@ -8,7 +8,7 @@ gain on the background, but not on the ball: there column ``j`` reads
 line whose edge sits in that column.  The window edges
 (:func:`ballscan.measure.edges.measure_edges`) take the ball's level from the line
 itself and are hurt less than the matched edges
-(:func:`ballscan.measure.edges.matched_edges`), which take it from the shading model:
+(:func:`ballscan.measure.matched.matched_edges`), which take it from the shading model:
 on a sensor with 0.8 % PRNU those left the position sigmas about 2x too
 small.  :func:`column_gains` measures how much the columns' gains scatter, so
 that the estimator uses the matched edges only on a flat-fielded sensor.
