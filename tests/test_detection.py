@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.measure.detection import ColumnModel, background_at, detect, region_background
+from ballscan.measure.detection import BallRegion, ColumnModel, background_at, detect, region_background
 from ballscan.measure.images import LineImage, load_image
 
 SCENES = Path(__file__).parent / "data" / "scenes"
@@ -324,6 +324,41 @@ def test_textured_ball_with_background_level_seam_is_one_region():
 def test_k_sigma_validated():
     with pytest.raises(ValueError):
         detect(_image(np.zeros((10, 10))), k_sigma=0.0)
+
+
+@pytest.mark.parametrize(
+    "kw, name",
+    [
+        ({"k_sigma": float("nan")}, "k_sigma"),
+        ({"min_area_px": 0}, "min_area_px"),
+        ({"min_area_px": 2.5}, "min_area_px"),
+        ({"merge_gap_px": -1}, "merge_gap_px"),
+        ({"noise_floor_dn": -0.1}, "noise_floor_dn"),
+        ({"noise_floor_dn": float("inf")}, "noise_floor_dn"),
+    ],
+)
+def test_detect_settings_validated_by_name(kw, name):
+    with pytest.raises(ValueError, match=name):
+        detect(_image(np.zeros((10, 10))), **kw)
+
+
+def test_line_image_and_ball_region_validated_at_construction():
+    with pytest.raises(ValueError, match="LineImage.data"):
+        LineImage(np.zeros(10), 255.0, 8, "one line")
+    with pytest.raises(ValueError, match="LineImage.bits"):
+        LineImage(np.zeros((4, 4)), 255.0, 0, "no bits")
+    with pytest.raises(ValueError, match="LineImage.saturation_dn"):
+        LineImage(np.zeros((4, 4)), float("nan"), 8, "no level")
+    ok = dict(index=0, line_start=2, line_stop=5, col_start=1, col_stop=3, mask=np.ones((3, 2), bool), polarity=1, contrast_dn=5.0, flags=())
+    BallRegion(**ok)
+    for change, name in (
+        ({"line_stop": 2}, "box"),
+        ({"mask": np.ones((2, 2), bool)}, "BallRegion.mask"),
+        ({"polarity": 0}, "BallRegion.polarity"),
+        ({"flags": ("cut",)}, "BallRegion.flags"),
+    ):
+        with pytest.raises(ValueError, match=name):
+            BallRegion(**{**ok, **change})
 
 
 def test_separable_closing_equals_the_2d_structuring_element():

@@ -22,10 +22,10 @@ background of pixel ``(i, j)`` is modelled as
   (``line_gain``, multiplicative: illumination) when the background is well
   above zero, and an offset (``line_offset_dn``) when the background is near
   zero, where a ratio would be unstable. The other one is then 1 / 0.
-* ``noise_dn[j]`` is a per-column noise sigma (DN): the interquartile range
-  of the column's background values / 1.349, floored at
+* ``noise_dn[j]`` is a per-column noise sigma (DN): the standard deviation
+  of the column's values in the mode seeking's last window, floored at
   ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
-  at a fraction of the image's median noise.
+  at a quarter of the image's median column noise.
 * A caller that already knows the columns' level and noise (the stream
   engine's running model, learned on thousands of lines before the ball)
   passes them as a :class:`ColumnModel`: the per-column mode seeking is
@@ -123,6 +123,20 @@ class BallRegion:
     contrast_dn: float
     flags: tuple[str, ...]
     n_pixels: int = 0
+
+    def __post_init__(self) -> None:
+        if not (0 <= self.line_start < self.line_stop and 0 <= self.col_start < self.col_stop):
+            raise ValueError(
+                f"BallRegion: the box must be non-empty and non-negative, got lines [{self.line_start}, {self.line_stop}) "
+                f"and columns [{self.col_start}, {self.col_stop})"
+            )
+        box = (self.line_stop - self.line_start, self.col_stop - self.col_start)
+        if np.shape(self.mask) != box:
+            raise ValueError(f"BallRegion.mask: must have the box's shape {box}, got {np.shape(self.mask)}")
+        if self.polarity not in (1, -1):
+            raise ValueError(f"BallRegion.polarity: must be +1 or -1, got {self.polarity!r}")
+        if not all(f in FLAG_WORDS for f in self.flags):
+            raise ValueError(f"BallRegion.flags: must be words of FLAG_WORDS {FLAG_WORDS}, got {self.flags!r}")
 
     @property
     def lines(self) -> slice:
@@ -280,8 +294,7 @@ def _masked_median(s: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.
     give 0; check the count.
     """
     s.sort(axis=1)
-    # compiled (_kernels.kept_median): the look-up as numpy index arithmetic
-    # was some ten operations on per-line arrays, 50 us on a stream crop
+    # the look-up, compiled (_kernels.kept_median)
     return kept_median(s, as_arg(excluded, np.int64), _BIG)
 
 
@@ -307,8 +320,8 @@ def _mode_seek(
         Per row: the mode, the noise sigma and the number of values in the
         final window.
     """
-    # compiled (_kernels.mode_seek): the numpy form of these rounds, some
-    # sixty whole-array operations, took 0.75 ms on a stream crop (150 x 200)
+    # compiled (_kernels.mode_seek): the rounds per row, without the numpy
+    # form's whole-array temporaries
     return mode_seek(as_arg(s, np.float32), as_arg(start), as_arg(sigma), float(floor))
 
 
@@ -321,8 +334,8 @@ def _global_noise(x: np.ndarray) -> float:
     d = d[:: max(1, d.size // 100_000)]
     if d.size == 0:
         return 0.0
-    # Integer data (the usual case): both medians by counting, exact, at a
-    # quarter of the two selections' cost (15 000 values: 10 against 39 us).
+    # Integer data (the usual case): both medians by counting, exact and
+    # cheaper than two selections.
     ok, _, mad = integer_median_mad(as_arg(d, np.float32))
     mad = np.float32(mad) if ok else median(np.abs(d - median(d)))
     return float(MAD_TO_SIGMA * mad / np.sqrt(2.0))
@@ -413,7 +426,7 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
     if np.isnan(col_med).any():
         neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
     else:
-        # compiled (_kernels.reflect_median_filter): the same values, 4 against 17 us
+        # compiled (_kernels.reflect_median_filter): ndi.median_filter's values
         neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
@@ -436,9 +449,8 @@ def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: 
     # background pixels only.
     bs = b[::step]
     thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
-    # compiled (_kernels.first_pass_lines): the residual, the exclusion and
-    # the samples as numpy passes were some ten whole-array operations and
-    # temporaries, 0.1 ms on a stream crop
+    # the residual, the exclusion and the samples in one compiled pass
+    # (_kernels.first_pass_lines)
     samples, n_excluded = first_pass_lines(
         as_arg(xs, np.float32), as_arg(gain0), as_arg(offset0), as_arg(bs), as_arg(thr), use_gain
     )
@@ -484,16 +496,14 @@ def _merged_runs(m: np.ndarray, closed: np.ndarray, axis: int) -> np.ndarray:
     pixels, there: a notch between two touching balls shows on several
     neighbouring lines of the lightly closed mask even where the full
     closing leaves it on one line at each end of their overlap (a small
-    ball beside a large one; a review found such pairs passed as one clean
-    ball).  One such line alone in both is a ragged edge: on a long ball the
-    column at its widest point is covered by a fraction of a pixel for
-    hundreds of lines, its pixels cross the threshold only now and then,
-    and gaps longer than the closing's leave it in two runs (the quick
-    Fig. 5 sweep's 140 000 lines/s ball, 700 lines: 2 of 128 noisy renders
-    split at such a column into two "overlapping" balls, V.x 6 and 43 sigma
-    of the bound off).
+    ball beside a large one, which would otherwise pass as one clean ball).
+    One such line alone in both is a ragged edge: on a long ball the column
+    at its widest point is covered by a fraction of a pixel for hundreds of
+    lines, its pixels cross the threshold only now and then, and gaps longer
+    than the closing's leave it in two runs (a fast ball of Fig. 5 would
+    otherwise be split at such a column into two "overlapping" balls).
     """
-    # compiled (_kernels.multi_runs): 3 against 9 us as numpy on a ball's box
+    # compiled (_kernels.multi_runs)
     out, lone = multi_runs(as_arg(closed, np.bool_), axis)
     if np.any(lone):
         light, _ = multi_runs(as_arg(_close(m, _NOTCH_CLOSE_PX), np.bool_), axis)
@@ -764,6 +774,14 @@ def detect(
     Detection
         Background model and regions; no regions for an empty, flat or fully
         saturated image.
+
+    Raises
+    ------
+    ValueError
+        If a setting is out of its range (``k_sigma > 0``, ``min_area_px >=
+        1``, ``merge_gap_px >= 0``, ``noise_floor_dn >= 0``; the message names
+        it), the image has fewer than 2 lines or columns, or ``columns`` is
+        a model of another width.
     """
     _check_detect_settings(k_sigma, min_area_px, merge_gap_px, noise_floor_dn)
     x = np.asarray(image.data, dtype=np.float64)

@@ -116,13 +116,10 @@ class EdgeSettings:
         change of the level from the level run to the run inside it differs
         from the model's by more than 3 sigma plus this (texture, not
         shading, near the edge).  Not 0: the model's run levels carry its
-        own small errors (0.05-0.4 % with point samples on a spread edge
-        next to a ball's end, where the run's last pixel is 0.1-1 %
-        uncovered; about 0.1 % with whole pixels' coverage, 4 quadrature
-        nodes), and on noise-free images (sigma 1e-5) a zero tolerance
-        kept the model-free edges there, 0.015-0.035 px outward (V.x
-        0.011 % low on the perpendicular bench ball with point samples,
-        0.004 % with 0.002).
+        own small errors (tenths of a percent on a spread edge next to a
+        ball's end, where the run's last pixel is not quite covered), and on
+        noise-free images a zero tolerance would keep the model-free edges
+        there, a few hundredths of a pixel outward.
     limb_narrow_max_px, limb_wide_px : float, (float, float)
         With ``limb``, the narrow-window edges are corrected on lines whose
         model edge spread (``limb.spread_px``) is below ``limb_narrow_max_px``
@@ -157,6 +154,33 @@ class EdgeSettings:
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)
     limb_area_min_spread_px: float = 0.8
+
+    def __post_init__(self) -> None:
+        for name, lo in (
+            ("n_out", 0), ("n_in", 0), ("n_level", 1), ("margin_lines", 0), ("pad_px", 0), ("n_out_wide", 0),
+            ("n_in_wide", 0), ("max_walk_px", 0), ("slope_lines", 1), ("slope_degree", -1), ("limb_samples", 1),
+        ):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= lo):
+                raise ValueError(f"EdgeSettings.{name}: must be an integer >= {lo}, got {v!r}")
+        for name in ("min_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px"):
+            v = getattr(self, name)
+            if not (_is_number(v) and v >= 0):
+                raise ValueError(f"EdgeSettings.{name}: must be a finite number >= 0, got {v!r}")
+        if not (_is_number(self.find_fraction) and 0 < self.find_fraction < 1):
+            raise ValueError(f"EdgeSettings.find_fraction: must lie in (0, 1), got {self.find_fraction!r}")
+        if not _is_number(self.level_slope):
+            raise ValueError(f"EdgeSettings.level_slope: must be a finite number, got {self.level_slope!r}")
+        if not isinstance(self.ball_noise, (bool, np.bool_)):
+            raise ValueError(f"EdgeSettings.ball_noise: must be a bool, got {self.ball_noise!r}")
+        w = self.limb_wide_px
+        if not (isinstance(w, tuple) and len(w) == 2 and all(_is_number(v) for v in w) and 0 <= w[0] <= w[1]):
+            raise ValueError(f"EdgeSettings.limb_wide_px: must be a (low, high) pair of numbers, 0 <= low <= high, got {w!r}")
+
+
+def _is_number(v: Any) -> bool:
+    """A finite real number (not a bool)."""
+    return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool) and math.isfinite(v)
 
 
 @dataclass(frozen=True)
@@ -427,8 +451,8 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     by the difference between the model's covered length in the window and
     the data's ``S / L_eff``: ``inner - S / L_eff`` alone would be the mean
     edge only if the window held the whole ramp, and a spread edge's
-    coverage reaches past its inner end (by 0.02-0.04 px of coverage next
-    to a ball's ends on the renders tried).  Two rounds, the second with the
+    coverage reaches past its inner end (by a few hundredths of a pixel of
+    coverage next to a ball's ends).  Two rounds, the second with the
     model at the first's edge (the level run sits in that tail).
 
     The model knows the shading, not the texture: where the data's ratio of
@@ -510,8 +534,7 @@ def _running_median(x: np.ndarray, n: int, blocks: int = 1) -> np.ndarray:
     if n <= 1 or x.size == 0:
         return x.copy()
     # the median of the finite entries (the mean of the middle two for an
-    # even count), as np.nanmedian; compiled: the numpy form (sorted sliding
-    # windows) took 70 us per call, four calls per ball
+    # even count), as np.nanmedian; compiled (_kernels.running_medians)
     return running_medians(as_arg(x), int(blocks), int(n))
 
 

@@ -17,17 +17,15 @@ Each pixel well inside the ball is divided by its line's median, each
 column's gain is the median over its lines, what varies smoothly across the
 columns (shading, a texture's large-scale pattern) is removed by a local
 quadratic across 15 columns, and the scatter that remains beyond the measurement noise is the
-gains' (robust method of moments).  Measured on 8-bit renders of the Fig. 5
-ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
-0-0.0019, PRNU 0.002 gives 0.0001-0.0024, 0.003 gives 0.0015-0.0039 and
-0.008 gives 0.0067-0.0083.  A ball with fewer than 8 interior lines or 15
-measurable columns (about 17 px across) reads NaN: not measured.
-Dividing the measured gains out of the image did not help the window edges
-(docs/experiments.md): the columns a ball's edges dwell on longest are its
-outermost, which are never deep inside it.  The matched edges are measured
-on the image with the gains divided out (:func:`flat_fielded`, session 8),
-each carrying the gain error that remains in its edge pixel
-(:attr:`ColumnGains.gain_sigma`).
+gains' (robust method of moments).  On 8-bit images of the Fig. 5 ball it
+resolves a PRNU of a few tenths of a percent (a flat sensor reads up to about
+0.002).  A ball with fewer than 8 interior lines or 15 measurable columns
+(about 17 px across) reads NaN: not measured.
+Dividing the measured gains out of the image does not help the window edges:
+the columns a ball's edges dwell on longest are its outermost, which are
+never deep inside it.  The matched edges are measured on the image with the
+gains divided out (:func:`flat_fielded`), each carrying the gain error that
+remains in its edge pixel (:attr:`ColumnGains.gain_sigma`).
 """
 
 from __future__ import annotations
@@ -68,7 +66,7 @@ def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
 # scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp") as a fixed
 # linear filter: its coefficients and edge fits depend only on the window,
 # and computing them (two polynomial fits by scipy.linalg.lstsq per call)
-# took most of column_gains' time on a stream event's ball (~1 ms)
+# would dominate column_gains' time on a stream ball
 _TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
 _TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
 # the fraction of a white (column-independent) gain pattern's variance that the trend takes
@@ -266,9 +264,8 @@ def column_gains(
         gain[cols[ok]] = 1.0 + d * (tau2 / (tau2 + var[ok]))
         # the measurement's posterior, and the part of the gains the smooth
         # trend takes with the ball's shading (a white gain pattern leaves
-        # sum(coef^2) = 0.2 of its variance in a 15-column quadratic: the
-        # quick sweep's balls measured 0.0030-0.0049 RMS off for a posterior
-        # of 0.0013-0.0030 alone)
+        # sum(coef^2) = 0.2 of its variance in a 15-column quadratic, which
+        # the posterior alone leaves out)
         sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _TREND_LEAK)
     # the defective columns keep gain 1 and their whole deviation as their error
     sigma[cols[far_all]] = np.maximum(d_far, math.sqrt(tau2))

@@ -343,13 +343,13 @@ class LimbProfile:
         edge sits at offset 0.  Near a ball's ends a spread edge's samples
         have long tails: a pixel 2-3 px inside the mean edge is still
         uncovered for a few per cent of them, which a few point samples miss
-        (on a noise-free render that left the level runs of the wide windows
-        1 % darker than the point model said, and their edges 0.02-0.04 px
-        outward).  ``n_nodes`` Gauss-Legendre nodes per piece over the
-        exposure and the pixel's height: a quadrature of a function with
-        kinks, per pixel within 0.010 of a finely supersampled render on the
-        bench ball's lines whose edge spreads 0.2-1 px, within 0.020 at
-        140 000 lines/s (0.006 with 8 nodes).
+        (a noise-free render's level runs of the wide windows would read
+        about 1 % darker than the point model, and their edges a few
+        hundredths of a pixel outward).  ``n_nodes`` Gauss-Legendre nodes per
+        piece over the exposure and the pixel's height: a quadrature of a
+        function with kinks, per pixel within about 0.01 (0.02 on the fastest
+        balls) of a finely supersampled render where the edge spreads
+        0.2-1 px; more nodes bring it closer.
 
         Parameters
         ----------
@@ -652,11 +652,10 @@ def _level_margin(n_full: int) -> int:
     """Lines left out at each end of the plateau lines for the level scatter.
 
     The rough motion's presence can be off by a line, and on a long ball by
-    more (the key-point guess's duration is good to about a percent): on the
-    quick sweep's 520-line balls (140 000 lines/s) it called lines at each
-    end full that the ball entered during the exposure, whose means, 6-10 %
-    low, made a flat ball's scatter 0.036-0.040 (refused as not uniform)
-    where without three lines at each end it is 0.002-0.007.  One line up
+    more (the key-point guess's duration is good to about a percent): on a
+    fast ball it calls lines at each end full that the ball entered during
+    the exposure, whose means, several percent low, would make a flat
+    ball's scatter large enough to refuse it as not uniform.  One line up
     to 250 lines, 0.6 % of them beyond.
     """
     return max(1, int(round(0.006 * n_full)))
