@@ -204,7 +204,14 @@ def column_gains(
     ColumnGains
         For the box's columns; ``prnu_sigma`` NaN when fewer than 8 lines or
         15 columns can be measured (a small ball: not measured is not flat).
+
+    Raises
+    ------
+    ValueError
+        If ``polarity`` is not +1 or -1.
     """
+    if polarity not in (1, -1):
+        raise ValueError(f"polarity: must be +1 or -1, got {polarity!r}")
     n_l, n_c = mask.shape
     ls = slice(line_start, line_start + n_l)
     cs = slice(col_start, col_start + n_c)
@@ -234,8 +241,8 @@ def column_gains(
     var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's.  A
     # defective (stuck, dead, hot) column is no gain: dividing by its value
-    # (a stuck column read -0.0045) would scale its signal by hundreds, and
-    # it bends its neighbours' trend (by 0.04); such columns are taken out
+    # (near 0 for a stuck column) would scale its signal by hundreds, and
+    # it bends its neighbours' trend; such columns are taken out
     # one by one, the worst first, their value interpolated for the trend
     k = np.arange(med.size)
     far_all = np.zeros(med.size, dtype=bool)
