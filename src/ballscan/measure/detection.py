@@ -662,9 +662,9 @@ def _check_detect_settings(k_sigma: float, min_area_px: int, merge_gap_px: int, 
     """One precise ``ValueError`` for a setting of :func:`detect` out of its range."""
     if not (isinstance(k_sigma, (int, float, np.integer, np.floating)) and np.isfinite(k_sigma) and k_sigma > 0):
         raise ValueError(f"k_sigma must be a positive number, got {k_sigma}")
-    if not (isinstance(min_area_px, (int, np.integer)) and min_area_px >= 1):
+    if not (isinstance(min_area_px, (int, np.integer)) and not isinstance(min_area_px, bool) and min_area_px >= 1):
         raise ValueError(f"min_area_px must be an integer >= 1, got {min_area_px!r}")
-    if not (isinstance(merge_gap_px, (int, np.integer)) and merge_gap_px >= 0):
+    if not (isinstance(merge_gap_px, (int, np.integer)) and not isinstance(merge_gap_px, bool) and merge_gap_px >= 0):
         raise ValueError(f"merge_gap_px must be an integer >= 0, got {merge_gap_px!r}")
     if not (isinstance(noise_floor_dn, (int, float, np.integer, np.floating)) and np.isfinite(noise_floor_dn) and noise_floor_dn >= 0):
         raise ValueError(f"noise_floor_dn must be a finite number >= 0, got {noise_floor_dn!r}")
