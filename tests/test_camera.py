@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -11,6 +12,7 @@ from hypothesis import strategies as st
 from ballscan.geometry.camera import (
     LineScanCamera,
     camera_from_eq1,
+    crop_camera,
     line_times,
     load_camera,
     save_camera,
@@ -225,3 +227,20 @@ def test_unparseable_and_missing_files(tmp_path):
         load_camera(binary)
     with pytest.raises(CameraFileError, match="cannot read"):
         load_camera(tmp_path)  # a folder
+
+
+def test_crop_camera_equals_a_validated_replace():
+    cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0, k1=-0.02, k2=0.004, crossing="-x")
+    for c0, c1, exp in ((0, 512, None), (100, 300, None), (0, 40, 1.0 / cam.line_rate_hz), (470, 512, 2e-5)):
+        got = crop_camera(cam, c0, c1, exposure_s=exp)
+        changes = {} if (c0, c1) == (0, 512) else {"width": c1 - c0, "principal_px": cam.principal_px - c0}
+        if exp is not None:
+            changes["exposure_s"] = exp
+        assert got == replace(cam, **changes)
+        assert got.source == cam.source
+    assert crop_camera(cam, 0, 512) is cam
+    # what a validation refuses is still refused
+    with pytest.raises(ValueError, match="exposure_s"):
+        crop_camera(cam, 10, 20, exposure_s=2.0 / cam.line_rate_hz)
+    with pytest.raises(ValueError, match="width"):
+        crop_camera(cam, 10, 11)

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscan.measure.detection import ColumnModel, background_at, detect, region_background
+from ballscan.measure.detection import BallRegion, ColumnModel, background_at, detect, region_background
 from ballscan.measure.images import LineImage, load_image
 
 SCENES = Path(__file__).parent / "data" / "scenes"
@@ -326,6 +326,41 @@ def test_k_sigma_validated():
         detect(_image(np.zeros((10, 10))), k_sigma=0.0)
 
 
+@pytest.mark.parametrize(
+    "kw, name",
+    [
+        ({"k_sigma": float("nan")}, "k_sigma"),
+        ({"min_area_px": 0}, "min_area_px"),
+        ({"min_area_px": 2.5}, "min_area_px"),
+        ({"merge_gap_px": -1}, "merge_gap_px"),
+        ({"noise_floor_dn": -0.1}, "noise_floor_dn"),
+        ({"noise_floor_dn": float("inf")}, "noise_floor_dn"),
+    ],
+)
+def test_detect_settings_validated_by_name(kw, name):
+    with pytest.raises(ValueError, match=name):
+        detect(_image(np.zeros((10, 10))), **kw)
+
+
+def test_line_image_and_ball_region_validated_at_construction():
+    with pytest.raises(ValueError, match="LineImage.data"):
+        LineImage(np.zeros(10), 255.0, 8, "one line")
+    with pytest.raises(ValueError, match="LineImage.bits"):
+        LineImage(np.zeros((4, 4)), 255.0, 0, "no bits")
+    with pytest.raises(ValueError, match="LineImage.saturation_dn"):
+        LineImage(np.zeros((4, 4)), float("nan"), 8, "no level")
+    ok = dict(index=0, line_start=2, line_stop=5, col_start=1, col_stop=3, mask=np.ones((3, 2), bool), polarity=1, contrast_dn=5.0, flags=())
+    BallRegion(**ok)
+    for change, name in (
+        ({"line_stop": 2}, "box"),
+        ({"mask": np.ones((2, 2), bool)}, "BallRegion.mask"),
+        ({"polarity": 0}, "BallRegion.polarity"),
+        ({"flags": ("cut",)}, "BallRegion.flags"),
+    ):
+        with pytest.raises(ValueError, match=name):
+            BallRegion(**{**ok, **change})
+
+
 def test_separable_closing_equals_the_2d_structuring_element():
     from scipy import ndimage as ndi
 
@@ -339,30 +374,6 @@ def test_separable_closing_equals_the_2d_structuring_element():
         st = np.ones((2 * r + 1, 2 * r + 1), bool)
         ref = ndi.binary_erosion(ndi.binary_dilation(p, st), st)[r + 1 : -(r + 1), r + 1 : -(r + 1)]
         assert np.array_equal(_close(m, r), ref)
-
-
-def test_median_is_numpys_median():
-    from ballscan.measure.detection import median
-
-    rng = np.random.default_rng(1)
-    for a in (
-        rng.normal(size=101),
-        rng.normal(size=(12, 10)).astype(np.float32),
-        np.round(rng.normal(size=64) * 4),
-        rng.integers(0, 255, 33).astype(np.uint8),
-        np.array([2.0, np.nan, 1.0]),
-        # the compiled selection: even sizes, many ties, views, other dtypes
-        rng.normal(size=5336).astype(np.float32),
-        np.round(rng.normal(size=(90, 100)) * 3)[:, ::3],
-        rng.integers(-50, 50, 1000),
-        rng.normal(size=40).astype(np.float16),
-        np.array([np.nan, 1.0, 2.0, 3.0], dtype=np.float32),
-    ):
-        got, ref = median(a), np.median(a)
-        assert type(got) is type(ref)
-        assert got == ref or (np.isnan(got) and np.isnan(ref))
-    with pytest.raises(ValueError, match="empty"):
-        median(np.array([]))
 
 
 def test_masked_median_is_the_median_of_the_plus_minus_big_row():
@@ -515,7 +526,7 @@ def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
 
 def test_integer_median_mad_equals_the_two_selections():
     from ballscan._kernels import integer_median_mad
-    from ballscan.measure.detection import median
+    from ballscan.measure.robust import median
 
     rng = np.random.default_rng(6)
     for trial in range(500):

@@ -128,6 +128,36 @@ def test_short_end_lines_carry_area():
     assert np.allclose(e.centroid_px[1:-1], 50.0, atol=1e-9)
 
 
+@pytest.mark.parametrize(
+    "kw, name",
+    [
+        ({"n_level": 0}, "n_level"),
+        ({"find_fraction": 1.0}, "find_fraction"),
+        ({"pad_px": -1}, "pad_px"),
+        ({"min_snr": float("nan")}, "min_snr"),
+        ({"slope_degree": -2}, "slope_degree"),
+        ({"limb_wide_px": (1.0, 0.2)}, "limb_wide_px"),
+        ({"ball_noise": 1}, "ball_noise"),
+    ],
+)
+def test_edge_settings_validated_by_name(kw, name):
+    from ballscan.measure.edges import EdgeSettings
+
+    with pytest.raises(ValueError, match=f"EdgeSettings.{name}"):
+        EdgeSettings(**kw)
+
+
+@pytest.mark.parametrize(
+    "kw, name",
+    [({"max_spread_px": -0.1}, "max_spread_px"), ({"half_window_px": 0}, "half_window_px"), ({"rounds": 0}, "rounds"), ({"step_px": 0.0}, "step_px")],
+)
+def test_matched_edges_settings_validated_by_name(kw, name):
+    from ballscan.measure.matched import matched_edges
+
+    with pytest.raises(ValueError, match=name):
+        matched_edges(SimpleNamespace(), SimpleNamespace(), **kw)
+
+
 def _scene_names():
     if not (SCENES / "clean").is_dir():
         return []
@@ -173,7 +203,8 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     """The bench ball (flat, 700 DN on 100) on a 240-pixel sensor: window and matched edges, the truth model, its narrow lines and the limb model."""
     from ballscan.geometry.camera import LineScanCamera, line_times
     from ballscan.measure.detection import detect
-    from ballscan.measure.edges import matched_edges, with_limb
+    from ballscan.measure.edges import with_limb
+    from ballscan.measure.matched import matched_edges
     from ballscan.pipeline.estimate import _full_background
     from ballscan.solve.fit import averaged_model
     from ballscan.measure.images import LineImage
@@ -236,7 +267,7 @@ def test_matched_edges_unbiased_and_at_the_edge_pixels_noise():
 def test_matched_edges_leave_unusable_edges_alone():
     from dataclasses import replace
 
-    from ballscan.measure.edges import matched_edges
+    from ballscan.measure.matched import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:5]
@@ -255,7 +286,7 @@ def test_matched_edges_leave_unusable_edges_alone():
 def test_matched_edges_keep_the_window_value_where_they_do_not_converge():
     from dataclasses import replace
 
-    from ballscan.measure.edges import matched_edges
+    from ballscan.measure.matched import matched_edges
 
     window, matched, me, narrow, limb = _flat_ball_edges(5.0, 1)
     rows = np.flatnonzero(window.left_ok & narrow)[:6]

@@ -10,7 +10,7 @@ import pytest
 
 from ballscan.measure import edges as E
 from ballscan.geometry.camera import LineScanCamera, line_times
-from ballscan.measure.detection import median as _median
+from ballscan.measure.robust import median as _median
 from ballscan.measure.detection import detect
 from ballscan.errors import GeometryError
 from ballscan.pipeline.estimate import _full_background

@@ -62,6 +62,27 @@ def test_fit_shading_recovers_the_lambertian_law():
     assert sh.residual_rms_dn < 0.01 * level
 
 
+@pytest.mark.parametrize(
+    "kw, name",
+    [({"inset_px": -1.0}, "inset_px"), ({"max_pixels": 10}, "max_pixels"), ({"huber_k": 0.0}, "huber_k"), ({"n_iterations": 0}, "n_iterations")],
+)
+def test_fit_shading_settings_validated_by_name(kw, name):
+    with pytest.raises(ValueError, match=name):
+        fit_shading(CAM, MOTION, np.zeros((4, 4)), np.arange(4), np.zeros(4), np.zeros(4), np.full(4, 3.0), **kw)
+
+
+def test_limb_profile_settings_validated_at_construction():
+    r, img, _ = _shaded()
+    e, reg, t = _edges(img, limb_on=False)
+    limb = ball_limb(CAM, MOTION, img, e, t, _full_background(detect(LineImage(img, 1e9, 16, "render"))))
+    from dataclasses import replace
+
+    replace(limb, level_rel_sigma=float("nan"))  # not measured
+    for change, name in (({"n_time": 0}, "n_time"), ({"level_ref_px": 0.0}, "level_ref_px"), ({"polarity": 2}, "polarity"), ({"level_rel_sigma": -0.1}, "level_rel_sigma")):
+        with pytest.raises(ValueError, match=f"LimbProfile.{name}"):
+            replace(limb, **change)
+
+
 def _edges(img, limb_on: bool):
     image = LineImage(img, 1e9, 16, "render")
     det = detect(image)

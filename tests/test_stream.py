@@ -29,7 +29,8 @@ from ballscan.stream.sources import (
     simulate_stream,
     stream_balls,
 )
-from ballscan.stream.engine import Chunk, StreamConfig, StreamEngine, StreamError, estimate_crop, crop_camera, process_stream
+from ballscan.geometry.camera import crop_camera
+from ballscan.stream.engine import Chunk, StreamConfig, StreamEngine, StreamError, estimate_crop, process_stream
 from ballscan.cli.stream import watch
 
 RADIUS = 0.0335
@@ -699,20 +700,3 @@ def test_stream_matched_switch_reaches_the_estimator():
         seen[matched] = res[0].estimate
     assert seen[True].extra["edges"] == "matched" and seen[False].extra["edges"] == "window"
     assert seen[True].velocity_mps != seen[False].velocity_mps
-
-
-def test_crop_camera_equals_a_validated_replace():
-    cam = replace(CAM, k1=-0.02, k2=0.004, crossing="-x")
-    for c0, c1, exp in ((0, 512, None), (100, 300, None), (0, 40, 1.0 / CAM.line_rate_hz), (470, 512, 2e-5)):
-        got = crop_camera(cam, c0, c1, exposure_s=exp)
-        changes = {} if (c0, c1) == (0, 512) else {"width": c1 - c0, "principal_px": cam.principal_px - c0}
-        if exp is not None:
-            changes["exposure_s"] = exp
-        assert got == replace(cam, **changes)
-        assert got.source == cam.source
-    assert crop_camera(cam, 0, 512) is cam
-    # what a validation refuses is still refused
-    with pytest.raises(ValueError, match="exposure_s"):
-        crop_camera(cam, 10, 20, exposure_s=2.0 / CAM.line_rate_hz)
-    with pytest.raises(ValueError, match="width"):
-        crop_camera(cam, 10, 11)

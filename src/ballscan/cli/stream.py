@@ -19,9 +19,9 @@ from typing import Annotated, Optional
 import numpy as np
 import typer
 
-from ..geometry.camera import LineScanCamera, load_camera
+from ..geometry.camera import LineScanCamera, crop_camera, load_camera
 from ..errors import BallscanError
-from ..stream.engine import StreamConfig, StreamResult, crop_camera, process_stream
+from ..stream.engine import StreamConfig, StreamResult, process_stream
 
 __all__ = ["watch", "batch", "open_source", "save_event"]
 

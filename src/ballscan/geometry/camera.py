@@ -13,6 +13,7 @@ projection as ``y' = -f y / z`` on the physical image plane ``z = -f``
 
 from __future__ import annotations
 
+import copy
 import math
 import tomllib
 from dataclasses import dataclass, field, replace
@@ -30,6 +31,7 @@ __all__ = [
     "save_camera",
     "camera_from_eq1",
     "line_times",
+    "crop_camera",
 ]
 
 _ORTHO_TOL = 1e-6
@@ -523,3 +525,48 @@ def save_camera(camera: LineScanCamera, path: str | Path, comment: str | None = 
     if comment:
         text = "".join(f"# {line}\n" for line in comment.splitlines()) + text
     Path(path).write_text(text)
+
+
+def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int, *, exposure_s: float | None = None) -> LineScanCamera:
+    """The camera of sensor pixels ``[col_start, col_stop)`` only.
+
+    The same camera frame and optics; pixel ``j`` of the crop is pixel
+    ``col_start + j`` of the sensor, so ``u' = u - col_start`` and the
+    principal point moves by ``-col_start`` (pixels). Positions and
+    velocities measured with it need no correction.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    col_start, col_stop : int
+        The crop's sensor pixels, ``0 <= col_start < col_stop <= width``.
+    exposure_s : float, optional
+        Also set the exposure (s).
+
+    Returns
+    -------
+    LineScanCamera
+        Equal to ``dataclasses.replace(camera, width=..., principal_px=...,
+        exposure_s=...)``, made without validating it again: a crop of a
+        valid camera is valid (its distortion is monotonic over a part of
+        the sensor's range), and the validation (a distortion check on
+        257 points) would lie on every stream ball's latency path. An exposure
+        outside ``(0, 1 / line_rate_hz]`` or an empty or outside range is
+        validated (and refused) as by ``replace``.
+    """
+    changes: dict[str, Any] = {}
+    if not (col_start == 0 and col_stop == camera.width):
+        changes.update(width=int(col_stop - col_start), principal_px=camera.principal_px - col_start)
+    if exposure_s is not None:
+        changes["exposure_s"] = exposure_s
+    if not changes:
+        return camera
+    valid = 0 <= col_start and col_start + 2 <= col_stop <= camera.width
+    if exposure_s is not None:
+        valid = valid and isinstance(exposure_s, float) and 0.0 < exposure_s <= 1.0 / camera.line_rate_hz
+    if not valid:
+        return replace(camera, **changes)
+    crop = copy.copy(camera)  # no __init__, no validation
+    for key, value in changes.items():
+        object.__setattr__(crop, key, value)
+    return crop

@@ -22,10 +22,10 @@ background of pixel ``(i, j)`` is modelled as
   (``line_gain``, multiplicative: illumination) when the background is well
   above zero, and an offset (``line_offset_dn``) when the background is near
   zero, where a ratio would be unstable. The other one is then 1 / 0.
-* ``noise_dn[j]`` is a per-column noise sigma (DN): the interquartile range
-  of the column's background values / 1.349, floored at
+* ``noise_dn[j]`` is a per-column noise sigma (DN): the standard deviation
+  of the column's values in the mode seeking's last window, floored at
   ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
-  at a fraction of the image's median noise.
+  at a quarter of the image's median column noise.
 * A caller that already knows the columns' level and noise (the stream
   engine's running model, learned on thousands of lines before the ball)
   passes them as a :class:`ColumnModel`: the per-column mode seeking is
@@ -67,6 +67,7 @@ from .._kernels import (
     region_values,
 )
 from .images import LineImage
+from .robust import MAD_TO_SIGMA, median
 
 __all__ = [
     "BallRegion",
@@ -75,7 +76,6 @@ __all__ = [
     "detect",
     "background_at",
     "region_background",
-    "median",
     "FLAG_WORDS",
 ]
 
@@ -83,8 +83,6 @@ __all__ = [
 FLAG_WORDS = ("cut_first_line", "cut_last_line", "cut_sensor_end", "overlap", "saturated")
 
 _BIG = 1e300  # stand-in for "excluded" in masked medians (finite: no inf-inf NaNs)
-_MAD_TO_SIGMA = 1.482602218505602
-_IQR_TO_SIGMA = 1.0 / 1.3489795003921634
 
 
 @dataclass(frozen=True)
@@ -125,6 +123,20 @@ class BallRegion:
     contrast_dn: float
     flags: tuple[str, ...]
     n_pixels: int = 0
+
+    def __post_init__(self) -> None:
+        if not (0 <= self.line_start < self.line_stop and 0 <= self.col_start < self.col_stop):
+            raise ValueError(
+                f"BallRegion: the box must be non-empty and non-negative, got lines [{self.line_start}, {self.line_stop}) "
+                f"and columns [{self.col_start}, {self.col_stop})"
+            )
+        box = (self.line_stop - self.line_start, self.col_stop - self.col_start)
+        if np.shape(self.mask) != box:
+            raise ValueError(f"BallRegion.mask: must have the box's shape {box}, got {np.shape(self.mask)}")
+        if self.polarity not in (1, -1):
+            raise ValueError(f"BallRegion.polarity: must be +1 or -1, got {self.polarity!r}")
+        if not all(f in FLAG_WORDS for f in self.flags):
+            raise ValueError(f"BallRegion.flags: must be words of FLAG_WORDS {FLAG_WORDS}, got {self.flags!r}")
 
     @property
     def lines(self) -> slice:
@@ -261,42 +273,8 @@ def region_background(
 # --------------------------------------------------------------------------
 # Robust statistics helpers (vectorised)
 # --------------------------------------------------------------------------
-def median(a: np.ndarray) -> np.floating:
-    """``np.median`` of all of ``a``, by one selection.
-
-    The same value and type as ``np.median``: the middle order statistic, or
-    the mean of the two middle ones, of the same dtype (NaN if any value is
-    NaN).  ``np.median`` partitions at both middle ranks at once, and
-    numpy's partition at several ranks is several times slower than at one
-    (15 300 values: 146 against 19 us); here it partitions at the upper
-    middle rank and takes the lower one as the largest value below it.  A
-    compiled selection (numba's ``np.partition``) was slower still on the
-    crops' thousands of values (110 us on 15 300).
-
-    Raises
-    ------
-    ValueError
-        If ``a`` is empty.
-    """
-    a = np.asarray(a)
-    if a.size == 0:
-        raise ValueError("median: empty array")
-    if a.dtype.kind in "biu":
-        a = a.astype(np.float64)  # as np.median: integers average in float64
-    a = a.ravel()
-    if a.dtype.kind == "f" and np.isnan(a).any():
-        return a.dtype.type(np.nan)
-    h = a.size // 2
-    p = np.partition(a, h)
-    hi = p[h]
-    if a.size % 2:
-        return hi
-    # numpy scalars of a's dtype: the mean of the two in that precision, as np.median
-    return (p[:h].max() + hi) / 2
-
-
 def _row_median(a: np.ndarray) -> np.ndarray:
-    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows (see :func:`median`)."""
+    """``np.median(a, axis=1)`` of a 2-D array with at least one column, by sorting the rows."""
     s = np.sort(a, axis=1)
     h = s.shape[1] // 2
     return s[:, h] if s.shape[1] % 2 else (s[:, h - 1] + s[:, h]) / 2
@@ -316,8 +294,7 @@ def _masked_median(s: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.
     give 0; check the count.
     """
     s.sort(axis=1)
-    # compiled (_kernels.kept_median): the look-up as numpy index arithmetic
-    # was some ten operations on per-line arrays, 50 us on a stream crop
+    # the look-up, compiled (_kernels.kept_median)
     return kept_median(s, as_arg(excluded, np.int64), _BIG)
 
 
@@ -343,8 +320,8 @@ def _mode_seek(
         Per row: the mode, the noise sigma and the number of values in the
         final window.
     """
-    # compiled (_kernels.mode_seek): the numpy form of these rounds, some
-    # sixty whole-array operations, took 0.75 ms on a stream crop (150 x 200)
+    # compiled (_kernels.mode_seek): the rounds per row, without the numpy
+    # form's whole-array temporaries
     return mode_seek(as_arg(s, np.float32), as_arg(start), as_arg(sigma), float(floor))
 
 
@@ -357,19 +334,44 @@ def _global_noise(x: np.ndarray) -> float:
     d = d[:: max(1, d.size // 100_000)]
     if d.size == 0:
         return 0.0
-    # Integer data (the usual case): both medians by counting, exact, at a
-    # quarter of the two selections' cost (15 000 values: 10 against 39 us).
+    # Integer data (the usual case): both medians by counting, exact and
+    # cheaper than two selections.
     ok, _, mad = integer_median_mad(as_arg(d, np.float32))
     mad = np.float32(mad) if ok else median(np.abs(d - median(d)))
-    return float(_MAD_TO_SIGMA * mad / np.sqrt(2.0))
+    return float(MAD_TO_SIGMA * mad / np.sqrt(2.0))
 
 
 # --------------------------------------------------------------------------
 # Background model
 # --------------------------------------------------------------------------
-def _background(
-    x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+@dataclass(frozen=True)
+class _ColumnStart:
+    """Per-column level and noise sigma (DN, not floored) and the first per-line drift.
+
+    The drift is a gain (``use_gain``; ``line_offset_dn`` 0) or an offset
+    (``line_gain`` 1), from the lines' medians.
+    """
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+    line_gain: np.ndarray
+    line_offset_dn: np.ndarray
+    use_gain: bool
+
+
+@dataclass(frozen=True)
+class _Background:
+    """The image's background model (the fields of :class:`Detection` of the same names)."""
+
+    background_dn: np.ndarray
+    noise_dn: np.ndarray
+    line_gain: np.ndarray
+    line_offset_dn: np.ndarray
+    drift_model: str
+
+
+def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None) -> _Background:
+    """The background model of the float32 image ``x`` (see the module docstring), with the columns of ``known`` where given."""
     n, w = x.shape
     # Column subsample for per-line statistics: a few hundred columns give a
     # per-line level to a small fraction of the noise, at a fraction of the cost.
@@ -379,7 +381,7 @@ def _background(
     level = _row_median(xs)
     if known is None:
         sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
-        b, sig, gain0, offset0, use_gain = _column_modes(x, level, sigma0, noise_floor_dn)
+        start = _column_modes(x, level, sigma0, noise_floor_dn)
     else:
         # a writeable copy: the kernels below take writeable arrays (a
         # read-only one would compile a second signature on a stream ball)
@@ -391,12 +393,11 @@ def _background(
         use_gain = ref > 10.0 * max(float(median(sig)), noise_floor_dn) and float(level.min()) > 0.0
         gain0 = level / ref if use_gain else np.ones(n)
         offset0 = np.zeros(n) if use_gain else level - ref
-    return _line_drift(xs, step, b, sig, gain0, offset0, use_gain, noise_floor_dn, first_pass_k)
+        start = _ColumnStart(background_dn=b, noise_dn=sig, line_gain=gain0, line_offset_dn=offset0, use_gain=use_gain)
+    return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)
 
 
-def _column_modes(
-    x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, bool]:
+def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float) -> _ColumnStart:
     """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
     n, w = x.shape
     ref = float(median(level))
@@ -425,7 +426,7 @@ def _column_modes(
     if np.isnan(col_med).any():
         neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
     else:
-        # compiled (_kernels.reflect_median_filter): the same values, 4 against 17 us
+        # compiled (_kernels.reflect_median_filter): ndi.median_filter's values
         neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
@@ -437,29 +438,19 @@ def _column_modes(
         b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
         b[weak] = b2
         sig[weak] = sig2
-    return b, sig, gain0, offset0, use_gain
+    return _ColumnStart(background_dn=b, noise_dn=sig, line_gain=gain0, line_offset_dn=offset0, use_gain=use_gain)
 
 
-def _line_drift(
-    xs: np.ndarray,
-    step: int,
-    b: np.ndarray,
-    sig: np.ndarray,
-    gain0: np.ndarray,
-    offset0: np.ndarray,
-    use_gain: bool,
-    noise_floor_dn: float,
-    first_pass_k: float,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
-    """Per-line gain or offset from the background pixels of the subsampled columns ``xs``, and the floored noise."""
+def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: float, first_pass_k: float) -> _Background:
+    """Per-line gain or offset from the background pixels of the subsampled columns ``xs`` (every ``step``-th), and the floored noise."""
     n = xs.shape[0]
+    b, sig, gain0, offset0, use_gain = start.background_dn, start.noise_dn, start.line_gain, start.line_offset_dn, start.use_gain
     # First-pass ball mask on the subsampled columns, then per-line drift from
     # background pixels only.
     bs = b[::step]
     thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
-    # compiled (_kernels.first_pass_lines): the residual, the exclusion and
-    # the samples as numpy passes were some ten whole-array operations and
-    # temporaries, 0.1 ms on a stream crop
+    # the residual, the exclusion and the samples in one compiled pass
+    # (_kernels.first_pass_lines)
     samples, n_excluded = first_pass_lines(
         as_arg(xs, np.float32), as_arg(gain0), as_arg(offset0), as_arg(bs), as_arg(thr), use_gain
     )
@@ -477,7 +468,7 @@ def _line_drift(
     # measure must not get a tiny sigma and flood the mask).
     typical = float(median(sig)) if sig.size else noise_floor_dn
     noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
-    return b, noise, gain, offset, ("gain" if use_gain else "offset")
+    return _Background(background_dn=b, noise_dn=noise, line_gain=gain, line_offset_dn=offset, drift_model="gain" if use_gain else "offset")
 
 
 def _fill_bad(values: np.ndarray, good: np.ndarray, fallback: np.ndarray) -> np.ndarray:
@@ -505,16 +496,14 @@ def _merged_runs(m: np.ndarray, closed: np.ndarray, axis: int) -> np.ndarray:
     pixels, there: a notch between two touching balls shows on several
     neighbouring lines of the lightly closed mask even where the full
     closing leaves it on one line at each end of their overlap (a small
-    ball beside a large one; a review found such pairs passed as one clean
-    ball).  One such line alone in both is a ragged edge: on a long ball the
-    column at its widest point is covered by a fraction of a pixel for
-    hundreds of lines, its pixels cross the threshold only now and then,
-    and gaps longer than the closing's leave it in two runs (the quick
-    Fig. 5 sweep's 140 000 lines/s ball, 700 lines: 2 of 128 noisy renders
-    split at such a column into two "overlapping" balls, V.x 6 and 43 sigma
-    of the bound off).
+    ball beside a large one, which would otherwise pass as one clean ball).
+    One such line alone in both is a ragged edge: on a long ball the column
+    at its widest point is covered by a fraction of a pixel for hundreds of
+    lines, its pixels cross the threshold only now and then, and gaps longer
+    than the closing's leave it in two runs (a fast ball of Fig. 5 would
+    otherwise be split at such a column into two "overlapping" balls).
     """
-    # compiled (_kernels.multi_runs): 3 against 9 us as numpy on a ball's box
+    # compiled (_kernels.multi_runs)
     out, lone = multi_runs(as_arg(closed, np.bool_), axis)
     if np.any(lone):
         light, _ = multi_runs(as_arg(_close(m, _NOTCH_CLOSE_PX), np.bool_), axis)
@@ -567,10 +556,11 @@ def _close(m: np.ndarray, r: int) -> np.ndarray:
     return _valid_run(_valid_run(d, k, np.logical_and, 0), k, np.logical_and, 1)
 
 
-def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndarray]] | None:
+def _split(m: np.ndarray, r: int, min_area: int) -> list[_RawRegion] | None:
     """Try to split a merged mask into two parts cleanly apart along one axis.
 
-    Returns ``[(dl, dc, mask), ...]`` (offsets in the box) or None.
+    Returns the two parts (their first line and column relative to the
+    box's, ``merged`` True) or None.
     """
     closed = _close(m, r)
     for axis in (1, 0):  # first apart along the sensor (same time), then in time
@@ -606,7 +596,7 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[tuple[int, int, np.ndar
             if np.any(_merged_runs(crop, cc, 1)) or np.any(_merged_runs(crop, cc, 0)):
                 parts = None
                 break
-            parts.append((dl + rows[0], dc + cols[0], crop))
+            parts.append(_RawRegion(int(dl + rows[0]), int(dc + cols[0]), crop, True))
         if parts:
             return parts
     return None
@@ -658,6 +648,95 @@ def _group_components(
     return list(groups.values())
 
 
+@dataclass(frozen=True)
+class _RawRegion:
+    """A ball's mask before hole filling: its box's first line and column, its pixels, and whether it was merged with another ball."""
+
+    line_start: int
+    col_start: int
+    mask: np.ndarray
+    merged: bool
+
+
+def _check_detect_settings(k_sigma: float, min_area_px: int, merge_gap_px: int, noise_floor_dn: float) -> None:
+    """One precise ``ValueError`` for a setting of :func:`detect` out of its range."""
+    if not (isinstance(k_sigma, (int, float, np.integer, np.floating)) and np.isfinite(k_sigma) and k_sigma > 0):
+        raise ValueError(f"k_sigma must be a positive number, got {k_sigma}")
+    if not (isinstance(min_area_px, (int, np.integer)) and not isinstance(min_area_px, bool) and min_area_px >= 1):
+        raise ValueError(f"min_area_px must be an integer >= 1, got {min_area_px!r}")
+    if not (isinstance(merge_gap_px, (int, np.integer)) and not isinstance(merge_gap_px, bool) and merge_gap_px >= 0):
+        raise ValueError(f"merge_gap_px must be an integer >= 0, got {merge_gap_px!r}")
+    if not (isinstance(noise_floor_dn, (int, float, np.integer, np.floating)) and np.isfinite(noise_floor_dn) and noise_floor_dn >= 0):
+        raise ValueError(f"noise_floor_dn must be a finite number >= 0, got {noise_floor_dn!r}")
+
+
+def _raw_regions(lab: np.ndarray, boxes: np.ndarray, sizes: np.ndarray, gap: int, min_area_px: int) -> list[_RawRegion]:
+    """The groups of labelled pieces large enough to be balls, two merged balls split where they are cleanly apart."""
+    out: list[_RawRegion] = []
+    nlab = sizes.size
+    for grp in _group_components(lab, boxes, sizes, gap, min_piece=2):
+        area = int(sizes[grp].sum())
+        if area < min_area_px:
+            continue
+        first, stop = boxes[grp].min(axis=0), boxes[grp].max(axis=0)
+        l0, l1, c0, c1 = int(first[0]), int(stop[1]), int(first[2]), int(stop[3])
+        if l1 - l0 < 2 or c1 - c0 < 2:
+            continue  # a hot pixel run along one line or one column
+        in_group = np.zeros(nlab + 1, dtype=bool)
+        in_group[np.asarray(grp) + 1] = True
+        # in_group[lab[l0:l1, c0:c1]], compiled
+        m = group_mask(lab, l0, l1, c0, c1, in_group)
+        closed = _close(m, gap)
+        merged = bool(np.any(_merged_runs(m, closed, 1)) or np.any(_merged_runs(m, closed, 0)))
+        if merged:
+            parts = _split(m, gap, min_area_px)
+            if parts:
+                out.extend(_RawRegion(l0 + q.line_start, c0 + q.col_start, q.mask, True) for q in parts)
+                continue
+        out.append(_RawRegion(l0, c0, m, merged))
+    return out
+
+
+def _mid_line(raw: _RawRegion) -> float:
+    """The middle line of a region (~ t_c): a mask's box is its pixels' box, its first and last lines hold pixels."""
+    return raw.line_start + 0.5 * (raw.mask.shape[0] - 1)
+
+
+def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, sat: float) -> BallRegion:
+    """The region of a raw mask: its holes filled, its contrast, polarity and flags."""
+    n, w = x64.shape
+    l0, c0 = raw.line_start, raw.col_start
+    # compiled (_kernels.fill_lines_and_cols, _kernels.region_values)
+    filled = fill_lines_and_cols(as_arg(raw.mask, np.bool_))
+    h, wd = filled.shape
+    vals, saturated = region_values(x64, bg.line_gain, bg.background_dn, bg.line_offset_dn, l0, c0, filled, sat)
+    contrast = float(median(vals)) if vals.size else 0.0
+    flags = []
+    if l0 == 0:
+        flags.append("cut_first_line")
+    if l0 + h >= n:
+        flags.append("cut_last_line")
+    if c0 == 0 or c0 + wd >= w:
+        flags.append("cut_sensor_end")
+    if raw.merged:
+        flags.append("overlap")
+    if saturated:
+        flags.append("saturated")
+    filled.setflags(write=False)
+    return BallRegion(
+        index=index,
+        line_start=int(l0),
+        line_stop=int(l0 + h),
+        col_start=int(c0),
+        col_stop=int(c0 + wd),
+        mask=filled,
+        polarity=1 if contrast >= 0 else -1,
+        contrast_dn=contrast,
+        flags=tuple(flags),
+        n_pixels=int(raw.mask.sum()),
+    )
+
+
 def detect(
     image: LineImage,
     *,
@@ -695,9 +774,16 @@ def detect(
     Detection
         Background model and regions; no regions for an empty, flat or fully
         saturated image.
+
+    Raises
+    ------
+    ValueError
+        If a setting is out of its range (``k_sigma > 0``, ``min_area_px >=
+        1``, ``merge_gap_px >= 0``, ``noise_floor_dn >= 0``; the message names
+        it), the image has fewer than 2 lines or columns, or ``columns`` is
+        a model of another width.
     """
-    if not (np.isfinite(k_sigma) and k_sigma > 0):
-        raise ValueError(f"k_sigma must be a positive number, got {k_sigma}")
+    _check_detect_settings(k_sigma, min_area_px, merge_gap_px, noise_floor_dn)
     x = np.asarray(image.data, dtype=np.float64)
     if x.ndim != 2 or x.shape[0] < 2 or x.shape[1] < 2:
         raise ValueError(f"image must be 2-D with at least 2 lines and 2 columns, got shape {x.shape}")
@@ -710,96 +796,30 @@ def detect(
     # float32 for the whole-image passes: exact for 16-bit integers, and the
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
-    b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0, known=columns)
+    bg = _background(x32, floor, first_pass_k=3.0, known=columns)
     # The pixels with |x - background| > k_sigma noise (in float32), labelled
-    # 8-connected, with their sizes and boxes: compiled
-    # (_kernels.label_hits), where the threshold's numpy passes, ndi.label,
-    # np.bincount and ndi.find_objects took 0.25 ms on a stream crop; the
-    # same labels.  The offset is 0 in the gain model: adding it there
-    # changes no residual.
+    # 8-connected, with their sizes and boxes (compiled).  The offset is 0
+    # in the gain model: adding it there changes no residual.
     lab, sizes, boxes = label_hits(
         as_arg(x32, np.float32),
-        gain.astype(np.float32),
-        b.astype(np.float32),
-        offset.astype(np.float32),
-        (k_sigma * noise).astype(np.float32),
+        bg.line_gain.astype(np.float32),
+        bg.background_dn.astype(np.float32),
+        bg.line_offset_dn.astype(np.float32),
+        (k_sigma * bg.noise_dn).astype(np.float32),
     )
-    nlab = sizes.size
-    regions_raw: list[tuple[int, int, np.ndarray, bool]] = []
-    if nlab:
-        gap = max(int(merge_gap_px), 0)
-        for grp in _group_components(lab, boxes, sizes, gap, min_piece=2):
-            area = int(sizes[grp].sum())
-            if area < min_area_px:
-                continue
-            first, stop = boxes[grp].min(axis=0), boxes[grp].max(axis=0)
-            l0, l1, c0, c1 = int(first[0]), int(stop[1]), int(first[2]), int(stop[3])
-            if l1 - l0 < 2 or c1 - c0 < 2:
-                continue  # a hot pixel run along one line or one column
-            in_group = np.zeros(nlab + 1, dtype=bool)
-            in_group[np.asarray(grp) + 1] = True
-            # compiled (_kernels.group_mask): in_group[lab[l0:l1, c0:c1]], 3 against 15 us
-            m = group_mask(lab, l0, l1, c0, c1, in_group)
-            closed = _close(m, gap)
-            merged = bool(np.any(_merged_runs(m, closed, 1)) or np.any(_merged_runs(m, closed, 0)))
-            if merged:
-                parts = _split(m, gap, min_area_px)
-                if parts:
-                    for dl, dc, pm in parts:
-                        regions_raw.append((l0 + dl, c0 + dc, pm, True))
-                    continue
-            regions_raw.append((l0, c0, m, merged))
-
-    built = []
+    raw = _raw_regions(lab, boxes, sizes, max(int(merge_gap_px), 0), min_area_px) if sizes.size else []
+    raw.sort(key=lambda q: (q.line_start, _mid_line(q), q.col_start))
     x64 = as_arg(x)
-    for l0, c0, m, merged in regions_raw:
-        # compiled (_kernels.fill_lines_and_cols, _kernels.region_values): as
-        # numpy the fill and the values took 0.15 ms per ball
-        filled = fill_lines_and_cols(as_arg(m, np.bool_))
-        h, wd = filled.shape
-        vals, saturated = region_values(x64, gain, b, offset, l0, c0, filled, sat)
-        contrast = float(median(vals)) if vals.size else 0.0
-        polarity = 1 if contrast >= 0 else -1
-        flags = []
-        if l0 == 0:
-            flags.append("cut_first_line")
-        if l0 + h >= n:
-            flags.append("cut_last_line")
-        if c0 == 0 or c0 + wd >= w:
-            flags.append("cut_sensor_end")
-        if merged:
-            flags.append("overlap")
-        if saturated:
-            flags.append("saturated")
-        # a mask's box is its pixels' box: its first and last lines hold pixels
-        mid_line = l0 + 0.5 * (h - 1)
-        filled.setflags(write=False)
-        built.append((l0, mid_line, c0, filled, polarity, contrast, tuple(flags), int(m.sum())))
-    built.sort(key=lambda t: (t[0], t[1], t[2]))
-    regions = tuple(
-        BallRegion(
-            index=i,
-            line_start=int(l0),
-            line_stop=int(l0 + f.shape[0]),
-            col_start=int(c0),
-            col_stop=int(c0 + f.shape[1]),
-            mask=f,
-            polarity=pol,
-            contrast_dn=con,
-            flags=fl,
-            n_pixels=npx,
-        )
-        for i, (l0, _, c0, f, pol, con, fl, npx) in enumerate(built)
-    )
-    for arr in (b, noise, gain, offset):
+    regions = tuple(_ball_region(i, q, x64, bg, sat) for i, q in enumerate(raw))
+    for arr in (bg.background_dn, bg.noise_dn, bg.line_gain, bg.line_offset_dn):
         arr.setflags(write=False)
     return Detection(
-        background_dn=b,
-        noise_dn=noise,
+        background_dn=bg.background_dn,
+        noise_dn=bg.noise_dn,
         regions=regions,
         saturation_dn=sat,
-        line_gain=gain,
-        line_offset_dn=offset,
-        drift_model=model,
+        line_gain=bg.line_gain,
+        line_offset_dn=bg.line_offset_dn,
+        drift_model=bg.drift_model,
         threshold_sigma=float(k_sigma),
     )

@@ -36,10 +36,9 @@ or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
-from typing import Any, Callable, Sequence
-
 import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -48,11 +47,9 @@ from .._kernels import (
     rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
 from ..errors import GeometryError
+from .robust import median, weighted_median
 
-# np.median's value by a full sort (several times faster on these sizes)
-from .detection import median as _median
-
-__all__ = ["EdgeMeasurements", "EdgeSettings", "matched_edges", "measure_edges", "with_limb"]
+__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "with_limb"]
 
 
 @dataclass(frozen=True)
@@ -119,13 +116,10 @@ class EdgeSettings:
         change of the level from the level run to the run inside it differs
         from the model's by more than 3 sigma plus this (texture, not
         shading, near the edge).  Not 0: the model's run levels carry its
-        own small errors (0.05-0.4 % with point samples on a spread edge
-        next to a ball's end, where the run's last pixel is 0.1-1 %
-        uncovered; about 0.1 % with whole pixels' coverage, 4 quadrature
-        nodes), and on noise-free images (sigma 1e-5) a zero tolerance
-        kept the model-free edges there, 0.015-0.035 px outward (V.x
-        0.011 % low on the perpendicular bench ball with point samples,
-        0.004 % with 0.002).
+        own small errors (tenths of a percent on a spread edge next to a
+        ball's end, where the run's last pixel is not quite covered), and on
+        noise-free images a zero tolerance would keep the model-free edges
+        there, a few hundredths of a pixel outward.
     limb_narrow_max_px, limb_wide_px : float, (float, float)
         With ``limb``, the narrow-window edges are corrected on lines whose
         model edge spread (``limb.spread_px``) is below ``limb_narrow_max_px``
@@ -160,6 +154,33 @@ class EdgeSettings:
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)
     limb_area_min_spread_px: float = 0.8
+
+    def __post_init__(self) -> None:
+        for name, lo in (
+            ("n_out", 0), ("n_in", 0), ("n_level", 1), ("margin_lines", 0), ("pad_px", 0), ("n_out_wide", 0),
+            ("n_in_wide", 0), ("max_walk_px", 0), ("slope_lines", 1), ("slope_degree", -1), ("limb_samples", 1),
+        ):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= lo):
+                raise ValueError(f"EdgeSettings.{name}: must be an integer >= {lo}, got {v!r}")
+        for name in ("min_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px"):
+            v = getattr(self, name)
+            if not (_is_number(v) and v >= 0):
+                raise ValueError(f"EdgeSettings.{name}: must be a finite number >= 0, got {v!r}")
+        if not (_is_number(self.find_fraction) and 0 < self.find_fraction < 1):
+            raise ValueError(f"EdgeSettings.find_fraction: must lie in (0, 1), got {self.find_fraction!r}")
+        if not _is_number(self.level_slope):
+            raise ValueError(f"EdgeSettings.level_slope: must be a finite number, got {self.level_slope!r}")
+        if not isinstance(self.ball_noise, (bool, np.bool_)):
+            raise ValueError(f"EdgeSettings.ball_noise: must be a bool, got {self.ball_noise!r}")
+        w = self.limb_wide_px
+        if not (isinstance(w, tuple) and len(w) == 2 and all(_is_number(v) for v in w) and 0 <= w[0] <= w[1]):
+            raise ValueError(f"EdgeSettings.limb_wide_px: must be a (low, high) pair of numbers, 0 <= low <= high, got {w!r}")
+
+
+def _is_number(v: Any) -> bool:
+    """A finite real number (not a bool)."""
+    return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool) and math.isfinite(v)
 
 
 @dataclass(frozen=True)
@@ -240,7 +261,7 @@ class EdgeMeasurements:
         lines it was not evaluated on) and its relative 1-sigma: ``area_px /
         area_level`` is the line's covered length.  None without a model.
     left_matched, right_matched : ndarray of bool or None
-        The narrow-window edges that :func:`matched_edges` measured (the fit
+        The narrow-window edges that :func:`ballscan.measure.matched.matched_edges` measured (the fit
         gives them ``FitSettings.matched_floor_px`` instead of
         ``edge_floor_px``); None: none (see :attr:`edges_method`).
     """
@@ -283,7 +304,7 @@ class EdgeMeasurements:
 
     @property
     def edges_method(self) -> str:
-        """``"matched"`` where :func:`matched_edges` measured any edge, else ``"window"`` (the local area estimate)."""
+        """``"matched"`` where :func:`ballscan.measure.matched.matched_edges` measured any edge, else ``"window"`` (the local area estimate)."""
         flags = [f for f in (self.left_matched, self.right_matched) if f is not None]
         return "matched" if any(bool(f.any()) for f in flags) else "window"
 
@@ -340,7 +361,25 @@ class _EdgePass:
     usable: np.ndarray
     run_ok: np.ndarray
     spoiled: np.ndarray
-    common: dict[str, Any]
+    common: _Unchanged
+
+
+@dataclass(frozen=True)
+class _Unchanged:
+    """The fields of :class:`EdgeMeasurements` that ``limb`` does not change (see there)."""
+
+    lines: np.ndarray
+    t_s: np.ndarray
+    area_px: np.ndarray
+    area_sigma_px: np.ndarray
+    centroid_px: np.ndarray
+    peak: np.ndarray
+    polarity: int
+    contrast_dn: float
+    flags: tuple[str, ...]
+    profile: np.ndarray
+    profile_sigma: np.ndarray
+    profile_col0: int
 
 
 def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
@@ -387,7 +426,7 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     for _ in range(3):
         coef = np.polynomial.polynomial.polyfit(u[keep], y[keep], degree)
         res = y - np.polynomial.polynomial.polyval(u, coef)
-        mad = 1.4826 * float(_median(np.abs(res[keep])))
+        mad = 1.4826 * float(median(np.abs(res[keep])))
         new = np.abs(res) <= 3.0 * max(mad, 1e-6)
         if new.sum() < 3 * (degree + 1) or np.array_equal(new, keep):
             break
@@ -395,16 +434,6 @@ def _smooth_lines(x: np.ndarray, n: int, degree: int) -> np.ndarray:
     out = np.full(x.size, np.nan)
     out[idx] = np.polynomial.polynomial.polyval(u, coef)
     return out
-
-
-def _weighted_median(values: np.ndarray, counts: np.ndarray) -> float:
-    """``np.median`` of ``values`` repeated ``counts`` times (counts >= 0, total > 0)."""
-    order = np.argsort(values, kind="stable")
-    v, c = values[order], np.cumsum(counts[order])
-    m = int(c[-1])
-    lo = v[np.searchsorted(c, (m - 1) // 2, side="right")]
-    hi = v[np.searchsorted(c, m // 2, side="right")]
-    return float(lo) if m % 2 else float((lo + hi) / 2.0)
 
 
 def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_last, lev, deep, pd, sd2, sgn, valid, lines_abs, m, tol):
@@ -422,8 +451,8 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     by the difference between the model's covered length in the window and
     the data's ``S / L_eff``: ``inner - S / L_eff`` alone would be the mean
     edge only if the window held the whole ramp, and a spread edge's
-    coverage reaches past its inner end (by 0.02-0.04 px of coverage next
-    to a ball's ends on the renders tried).  Two rounds, the second with the
+    coverage reaches past its inner end (by a few hundredths of a pixel of
+    coverage next to a ball's ends).  Two rounds, the second with the
     model at the first's edge (the level run sits in that tail).
 
     The model knows the shading, not the texture: where the data's ratio of
@@ -505,8 +534,7 @@ def _running_median(x: np.ndarray, n: int, blocks: int = 1) -> np.ndarray:
     if n <= 1 or x.size == 0:
         return x.copy()
     # the median of the finite entries (the mean of the middle two for an
-    # even count), as np.nanmedian; compiled: the numpy form (sorted sliding
-    # windows) took 70 us per call, four calls per ball
+    # even count), as np.nanmedian; compiled (_kernels.running_medians)
     return running_medians(as_arg(x), int(blocks), int(n))
 
 
@@ -608,145 +636,268 @@ def with_limb(
     return _finish(edges._pass, limb)
 
 
-# a matched edge's last Gauss-Newton step must be below this (pixels)
-_MATCHED_STEP_TOL_PX = 0.01
+@dataclass(frozen=True)
+class _Box:
+    """A ball's box (its lines +- ``margin_lines``, its columns +- ``pad_px``) and its normalised profile.
 
-
-def matched_edges(
-    edges: EdgeMeasurements,
-    limb: Any,
-    *,
-    max_spread_px: float = 0.3,
-    half_window_px: int = 3,
-    rounds: int = 2,
-    step_px: float = 0.05,
-) -> EdgeMeasurements:
-    """Each edge as the maximum-likelihood position of the limb model's profile (uniform balls).
-
-    The local area estimate (:func:`measure_edges`) sums a window of three
-    or more pixels and divides by a level measured on two more: on a sharp
-    edge only the one partly covered pixel says where the edge is, and the
-    others add their noise (on the flat benchmark ball, 5 DN on 700 DN: a
-    narrow edge's RMS error 0.0130 px against 0.0071 px for the edge
-    pixel's noise alone; a wide one's 0.0179 px).  Here the whole profile of
-    the window, ``half_window_px`` pixels either side of the edge, is
-    fitted by the model's normalised values, the shading law's surface
-    brightness times each whole pixel's coverage by the averaged silhouette
-    (:meth:`ballscan.measure.shading.LimbProfile.pixel_coverage`), shifted along the
-    line: ``rounds`` Gauss-Newton steps in the shift, so a pixel counts by
-    how much its coverage changes with the edge (matched filter); one
-    weight per window, the inverse of its pixels' mean variance (weights
-    that follow each pixel's noise estimate, which grows with the measured
-    value, would correlate with the noise itself).  On the benchmark ball
-    the narrow edges' RMS error becomes 0.0084 px, unbiased to 4e-5 px on
-    noise-free renders.
-
-    The level comes from the model, not from the line: only for a ball the
-    law describes to its pixels (untextured) seen by a sensor whose columns
-    share one gain (flat-fielded; see
-    :func:`ballscan.pipeline.estimate.estimate_region` and
-    :mod:`ballscan.measure.flatfield`), where the local level's noise is the price
-    of robustness that buys nothing.
-
-    Parameters
-    ----------
-    edges : EdgeMeasurements
-        From :func:`measure_edges` or :func:`with_limb` (the profile and its
-        noise are used; the edges are the starting points).
-    limb : LimbProfile
-        The ball's profile model (:func:`ballscan.measure.shading.ball_limb`).
-    max_spread_px : float
-        Only the narrow-window edges (``left_px``, ``right_px``) of lines
-        whose model edge spread is at most this are measured: the fit's
-        ``FitSettings.max_spread_px`` (0.3), beyond which it reads the wide
-        window's fields, which are kept.  Matching the spread edges too
-        (0.3-0.8 px) gained as much on the benchmark ball (speed RMSE 1.23x
-        / 1.14x the bound, 100 draws, against 1.36x / 1.26x), but their
-        inner pixels then carry the model's level, and on the stream tests'
-        small 8-bit balls (18 px across) that biased V.x by -1.8 sigma on
-        average (window edges: -0.4).
-    half_window_px : int
-        Pixels on either side of the starting edge's pixel that are fitted.
-    rounds : int
-        Gauss-Newton steps (each at most half a pixel).
-    step_px : float
-        Shift of the central differences of the model's profile, pixels.
-
-    Returns
-    -------
-    EdgeMeasurements
-        ``left_px``, ``right_px`` and their sigmas replaced where the fit
-        converged (its last step below 0.01 px, within 0.5 px of the window
-        estimate), ``left_matched`` / ``right_matched`` True there; usable
-        flags and the wide-window fields unchanged; the input itself where
-        no edge converged.
+    ``profile`` is ``p = polarity (I - bg) / contrast_dn`` (about 0 outside
+    the ball, 1 inside), ``profile_sigma`` the background's noise of ``p``
+    (normalised units), ``per_column_noise`` whether that noise is the same
+    on every line (a scalar or per-column noise), ``saturated_px`` and
+    ``other_px`` the box's clipped pixels and the pixels of other balls
+    (dilated by one pixel along the line).
     """
-    if edges.profile is None or edges.profile_sigma is None:
-        raise ValueError("edges: no profile to fit (made by measure_edges?)")
-    lines = edges.lines
-    spread = np.asarray(limb.spread_px)[lines]
-    # both sides in one batch (the limb model caches its samples per batch)
-    rows, sides, x0, model_edge = [], [], [], []
-    for side, start, ok, model in ((1.0, edges.left_px, edges.left_ok, limb.left_px), (-1.0, edges.right_px, edges.right_ok, limb.right_px)):
-        model = np.asarray(model)[lines]
-        use = np.flatnonzero(ok & np.isfinite(start) & np.isfinite(model) & (spread <= max_spread_px))
-        rows.append(use)
-        sides.append(np.full(use.size, side))
-        x0.append(start[use])
-        model_edge.append(model[use])
-    rows, sides, x0, model_edge = (np.concatenate(a) for a in (rows, sides, x0, model_edge))
-    if rows.size == 0:
-        return edges
-    img_lines = lines[rows]
-    c0 = edges.profile_col0
-    n_cols = edges.profile.shape[1]
-    h = max(int(half_window_px), 1)
-    cols = np.rint(x0).astype(int)[:, None] + np.arange(-h, h + 1)[None, :]
-    inside = (cols >= c0) & (cols < c0 + n_cols)
-    ci = np.clip(cols - c0, 0, n_cols - 1)
-    p = edges.profile[rows[:, None], ci]
-    sig = edges.profile_sigma[rows[:, None], ci]
-    good = inside & np.isfinite(p) & np.isfinite(sig) & (sig > 0)
-    # one weight per window (see the docstring)
-    n_good = good.sum(axis=1)
-    var = np.where(good, sig, 0.0) ** 2
-    w_row = np.where(n_good > 0, n_good / np.where(n_good > 0, var.sum(axis=1), 1.0), 0.0)
-    w = np.where(good, w_row[:, None], 0.0)
-    p = np.where(good, p, 0.0)
-    # pixel centres' offsets from the model's edge, positive inwards
-    off_model = sides[:, None] * (cols - model_edge[:, None])
-    shift = x0 - model_edge
-    info = np.zeros(rows.size)
-    move = np.full(rows.size, np.inf)
-    dstep = np.array([-step_px, 0.0, step_px])
-    for _ in range(max(int(rounds), 1)):
-        off = off_model - sides[:, None] * shift[:, None]
-        # the surface brightness barely changes over the shifts of one step
-        bright = np.nan_to_num(limb.surface(img_lines, sides, off))
-        v = [bright * np.nan_to_num(limb.pixel_coverage(img_lines, sides, off - sides[:, None] * ds)) for ds in dstep]
-        g = (v[2] - v[0]) / (2.0 * step_px)
-        info = (w * g * g).sum(axis=1)
-        has = info > 0
-        move = np.where(has, (w * g * (p - v[1])).sum(axis=1) / np.where(has, info, 1.0), 0.0)
-        shift = shift + np.clip(move, -0.5, 0.5)
-    x = model_edge + shift
-    s = np.where(info > 0, 1.0 / np.sqrt(np.where(info > 0, info, 1.0)), np.nan)
-    # converged (the last step is a few thousandths of a pixel on clean
-    # data) and near the window estimate; else the window's value stays
-    done = np.isfinite(x) & np.isfinite(s) & (np.abs(move) < _MATCHED_STEP_TOL_PX) & (np.abs(x - x0) < 0.5)
-    if not done.any():
-        return edges
-    out: dict[str, Any] = {}
-    for side, name in ((1.0, "left"), (-1.0, "right")):
-        sel = (sides == side) & done
-        for field_name, val in ((f"{name}_px", x[sel]), (f"{name}_sigma_px", s[sel])):
-            a = np.array(getattr(edges, field_name), dtype=float, copy=True)
-            a[rows[sel]] = val
-            out[field_name] = a
-        flag = np.zeros(lines.size, dtype=bool)
-        flag[rows[sel]] = True
-        out[f"{name}_matched"] = flag
-    return replace(edges, **out)
+
+    n_img: int
+    width_px: int
+    c0: int
+    c1: int
+    lines: np.ndarray
+    t_s: np.ndarray
+    polarity: int
+    contrast_dn: float
+    profile: np.ndarray
+    profile_sigma: np.ndarray
+    per_column_noise: bool
+    saturated_px: np.ndarray
+    other_px: np.ndarray
+
+
+@dataclass(frozen=True)
+class _RoughEdges:
+    """Per line of a box: the profile's peak, whether it shows the ball, and the rough edge pixels (box columns)."""
+
+    peak: np.ndarray
+    has_signal: np.ndarray
+    k_left: np.ndarray
+    k_right: np.ndarray
+
+
+@dataclass(frozen=True)
+class _WindowSums:
+    """The window and level-run sums of every edge estimate (:func:`ballscan._kernels.edge_windows`, in its order).
+
+    Rows ``4 n`` (narrow window left and right, wide window left and
+    right): ``S`` the window sums, ``sw`` the window pixels' sigmas (0 beyond
+    a shorter window) and ``sw2`` their sums of squares, ``L_run`` and
+    ``sl2`` the level run's mean and variance, ``pl0``, ``pl1``, ``sl0``,
+    ``sl1`` its first and last pixels' values and sigmas, ``pd``, ``sd2``,
+    ``pdd``, ``sdd2`` the deep and deeper runs' means and variances,
+    ``win_first``, ``win_last``, ``n_win`` the window's outermost and
+    innermost pixels and length, ``lev``, ``deep`` the level run's and deep
+    run's pixels (unclipped), ``sgn`` +1 (left) / -1 (right), ``lo``, ``hi``
+    the extreme pixels of window and level run, ``inside_box`` whether they
+    lie in the box, ``saturated`` and ``overlapping`` whether a window or
+    level pixel is saturated or another ball's.
+    """
+
+    S: np.ndarray
+    sw: np.ndarray
+    sw2: np.ndarray
+    L_run: np.ndarray
+    sl2: np.ndarray
+    pl0: np.ndarray
+    pl1: np.ndarray
+    sl0: np.ndarray
+    sl1: np.ndarray
+    pd: np.ndarray
+    sd2: np.ndarray
+    pdd: np.ndarray
+    sdd2: np.ndarray
+    win_first: np.ndarray
+    win_last: np.ndarray
+    n_win: np.ndarray
+    lev: np.ndarray
+    deep: np.ndarray
+    sgn: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    inside_box: np.ndarray
+    saturated: np.ndarray
+    overlapping: np.ndarray
+
+
+@dataclass(frozen=True)
+class _WindowEdges:
+    """The model-free inner levels ``L``, edges ``e`` (box pixels) and their variances ``var`` (px^2), one per row of :class:`_WindowSums`."""
+
+    L: np.ndarray
+    e: np.ndarray
+    var: np.ndarray
+
+
+@dataclass(frozen=True)
+class _Usability:
+    """Which edge estimates are usable (all but the level's plausibility), the lines whose area is spoiled, and the ball's flags."""
+
+    usable: np.ndarray
+    spoiled: np.ndarray
+    flags: tuple[str, ...]
+
+
+def _box(
+    data: np.ndarray,
+    region: Any,
+    background_dn: Any,
+    noise_dn: Any,
+    t_lines_s: np.ndarray,
+    saturation_dn: float | None,
+    others: Sequence[Any],
+    s: EdgeSettings,
+) -> _Box:
+    """The region's box and its normalised profile (arguments of :func:`measure_edges`), checked."""
+    data = np.asarray(data, dtype=float)
+    if data.ndim != 2:
+        raise ValueError(f"data: expected a 2-D (n_lines, W) array, got shape {data.shape}")
+    n_img, W = data.shape
+    t_lines_s = np.asarray(t_lines_s, dtype=float)
+    if t_lines_s.shape != (n_img,):
+        raise ValueError(f"t_lines_s: expected {n_img} times, got shape {t_lines_s.shape}")
+    contrast = abs(float(region.contrast_dn))
+    if not np.isfinite(contrast) or contrast <= 0:
+        raise ValueError(f"region.contrast_dn: must be non-zero and finite, got {region.contrast_dn!r}")
+    pol = 1 if float(region.polarity) >= 0 else -1
+
+    l0 = max(int(region.line_start) - s.margin_lines, 0)
+    l1 = min(int(region.line_stop) + s.margin_lines, n_img)
+    c0 = max(int(region.col_start) - s.pad_px, 0)
+    c1 = min(int(region.col_stop) + s.pad_px, W)
+    if l1 <= l0 or c1 <= c0:
+        raise ValueError("region: empty line or column range")
+    lines = np.arange(l0, l1)
+    n, w = lines.size, c1 - c0
+
+    bg = _as_columns(background_dn, n_img, W, "background_dn")[l0:l1, c0:c1]
+    sd = _as_columns(noise_dn, n_img, W, "noise_dn")[l0:l1, c0:c1]
+    raw = data[l0:l1, c0:c1]
+    p = pol * (raw - bg) / contrast
+    # noise of p, normalised units
+    per_column = sd.strides[0] == 0
+    if per_column:
+        # a scalar or per-column noise: one line's, repeated
+        sp = np.empty((n, w))
+        sp[:] = np.maximum(sd[0], 1e-12) / contrast
+    else:
+        sp = np.maximum(sd, 1e-12) / contrast
+    sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
+    other = np.zeros((n, w), dtype=bool)
+    for o in others:
+        om = _region_pixels(o, n_img, W)[l0:l1, c0:c1]
+        # one pixel of dilation along the line: a neighbour's blur reaches it
+        other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
+    return _Box(
+        n_img=n_img, width_px=W, c0=c0, c1=c1, lines=lines, t_s=t_lines_s[lines], polarity=pol, contrast_dn=contrast,
+        profile=p, profile_sigma=sp, per_column_noise=per_column, saturated_px=sat, other_px=other,
+    )
+
+
+def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
+    """The lines that show the ball and their rough edge pixels, walked out onto a shaded limb."""
+    p, sp = box.profile, box.profile_sigma
+    peak = p.max(axis=1)
+    if box.per_column_noise:
+        # every line has the same median
+        noise_row = np.full(p.shape[0], float(median(sp[0])))
+    else:
+        noise_row = np.median(sp, axis=1)
+    has_signal = peak > s.min_snr * noise_row
+    # the first and last pixels at find_fraction of the peak (compiled)
+    k_left, k_right = rough_edges(p, peak, float(s.find_fraction))
+    # A shaded limb can be darker than a fraction of a bright seam's peak:
+    # walk outwards while the next pixel still holds find_fraction of its
+    # inner neighbour (and is significant), so that the window sits on the
+    # ball's real edge (compiled, line by line).
+    floor_p = s.min_snr * noise_row
+    k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
+    return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
+
+
+def _ball_noise(box: _Box, rough: _RoughEdges, s: EdgeSettings) -> np.ndarray:
+    """The profile's noise with the ball's shot noise (``ball_noise`` of :class:`EdgeSettings`), normalised units.
+
+    The background's noise understates the ball's: the ball's pixel noise is
+    estimated from second differences inside the segments and grows
+    linearly with the signal.  ``box.profile_sigma`` itself where it is off
+    or cannot be estimated.
+    """
+    p, sp = box.profile, box.profile_sigma
+    if not s.ball_noise:
+        return sp
+    # the pixels 3 or more inside both rough edges whose neighbours are
+    # too: their second differences, values and noise
+    vals, p_both, sp_both, per_col = inner_differences(p, as_arg(sp), rough.k_left, rough.k_right, rough.has_signal)
+    if vals.size < 50:
+        return sp
+    sig_in = 1.4826 * float(median(np.abs(vals - median(vals)))) / math.sqrt(6.0)
+    p_in = float(median(p_both))
+    if box.per_column_noise:
+        # every line has the same per-column noise: the median over
+        # the pixels is a median of the columns weighted by their counts
+        sig_bg = weighted_median(sp[0], per_col)
+    else:
+        sig_bg = float(median(sp_both))
+    if p_in > 0 and sig_in > sig_bg:
+        # each pixel's signal for its noise from its column neighbours,
+        # not its own value (compiled: see _kernels.shot_noise)
+        return shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
+    return sp
+
+
+def _window_edges(ws: _WindowSums, hs4: np.ndarray, n_in: np.ndarray, s: EdgeSettings, quarters: tuple[slice, ...]) -> _WindowEdges:
+    """The inner levels extrapolated to the limb (``level_slope``), the edges from the windows' uncovered lengths and their variances."""
+    nv = len(quarters)
+    # relative level gradient, median-filtered along the lines (shading is
+    # smooth from line to line, felt texture and noise are not):
+    # gradient per pixel across the level run (inwards positive), towards
+    # the covered part of the edge pixel (about `dist` pixels outwards), and
+    # the noise of its median of slope_lines lines (compiled)
+    raw_rel, rel_var, rel_sig = level_gradients(
+        ws.pl0, ws.pl1, ws.pd, ws.L_run, ws.sl0, ws.sl1, ws.sd2, ws.sl2, hs4, n_in, int(s.n_level), int(s.slope_lines)
+    )
+    if s.slope_degree < 0:
+        # (_smooth_lines' running median, of every side in one call)
+        rel = _running_median(raw_rel, s.slope_lines, nv)
+    else:
+        rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
+    # Only a side whose gradient stands out of its noise is corrected (an
+    # unshaded ball keeps the plain level and its noise).  The decision
+    # is taken once per side (and window), not per line: shrinking each
+    # line's correction by its noise would bias noisy edges inwards.
+    # (compiled: per side and window, the mean of |rel| / rel_sig over the
+    # lines with signal, NaN as 0; the unshaded sides' rel set to 0)
+    rel = shaded_sides(rel, rel_sig, hs4 & (rel_sig > 0), nv, float(s.slope_threshold))
+    kap = s.level_slope
+    L, e, var = window_edges(
+        rel, rel_var, ws.L_run, ws.S, ws.sw2, ws.sl2, ws.n_win, ws.win_first, ws.win_last, ws.sgn, float(kap), float(kap**2)
+    )
+    return _WindowEdges(L=L, e=e, var=var)
+
+
+def _usability(box: _Box, rough: _RoughEdges, ws: _WindowSums, hs4: np.ndarray, s: EdgeSettings, quarters: tuple[slice, ...]) -> _Usability:
+    """Every rule of an edge's usability but its level's, the lines whose area is spoiled, and the flags of the ball (see the module docstring)."""
+    c0, W = box.c0, box.width_px
+    k_left, k_right, has_signal = rough.k_left, rough.k_right, rough.has_signal
+    abs_lo, abs_hi = ws.lo + c0, ws.hi + c0
+    at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~ws.inside_box
+    usable = hs4 & ~at_sensor_end & ~ws.saturated & ~ws.overlapping
+    # both windows and level runs must fit in the segment without crossing
+    span_needed = 2 * (s.n_in + s.n_level) + 1
+    long_enough = (k_right - k_left) >= span_needed
+    # wide windows for lines whose edge is spread over the exposure / pixel height
+    long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
+    usable &= np.concatenate([long_enough, long_enough, long_wide, long_wide])
+    endL, endR, satL, satR, ovL, ovR = (a[q] & has_signal for a in (at_sensor_end, ws.saturated, ws.overlapping) for q in quarters[:2])
+
+    p, sat, other, w = box.profile, box.saturated_px, box.other_px, box.c1 - box.c0
+    flags = []
+    if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or box.c1 == W and np.any(has_signal & (k_right >= w - 1)):
+        flags.append("cut_sensor_end")
+    # (the pixel tests only where a pixel is saturated or another ball's)
+    if np.any(satL | satR) or sat.any() and np.any(sat & (p > 0.5)):
+        flags.append("saturated")
+    if np.any(ovL | ovR) or other.any() and np.any(other & (p > 0.5)):
+        flags.append("overlap")
+    return _Usability(usable=usable, spoiled=endL | endR | satL | satR | ovL | ovR, flags=tuple(flags))
 
 
 def _edge_pass(
@@ -761,84 +912,11 @@ def _edge_pass(
     settings: EdgeSettings,
 ) -> _EdgePass:
     """Everything of :func:`measure_edges` that does not depend on ``limb`` (same parameters)."""
-    data = np.asarray(data, dtype=float)
-    if data.ndim != 2:
-        raise ValueError(f"data: expected a 2-D (n_lines, W) array, got shape {data.shape}")
-    n_img, W = data.shape
-    t_lines_s = np.asarray(t_lines_s, dtype=float)
-    if t_lines_s.shape != (n_img,):
-        raise ValueError(f"t_lines_s: expected {n_img} times, got shape {t_lines_s.shape}")
-    contrast = abs(float(region.contrast_dn))
-    if not np.isfinite(contrast) or contrast <= 0:
-        raise ValueError(f"region.contrast_dn: must be non-zero and finite, got {region.contrast_dn!r}")
-    pol = 1 if float(region.polarity) >= 0 else -1
     s = settings
-
-    l0 = max(int(region.line_start) - s.margin_lines, 0)
-    l1 = min(int(region.line_stop) + s.margin_lines, n_img)
-    c0 = max(int(region.col_start) - s.pad_px, 0)
-    c1 = min(int(region.col_stop) + s.pad_px, W)
-    if l1 <= l0 or c1 <= c0:
-        raise ValueError("region: empty line or column range")
-    lines = np.arange(l0, l1)
-    cols = np.arange(c0, c1)
-    n, w = lines.size, cols.size
-
-    bg = _as_columns(background_dn, n_img, W, "background_dn")[l0:l1, c0:c1]
-    sd = _as_columns(noise_dn, n_img, W, "noise_dn")[l0:l1, c0:c1]
-    raw = data[l0:l1, c0:c1]
-    p = pol * (raw - bg) / contrast
-    # noise of p, normalised units
-    if sd.strides[0] == 0:
-        # a scalar or per-column noise: one line's, repeated
-        sp = np.empty((n, w))
-        sp[:] = np.maximum(sd[0], 1e-12) / contrast
-    else:
-        sp = np.maximum(sd, 1e-12) / contrast
-    sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
-    other = np.zeros((n, w), dtype=bool)
-    for o in others:
-        om = _region_pixels(o, n_img, W)[l0:l1, c0:c1]
-        # one pixel of dilation along the line: a neighbour's blur reaches it
-        other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
-
-    peak = p.max(axis=1)
-    if sd.strides[0] == 0:
-        # a scalar or per-column noise: every line has the same median
-        noise_row = np.full(n, float(_median(sp[0])))
-    else:
-        noise_row = np.median(sp, axis=1)
-    has_signal = peak > s.min_snr * noise_row
-    # the first and last pixels at find_fraction of the peak (compiled)
-    k_left, k_right = rough_edges(p, peak, float(s.find_fraction))
-    # A shaded limb can be darker than a fraction of a bright seam's peak:
-    # walk outwards while the next pixel still holds find_fraction of its
-    # inner neighbour (and is significant), so that the window sits on the
-    # ball's real edge.
-    floor_p = s.min_snr * noise_row
-    # (compiled: line by line, where the numpy form stepped all lines at once)
-    k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
-
-    # Signal-dependent noise (shot noise): the background's noise understates
-    # the ball's.  Estimate the ball's pixel noise from second differences
-    # inside the segments and let it grow linearly with the signal.
-    if s.ball_noise:
-        # the pixels 3 or more inside both rough edges whose neighbours are
-        # too: their second differences, values and noise
-        vals, p_both, sp_both, per_col = inner_differences(p, as_arg(sp), k_left, k_right, has_signal)
-        if vals.size >= 50:
-            sig_in = 1.4826 * float(_median(np.abs(vals - _median(vals)))) / math.sqrt(6.0)
-            p_in = float(_median(p_both))
-            if sd.strides[0] == 0:
-                # every line has the same per-column noise: the median over
-                # the pixels is a median of the columns weighted by their counts
-                sig_bg = _weighted_median(sp[0], per_col)
-            else:
-                sig_bg = float(_median(sp_both))
-            if p_in > 0 and sig_in > sig_bg:
-                # each pixel's signal for its noise from its column neighbours,
-                # not its own value (compiled: see _kernels.shot_noise)
-                sp = shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
+    box = _box(data, region, background_dn, noise_dn, t_lines_s, saturation_dn, others, s)
+    rough = _rough_edges(box, s)
+    p, sp = box.profile, _ball_noise(box, rough, s)
+    n, w = p.shape
 
     # Every edge estimate at once: for each window (narrow, then wide) the
     # left edges (windows pointing inwards with sign +1), then the right
@@ -847,107 +925,64 @@ def _edge_pass(
     variants = ((s.n_out, s.n_in), (s.n_out_wide, s.n_in_wide))
     nv = 2 * len(variants)
     quarters = tuple(slice(q * n, (q + 1) * n) for q in range(nv))
-    hs4 = np.concatenate([has_signal] * nv)
-    # the windows' and runs' pixels and sums (compiled: some sixty small
-    # array operations in numpy, 0.6 ms a ball)
+    hs4 = np.concatenate([rough.has_signal] * nv)
     n_in = np.array([v[1] for v in variants], dtype=np.int64)
-    (S, sw, sw2, L_run, sl2, pl0, pl1, sl0, sl1, pd, sd2, pdd, sdd2, win_first, win_last, n_win, lev, deep_px, sgn1, lo, hi,
-     inside_box, saturated, overlapping) = edge_windows(
-        p, as_arg(sp), as_arg(sat, np.bool_), other, k_left, k_right, np.array([v[0] for v in variants], dtype=np.int64), n_in, int(s.n_level),
+    n_out = np.array([v[0] for v in variants], dtype=np.int64)
+    # the windows' and runs' pixels and sums (compiled)
+    ws = _WindowSums(
+        *edge_windows(p, as_arg(sp), as_arg(box.saturated_px, np.bool_), box.other_px, rough.k_left, rough.k_right, n_out, n_in, int(s.n_level))
     )
-    kap = s.level_slope
-    # relative level gradient, median-filtered along the lines (shading is
-    # smooth from line to line, felt texture and noise are not):
-    # gradient per pixel across the level run (inwards positive), towards
-    # the covered part of the edge pixel (about `dist` pixels outwards), and
-    # the noise of its median of slope_lines lines (compiled)
-    raw_rel, rel_var, rel_sig = level_gradients(
-        pl0, pl1, pd, L_run, sl0, sl1, sd2, sl2, hs4, n_in, int(s.n_level), int(s.slope_lines)
-    )
-    if s.slope_degree < 0:
-        # (_smooth_lines' running median, of every side in one call)
-        rel = _running_median(raw_rel, s.slope_lines, nv)
-    else:
-        rel = np.concatenate([_smooth_lines(raw_rel[q], s.slope_lines, s.slope_degree) for q in quarters])
-    # Only a side whose gradient stands out of its noise is corrected (an
-    # unshaded ball keeps the plain level and its noise).  The decision
-    # is taken once per side (and window), not per line: shrinking each
-    # line's correction by its noise would bias noisy edges inwards.
-    # (compiled: per side and window, the mean of |rel| / rel_sig over the
-    # lines with signal, NaN as 0; the unshaded sides' rel set to 0)
-    rel = shaded_sides(rel, rel_sig, hs4 & (rel_sig > 0), nv, float(s.slope_threshold))
-    # the levels, the edges from the windows' uncovered lengths and their
-    # variances (compiled)
-    L, e, var = window_edges(rel, rel_var, L_run, S, sw2, sl2, n_win, win_first, win_last, sgn1, float(kap), float(kap**2))
-    abs_lo, abs_hi = lo + c0, hi + c0
-    at_sensor_end = (abs_lo <= 0) | (abs_hi >= W - 1) | ~inside_box
+    we = _window_edges(ws, hs4, n_in, s, quarters)
+    use = _usability(box, rough, ws, hs4, s, quarters)
     # texture indicator from pixels the edge does not use (the deep run and
     # the run inside it, pdd and sdd2), so that its noise is independent of
     # the edge's: a weight correlated with the edge's own error would bias the fit
-    dlev = np.abs(pd - pdd) - np.sqrt(sd2 + sdd2)
-    usable = hs4 & ~at_sensor_end & ~saturated & ~overlapping
-    # both windows and level runs must fit in the segment without crossing
-    span_needed = 2 * (s.n_in + s.n_level) + 1
-    long_enough = (k_right - k_left) >= span_needed
-    # wide windows for lines whose edge is spread over the exposure / pixel height
-    long_wide = (k_right - k_left) >= 2 * (s.n_in_wide + s.n_level) + 1
-    usable &= np.concatenate([long_enough, long_enough, long_wide, long_wide])
-    endL, endR, satL, satR, ovL, ovR = (a[q] & has_signal for a in (at_sensor_end, saturated, overlapping) for q in quarters[:2])
-
+    dlev = np.abs(ws.pd - ws.pdd) - np.sqrt(ws.sd2 + ws.sdd2)
     # summed coverage: over the segment +- 3 px where the ball is seen, else
     # the whole box (compiled: its sums, sigma and centroid in one pass)
-    area, area_sig, centroid = line_coverage(p, sp, k_left, k_right, has_signal, int(c0))
-
-    flags = []
-    if np.any(endL | endR) or c0 == 0 and np.any(has_signal & (k_left <= 0)) or c1 == W and np.any(has_signal & (k_right >= w - 1)):
-        flags.append("cut_sensor_end")
-    # (the pixel tests only where a pixel is saturated or another ball's)
-    if np.any(satL | satR) or sat.any() and np.any(sat & (p > 0.5)):
-        flags.append("saturated")
-    if np.any(ovL | ovR) or other.any() and np.any(other & (p > 0.5)):
-        flags.append("overlap")
-
+    area, area_sig, centroid = line_coverage(p, sp, rough.k_left, rough.k_right, rough.has_signal, int(box.c0))
+    deep = ws.deep
     return _EdgePass(
         settings=s,
-        n_img=n_img,
-        c0=c0,
+        n_img=box.n_img,
+        c0=box.c0,
         quarters=quarters,
-        has_signal=has_signal,
-        e=e,
-        var=var,
-        L=L,
-        S=S,
-        L_run=L_run,
-        sl2=sl2,
-        sw=sw,
-        n_win=n_win,
-        win_first=win_first,
-        win_last=win_last,
-        lev=lev,
-        deep=deep_px,
+        has_signal=rough.has_signal,
+        e=we.e,
+        var=we.var,
+        L=we.L,
+        S=ws.S,
+        L_run=ws.L_run,
+        sl2=ws.sl2,
+        sw=ws.sw,
+        n_win=ws.n_win,
+        win_first=ws.win_first,
+        win_last=ws.win_last,
+        lev=ws.lev,
+        deep=deep,
         # (a run's pixels step by one from its first to its last: those are its extremes)
-        limb_rows=hs4 & (np.minimum(deep_px[:, 0], deep_px[:, -1]) >= 0) & (np.maximum(deep_px[:, 0], deep_px[:, -1]) < w),
-        pd=pd,
-        sd2=sd2,
-        sgn=sgn1,
-        lines_abs=np.concatenate([lines] * nv),
+        limb_rows=hs4 & (np.minimum(deep[:, 0], deep[:, -1]) >= 0) & (np.maximum(deep[:, 0], deep[:, -1]) < w),
+        pd=ws.pd,
+        sd2=ws.sd2,
+        sgn=ws.sgn,
+        lines_abs=np.concatenate([box.lines] * nv),
         dlev=np.maximum(dlev, 0.0),
-        usable=usable,
-        run_ok=L_run > 3.0 * np.sqrt(sl2),
-        spoiled=endL | endR | satL | satR | ovL | ovR,
-        common=dict(
-            lines=lines,
-            t_s=t_lines_s[lines],
+        usable=use.usable,
+        run_ok=ws.L_run > 3.0 * np.sqrt(ws.sl2),
+        spoiled=use.spoiled,
+        common=_Unchanged(
+            lines=box.lines,
+            t_s=box.t_s,
             area_px=area,
             area_sigma_px=area_sig,
             centroid_px=centroid,
-            peak=peak,
-            polarity=pol,
-            contrast_dn=contrast,
-            flags=tuple(flags),
-            profile=np.where(sat | other, np.nan, p),
+            peak=rough.peak,
+            polarity=box.polarity,
+            contrast_dn=box.contrast_dn,
+            flags=use.flags,
+            profile=np.where(box.saturated_px | box.other_px, np.nan, p),
             profile_sigma=sp,
-            profile_col0=int(c0),
+            profile_col0=int(box.c0),
         ),
     )
 
@@ -963,7 +998,7 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         spread = getattr(limb, "spread_px", None)
         if spread is None or np.shape(spread) != (ps.n_img,):
             raise ValueError(f"limb: needs a spread_px array of one entry per image line ({ps.n_img}), got {None if spread is None else np.shape(spread)}")
-        line_spread = np.asarray(spread)[ps.common["lines"]]
+        line_spread = np.asarray(spread)[ps.common.lines]
         narrow = line_spread < s.limb_narrow_max_px
         wide = (line_spread >= s.limb_wide_px[0]) & (line_spread <= s.limb_wide_px[1])
         wanted = np.concatenate([narrow, narrow, wide, wide])
@@ -981,16 +1016,16 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
     has_signal = ps.has_signal
     if limb is not None and hasattr(limb, "line_levels"):
         # the brightness of the ends' covered part (their area's divisor)
-        line_spread = np.asarray(limb.spread_px)[ps.common["lines"]]
+        line_spread = np.asarray(limb.spread_px)[ps.common.lines]
         # not where a pixel of the line is saturated or another ball's (NaN in
         # the profile): its area is not the ball's coverage times a level
-        clean = finite_rows(ps.common["profile"])
+        clean = finite_rows(ps.common.profile)
         want = np.flatnonzero(
             has_signal & clean & np.isfinite(line_spread) & ((line_spread >= s.limb_area_min_spread_px) | ~(okL & okR))
         )
         area_level = np.full(has_signal.size, np.nan)
         area_level_sigma = np.full(has_signal.size, np.nan)
-        lev_a, rel_a = limb.line_levels(ps.common["lines"][want])
+        lev_a, rel_a = limb.line_levels(ps.common.lines[want])
         area_level[want], area_level_sigma[want] = lev_a, rel_a
     return EdgeMeasurements(
         left_px=edge[0],
@@ -1012,5 +1047,5 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         area_level=area_level,
         area_level_sigma=area_level_sigma,
         _pass=ps,
-        **ps.common,
+        **vars(ps.common),
     )

@@ -8,7 +8,7 @@ gain on the background, but not on the ball: there column ``j`` reads
 line whose edge sits in that column.  The window edges
 (:func:`ballscan.measure.edges.measure_edges`) take the ball's level from the line
 itself and are hurt less than the matched edges
-(:func:`ballscan.measure.edges.matched_edges`), which take it from the shading model:
+(:func:`ballscan.measure.matched.matched_edges`), which take it from the shading model:
 on a sensor with 0.8 % PRNU those left the position sigmas about 2x too
 small.  :func:`column_gains` measures how much the columns' gains scatter, so
 that the estimator uses the matched edges only on a flat-fielded sensor.
@@ -17,17 +17,15 @@ Each pixel well inside the ball is divided by its line's median, each
 column's gain is the median over its lines, what varies smoothly across the
 columns (shading, a texture's large-scale pattern) is removed by a local
 quadratic across 15 columns, and the scatter that remains beyond the measurement noise is the
-gains' (robust method of moments).  Measured on 8-bit renders of the Fig. 5
-ball (18 and 4.7 m/s, 35 000 and 140 000 lines/s, 4 seeds each): PRNU 0 gives
-0-0.0019, PRNU 0.002 gives 0.0001-0.0024, 0.003 gives 0.0015-0.0039 and
-0.008 gives 0.0067-0.0083.  A ball with fewer than 8 interior lines or 15
-measurable columns (about 17 px across) reads NaN: not measured.
-Dividing the measured gains out of the image did not help the window edges
-(docs/experiments.md): the columns a ball's edges dwell on longest are its
-outermost, which are never deep inside it.  The matched edges are measured
-on the image with the gains divided out (:func:`flat_fielded`, session 8),
-each carrying the gain error that remains in its edge pixel
-(:attr:`ColumnGains.gain_sigma`).
+gains' (robust method of moments).  On 8-bit images of the Fig. 5 ball it
+resolves a PRNU of a few tenths of a percent (a flat sensor reads up to about
+0.002).  A ball with fewer than 8 interior lines or 15 measurable columns
+(about 17 px across) reads NaN: not measured.
+Dividing the measured gains out of the image does not help the window edges:
+the columns a ball's edges dwell on longest are its outermost, which are
+never deep inside it.  The matched edges are measured on the image with the
+gains divided out (:func:`flat_fielded`), each carrying the gain error that
+remains in its edge pixel (:attr:`ColumnGains.gain_sigma`).
 """
 
 from __future__ import annotations
@@ -40,7 +38,7 @@ from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
 from .._kernels import as_arg, median_deviations, sorted_medians
-from .detection import median as _median
+from .robust import median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
 
@@ -68,7 +66,7 @@ def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
 # scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp") as a fixed
 # linear filter: its coefficients and edge fits depend only on the window,
 # and computing them (two polynomial fits by scipy.linalg.lstsq per call)
-# took most of column_gains' time on a stream event's ball (~1 ms)
+# would dominate column_gains' time on a stream ball
 _TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
 _TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
 # the fraction of a white (column-independent) gain pattern's variance that the trend takes
@@ -206,7 +204,14 @@ def column_gains(
     ColumnGains
         For the box's columns; ``prnu_sigma`` NaN when fewer than 8 lines or
         15 columns can be measured (a small ball: not measured is not flat).
+
+    Raises
+    ------
+    ValueError
+        If ``polarity`` is not +1 or -1.
     """
+    if polarity not in (1, -1):
+        raise ValueError(f"polarity: must be +1 or -1, got {polarity!r}")
     n_l, n_c = mask.shape
     ls = slice(line_start, line_start + n_l)
     cs = slice(col_start, col_start + n_c)
@@ -236,8 +241,8 @@ def column_gains(
     var = _MEDIAN_VAR * spread**2 / n_c_used
     # the smooth part across the columns is the ball's, not the sensor's.  A
     # defective (stuck, dead, hot) column is no gain: dividing by its value
-    # (a stuck column read -0.0045) would scale its signal by hundreds, and
-    # it bends its neighbours' trend (by 0.04); such columns are taken out
+    # (near 0 for a stuck column) would scale its signal by hundreds, and
+    # it bends its neighbours' trend; such columns are taken out
     # one by one, the worst first, their value interpolated for the trend
     k = np.arange(med.size)
     far_all = np.zeros(med.size, dtype=bool)
@@ -250,8 +255,8 @@ def column_gains(
         d = med[ok] / trend[ok] - 1.0
         # method of moments, robustly (a column at the ball's end or one with a
         # seam may be far off): what the columns' scatter exceeds their noise by
-        dev = np.abs(d - _median(d))
-        scatter = _MAD_SIGMA * float(_median(dev))
+        dev = np.abs(d - median(d))
+        scatter = _MAD_SIGMA * float(median(dev))
         # (a floor of 0.1 %: on a noise-free image neither scatter nor noise is there)
         z = dev / np.maximum(np.sqrt(scatter**2 + var[ok]), _DEFECT_FLOOR)
         worst = int(np.argmax(z))
@@ -259,16 +264,15 @@ def column_gains(
             break
         far_all[np.flatnonzero(ok)[worst]] = True
     d_far = np.abs(med[far_all] / np.where(trend[far_all] > 0, trend[far_all], 1.0) - 1.0)
-    tau2 = max(scatter**2 - float(_median(var[ok])), 0.0)
+    tau2 = max(scatter**2 - float(median(var[ok])), 0.0)
     gain = np.ones(n_c)
     sigma = np.full(n_c, math.sqrt(tau2))
     if tau2 > 0:
         gain[cols[ok]] = 1.0 + d * (tau2 / (tau2 + var[ok]))
         # the measurement's posterior, and the part of the gains the smooth
         # trend takes with the ball's shading (a white gain pattern leaves
-        # sum(coef^2) = 0.2 of its variance in a 15-column quadratic: the
-        # quick sweep's balls measured 0.0030-0.0049 RMS off for a posterior
-        # of 0.0013-0.0030 alone)
+        # sum(coef^2) = 0.2 of its variance in a 15-column quadratic, which
+        # the posterior alone leaves out)
         sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _TREND_LEAK)
     # the defective columns keep gain 1 and their whole deviation as their error
     sigma[cols[far_all]] = np.maximum(d_far, math.sqrt(tau2))

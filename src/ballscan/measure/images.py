@@ -75,6 +75,14 @@ class LineImage:
     bits: int
     source: str
 
+    def __post_init__(self) -> None:
+        if not (isinstance(self.data, np.ndarray) and self.data.ndim == 2):
+            raise ValueError(f"LineImage.data: must be a 2-D (n_lines, W) numpy array, got {type(self.data).__name__} of shape {np.shape(self.data)}")
+        if not (isinstance(self.saturation_dn, (int, float, np.integer, np.floating)) and not np.isnan(self.saturation_dn)):
+            raise ValueError(f"LineImage.saturation_dn: must be a number, got {self.saturation_dn!r}")
+        if not (isinstance(self.bits, (int, np.integer)) and not isinstance(self.bits, bool) and 1 <= self.bits <= 32):
+            raise ValueError(f"LineImage.bits: must be an integer in [1, 32], got {self.bits!r}")
+
     @property
     def n_lines(self) -> int:
         """Number of scan lines (rows)."""

@@ -119,6 +119,18 @@ def surface_normals(
     return np.broadcast_to(hit, normals.shape[:-1]), normals
 
 
+def _check_fit_settings(inset_px: float, max_pixels: int, huber_k: float, n_iterations: int) -> None:
+    """One precise ``ValueError`` for a setting of :func:`fit_shading` out of its range."""
+    if not (math.isfinite(inset_px) and inset_px >= 0):
+        raise ValueError(f"inset_px: must be a finite number >= 0, got {inset_px!r}")
+    if not (isinstance(max_pixels, (int, np.integer)) and max_pixels >= 50):
+        raise ValueError(f"max_pixels: must be an integer >= 50, got {max_pixels!r}")
+    if not (math.isfinite(huber_k) and huber_k > 0):
+        raise ValueError(f"huber_k: must be a finite number > 0, got {huber_k!r}")
+    if not (isinstance(n_iterations, (int, np.integer)) and n_iterations >= 1):
+        raise ValueError(f"n_iterations: must be an integer >= 1, got {n_iterations!r}")
+
+
 def fit_shading(
     camera: LineScanCamera,
     motion: BallMotion,
@@ -169,7 +181,14 @@ def fit_shading(
     -------
     ShadingModel or None
         None when fewer than 50 interior pixels exist.
+
+    Raises
+    ------
+    ValueError
+        If a setting is out of its range (``inset_px >= 0``, ``max_pixels
+        >= 50``, ``huber_k > 0``, ``n_iterations >= 1``; the message names it).
     """
+    _check_fit_settings(inset_px, max_pixels, huber_k, n_iterations)
     width = data_dn.shape[1]
     # (np.clip's values, without its overhead)
     lo = np.minimum(np.maximum(np.ceil(np.asarray(left_px) + inset_px), 0), width - 1).astype(int)
@@ -284,6 +303,22 @@ class LimbProfile:
     # the chord samples of the last rows pixel_coverage was asked for
     _samples: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
+    def __post_init__(self) -> None:
+        if self.polarity not in (1, -1):
+            raise ValueError(f"LimbProfile.polarity: must be +1 or -1, got {self.polarity!r}")
+        for name in ("n_time", "n_height", "level_n_time", "level_n_height"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= 1):
+                raise ValueError(f"LimbProfile.{name}: must be an integer >= 1, got {v!r}")
+        # inf: every line sampled once per position
+        if not self.sharp_px >= 0:
+            raise ValueError(f"LimbProfile.sharp_px: must be a number >= 0 (inf allowed), got {self.sharp_px!r}")
+        # NaN: the scatter was not measured (see ball_limb)
+        if self.level_rel_sigma < 0 or self.level_rel_sigma == math.inf:
+            raise ValueError(f"LimbProfile.level_rel_sigma: must be >= 0 and finite, or NaN, got {self.level_rel_sigma!r}")
+        if not (math.isfinite(self.level_ref_px) and self.level_ref_px > 0):
+            raise ValueError(f"LimbProfile.level_ref_px: must be a finite number > 0, got {self.level_ref_px!r}")
+
     def line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
         """The model's mean brightness over the part of each line the ball covers.
 
@@ -343,13 +378,13 @@ class LimbProfile:
         edge sits at offset 0.  Near a ball's ends a spread edge's samples
         have long tails: a pixel 2-3 px inside the mean edge is still
         uncovered for a few per cent of them, which a few point samples miss
-        (on a noise-free render that left the level runs of the wide windows
-        1 % darker than the point model said, and their edges 0.02-0.04 px
-        outward).  ``n_nodes`` Gauss-Legendre nodes per piece over the
-        exposure and the pixel's height: a quadrature of a function with
-        kinks, per pixel within 0.010 of a finely supersampled render on the
-        bench ball's lines whose edge spreads 0.2-1 px, within 0.020 at
-        140 000 lines/s (0.006 with 8 nodes).
+        (a noise-free render's level runs of the wide windows would read
+        about 1 % darker than the point model, and their edges a few
+        hundredths of a pixel outward).  ``n_nodes`` Gauss-Legendre nodes per
+        piece over the exposure and the pixel's height: a quadrature of a
+        function with kinks, per pixel within about 0.01 (0.02 on the fastest
+        balls) of a finely supersampled render where the edge spreads
+        0.2-1 px; more nodes bring it closer.
 
         Parameters
         ----------
@@ -634,8 +669,7 @@ def ball_limb(
     )
     # how well the law predicts a line's mean brightness, measured on the
     # plateau lines and scaled to each end line's length, is the sigma of the
-    # end lines' levels (a rendered tennis ball: plateau lines' scatter 4.7 %;
-    # the ends' levels 8.5 % RMS off, their sigmas 7-21 %)
+    # end lines' levels
     # lines seen during the whole exposure, one line away from any that is
     # not (the guess's presence may be off by a line; a partial line's mean
     # is far lower)
@@ -652,11 +686,10 @@ def _level_margin(n_full: int) -> int:
     """Lines left out at each end of the plateau lines for the level scatter.
 
     The rough motion's presence can be off by a line, and on a long ball by
-    more (the key-point guess's duration is good to about a percent): on the
-    quick sweep's 520-line balls (140 000 lines/s) it called lines at each
-    end full that the ball entered during the exposure, whose means, 6-10 %
-    low, made a flat ball's scatter 0.036-0.040 (refused as not uniform)
-    where without three lines at each end it is 0.002-0.007.  One line up
+    more (the key-point guess's duration is good to about a percent): on a
+    fast ball it calls lines at each end full that the ball entered during
+    the exposure, whose means, several percent low, would make a flat
+    ball's scatter large enough to refuse it as not uniform.  One line up
     to 250 lines, 0.6 % of them beyond.
     """
     return max(1, int(round(0.006 * n_full)))
@@ -727,13 +760,20 @@ def shade_profile(limb: LimbProfile, edges: EdgeMeasurements, min_spread_px: flo
     edges : EdgeMeasurements
         With a profile (made by :func:`ballscan.measure.edges.measure_edges`).
     min_spread_px : float
-        Pixels.
+        Pixels, ``>= 0``.
 
     Returns
     -------
     ndarray (n_lines, n_cols) or None
         None when ``edges`` carry no profile.
+
+    Raises
+    ------
+    ValueError
+        If ``min_spread_px`` is negative or NaN.
     """
+    if not min_spread_px >= 0:
+        raise ValueError(f"min_spread_px: must be a number >= 0, got {min_spread_px!r}")
     if edges.profile is None:
         return None
     lines = edges.lines

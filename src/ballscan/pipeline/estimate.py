@@ -28,8 +28,10 @@ import numpy as np
 from scipy import ndimage as ndi
 
 from ..geometry.camera import LineScanCamera, line_times
-from ..measure.detection import BallRegion, ColumnModel, Detection, background_at, detect, median, region_background
-from ..measure.edges import matched_edges, measure_edges, with_limb
+from ..measure.detection import BallRegion, ColumnModel, Detection, background_at, detect, region_background
+from ..measure.robust import median
+from ..measure.edges import measure_edges, with_limb
+from ..measure.matched import matched_edges
 from ..errors import ImageFileError
 from ..solve.fit import FitSettings, fit_motion, propagate
 from ..measure.flatfield import column_gains, flat_fielded

@@ -78,7 +78,7 @@ from .._kernels import (
 from .._kernels import pixel_residuals as _kernel_pixel_residuals
 from .._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from ..geometry.camera import LineScanCamera
-from ..measure.detection import median as _median
+from ..measure.robust import median as _median
 from ..measure.edges import EdgeMeasurements
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from ..model.silhouette import _gauss

@@ -60,7 +60,6 @@ noise); the per-line gain and offset used by the precise estimate are those
 
 from __future__ import annotations
 
-import copy
 import math
 import time
 from collections import deque
@@ -71,8 +70,9 @@ from typing import Any
 import numpy as np
 
 from .. import _kernels
-from ..geometry.camera import LineScanCamera
-from ..measure.detection import ColumnModel, detect, median
+from ..geometry.camera import LineScanCamera, crop_camera
+from ..measure.detection import ColumnModel, detect
+from ..measure.robust import median
 from ..errors import BallscanError
 from ..measure.images import LineImage
 from ..pipeline.results import BallEstimate
@@ -86,7 +86,6 @@ __all__ = [
     "StreamEngine",
     "Chunk",
     "process_stream",
-    "crop_camera",
     "estimate_crop",
     "preload_estimator",
 ]
@@ -936,51 +935,6 @@ def preload_estimator() -> None:
     from ..solve import fit  # noqa: F401
 
     _kernels.warm_up()
-
-
-def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int, *, exposure_s: float | None = None) -> LineScanCamera:
-    """The camera of sensor pixels ``[col_start, col_stop)`` only.
-
-    The same camera frame and optics; pixel ``j`` of the crop is pixel
-    ``col_start + j`` of the sensor, so ``u' = u - col_start`` and the
-    principal point moves by ``-col_start`` (pixels). Positions and
-    velocities measured with it need no correction.
-
-    Parameters
-    ----------
-    camera : LineScanCamera
-    col_start, col_stop : int
-        The crop's sensor pixels, ``0 <= col_start < col_stop <= width``.
-    exposure_s : float, optional
-        Also set the exposure (s).
-
-    Returns
-    -------
-    LineScanCamera
-        Equal to ``dataclasses.replace(camera, width=..., principal_px=...,
-        exposure_s=...)``, made without validating it again: a crop of a
-        valid camera is valid (its distortion is monotonic over a part of
-        the sensor's range), and the validation (~50 us, a distortion
-        check on 257 points) lay on every ball's latency path. An exposure
-        outside ``(0, 1 / line_rate_hz]`` or an empty or outside range is
-        validated (and refused) as by ``replace``.
-    """
-    changes: dict[str, Any] = {}
-    if not (col_start == 0 and col_stop == camera.width):
-        changes.update(width=int(col_stop - col_start), principal_px=camera.principal_px - col_start)
-    if exposure_s is not None:
-        changes["exposure_s"] = exposure_s
-    if not changes:
-        return camera
-    valid = 0 <= col_start and col_start + 2 <= col_stop <= camera.width
-    if exposure_s is not None:
-        valid = valid and isinstance(exposure_s, float) and 0.0 < exposure_s <= 1.0 / camera.line_rate_hz
-    if not valid:
-        return replace(camera, **changes)
-    crop = copy.copy(camera)  # no __init__, no validation
-    for key, value in changes.items():
-        object.__setattr__(crop, key, value)
-    return crop
 
 
 def process_stream(
