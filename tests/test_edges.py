@@ -175,7 +175,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     from ballscan.measure.detection import detect
     from ballscan.measure.edges import matched_edges, with_limb
     from ballscan.pipeline.estimate import _full_background
-    from ballscan.solve.fit import averaged_model
+    from ballscan.model.averaged import averaged_model
     from ballscan.measure.images import LineImage
     from ballscan.geometry.motion import BallMotion
     from ballscan.model.render import Appearance, RenderSettings, render

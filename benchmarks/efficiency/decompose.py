@@ -116,11 +116,11 @@ def run_one(args):
     times.append(t[idx])
     kinds.append(np.full(idx.size, "area"))
     if pix is not None:
-        rows = np.nonzero(pix["mask"])[0]
-        times.append(pix["t"][rows])
+        rows = np.nonzero(pix.mask)[0]
+        times.append(pix.t_s[rows])
         # the spread lines are those with an edge pair in the selection before the pixels took them
         # (edge pairs measured: the spread lines; the end lines have none)
-        n_sp = np.isin(pix["t"], t[edges.left_ok & edges.right_ok])
+        n_sp = np.isin(pix.t_s, t[edges.left_ok & edges.right_ok])
         kinds.append(np.where(n_sp[rows], "px_spread", "px_end"))
     times = np.concatenate(times)
     kinds = np.concatenate(kinds)
@@ -142,7 +142,7 @@ def nominal_pixel_model(factor, value, nodes):
     ``G`` (the DN derivatives, (6, lines, columns)).
     """
     from ballscan.lab import experiments as ex
-    from ballscan.solve.fit import averaged_model
+    from ballscan.model.averaged import averaged_model
     from ballscan.solve.precision import _n_lines_for, _pixel_model
     from bench_efficiency import _spec
 

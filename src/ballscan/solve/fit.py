@@ -72,28 +72,20 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from .._kernels import (
-    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
-    fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
+    area_tables, as_arg, block_ratio, damped, equilibrated, fit_jacobian, fit_residuals, loose_rows, on_both_sides, select_lines,
 )
-from .._kernels import pixel_residuals as _kernel_pixel_residuals
-from .._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from ..geometry.camera import LineScanCamera
 from ..measure.detection import median as _median
 from ..measure.edges import EdgeMeasurements
 from ..geometry.motion import PARAM_NAMES, BallMotion
-from ..model.silhouette import _gauss
+from ..model.averaged import JacobianMemo, ModelEdges, ModelEvaluator, averaged_model, hybrid_jacobian, model_jacobian
+from ..model.pixels import PixelWindows, pixel_residuals, pixel_residuals_jacobian
 
 __all__ = [
     "FitResult",
     "FitSettings",
     "MotionUncertainty",
-    "ModelEdges",
-    "averaged_model",
-    "chord_jacobian",
-    "hybrid_jacobian",
-    "model_jacobian",
     "param_scale",
-    "pixel_coverage",
     "fit_motion",
     "propagate",
     "synthetic_edges",
@@ -102,159 +94,6 @@ __all__ = [
 
 _DILATION = "edge_bias_px"
 
-
-# ------------------------------------------------------------------- model
-
-
-@dataclass(frozen=True)
-class ModelEdges:
-    """Averaged-silhouette predictions for P parameter sets and N lines.
-
-    Attributes
-    ----------
-    left_px, right_px : ndarray (P, N)
-        Mean edges over the present samples, pixels; where the ball is absent
-        both equal the projection of the centre (so that the model is
-        continuous as a line's presence goes to 0).
-    presence : ndarray (P, N)
-        Fraction of (exposure x pixel height) samples in which the ball is seen.
-    area_px : ndarray (P, N)
-        Expected summed pixel coverage, pixels.
-    spread_px : ndarray (P, N)
-        Weighted standard deviation of the sample edges about their mean
-        (the larger of left and right), pixels.
-    valid : ndarray (P, N) of bool
-        False where an edge ray would point backwards / the camera is inside.
-    samples : tuple or None
-        ``(u_lo, u_hi, weight)`` per sample, each (P, N, 3, n), when asked for.
-    """
-
-    left_px: np.ndarray
-    right_px: np.ndarray
-    presence: np.ndarray
-    area_px: np.ndarray
-    spread_px: np.ndarray
-    valid: np.ndarray
-    samples: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
-
-
-def averaged_model(
-    camera: LineScanCamera,
-    thetas: np.ndarray,
-    radius_m: float,
-    t_lines_s: np.ndarray,
-    acceleration_mps2=(0.0, 0.0, 0.0),
-    n_nodes: int = 4,
-    return_samples: bool = False,
-) -> ModelEdges:
-    """Vectorised averaged silhouette for several parameter sets at once.
-
-    Same mathematics as :func:`ballscan.model.silhouette.silhouette` with
-    ``model="averaged"`` (see its Notes), broadcast over a leading axis of
-    parameter sets ``thetas`` of shape (P, 6) in :data:`PARAM_NAMES` order
-    (seconds, metres, m/s).  ``n_nodes = 4`` Gauss-Legendre nodes per piece
-    agree with 32 nodes to 1e-8 px on a tennis serve (inner lines are then
-    done with 2 nodes, see below); ``n_nodes <= 3`` evaluates every line with
-    ``n_nodes`` in one call (3 nodes: 1e-4 px at worst at the ball's ends,
-    about twice as fast).
-    """
-    th = np.atleast_2d(np.asarray(thetas, dtype=float))
-    t_all = np.asarray(t_lines_s, dtype=float).reshape(-1)
-    if n_nodes <= 3 or return_samples:
-        return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes, return_samples)
-    # Lines well inside the ball's crossing (|x0| + A + B < 0.9 R for the first
-    # parameter set) have smooth edges in the quadrature variable: 2 nodes per
-    # piece are exact to 2e-6 px there; the end lines get n_nodes.
-    m0 = BallMotion.from_params(th[0], float(radius_m), acceleration_mps2)
-    c = m0.centre(t_all)
-    vx = np.abs(m0.velocity_at(t_all)[:, 0])
-    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) / (2 * camera.focal_px)
-    inner = reach < 0.9 * float(radius_m)
-    if not inner.any() or inner.all():
-        return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes if not inner.all() else 2, False)
-    a = _model_core(camera, th, float(radius_m), t_all[inner], acceleration_mps2, 2, False)
-    b = _model_core(camera, th, float(radius_m), t_all[~inner], acceleration_mps2, n_nodes, False)
-    out = {}
-    for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid"):
-        va, vb = getattr(a, k), getattr(b, k)
-        arr = np.empty((th.shape[0], t_all.size), dtype=va.dtype)
-        arr[:, inner] = va
-        arr[:, ~inner] = vb
-        out[k] = arr
-    return ModelEdges(**out)
-
-
-def _edges_model(camera, th, R, t, acc, n_nodes) -> ModelEdges:
-    """:func:`averaged_model` without the edge spread and validity (``None``), for the fit's inner loop.
-
-    ``t`` of shape (P, N) gives every parameter set its own line times.
-    """
-    if n_nodes <= 3 or np.ndim(t) == 2:
-        return _model_core(camera, th, float(R), t, acc, n_nodes, False, False)
-    return averaged_model(camera, th, R, t, acc, n_nodes)
-
-
-def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples, full: bool = True) -> ModelEdges:
-    """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,) or (P, N).
-
-    Per-line quantities are (P, N); the samples (``return_samples``) are
-    (P, N, 3, n_nodes): three pieces of ``n_nodes`` Gauss-Legendre nodes
-    over the quadrature angle between the kinks of the exposure-and-height
-    density.  ``full=False`` skips the edge spread and the validity test
-    (``spread_px`` and ``valid`` are then None).  The fit calls it some ten
-    times per ball: one compiled loop over the samples
-    (:func:`ballscan._kernels.averaged_samples`).
-    """
-    # contiguous and writeable: the kernel's one compiled signature
-    th = as_arg(np.atleast_2d(th))
-    t = np.asarray(t_all, dtype=float)
-    t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
-    if th.shape[1] != 6 or t.shape[0] not in (1, th.shape[0]):
-        raise ValueError(f"_model_core: parameter sets {th.shape} and line times {t.shape} do not match")
-    left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
-        th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples)
-    )
-    samples = None
-    if return_samples:
-        shp = left.shape + (3, n_nodes)
-        samples = (u_lo.reshape(shp), u_hi.reshape(shp), wgt.reshape(shp))
-    return ModelEdges(
-        left_px=left,
-        right_px=right,
-        presence=presence,
-        area_px=area,
-        spread_px=spread if full else None,
-        valid=valid if full else None,
-        samples=samples,
-    )
-
-
-def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
-    """:func:`ballscan._kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
-    g, gw = _gauss(n_nodes)
-    return (
-        float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
-        np.array([float(a) for a in acceleration_mps2]), as_arg(g), as_arg(gw),
-    )
-
-
-def _model_evaluator(camera, R, t_lines_s, acceleration_mps2, n_nodes):
-    """``averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)`` as a function of ``th`` (P, 6).
-
-    The fit evaluates the model at the same lines several times per ball:
-    with ``n_nodes <= 3`` (one kernel call on every line) the fixed
-    arguments are converted once.
-    """
-    if n_nodes > 3:
-        return lambda th: averaged_model(camera, th, R, t_lines_s, acceleration_mps2, n_nodes)
-    t = as_arg(np.asarray(t_lines_s, dtype=float).reshape(1, -1))
-    args = _kernel_args(camera, R, acceleration_mps2, n_nodes)
-
-    def evaluate(th):
-        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), t, *args, True, False)
-        return ModelEdges(left, right, presence, area, spread, valid)
-
-    return evaluate
 
 
 def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
@@ -265,296 +104,6 @@ def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
     px_m = z / camera.focal_px
     return np.array([1.0 / camera.line_rate_hz, px_m, px_m, 1e-3 * v, 1e-3 * v, 1e-3 * v])
 
-
-def model_jacobian(
-    camera: LineScanCamera,
-    theta: np.ndarray,
-    radius_m: float,
-    t_lines_s: np.ndarray,
-    scale: np.ndarray,
-    acceleration_mps2=(0.0, 0.0, 0.0),
-    rel_step: float = 1e-3,
-    n_nodes: int = 4,
-) -> tuple[ModelEdges, np.ndarray, np.ndarray, np.ndarray]:
-    """Model and its Jacobian (left, right, area with respect to theta).
-
-    Forward differences with steps ``rel_step * scale`` evaluated in one
-    vectorised call.  Returns ``(model, d_left, d_right, d_area)`` with the
-    derivatives of shape (N, 6), in pixels per parameter unit.
-    """
-    theta = np.asarray(theta, dtype=float)
-    h = rel_step * np.asarray(scale, dtype=float)
-    thetas = np.vstack([theta, theta + np.diag(h)])
-    me = averaged_model(camera, thetas, radius_m, t_lines_s, acceleration_mps2, n_nodes)
-    dl = ((me.left_px[1:] - me.left_px[0]) / h[:, None]).T
-    dr = ((me.right_px[1:] - me.right_px[0]) / h[:, None]).T
-    da = ((me.area_px[1:] - me.area_px[0]) / h[:, None]).T
-    base = ModelEdges(
-        me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0], None
-    )
-    return base, dl, dr, da
-
-
-def chord_jacobian(
-    camera: LineScanCamera,
-    theta: np.ndarray,
-    radius_m: float,
-    t_lines_s: np.ndarray,
-    acceleration_mps2=(0.0, 0.0, 0.0),
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Chord-model edges and their analytic derivatives with respect to theta.
-
-    The chord model (:func:`ballscan.model.silhouette.silhouette`, ``model="chord"``)
-    cuts the sphere by the plane ``x = 0`` at the line's centre time.  With
-    ``tau = t - t_c``, the centre ``x = vx tau``, ``y = y0 + vy tau``,
-    ``w = z0 + vz tau`` (plus ``a tau^2 / 2`` for a known acceleration) and
-    ``rho^2 = R^2 - x^2``, the tangents are
-
-        n_pm = (y w +- rho s) / D,   D = w^2 - rho^2,   s = sqrt(y^2 + D),
-
-    and ``u = c + f distort(n)``.  The derivatives are taken in closed form
-    (chain rule through ``x, y, w``; ``d rho / d x = -x / rho``,
-    ``d s / d x = x / s``).
-
-    Parameters
-    ----------
-    camera : LineScanCamera
-    theta : ndarray (6,)
-        ``(t_c, y0, z0, vx, vy, vz)`` in s, m, m, m/s, m/s, m/s.
-    radius_m : float
-        Ball radius, m.
-    t_lines_s : ndarray (N,)
-        Line centre times, s.
-    acceleration_mps2 : sequence of 3 floats
-        Known acceleration (camera frame), m/s^2.
-
-    Returns
-    -------
-    left_px, right_px : ndarray (N,)
-        Chord edges, pixels; NaN where the plane misses the ball or a
-        tangent would point backwards.
-    d_left, d_right : ndarray (N, 6)
-        Their derivatives, pixels per parameter unit (NaN where the edges are).
-    """
-    u, J, ok, _, _, _ = _chord_core(camera, theta, radius_m, np.asarray(t_lines_s, dtype=float).reshape(-1), acceleration_mps2)
-    if not ok.all():
-        u = np.where(ok, u, np.nan)
-        J = np.where(ok[:, None], J, np.nan)
-    return u[0], u[1], J[0], J[1]
-
-
-def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
-    """:func:`chord_jacobian`'s work: ``(u (2, N), J (2, N, 6), ok (N,), x, w, tau)``.
-
-    ``u`` and ``J`` hold the left (row 0) and right (row 1) edges and their
-    derivatives, finite garbage where ``ok`` is False; ``x, w`` are the
-    centre's offset from the viewing plane and its depth at each line, m,
-    ``tau = t - t_c``, s.  One compiled loop over the lines
-    (:func:`ballscan._kernels.chord_edges`).
-    """
-    return chord_edges(
-        as_arg(theta), as_arg(t), float(radius_m),
-        float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
-        np.array([float(a) for a in acceleration_mps2]),
-    )
-
-
-def _fd_rows(camera, theta, R, t, fd, inside, h, dl, dr, acc, n_nodes, base=None):
-    """Forward differences of the averaged model on the lines ``fd``, (n_fd, 6) each.
-
-    On lines ``inside`` (the section offsets stay inside the ball: presence
-    1) the averaged edge is the chord edge plus a correction that depends on
-    the offset ``x0 = vx (t - t_c)`` (and the exposure's ``A``, which scales
-    with ``vx``) and, to 1e-5 of the derivatives, on nothing else: only the
-    ``t_c`` and ``vx`` columns are differenced there, the others are the
-    chord's (``dl``, ``dr``).  The other lines get all six columns.  All
-    parameter sets and lines go through one model call (times per set).
-    ``base = (left, right, area)`` (all lines, the model at ``theta`` with
-    ``n_nodes``) spares the base set's evaluation.
-    """
-    idx = np.flatnonzero(fd)
-    ins = inside[idx]
-    i_in, i_out = idx[ins], idx[~ins]
-    n_in, n_out = i_in.size, i_out.size
-    # parameter sets (None: the base set) on the inside lines and on the others
-    cols_in = [0, 3] if base is not None else [None, 0, 3]
-    cols_out = list(range(6)) if base is not None else [None, 0, 1, 2, 3, 4, 5]
-    groups = ((cols_in, i_in), (cols_out, i_out))
-    M = len(cols_in) * n_in + len(cols_out) * n_out
-    th_all = np.empty((M, 6))
-    th_all[:] = theta
-    t_all = np.empty(M)
-    o = 0
-    for cols, ii in groups:
-        for col in cols:
-            sl = slice(o, o + ii.size)
-            t_all[sl] = t[ii]
-            if col is not None:
-                th_all[sl, col] += h[col]
-            o += ii.size
-    me = _edges_model(camera, th_all, R, t_all[:, None], acc, n_nodes)
-    L, Rr, A = me.left_px[:, 0], me.right_px[:, 0], me.area_px[:, 0]
-    out = []
-    o = 0
-    for cols, ii in groups:
-        k = len(cols)
-        vals = [v[o : o + k * ii.size].reshape(k, ii.size) for v in (L, Rr, A)]
-        o += k * ii.size
-        if base is not None:
-            # base values from the caller's evaluation at theta (same model and nodes)
-            vals = [np.vstack([b[ii][None, :], v]) for b, v in zip(base, vals)]
-        out.append(vals)
-    fl = np.empty((idx.size, 6))
-    fr = np.empty((idx.size, 6))
-    fa = np.empty((idx.size, 6))
-    if n_in:
-        l3, r3, _ = out[0]
-        gl, gr = dl[i_in], dr[i_in]  # copies (fancy indexing)
-        hc = h[[0, 3]][:, None]
-        gl[:, [0, 3]] = ((l3[1:] - l3[0]) / hc).T
-        gr[:, [0, 3]] = ((r3[1:] - r3[0]) / hc).T
-        fl[ins], fr[ins], fa[ins] = gl, gr, gr - gl
-    if n_out:
-        l7, r7, a7 = out[1]
-        fl[~ins] = ((l7[1:] - l7[0]) / h[:, None]).T
-        fr[~ins] = ((r7[1:] - r7[0]) / h[:, None]).T
-        fa[~ins] = ((a7[1:] - a7[0]) / h[:, None]).T
-    return fl, fr, fa
-
-
-def hybrid_jacobian(
-    camera: LineScanCamera,
-    theta: np.ndarray,
-    radius_m: float,
-    t_lines_s: np.ndarray,
-    scale: np.ndarray,
-    acceleration_mps2=(0.0, 0.0, 0.0),
-    fd_lines: np.ndarray | None = None,
-    needed: np.ndarray | None = None,
-    reach_limit: float = 0.8,
-    rel_step: float = 1e-3,
-    n_nodes: int = 3,
-    memo: dict | None = None,
-    reuse_px: float = 0.1,
-    base: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
-    analytic: bool = False,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Jacobian of the averaged model: analytic chord derivatives inside, finite differences at the ends.
-
-    On a line whose section offsets stay well inside the ball (``|x0| +
-    A + B <= reach_limit * R``, with ``A`` the exposure's and ``B`` the pixel
-    height's half-width of the offset, see :func:`ballscan.model.silhouette.silhouette`)
-    the averaged edge is the chord edge plus a small, smooth correction
-    (about half the edge's second derivative in the offset times the
-    offset's variance: 0.002-0.005 px there); its derivative is that of the
-    chord (:func:`chord_jacobian`) to 0.1 % of the largest term.  The other
-    lines (the ball's ends, where the correction grows, and ``fd_lines``)
-    get the forward differences of :func:`model_jacobian` with the averaged
-    model, in one vectorised call over those lines only: on the lines whose
-    section offsets stay inside the ball only the ``t_c`` and ``vx`` columns
-    (the correction depends on the parameters through ``x0 = vx (t - t_c)``;
-    the other columns' part is below 1e-5 of the derivatives), all six on
-    the others (:func:`_fd_rows`).
-
-    Parameters
-    ----------
-    camera, theta, radius_m, t_lines_s, scale, acceleration_mps2, rel_step, n_nodes
-        As for :func:`model_jacobian`.
-    fd_lines : ndarray of bool (N,), optional
-        Lines that always get finite differences (e.g. area residuals).
-    needed : ndarray of bool (N,), optional
-        Lines whose derivatives are used; the others are left at the chord
-        derivative (or NaN) without finite differences.
-    reach_limit : float
-        See above; 0 gives finite differences everywhere.
-    memo : dict, optional
-        Filled with the finite differences and their difference from the
-        chord derivatives; a later call that needs no new line and whose
-        ``theta`` moved the model's edges on those lines by at most
-        ``reuse_px`` (to first order) reuses them: the chord derivatives at
-        ``theta`` plus the stored correction (the whole stored row where the
-        chord has no edge).  The correction is 0.5 % of the derivative at
-        most and changes by a small fraction of that over such a move.
-        ``memo["last_fd"]`` is set to the lines of this call's finite
-        differences.
-    reuse_px : float
-        See ``memo`` (pixels).
-    base : tuple of ndarray (N,), optional
-        ``(left, right, area)`` of the averaged model at ``theta`` with
-        ``n_nodes`` nodes on every line, when the caller has them: the
-        finite differences then evaluate only the perturbed sets.
-    analytic : bool
-        On the lines that would get finite differences, the averaged
-        model's exact derivatives instead
-        (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
-        acceleration; one compiled call with the chord's,
-        :func:`ballscan._kernels.hybrid_rows`); ``memo`` is then only told
-        the lines.
-
-    Returns
-    -------
-    d_left, d_right, d_area : ndarray (N, 6)
-        Derivatives of the averaged model's left and right edges and area,
-        pixels per parameter unit.
-    """
-    theta = np.asarray(theta, dtype=float)
-    t = np.asarray(t_lines_s, dtype=float).reshape(-1)
-    R = float(radius_m)
-    if analytic and not any(acceleration_mps2):
-        # the chord's derivatives, the lines that need the averaged model's
-        # exact ones and those, in one compiled call
-        g, gw = _gauss(n_nodes)
-        no_lines = np.zeros(0, dtype=bool)
-        dl, dr, da, fd = hybrid_rows(
-            as_arg(theta), as_arg(t), R, float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
-            float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw), reach_limit * R,
-            no_lines if fd_lines is None else as_arg(fd_lines, np.bool_),
-            no_lines if needed is None else as_arg(needed, np.bool_),
-            fd_lines is not None, needed is not None,
-        )
-        if memo is not None:
-            memo["last_fd"] = fd
-        return dl, dr, da
-    u, J, chord_ok, x0, z, tau = _chord_core(camera, theta, R, t, acceleration_mps2)
-    dl, dr = J[0], J[1]
-    ax = float(acceleration_mps2[0])
-    vxt = np.abs(theta[3] + ax * tau) if ax else abs(float(theta[3]))
-    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) / (2.0 * camera.focal_px)
-    fd = ~chord_ok | (reach > reach_limit * R)
-    if fd_lines is not None:
-        fd |= fd_lines
-    if needed is not None:
-        fd &= needed
-    da = dr - dl
-    if memo is not None:
-        memo["last_fd"] = fd
-    if not fd.any():
-        return dl, dr, da
-    scale = np.asarray(scale, dtype=float)
-    if memo is not None and memo.get("theta") is not None and memo["n"] == t.size and memo["have"][fd].all():
-        # how far the model moved on those lines since (pixels, first order)
-        step = theta - memo["theta"]
-        if np.abs(memo["fd_l"][fd] @ step).max() <= reuse_px and np.abs(memo["fd_r"][fd] @ step).max() <= reuse_px:
-            # finite differences taken nearby: keep their difference to the
-            # chord derivatives (a small, slowly varying correction), or the
-            # whole row where the chord has none (lines at or past the ends)
-            keep_row = fd & chord_ok & memo["chord_ok"]
-            whole = fd & ~keep_row
-            for cur, corr, old in ((dl, memo["corr_l"], memo["fd_l"]), (dr, memo["corr_r"], memo["fd_r"]), (da, memo["corr_a"], memo["fd_a"])):
-                cur[keep_row] += corr[keep_row]
-                cur[whole] = old[whole]
-            return dl, dr, da
-    h = rel_step * scale
-    fl, fr, fa = _fd_rows(camera, theta, R, t, fd, chord_ok & (reach < R), h, dl, dr, acceleration_mps2, n_nodes, base)
-    if memo is not None:
-        if memo.get("n") != t.size:
-            for k in ("fd_l", "fd_r", "fd_a", "corr_l", "corr_r", "corr_a"):
-                memo[k] = np.zeros((t.size, 6))
-        memo["fd_l"][fd], memo["fd_r"][fd], memo["fd_a"][fd] = fl, fr, fa
-        memo["corr_l"][fd], memo["corr_r"][fd], memo["corr_a"][fd] = fl - dl[fd], fr - dr[fd], fa - da[fd]
-        memo.update(theta=theta.copy(), n=t.size, have=fd.copy(), chord_ok=chord_ok)
-    dl[fd], dr[fd], da[fd] = fl, fr, fa
-    return dl, dr, da
 
 
 # ------------------------------------------------------------------- results
@@ -1143,9 +692,9 @@ def fit_motion(
     # residual selection and the solver: a round's selection and its first
     # residuals are taken at the same point
     model_cache: dict = {}
-    evaluate = _model_evaluator(camera, R, t, acc, nn)
+    evaluate = ModelEvaluator(camera, R, t, acc, nn)
     tables = _weight_tables(edges, settings)
-    fd_memo: dict = {}  # finite-difference rows of the Jacobian (hybrid_jacobian's memo)
+    fd_memo = JacobianMemo()  # finite-difference rows of the Jacobian
     jac_cache: dict = {}  # per-line derivatives of the last Jacobian, for the next round's start
     # the partial lines levelled (area_partial_check: first, then tested)
     level_partial = [settings.area_partial_check > 0 and not settings.area_level_partial and not settings.pixels]
@@ -1184,19 +733,19 @@ def fit_motion(
 
     def solve(x_start, sel, loss, start=None):
         use_l, use_r, use_a, sl, sr, sa, ml, mr, ma, pix = sel
-        n_pix = 0 if pix is None else int(pix["n"])
+        n_pix = 0 if pix is None else pix.n_pixels
 
         def pixel_res(thetas):
             if pix is None:
                 return np.zeros((thetas.shape[0], 0))
-            return _pixel_residuals(camera, thetas, R, pix, acc, nn)
+            return pixel_residuals(camera, thetas, R, pix, acc, nn)
 
         def pixel_jac(th, base_r):
             # the pixel residuals' Jacobian (M, 6) at th, whose residuals are base_r
             if pix is None:
                 return np.zeros((0, 6))
             if settings.pixel_jacobian == "analytic" and not np.any(acc):
-                return _pixel_residuals_jacobian(camera, th, R, pix, nn)
+                return pixel_residuals_jacobian(camera, th, R, pix, nn)
             h = settings_rel_step * scale
             return ((pixel_res(th + np.diag(h)) - base_r) / h[:, None]).T
 
@@ -1241,7 +790,7 @@ def fit_motion(
                 )
             if pix is None:
                 # lines whose area derivative is the averaged model's (finite differences)
-                fd_rows = use_a | fd_memo["last_fd"] if settings.jacobian_reach > 0 else used
+                fd_rows = use_a | fd_memo.last_fd if settings.jacobian_reach > 0 else used
                 jac_cache.update(dl=dl, dr=dr, da=da, used=used, fd_rows=fd_rows)
             else:
                 jac_cache.clear()
@@ -1302,7 +851,7 @@ def fit_motion(
     def edge_lines(sel) -> int:
         # lines with both edges, as edges or as the pixels of their windows
         pix = sel[-1]
-        return int((sel[0] & sel[1]).sum()) + (0 if pix is None else pix["n_spread"])
+        return int((sel[0] & sel[1]).sum()) + (0 if pix is None else pix.n_spread)
 
     sel = problem(theta0)
     if level_partial[0]:
@@ -1315,7 +864,7 @@ def fit_motion(
     n_edge_lines = edge_lines(sel)
     fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
     n_par = 6 + int(fit_b)
-    m_res = int(use_l.sum() + use_r.sum() + use_a.sum()) + (0 if sel[-1] is None else sel[-1]["n"])
+    m_res = int(use_l.sum() + use_r.sum() + use_a.sum()) + (0 if sel[-1] is None else sel[-1].n_pixels)
     if n_edge_lines < settings.min_edge_lines or m_res <= n_par:
         return _degenerate_result(initial, n_edge_lines, settings, use_l, use_r, use_a, t0)
     x = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
@@ -1379,7 +928,7 @@ def fit_motion(
     use_l, use_r, use_a, sl, sr, sa = sel[:6]
     levelled = (level_partial[0] or settings.area_level_partial) and bool(_partial_lines(use_a, model_at(th), tables).any())
     # the pixel windows' (or ends') free brightnesses are parameters too
-    dof = r.size - n_par - (0 if sel[-1] is None else sel[-1]["n_groups"])
+    dof = r.size - n_par - (0 if sel[-1] is None else sel[-1].n_groups)
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
     nl, nr = int(use_l.sum()), int(use_r.sum())
     inflation = 1.0
@@ -1598,106 +1147,20 @@ def _pixel_spec(
     present = np.zeros(int(g.max()) + 1, dtype=np.int64)
     present[g] = 1
     g_dense = (np.cumsum(present) - 1)[g]
-    return dict(
-        t=edges.t_s[idx],
-        cols=cols_k,
+    return PixelWindows(
+        t_s=edges.t_s[idx],
+        cols_px=cols_k,
         mask=m,
-        p=packed(prof[rows, ci], 0.0),  # finite (the mask)
-        w=packed(w, 0.0),
+        values=packed(prof[rows, ci], 0.0),  # finite (the mask)
+        weights=packed(w, 0.0),
         shade=packed(shade, 1.0),
         group=packed(g_dense.astype(np.int64), np.int64(-1)),
         n_groups=int(g_dense.max()) + 1,
-        n=int(rows.size),
+        n_pixels=int(rows.size),
         n_spread=int(spread_p[idx].sum()),
         nodes=settings.pixel_nodes,
     )
 
-
-def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """Averaged coverage of pixels by the model's chord samples.
-
-    Parameters
-    ----------
-    u_lo, u_hi, wgt : ndarray (P, N, 3, n)
-        Chord ends (pixels) and weights of each sample of each line
-        (``samples`` of :func:`averaged_model` with ``return_samples``).
-    cols : ndarray (C,) or (N, C)
-        Pixel centres (pixels), shared by the lines or one row per line; a
-        pixel spans ``[col - 1/2, col + 1/2]``.
-
-    Returns
-    -------
-    ndarray (P, N, C)
-        Sum over the samples of weight times the overlap of ``[lo, hi]``
-        with the pixel; NaN on a line with a NaN sample.
-
-    Notes
-    -----
-    Where a line's pixel centres lie on a grid of unit step (any order, gaps
-    allowed: an edge's offsets, the fit's compacted windows, a bound's
-    columns) the sum is a histogram of the samples' ends by pixel and its
-    cumulative sum (:func:`ballscan._kernels.coverage_grid`): O(samples +
-    pixels) per line.  Other centres take the direct sum over samples and
-    pixels.
-    """
-    c = np.asarray(cols, dtype=float)
-    lead = u_lo.shape[:-2]
-    P, N = int(np.prod(lead[:-1])), lead[-1]
-    c2 = np.broadcast_to(c, (N, c.shape[-1]))
-    if c2.shape[-1] == 0 or not np.all(np.isfinite(c2)):
-        return _pixel_coverage_direct(u_lo, u_hi, wgt, c)
-    base = c2.min(axis=1)
-    rel = c2 - base[:, None]
-    idx = np.rint(rel)
-    if not np.all(np.abs(rel - idx) < 1e-9):
-        return _pixel_coverage_direct(u_lo, u_hi, wgt, c)
-    idx = as_arg(idx, np.int64)
-    shp = (P, N, -1)
-    out = coverage_grid(*(as_arg(a.reshape(shp)) for a in (u_lo, u_hi, wgt)), idx, as_arg(base), int(idx.max()) + 1)
-    return out.reshape(lead + (c2.shape[-1],))
-
-
-def _pixel_coverage_direct(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """:func:`pixel_coverage` as the direct sum over samples and pixels (any pixel centres; the reference of the grid's)."""
-    a = np.asarray(cols, dtype=float) - 0.5
-    if a.ndim == 2:
-        a = a[:, None, None, :]
-    ov = np.clip(np.minimum(u_hi[..., None], a + 1.0) - np.maximum(u_lo[..., None], a), 0.0, 1.0)
-    return (wgt[..., None] * ov).sum(axis=(-3, -2))
-
-
-def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nodes: int) -> np.ndarray:
-    """Whitened residuals ``(B_g s cov - p) / sigma`` of the fitted pixels, (P, M).
-
-    ``cov`` is each pixel's coverage averaged over the exposure and the
-    pixel's height (``pixel_nodes`` Gauss-Legendre nodes per piece), ``s``
-    the ball's relative surface brightness there and ``B_g`` the brightness
-    of the pixel's window (or end), the least-squares value for each
-    parameter set (variable projection): the coverage's shape counts, the
-    local level comes from the pixels.
-    """
-    # (the samples only: no edge spread or validity)
-    me = _model_core(camera, thetas, R, pix["t"], acc, max(n_nodes, pix["nodes"]), True, full=False)
-    P, n_rows = thetas.shape[0], pix["cols"].shape[0]
-    u_lo, u_hi, wgt = (as_arg(a.reshape(P, n_rows, -1)) for a in me.samples)
-    return _kernel_pixel_residuals(
-        u_lo, u_hi, wgt, pix["cols"], pix["mask"], pix["shade"], pix["w"], pix["p"], pix["group"], pix["n_groups"], pix["n"]
-    )
-
-
-def _pixel_residuals_jacobian(camera, theta: np.ndarray, R: float, pix: dict, n_nodes: int) -> np.ndarray:
-    """Exact derivatives (M, 6) of :func:`_pixel_residuals` at one parameter set ``theta`` (no acceleration).
-
-    One compiled pass (:func:`ballscan._kernels.pixel_residuals_jacobian`)
-    in place of six perturbed evaluations of the samples and the coverage.
-    """
-    g, gw = _gauss(max(n_nodes, pix["nodes"]))
-    _, J = _kernel_pixel_residuals_jacobian(
-        as_arg(theta), as_arg(pix["t"]), float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px),
-        float(camera.k1), float(camera.k2), as_arg(g), as_arg(gw),
-        pix["cols"], pix["mask"], pix["shade"], pix["w"], pix["p"], pix["group"], pix["n_groups"], pix["n"],
-    )
-    return J
 
 
 def _block_scale(*sides: np.ndarray, sizes=(4, 8, 16)) -> float:

@@ -27,7 +27,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
-from .fit import FitSettings, averaged_model, param_scale, pixel_coverage, propagate, synthetic_edges, whitened_jacobian
+from ..model.averaged import averaged_model
+from ..model.pixels import pixel_coverage
+from .fit import FitSettings, param_scale, propagate, synthetic_edges, whitened_jacobian
 from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
