@@ -7,7 +7,10 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera
 from ballscan.model.averaged import JacobianMemo, averaged_model, chord_jacobian, hybrid_jacobian, model_jacobian
-from ballscan.solve.fit import FitSettings, fit_motion, param_scale, propagate, synthetic_edges
+from ballscan.solve.fit import fit_motion
+from ballscan.solve.settings import FitSettings
+from ballscan.solve.synthetic import synthetic_edges
+from ballscan.solve.uncertainty import param_scale, propagate
 from ballscan.geometry.motion import PARAM_NAMES, BallMotion
 from ballscan.model.silhouette import silhouette
 
@@ -348,7 +351,7 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
 def test_pixel_fit_is_exact_on_its_own_model(groups):
     """The pixel residuals vanish at the truth for a profile made by the model; the fit returns there from afar."""
     from ballscan.model.pixels import pixel_residuals
-    from ballscan.solve.fit import _pixel_spec
+    from ballscan.solve.problem import pixel_windows
 
     cam, m = _serve()
     e = _with_profile(cam, m, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False))
@@ -357,7 +360,7 @@ def test_pixel_fit_is_exact_on_its_own_model(groups):
     me1 = type(me)(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
     full = e.signal & me1.valid
     spread = full & (me1.spread_px >= st.pixel_min_spread_px)
-    pix = _pixel_spec(e, me1, full & ~spread & ~(e.left_ok & e.right_ok), spread, m.t_c_s, st)
+    pix = pixel_windows(e, me1, full & ~spread & ~(e.left_ok & e.right_ok), spread, m.t_c_s, st)
     assert pix is not None and pix.n_spread > 10 and pix.n_pixels > 500
     assert pix.n_groups == (2 if groups == "end" else len(np.unique(pix.group[pix.mask])))
     r = pixel_residuals(cam, m.to_params()[None], m.radius_m, pix, m.acceleration_mps2, 16)
@@ -420,7 +423,7 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     off in the t_c column at 30 degrees.
     """
     from ballscan.model.pixels import pixel_residuals, pixel_residuals_jacobian
-    from ballscan.solve.fit import _pixel_spec
+    from ballscan.solve.problem import pixel_windows
 
     a = np.radians(deg)
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
@@ -431,7 +434,7 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     me1 = type(me)(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
     full = e.signal & me1.valid
     spread = full & (me1.spread_px >= 0.0) & (e.left_ok | e.right_ok)
-    pix = _pixel_spec(e, me1, full & ~spread, spread, m.t_c_s, st)
+    pix = pixel_windows(e, me1, full & ~spread, spread, m.t_c_s, st)
     assert pix is not None and pix.n_pixels > 300
     # a little off the truth, where the residuals are not the profile's noise alone
     th = m.to_params() + 0.3 * param_scale(cam, m) * np.array([1.0, -1.0, 0.5, 0.7, -0.4, 0.9])

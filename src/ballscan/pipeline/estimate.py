@@ -31,7 +31,9 @@ from ..geometry.camera import LineScanCamera, line_times
 from ..measure.detection import BallRegion, ColumnModel, Detection, background_at, detect, median, region_background
 from ..measure.edges import matched_edges, measure_edges, with_limb
 from ..errors import ImageFileError
-from ..solve.fit import FitSettings, fit_motion, propagate
+from ..solve.fit import fit_motion
+from ..solve.settings import FitSettings
+from ..solve.uncertainty import propagate
 from ..measure.flatfield import column_gains, flat_fielded
 from ..measure.images import LineImage
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
