@@ -342,7 +342,7 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
         edge_bias_px=float(b),
         edge_bias_sigma_px=float(math.sqrt(cov_full[6, 6])) if fit_b else 0.0,
         n_edges=sum(s.n_left + s.n_right for s in sels),
-        n_area_lines=sum(int(s.use_area.sum()) for s in sels),
+        n_area_lines=sum(s.n_area for s in sels),
         run_time_s=time.perf_counter() - t0,
         flags=flags,
         n_rejected=rounds.n_rejected,
@@ -364,7 +364,7 @@ def _degenerate_result(initial: BallMotion, n_edge_lines: int, settings: FitSett
         converged=False,
         undetermined=PARAM_NAMES,
         n_edges=sum(s.n_left + s.n_right for s in sels),
-        n_area_lines=sum(int(s.use_area.sum()) for s in sels),
+        n_area_lines=sum(s.n_area for s in sels),
         run_time_s=time.perf_counter() - t0,
         flags=("degenerate",),
     )

@@ -32,7 +32,7 @@ edges, right edges, areas, pixels) and Jacobian rows at fixed selections.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -93,6 +93,14 @@ class Selection:
         Their measured values, pixels.
     pixels : PixelWindows or None
         The fitted pixels (after the edges and areas), or None.
+    n_left, n_right, n_area, n_pixels : int
+        Residuals of each kind (derived).
+    n_residuals : int
+        All of them (derived).
+    n_groups : int
+        Free brightnesses of the pixels, nuisance parameters (derived).
+    n_edge_lines : int
+        Lines with both edges, as edges or as the pixels of their windows (derived).
     """
 
     use_left: np.ndarray
@@ -105,32 +113,27 @@ class Selection:
     meas_right: np.ndarray
     meas_area: np.ndarray
     pixels: PixelWindows | None = None
+    n_left: int = field(init=False)
+    n_right: int = field(init=False)
+    n_area: int = field(init=False)
+    n_pixels: int = field(init=False)
+    n_residuals: int = field(init=False)
+    n_groups: int = field(init=False)
+    n_edge_lines: int = field(init=False)
 
-    @property
-    def n_left(self) -> int:
-        return int(self.use_left.sum())
-
-    @property
-    def n_right(self) -> int:
-        return int(self.use_right.sum())
-
-    @property
-    def n_pixels(self) -> int:
-        return 0 if self.pixels is None else self.pixels.n_pixels
-
-    @property
-    def n_residuals(self) -> int:
-        return int(self.use_left.sum() + self.use_right.sum() + self.use_area.sum()) + self.n_pixels
-
-    @property
-    def n_groups(self) -> int:
-        """Free brightnesses of the pixels (nuisance parameters)."""
-        return 0 if self.pixels is None else self.pixels.n_groups
-
-    @property
-    def n_edge_lines(self) -> int:
-        """Lines with both edges, as edges or as the pixels of their windows."""
-        return int((self.use_left & self.use_right).sum()) + (0 if self.pixels is None else self.pixels.n_spread)
+    def __post_init__(self) -> None:
+        # the counts, once (the fit reads them several times per round)
+        px = self.pixels
+        n_l, n_r, n_a = int(self.use_left.sum()), int(self.use_right.sum()), int(self.use_area.sum())
+        n_p = 0 if px is None else px.n_pixels
+        put = object.__setattr__
+        put(self, "n_left", n_l)
+        put(self, "n_right", n_r)
+        put(self, "n_area", n_a)
+        put(self, "n_pixels", n_p)
+        put(self, "n_residuals", n_l + n_r + n_a + n_p)
+        put(self, "n_groups", 0 if px is None else px.n_groups)
+        put(self, "n_edge_lines", int((self.use_left & self.use_right).sum()) + (0 if px is None else px.n_spread))
 
 
 @dataclass(frozen=True)
@@ -400,9 +403,10 @@ def pixel_windows(
 
 
 
-@dataclass(frozen=True)
 class LineDerivatives:
     """Per-line derivatives of a block's last Jacobian, for the next round's start (pixels per parameter unit).
+
+    A plain record (slots: made once per Jacobian, in the solver's loop).
 
     Attributes
     ----------
@@ -413,11 +417,10 @@ class LineDerivatives:
         Lines whose area derivative is the averaged model's.
     """
 
-    d_left: np.ndarray
-    d_right: np.ndarray
-    d_area: np.ndarray
-    used: np.ndarray
-    fd_rows: np.ndarray
+    __slots__ = ("d_left", "d_right", "d_area", "used", "fd_rows")
+
+    def __init__(self, d_left: np.ndarray, d_right: np.ndarray, d_area: np.ndarray, used: np.ndarray, fd_rows: np.ndarray):
+        self.d_left, self.d_right, self.d_area, self.used, self.fd_rows = d_left, d_right, d_area, used, fd_rows
 
 
 class BlockState:
@@ -489,7 +492,7 @@ class BlockState:
         """
         s, edges = self.settings, self.block.edges
         me = self.model_at(theta)
-        me = ModelEdges(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
+        me = ModelEdges(me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0])
         ul, ur, ua, wl, wr = select_lines_of(edges, me, s)
         ul, ur = ul & ~self.rejected_left, ur & ~self.rejected_right
         pix = None
@@ -568,8 +571,10 @@ class FitProblem:
     def residuals(self, x: np.ndarray) -> np.ndarray:
         """Whitened residuals at ``x`` (the blocks' concatenated)."""
         th, b = x[:6], (x[6] if self.fit_bias else 0.0)
-        parts = [self._block_residuals(t, th, b) for t in self.terms]
-        r = parts[0] if len(parts) == 1 else np.concatenate(parts)
+        if len(self.terms) == 1:
+            r = self._block_residuals(self.terms[0], th, b)
+        else:
+            r = np.concatenate([self._block_residuals(t, th, b) for t in self.terms])
         self.last_key, self.last_residuals = x.tobytes(), r
         return r
 
@@ -589,6 +594,8 @@ class FitProblem:
         """Residuals and Jacobian at ``x`` (the residuals reused when they were the last computed)."""
         if self.settings.jacobian_reach > 0:
             r = self.last_residuals if self.last_key == x.tobytes() else self.residuals(x)
+            if len(self.terms) == 1:
+                return r, self._hybrid_rows(self.terms[0], x[:6], r)
             rows = []
             o = 0
             for t in self.terms:
@@ -613,9 +620,12 @@ class FitProblem:
             needed=t.used, reach_limit=s.jacobian_reach, rel_step=_REL_STEP, n_nodes=s.jacobian_nodes,
             memo=st.memo, reuse_px=s.jacobian_reuse_px, base=base, analytic=s.edge_jacobian == "analytic",
         )
+        if t.sel.pixels is None:
+            st.line_derivatives = LineDerivatives(dl, dr, da, t.used, t.sel.use_area | st.memo.last_fd)
+            return self._assemble(t, dl, dr, da, _NO_PIXEL_ROWS)
+        st.line_derivatives = None
         # the base set's pixel residuals are the tail of r
         jp = self._pixel_jac(st, t.sel.pixels, th, r[r.size - t.n_pix :])
-        self._keep(t, dl, dr, da, t.sel.use_area | st.memo.last_fd)
         return self._assemble(t, dl, dr, da, jp)
 
     def _fd_block(self, t: _BlockTerms, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
