@@ -546,6 +546,12 @@ class FitProblem:
 
     Attributes
     ----------
+    terms : tuple
+        Per block: its state and selection, with the selected lines' indices,
+        measurements and sigmas converted once into the compiled kernels' form.
+    fit_bias : bool
+    settings : FitSettings
+        The blocks' (shared) settings.
     last_key : bytes or None
         Bytes of the ``x`` of the last residuals.
     last_residuals : ndarray or None
