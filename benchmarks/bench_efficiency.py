@@ -185,7 +185,7 @@ def main() -> None:
 
     from joblib import Parallel, delayed
 
-    from ballscan.solve.fit import FitSettings
+    from ballscan.solve.settings import FitSettings
 
     variants = tuple(a.variants.split(","))
     spread = {}

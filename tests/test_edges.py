@@ -206,7 +206,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     from ballscan.measure.edges import with_limb
     from ballscan.measure.matched import matched_edges
     from ballscan.pipeline.estimate import _full_background
-    from ballscan.solve.fit import averaged_model
+    from ballscan.model.averaged import averaged_model
     from ballscan.measure.images import LineImage
     from ballscan.geometry.motion import BallMotion
     from ballscan.model.render import Appearance, RenderSettings, render
@@ -303,7 +303,9 @@ def test_matched_edges_get_their_own_floor_in_the_fit():
     from dataclasses import replace
 
     from ballscan.geometry.camera import LineScanCamera
-    from ballscan.solve.fit import FitSettings, _weight_tables, synthetic_edges
+    from ballscan.solve.problem import weight_tables
+    from ballscan.solve.settings import FitSettings
+    from ballscan.solve.synthetic import synthetic_edges
     from ballscan.geometry.motion import BallMotion
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
@@ -312,13 +314,13 @@ def test_matched_edges_get_their_own_floor_in_the_fit():
     flag = np.zeros(e.lines.size, dtype=bool)
     flag[::2] = True
     st = FitSettings()
-    T = _weight_tables(replace(e, left_matched=flag, right_matched=~flag), st)
+    T = weight_tables(replace(e, left_matched=flag, right_matched=~flag), st)
     s = np.nan_to_num(e.left_sigma_px)
-    assert np.allclose(T["sl_n"][flag], np.sqrt(s[flag] ** 2 + st.matched_floor_px**2))
-    assert np.allclose(T["sl_n"][~flag], np.sqrt(s[~flag] ** 2 + st.edge_floor_px**2))
-    assert np.allclose(T["sr_n"][~flag], np.sqrt(np.nan_to_num(e.right_sigma_px)[~flag] ** 2 + st.matched_floor_px**2))
+    assert np.allclose(T.sigma_left[flag], np.sqrt(s[flag] ** 2 + st.matched_floor_px**2))
+    assert np.allclose(T.sigma_left[~flag], np.sqrt(s[~flag] ** 2 + st.edge_floor_px**2))
+    assert np.allclose(T.sigma_right[~flag], np.sqrt(np.nan_to_num(e.right_sigma_px)[~flag] ** 2 + st.matched_floor_px**2))
     # without flags every edge has the window floor
-    assert np.allclose(_weight_tables(e, st)["sl_n"], np.sqrt(s**2 + st.edge_floor_px**2))
+    assert np.allclose(weight_tables(e, st).sigma_left, np.sqrt(s**2 + st.edge_floor_px**2))
 
 
 # ---------------------------------------------------------------------------

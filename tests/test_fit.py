@@ -6,17 +6,11 @@ import numpy as np
 import pytest
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.fit import (
-    FitSettings,
-    averaged_model,
-    chord_jacobian,
-    fit_motion,
-    hybrid_jacobian,
-    model_jacobian,
-    param_scale,
-    propagate,
-    synthetic_edges,
-)
+from ballscan.model.averaged import JacobianMemo, averaged_model, chord_jacobian, hybrid_jacobian, model_jacobian
+from ballscan.solve.fit import fit_motion
+from ballscan.solve.settings import FitSettings
+from ballscan.solve.synthetic import synthetic_edges
+from ballscan.solve.uncertainty import param_scale, propagate
 from ballscan.geometry.motion import PARAM_NAMES, BallMotion
 from ballscan.model.silhouette import silhouette
 
@@ -342,7 +336,8 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
     """Synthetic edges plus the exact averaged coverage of every pixel as their profile (flat ball, level 1)."""
     from dataclasses import replace
 
-    from ballscan.solve.fit import _model_core, pixel_coverage
+    from ballscan.model.averaged import _model_core
+    from ballscan.model.pixels import pixel_coverage
 
     me = _model_core(cam, m.to_params()[None], m.radius_m, e.t_s, m.acceleration_mps2, 16, True)
     lo = int(np.floor(np.nanmin(e.left_px))) - 12
@@ -355,7 +350,8 @@ def _with_profile(cam, m, e, noise: float = 0.0, seed: int = 0):
 @pytest.mark.parametrize("groups", ["end", "window"])
 def test_pixel_fit_is_exact_on_its_own_model(groups):
     """The pixel residuals vanish at the truth for a profile made by the model; the fit returns there from afar."""
-    from ballscan.solve.fit import _pixel_residuals, _pixel_spec
+    from ballscan.model.pixels import pixel_residuals
+    from ballscan.solve.problem import pixel_windows
 
     cam, m = _serve()
     e = _with_profile(cam, m, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False))
@@ -364,10 +360,10 @@ def test_pixel_fit_is_exact_on_its_own_model(groups):
     me1 = type(me)(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
     full = e.signal & me1.valid
     spread = full & (me1.spread_px >= st.pixel_min_spread_px)
-    pix = _pixel_spec(e, me1, full & ~spread & ~(e.left_ok & e.right_ok), spread, m.t_c_s, st)
-    assert pix is not None and pix["n_spread"] > 10 and pix["n"] > 500
-    assert pix["n_groups"] == (2 if groups == "end" else len(np.unique(pix["group"][pix["mask"]])))
-    r = _pixel_residuals(cam, m.to_params()[None], m.radius_m, pix, m.acceleration_mps2, 16)
+    pix = pixel_windows(e, me1, full & ~spread & ~(e.left_ok & e.right_ok), spread, m.t_c_s, st)
+    assert pix is not None and pix.n_spread > 10 and pix.n_pixels > 500
+    assert pix.n_groups == (2 if groups == "end" else len(np.unique(pix.group[pix.mask])))
+    r = pixel_residuals(cam, m.to_params()[None], m.radius_m, pix, m.acceleration_mps2, 16)
     assert np.abs(r).max() < 0.02  # normalised units over sigma 1e-3: coverage exact to 2e-5
     init = BallMotion(0.0335, 0.00172, (0, -0.079, 4.3), (43.0, 3.5, -3.0))
     fit = fit_motion(cam, e, init, st)
@@ -426,7 +422,8 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     off).  The forward differences the fit used before (step 1e-3) were 4 %
     off in the t_c column at 30 degrees.
     """
-    from ballscan.solve.fit import _pixel_residuals, _pixel_residuals_jacobian, _pixel_spec
+    from ballscan.model.pixels import pixel_residuals, pixel_residuals_jacobian
+    from ballscan.solve.problem import pixel_windows
 
     a = np.radians(deg)
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
@@ -437,19 +434,19 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
     me1 = type(me)(*(getattr(me, k)[0] for k in ("left_px", "right_px", "presence", "area_px", "spread_px", "valid")))
     full = e.signal & me1.valid
     spread = full & (me1.spread_px >= 0.0) & (e.left_ok | e.right_ok)
-    pix = _pixel_spec(e, me1, full & ~spread, spread, m.t_c_s, st)
-    assert pix is not None and pix["n"] > 300
+    pix = pixel_windows(e, me1, full & ~spread, spread, m.t_c_s, st)
+    assert pix is not None and pix.n_pixels > 300
     # a little off the truth, where the residuals are not the profile's noise alone
     th = m.to_params() + 0.3 * param_scale(cam, m) * np.array([1.0, -1.0, 0.5, 0.7, -0.4, 0.9])
-    J = _pixel_residuals_jacobian(cam, th, m.radius_m, pix, 3)
+    J = pixel_residuals_jacobian(cam, th, m.radius_m, pix, 3)
     # vz, the weak axis, moves the residuals so little that a small step is round-off
     h = np.array([1e-5, 1e-5, 1e-5, 1e-5, 1e-5, 1e-3]) * param_scale(cam, m)
     Jc = np.empty_like(J)
     for j in range(6):
         d = np.zeros(6)
         d[j] = h[j]
-        rp = _pixel_residuals(cam, (th + d)[None], m.radius_m, pix, (0.0, 0.0, 0.0), 3)[0]
-        rm = _pixel_residuals(cam, (th - d)[None], m.radius_m, pix, (0.0, 0.0, 0.0), 3)[0]
+        rp = pixel_residuals(cam, (th + d)[None], m.radius_m, pix, (0.0, 0.0, 0.0), 3)[0]
+        rm = pixel_residuals(cam, (th - d)[None], m.radius_m, pix, (0.0, 0.0, 0.0), 3)[0]
         Jc[:, j] = (rp - rm) / (2 * h[j])
     err = np.linalg.norm(J - Jc, axis=0) / np.linalg.norm(Jc, axis=0)
     assert np.all(err < 2e-6), err
@@ -458,7 +455,8 @@ def test_pixel_jacobian_equals_central_differences(groups, distorted, deg):
 @pytest.mark.parametrize("grid", ["shared", "compacted", "descending_fractional", "wide"])
 def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
     """The cumulative-histogram coverage (unit-step grids) against the direct sum over samples and pixels."""
-    from ballscan.solve.fit import _model_core, _pixel_coverage_direct, pixel_coverage
+    from ballscan.model.averaged import _model_core
+    from ballscan.model.pixels import _pixel_coverage_direct, pixel_coverage
 
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 0.0, 15.0))
@@ -619,9 +617,9 @@ def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
     for a, b in zip(got, (dl, dr, da, fd)):
         assert np.array_equal(a, b)
     assert fd.any() and not fd.all()
-    memo = {}
+    memo = JacobianMemo()
     via = hybrid_jacobian(cam, theta, R, t, param_scale(cam, m), fd_lines=fd_lines, needed=needed, memo=memo, analytic=True)
-    assert all(np.array_equal(a, b) for a, b in zip(via, (dl, dr, da))) and np.array_equal(memo["last_fd"], fd)
+    assert all(np.array_equal(a, b) for a, b in zip(via, (dl, dr, da))) and np.array_equal(memo.last_fd, fd)
 
 
 def test_step_matrix_kernels_equal_their_numpy_forms():

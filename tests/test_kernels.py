@@ -7,7 +7,9 @@ import pytest
 
 from ballscan import _kernels as K
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.fit import _model_core, param_scale, pixel_coverage
+from ballscan.model.averaged import _model_core
+from ballscan.model.pixels import pixel_coverage
+from ballscan.solve.uncertainty import param_scale
 from ballscan.geometry.motion import BallMotion
 from ballscan.measure.shading import surface_normals
 

@@ -454,7 +454,7 @@ def test_line_levels_equal_the_numpy_form(shaded_ball):
 
 
 def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
-    from ballscan.solve.fit import averaged_model
+    from ballscan.model.averaged import averaged_model
     from ballscan.measure.shading import _line_level_scatter
 
     edges, limb = shaded_ball

@@ -6,7 +6,9 @@ import numpy as np
 import pytest
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.fit import FitSettings, fit_motion, synthetic_edges
+from ballscan.solve.fit import fit_motion
+from ballscan.solve.settings import FitSettings
+from ballscan.solve.synthetic import synthetic_edges
 from ballscan.geometry.motion import BallMotion
 from ballscan.solve.precision import PrecisionBound, _pixel_fisher, _pixel_model, edge_crlb, pixel_crlb, sensor_crlb
 from ballscan.model.render import SensorNoise

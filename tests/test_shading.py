@@ -12,7 +12,7 @@ from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.measure.detection import detect
 from ballscan.measure.edges import EdgeMeasurements, measure_edges, with_limb
 from ballscan.pipeline.estimate import _full_background, estimate_image
-from ballscan.solve.fit import averaged_model
+from ballscan.model.averaged import averaged_model
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render

@@ -41,21 +41,15 @@ U_BANDS = (0.0, 0.5, 0.8, 0.9, 0.95, 0.98, 0.995, 1.0, 9.0)
 
 def _install_recorder(log: list) -> None:
     from ballscan.solve import fit as F
+    from ballscan.solve.problem import BlockState
 
     if getattr(F, "_recorder_installed", None) is not None:
         return F._recorder_installed
-    orig_lm, orig_wm, orig_ps = F._levenberg_marquardt, F._weights_masked, F._pixel_spec
-    state = {"pix": None}
+    orig_lm, orig_select = F.levenberg_marquardt, BlockState.select
 
-    def ps(*a, **k):
-        out = orig_ps(*a, **k)
-        state["pix"] = out
-        return out
-
-    def wm(edges, *a, **k):
-        out = orig_wm(edges, *a, **k)
-        log.append(("sel", edges, out, state["pix"]))
-        state["pix"] = None
+    def select(self, *a, **k):
+        out = orig_select(self, *a, **k)
+        log.append(("sel", self.block.edges, out))
         return out
 
     def lm(*a, **k):
@@ -63,7 +57,7 @@ def _install_recorder(log: list) -> None:
         log.append(("lm", out))
         return out
 
-    F._levenberg_marquardt, F._weights_masked, F._pixel_spec = lm, wm, ps
+    F.levenberg_marquardt, BlockState.select = lm, select
     F._recorder_installed = log
     return log
 
@@ -100,9 +94,10 @@ def run_one(args):
     # the last solve and the selection it solved
     i_lm = max(i for i, e in enumerate(log) if e[0] == "lm")
     i_sel = max(i for i, e in enumerate(log[:i_lm]) if e[0] == "sel")
-    x, *_, r, J = log[i_lm][1]
-    _, edges, w, pix = log[i_sel]
-    use_l, use_r, use_a = w[0], w[1], w[2]
+    sol = log[i_lm][1]
+    x, r, J = sol.x, sol.residuals, sol.jacobian
+    _, edges, sel = log[i_sel]
+    use_l, use_r, use_a, pix = sel.use_left, sel.use_right, sel.use_area, sel.pixels
     t = edges.t_s
     # row -> (time, kind)
     kinds, times = [], []
@@ -116,11 +111,11 @@ def run_one(args):
     times.append(t[idx])
     kinds.append(np.full(idx.size, "area"))
     if pix is not None:
-        rows = np.nonzero(pix["mask"])[0]
-        times.append(pix["t"][rows])
+        rows = np.nonzero(pix.mask)[0]
+        times.append(pix.t_s[rows])
         # the spread lines are those with an edge pair in the selection before the pixels took them
         # (edge pairs measured: the spread lines; the end lines have none)
-        n_sp = np.isin(pix["t"], t[edges.left_ok & edges.right_ok])
+        n_sp = np.isin(pix.t_s, t[edges.left_ok & edges.right_ok])
         kinds.append(np.where(n_sp[rows], "px_spread", "px_end"))
     times = np.concatenate(times)
     kinds = np.concatenate(kinds)
@@ -142,7 +137,7 @@ def nominal_pixel_model(factor, value, nodes):
     ``G`` (the DN derivatives, (6, lines, columns)).
     """
     from ballscan.lab import experiments as ex
-    from ballscan.solve.fit import averaged_model
+    from ballscan.model.averaged import averaged_model
     from ballscan.solve.precision import _n_lines_for, _pixel_model
     from bench_efficiency import _spec
 

@@ -5,7 +5,7 @@ from bench_efficiency import _spec
 from ballscan.lab import experiments as ex
 from ballscan.model.render import render
 from ballscan.solve.precision import _pixel_model, _n_lines_for
-from ballscan.solve.fit import averaged_model
+from ballscan.model.averaged import averaged_model
 f,v=sys.argv[1],float(sys.argv[2]); trials=[int(x) for x in sys.argv[3].split(",")]
 out=[]
 for k in trials:

@@ -36,7 +36,8 @@ from .._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb
 from ..geometry.camera import LineScanCamera
 from .edges import EdgeMeasurements
 from ..errors import GeometryError
-from ..solve.fit import averaged_model, pixel_coverage
+from ..model.averaged import averaged_model
+from ..model.pixels import pixel_coverage
 from ..geometry.motion import BallMotion
 
 __all__ = ["LimbProfile", "ShadingModel", "ball_limb", "fit_shading", "limb_profile", "shade_profile", "surface_normals"]
@@ -374,7 +375,7 @@ class LimbProfile:
 
         Unlike :meth:`__call__`, which samples points, this is each whole
         pixel's overlap with the averaged silhouette's chord samples
-        (:func:`ballscan.solve.fit.pixel_coverage`), placed so that the model's mean
+        (:func:`ballscan.model.pixels.pixel_coverage`), placed so that the model's mean
         edge sits at offset 0.  Near a ball's ends a spread edge's samples
         have long tails: a pixel 2-3 px inside the mean edge is still
         uncovered for a few per cent of them, which a few point samples miss
@@ -582,7 +583,7 @@ def limb_profile(
         The normalisation of :func:`ballscan.measure.edges.measure_edges`, DN.
     spread_px, left_px, right_px : ndarray (n_lines,)
         The averaged silhouette's edge spread and mean edges of every line
-        (:func:`ballscan.solve.fit.averaged_model` at ``motion``), pixels; NaN
+        (:func:`ballscan.model.averaged.averaged_model` at ``motion``), pixels; NaN
         where the ball is absent.
     sharp_px : float
         Lines whose edges spread less than this over the exposure and the

@@ -33,7 +33,9 @@ from ..measure.robust import median
 from ..measure.edges import measure_edges, with_limb
 from ..measure.matched import matched_edges
 from ..errors import ImageFileError
-from ..solve.fit import FitSettings, fit_motion, propagate
+from ..solve.fit import fit_motion
+from ..solve.settings import FitSettings
+from ..solve.uncertainty import propagate
 from ..measure.flatfield import column_gains, flat_fielded
 from ..measure.images import LineImage
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess

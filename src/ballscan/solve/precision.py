@@ -4,7 +4,7 @@ Two bounds are provided:
 
 :func:`edge_crlb`
     Fisher information of the *edge measurements* under the fit's own model
-    and weights, ``F = J^T W J`` (:func:`ballscan.solve.fit.whitened_jacobian`):
+    and weights, ``F = J^T W J`` (:func:`ballscan.solve.problem.whitened_jacobian`):
     the best any unbiased estimator using these edges can do, and what
     :func:`ballscan.solve.fit.fit_motion` should reach with edges of the stated noise.
 :func:`pixel_crlb`
@@ -27,7 +27,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
-from .fit import FitSettings, averaged_model, param_scale, pixel_coverage, propagate, synthetic_edges, whitened_jacobian
+from ..model.averaged import averaged_model
+from ..model.pixels import pixel_coverage
+from .problem import whitened_jacobian
+from .settings import FitSettings
+from .synthetic import synthetic_edges
+from .uncertainty import param_scale, propagate
 from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
@@ -57,7 +62,7 @@ class PrecisionBound:
     velocity_sigma_mps : ndarray (3,)
     speed_sigma_mps : float
         RMS error about the true speed of the reported (bias-corrected)
-        speed of an efficient velocity estimate (:func:`ballscan.solve.fit.propagate`
+        speed of an efficient velocity estimate (:func:`ballscan.solve.uncertainty.propagate`
         of the bound's covariance with ``at_truth``): not the linearised
         bound alone, which ignores a poorly determined ``vz`` when ``vz = 0``.
     direction_sigma_deg : ndarray (2,)
@@ -195,7 +200,7 @@ def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tu
     unit of each parameter of :data:`ballscan.geometry.motion.PARAM_NAMES`) on the
     lines that see the ball and the columns it touches plus two on each
     side; derivatives by central differences (step ``1e-3`` of
-    :func:`ballscan.solve.fit.param_scale`).
+    :func:`ballscan.solve.uncertainty.param_scale`).
     """
     n_lines = _n_lines_for(camera, motion)
     t = np.arange(n_lines) / camera.line_rate_hz
