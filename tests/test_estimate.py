@@ -9,6 +9,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -26,11 +27,11 @@ def _img(data: np.ndarray, sat: float = 255.0) -> LineImage:
 @pytest.mark.parametrize("method", ["fit", "paper"])
 def test_empty_and_saturated_images_give_no_ball(method):
     flat = _img(np.full((120, 2048), 20.0))
-    assert estimate_image(flat, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(flat, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
     sat = _img(np.full((120, 2048), 255.0))
-    assert estimate_image(sat, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(sat, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
     noise = _img(np.random.default_rng(0).normal(20, 2, (120, 2048)).round())
-    assert estimate_image(noise, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(noise, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
 
 
 @pytest.mark.parametrize("method", ["fit", "paper"])
@@ -38,7 +39,7 @@ def test_two_balls_give_two_estimates_in_tc_order(method):
     a = BallMotion(0.0335, 0.0016, (0, 0.25, 3.0), (30.0, 0, 0))
     b = BallMotion(0.0335, 0.0014, (0, -0.3, 3.2), (25.0, 1.0, 0))
     r = render(CAM, [(a, Appearance.flat(0.8)), (b, Appearance.flat(0.8))], 160, noise=SensorNoise(), seed=2)
-    balls = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    balls = estimate_image(_img(r.image), CAM, 0.0335, recipe=Recipe(method=method)).balls
     assert len(balls) == 2
     assert balls[0].t_c_s < balls[1].t_c_s
     assert abs(balls[0].position_m[1] - b.position_m[1]) < 0.01 and abs(balls[1].position_m[1] - a.position_m[1]) < 0.01
@@ -48,7 +49,7 @@ def test_two_balls_give_two_estimates_in_tc_order(method):
 def test_ball_cut_by_first_line_is_flagged(method):
     m = BallMotion(0.0335, 0.0004, (0, 0.02, 3.0), (30.0, 0, 0))
     r = render(CAM, (m, Appearance.flat(0.8)), 120, noise=SensorNoise(), seed=1)
-    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, recipe=Recipe(method=method)).balls
     assert "cut_first_line" in ball.flags
     assert ball.first_line == 0
 
@@ -59,7 +60,7 @@ def test_ball_cut_by_sensor_end_is_flagged():
     # needs that: see the detection module's limits)
     m = BallMotion(0.0335, 0.003, (0, -1.03, 3.0), (30.0, 0, 0))
     r = render(CAM, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=1)
-    balls = estimate_image(_img(r.image), CAM, 0.0335, method="fit").balls
+    balls = estimate_image(_img(r.image), CAM, 0.0335).balls
     assert len(balls) == 1 and "cut_sensor_end" in balls[0].flags
 
 
@@ -85,7 +86,7 @@ def test_reference_scenes_paper_method(name):
     truth = _truth(name)
     img = load_image(SCENES / f"{name}.png")
     cam = load_camera(SCENES / f"{name}.camera.toml")
-    rep = estimate_image(img, cam, truth[0]["radius_m"], method="paper")
+    rep = estimate_image(img, cam, truth[0]["radius_m"], recipe=Recipe(method="paper"))
     assert len(rep.balls) == len(truth)
     for est, tb in zip(rep.balls, sorted(truth, key=lambda b: b["t_c_s"])):
         assert ("cut_first_line" in est.flags) == (name == "pub_cut_first_line")
@@ -106,7 +107,7 @@ def test_world_frame_values_with_a_pose():
     cam = CAM.with_pose(R, [0.1, -0.2, 0.5])
     m = BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 2.0, 0.0))
     r = render(cam, (m, Appearance.flat(0.8)), 150, noise=SensorNoise(), seed=5)
-    (ball,) = estimate_image(_img(r.image), cam, 0.0335, method="fit").balls
+    (ball,) = estimate_image(_img(r.image), cam, 0.0335).balls
     w = ball.to_dict(cam)["world"]
     np.testing.assert_allclose(w["position_m"], cam.camera_to_world(np.array(ball.position_m)), atol=1e-12)
     np.testing.assert_allclose(w["velocity_mps"], cam.vectors_to_world(np.array(ball.velocity_mps)), atol=1e-12)
@@ -137,7 +138,7 @@ def test_cut_sensor_end_ball_through_the_json_path():
     m = BallMotion(0.0335, 0.003, (0, 1.0, 3.0), (30.0, 1.0, -0.5))  # centre 24 px inside the last pixel
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
     r = render(cam, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=3)
-    rep = estimate_image(_img(r.image), cam, 0.0335, method="fit")
+    rep = estimate_image(_img(r.image), cam, 0.0335)
     import json as _json
 
     doc = _json.loads(rep.to_json(cam))
@@ -156,7 +157,7 @@ def test_timestamps_slower_than_the_nominal_line_rate():
 
 
 @pytest.mark.slow
-def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
+def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
     # A flat ball on a sensor without column-gain scatter gets the matched
     # edges; the same ball with 0.8 % PRNU (the ball's interior shows it:
     # 0.0063 measured) gets them on the crop with the measured gains divided
@@ -172,18 +173,15 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
             r = render(cam, (m, app), 200, background_level=0.1, noise=noise, seed=4)
             img = LineImage(r.image.astype(float), float(noise.max_dn), 16, tex)
             for matched in (True, False):
-                b = estimate_image(img, cam, 0.0335, matched=matched).balls[0]
+                b = estimate_image(img, cam, 0.0335, recipe=Recipe(matched=matched)).balls[0]
                 seen[prnu, tex, matched] = b
                 assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
     # the length gate off: the short PRNU ball flat-fielded
-    from ballscan.pipeline import estimate as est
-
     img_prnu = LineImage(
         render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008), seed=4).image.astype(float),
         65535.0, 16, "none",
     )
-    monkeypatch.setattr(est, "_FLAT_FIELD_MIN_LINES", 0)
-    forced = estimate_image(img_prnu, cam, 0.0335).balls[0]
+    forced = estimate_image(img_prnu, cam, 0.0335, recipe=Recipe(long_ball_min_lines=0)).balls[0]
     assert forced.extra["edges"] == "matched" and forced.extra["pixels"] == "spread" and forced.extra["flat_fielded"]
     assert abs(forced.speed_mps - m.speed_mps) < 3.0 * forced.speed_sigma_mps
     flat = seen[0.0, "none", True]
@@ -290,27 +288,20 @@ def test_long_ball_on_a_flat_fielded_sensor_measured_on_its_refined_background()
     assert np.mean(speed) < 1.2 and np.sqrt(np.mean(np.square(vx))) < 2.0, (speed, vx)
 
 
-def test_shading_setup_is_checked_and_its_default_is_the_estimator():
-    from ballscan.pipeline.estimate import ShadingSetup
-
-    for bad in (dict(start="truth"), dict(level_samples=(0, 2)), dict(level_samples="32"), dict(level_samples=(2.7, 1.9)),
-                dict(level_samples=(True, True)), dict(level_samples=3), dict(refit_law="no"), dict(refined_background=1)):
-        with pytest.raises(ValueError):
-            ShadingSetup(**bad)
-    assert ShadingSetup(level_samples=[8, 4]).level_samples == (8, 4)  # stored as a tuple: hashable
-    hash(ShadingSetup(level_samples=[8, 4]))
+def test_shading_options_of_the_recipe_reach_the_estimator():
+    assert Recipe(level_samples=[8, 4]).level_samples == (8, 4)  # stored as a tuple: hashable
+    hash(Recipe(level_samples=[8, 4]))
     cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
     m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
     r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
     img = LineImage(r.image.astype(float), 255.0, 8, "shaded")
     plain = estimate_image(img, cam, 0.0335).balls[0]
-    # the estimator before ShadingSetup existed (session 9's final code, 72c03ba) on this image
-    # (pinned: a change of the default estimator updates it knowingly)
+    # the default estimator on this image (pinned: a change of the default estimator updates it knowingly)
     assert plain.velocity_mps == pytest.approx((12.05793171784064, 0.3408214486809053, -0.47047512671892494), rel=0, abs=1e-6)
     assert not plain.extra["shading_refit"] and not plain.extra["background_refined"]
-    other = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup("loose_fit", (8, 4), True)).balls[0]
+    other = estimate_image(img, cam, 0.0335, recipe=Recipe(shading_start="loose_fit", level_samples=(8, 4), refined_background=True)).balls[0]
     assert other.extra["shading_pass"] == "used" and other.extra["background_refined"]
-    refit = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup(refit_law=True)).balls[0]
+    refit = estimate_image(img, cam, 0.0335, recipe=Recipe(refit_law=True)).balls[0]
     assert refit.extra["shading_pass"] == "used" and refit.extra["shading_refit"]
     # the same ball along and across the sensor within a few of its sigmas either way (V.z's is metres per second)
     for e in (other, refit):

@@ -12,6 +12,7 @@ from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.measure.detection import detect
 from ballscan.measure.edges import EdgeMeasurements, measure_edges, with_limb
 from ballscan.pipeline.estimate import _full_background, estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.solve.fit import averaged_model
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
@@ -126,7 +127,7 @@ def test_estimate_reports_the_shading_and_can_skip_it():
     r, img, _ = _shaded()
     image = LineImage(img, 1e9, 16, "render")
     on = estimate_image(image, CAM, MOTION.radius_m).balls[0]
-    off = estimate_image(image, CAM, MOTION.radius_m, shading=False).balls[0]
+    off = estimate_image(image, CAM, MOTION.radius_m, recipe=Recipe(shading=False)).balls[0]
     assert on.extra["shading"] is not None and off.extra["shading"] is None
     assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off"
     assert off.extra["time_shading_s"] == 0.0

@@ -15,6 +15,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, save_camera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, apply_sensor, render, write_image
@@ -152,7 +153,7 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
             c0, c1 = r.crop_cols
             # 1. the very same numbers as estimate_image on the event's crop (with the engine's columns)
             assert (r.crop_columns is None) == (bg == "crop")
-            same = estimate_crop(np.asarray(data[l0:l1, c0:c1]), ts[l0:l1], crop_camera(CAM, c0, c1), RADIUS, "fit", 255.0, 8, "crop", columns=r.crop_columns)
+            same = estimate_crop(np.asarray(data[l0:l1, c0:c1]), ts[l0:l1], crop_camera(CAM, c0, c1), RADIUS, Recipe(), 255.0, 8, "crop", columns=r.crop_columns)
             k = int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in same]))
             assert same[k].t_c_s == e.t_c_s and same[k].position_m == e.position_m and same[k].velocity_mps == e.velocity_mps
             v = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
@@ -491,7 +492,7 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     z = np.load(npz[0])
     crop = load_image(str(npz[0]).replace(".columns.npz", ".png")).data
     cam = replace(crop_camera(CAM, *z["crop_cols"].tolist()), exposure_s=1.0 / CAM.line_rate_hz)
-    again = estimate_crop(crop, z["times_s"], cam, RADIUS, "fit", 255.0, 8, "crop", columns=ColumnModel(z["background_dn"], z["noise_dn"]))
+    again = estimate_crop(crop, z["times_s"], cam, RADIUS, Recipe(), 255.0, 8, "crop", columns=ColumnModel(z["background_dn"], z["noise_dn"]))
     first = json.loads(printed.splitlines()[0])
     assert list(again[0].velocity_mps) == first["velocity_mps"] and again[0].t_c_s == first["t_c_s"]
     app = typer.Typer()
@@ -655,7 +656,7 @@ def test_stream_background_switch_reaches_the_estimator():
         assert (r.crop_columns is None) == (bg == "crop")
         (c0, c1) = r.crop_cols
         cam = replace(crop_camera(CAM, c0, c1), exposure_s=1.0 / CAM.line_rate_hz)
-        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", columns=r.crop_columns)
+        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, Recipe(), 255.0, 8, "crop", columns=r.crop_columns)
         assert ref[0].velocity_mps == r.estimate.velocity_mps
         got[bg] = r
     # the engine's level of the crop's columns: learned on the 1 400 lines before the ball
@@ -669,31 +670,31 @@ def test_stream_background_switch_reaches_the_estimator():
 
 
 def test_stream_shading_switch_reaches_the_estimator():
-    """StreamConfig.shading is what estimate_image gets (the same numbers as on the crop)."""
+    """StreamConfig.recipe.shading is what estimate_image gets (the same numbers as on the crop)."""
     m = BallMotion(RADIUS, 300 / CAM.line_rate_hz, (0.0, 0.05, 3.0), (30.0, 1.0, 0.0))
     data = render(CAM, [(m, Appearance(texture="none", shading=True))], 600, background_level=0.1, noise=SensorNoise(), seed=5).image
     for shading in (True, False):
-        eng = StreamEngine(CAM, RADIUS, StreamConfig(shading=shading, keep_crops=True))
+        eng = StreamEngine(CAM, RADIUS, StreamConfig(recipe=Recipe(shading=shading), keep_crops=True))
         res = eng.push(data) + eng.finish()
         assert len(res) == 1
         r = res[0]
         (c0, c1) = r.crop_cols
         cam = replace(crop_camera(CAM, c0, c1), exposure_s=1.0 / CAM.line_rate_hz)  # as the engine does without timestamps
-        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", shading, columns=r.crop_columns)
+        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, Recipe(shading=shading), 255.0, 8, "crop", columns=r.crop_columns)
         assert ref[0].velocity_mps == r.estimate.velocity_mps
         assert (r.estimate.extra["shading"] is not None) == shading
 
 
 def test_stream_matched_switch_reaches_the_estimator():
     # a flat ball on an ideal 8-bit sensor: the engine's estimates use the
-    # matched edges unless StreamConfig.matched (watch --no-matched) is off
+    # matched edges unless the recipe's matched (watch --no-matched) is off
     cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
     m = BallMotion(0.0335, 300 / cam.line_rate_hz, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
     data = render(cam, (m, Appearance.flat(0.8)), 600, background_level=0.1, noise=ideal, seed=1).image
     seen = {}
     for matched in (True, False):
-        eng = StreamEngine(cam, 0.0335, StreamConfig(matched=matched))
+        eng = StreamEngine(cam, 0.0335, StreamConfig(recipe=Recipe(matched=matched)))
         res = eng.push(data) + eng.finish()
         assert len(res) == 1
         seen[matched] = res[0].estimate

@@ -37,12 +37,11 @@ from ..measure.images import LineImage
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
 from ..geometry.motion import BallMotion
 from ..solve.paper import refine_paper
+from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
 from ..measure.shading import ball_limb, shade_profile
 
-__all__ = ["METHODS", "NormalisedBox", "ShadingSetup", "normalised_box", "estimate_image", "estimate_region"]
-
-METHODS = ("fit", "paper")
+__all__ = ["NormalisedBox", "normalised_box", "estimate_image", "estimate_region", "refine_background"]
 
 #: keys of an estimate that each motion parameter determines
 _PARAM_KEYS = {
@@ -99,58 +98,6 @@ def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
     return bool(np.any(seg > 1.5 * period))
 
 
-@dataclass(frozen=True)
-class ShadingSetup:
-    """How the fit's shading-aware second pass is set up (the defaults are the estimator's).
-
-    The other settings are diagnostics of the shaded balls' bias
-    (``benchmarks/bench_calibration.py --start, --level-samples,
-    --refined-background, --refit-law``; docs/benchmarks.md, calibration,
-    session 10), not yet the default: each moves the reported sigmas'
-    calibration closer on some cases and not on others.
-
-    Attributes
-    ----------
-    start : {"guess", "loose_fit"}
-        The motion the shading law and the limb model are built at: the
-        key-point guess (a loose fit of the model-free edges only where the
-        guess is degenerate), or always that loose fit (no outlier rounds,
-        cost tolerance 1e-3; the guess where it does not converge).
-    level_samples : (int, int)
-        Samples over the exposure and across the pixel's height of the
-        ends' mean brightness (:meth:`ballscan.measure.shading.LimbProfile.line_levels`).
-    refined_background : bool
-        Measure every ball's edges on its columns' background measured away
-        from the balls (:func:`refine_background`; by default only long
-        balls' matched edges are, see :func:`estimate_region`).
-    refit_law : bool
-        On the window edges' path, fit the shading law and the limb model
-        again at the fitted motion and fit once more from there (a
-        converged refit replaces the fit, ``extra["shading_refit"]``; about
-        4-5 ms more per stream crop, docs/benchmarks.md).
-    """
-
-    start: str = "guess"
-    level_samples: tuple[int, int] = (3, 2)
-    refined_background: bool = False
-    refit_law: bool = False
-
-    def __post_init__(self):
-        if self.start not in ("guess", "loose_fit"):
-            raise ValueError(f"start: expected 'guess' or 'loose_fit', got {self.start!r}")
-        ls = self.level_samples
-        if (
-            not isinstance(ls, (tuple, list))
-            or len(ls) != 2
-            or not all(isinstance(k, numbers.Integral) and not isinstance(k, bool) and k >= 1 for k in ls)
-        ):
-            raise ValueError(f"level_samples: expected two positive integers, got {ls!r}")
-        object.__setattr__(self, "level_samples", (int(ls[0]), int(ls[1])))
-        for name in ("refined_background", "refit_law"):
-            if not isinstance(getattr(self, name), bool):
-                raise ValueError(f"{name}: expected True or False, got {getattr(self, name)!r}")
-
-
 def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, radius_m: float, t: np.ndarray) -> InitialGuess:
     kp = find_keypoints(
         box.data,
@@ -165,52 +112,6 @@ def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, rad
     return initial_guess(kp, camera, radius_m)
 
 
-_FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
-# matched edges only where the ball's interior shows no more column-gain
-# scatter than this (relative; flatfield.column_gains): 8-bit renders read
-# 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
-# the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
-_MATCHED_MAX_GAIN_SIGMA = 0.0015
-# where the interior shows more scatter (PRNU), with flat_field, the matched edges on the
-# crop with the measured gains divided out (_flat_fielded_matched), on balls
-# with at least this many measured columns: at R = 0.02 m (50 columns, 8-bit)
-# the quick sweep's y0 and z0 errors were 1.9-2.0x their sigmas RMS there (the
-# window edges' 0.9-1.0x) and the speed no better (0.15x vs 0.12x the bound)
-_FLAT_FIELD_MIN_COLUMNS = 64
-# ... and at least this many lines with both edges: a column's gain error
-# repeats on every line whose edge sits in it, so the window edges' PRNU
-# error grows with the ball's length (a 5 m/s ball of 900 lines: V.x 5.5x
-# its sigma RMS, speed 1-sigma covering 8 %; flat-fielded 1.39x, 83 %),
-# while on short balls the flat-fielded edges' sigmas come out small (the
-# stream bench's 8-bit balls of 109 lines, 0.8 % PRNU: speed errors 1.45x
-# their sigma RMS over 9 balls, the window edges' 0.67x, at 2.6x the time)
-_FLAT_FIELD_MIN_LINES = 250
-# with the matched edges, the pixels of the ball's ends and of the lines whose
-# edges spread over 0.3 px or more (the sharp lines keep their matched edges):
-# bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound.
-# 32 Gauss-Legendre nodes per piece of the exposure in the pixel model: a
-# pixel's coverage has kinks where a node's chord end crosses a pixel border,
-# so with 8 nodes the model is a staircase in the parameters (coverage up to
-# 0.024 off, moving as the nodes cross borders) and the solution lands on its
-# steps: on the quick sweep's long balls (32 seeds) V.x moved by 0.53, 0.31
-# and 0.33 sigma of the bound RMS from 8 to 32 nodes (R = 0.11 m, 4.7 m/s,
-# 140 000 lines/s), by 0.07-0.10 from 32 to 64; R = 0.11 m's V.x RMSE 1.27x
-# -> 1.14x the bound (benchmarks/bench_efficiency.py; docs/experiments.md,
-# session 10).  Windows reaching 20 px beyond half the edge spread (not 3):
-# each end's free brightness is then measured on the ball's interior, not
-# on the edge ramps' few inner pixels (with 3 px it cost V.x 4-7 % of its
-# sigma on the bound's own model, and the ramps' far tails biased it); the
-# fit minus the efficient estimator on the same noise (128 seeds), 3 -> 20
-# px: mean +0.19 / +0.51 / +0.51 -> +0.14 / +0.19 / +0.21 sigma, RMS
-# 0.55 / 0.91 / 0.83 -> 0.46 / 0.62 / 0.67 at R = 0.11 m / 4.7 m/s /
-# 140 000 lines/s (6, 12 and 40 px: between, and level with 20)
-_SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
-# ... on balls of at least this many lines with both edges: on ~11 lines (60
-# m/s at 10 kHz) a review measured its speed errors 1.45 sigma RMS (the
-# matched-edge fit's 1.11)
-_SPREAD_MIN_LINES = 20
-
-
 def estimate_region(
     image: LineImage,
     detection: Detection,
@@ -218,13 +119,8 @@ def estimate_region(
     camera: LineScanCamera,
     radius_m: float,
     t_lines_s: np.ndarray,
-    method: str = "fit",
+    recipe: Recipe = Recipe(),
     background_dn: np.ndarray | None = None,
-    shading: bool = True,
-    pixels: bool = False,
-    matched: bool = True,
-    flat_field: bool = True,
-    shading_setup: ShadingSetup = ShadingSetup(),
 ) -> BallEstimate:
     """Estimate one detected ball's motion (see the module docstring).
 
@@ -273,8 +169,8 @@ def estimate_region(
     with ``refined_background`` and no ``background_dn`` the region's
     background is refined here.
     """
-    if method not in METHODS:
-        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
+    method = recipe.method
+    shading, pixels, matched, flat_field = recipe.shading, recipe.pixels, recipe.matched, recipe.flat_field
     t0 = time.perf_counter()
     flags = list(region.flags)
     if _dropped_lines(t_lines_s, region.line_start, region.line_stop - 1):
@@ -330,7 +226,7 @@ def estimate_region(
 
     t_e = time.perf_counter()
     others = [r for r in detection.regions if r.index != region.index]
-    bg_full = background_dn if background_dn is not None else _shading_background(image, detection, shading_setup)
+    bg_full = background_dn if background_dn is not None else _shading_background(image, detection, recipe)
     edges = measure_edges(
         image.data,
         region,
@@ -363,15 +259,15 @@ def estimate_region(
         # outlier rounds, cost tolerance 1e-3).
         t_s = time.perf_counter()
         start: BallMotion | None = ig.motion
-        if ig.degenerate or shading_setup.start == "loose_fit":
-            first = fit_motion(camera, edges, ig.motion, _FIRST_PASS)
+        if ig.degenerate or recipe.shading_start == "loose_fit":
+            first = fit_motion(camera, edges, ig.motion, recipe.loose_fit)
             start = first.motion if first.converged else (None if ig.degenerate else ig.motion)
         shading_pass = "no_start"
         if start is not None:
             # second pass: the edges' limb levels from the ball's fitted shading
             # (a Lambertian limb's brightness falls like sqrt(distance): a level
             # taken inside and extrapolated linearly biases the lit side inwards)
-            limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples)
+            limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full, level_samples=recipe.level_samples)
             shading_pass = "too_few_pixels"
             if pixels:
                 pixels_state = "no_shading_model"
@@ -380,7 +276,7 @@ def estimate_region(
                 edges2 = with_limb(edges, limb)
                 # a ball the shading law describes to its pixels (the pixel
                 # fit's and the matched edges' condition)
-                refusal = _pixel_fit_refusal(limb, edges2, start, camera)
+                refusal = _pixel_fit_refusal(limb, edges2, start, camera, recipe)
                 edges_fit = edges2
                 t_shading = time.perf_counter() - t_s
                 fit2 = None
@@ -389,7 +285,7 @@ def estimate_region(
                     if pixels_state == "used":
                         # the surface brightness the pixel model multiplies the coverage by
                         shaded = replace(edges2, profile_shade=shade_profile(limb, edges2))
-                        fit2 = fit_motion(camera, shaded, start, FitSettings(pixels=True))
+                        fit2 = fit_motion(camera, shaded, start, recipe.pixel_fit)
                         if not fit2.converged:
                             pixels_state, fit2 = "not_converged", None
                 if fit2 is None and shading:
@@ -401,15 +297,15 @@ def estimate_region(
                         gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
                         gain_sigma = gains.prnu_sigma
                         # NaN (a ball too small to tell) is not flat-fielded
-                        if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
+                        if math.isfinite(gain_sigma) and gain_sigma <= recipe.matched_max_gain_sigma:
                             rb = None
-                            if int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES:
+                            if int(np.sum(edges2.left_ok & edges2.right_ok)) >= recipe.long_ball_min_lines:
                                 # a long ball: measured on its columns' background
                                 # away from it.  Only here: with that background
                                 # on every ball the shading pass reads shaded
                                 # balls' V.x low (bench_calibration, 112-268
                                 # lines: mean -1.1 to -2.1 sigma; docs/benchmarks.md)
-                                rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=False, level_samples=shading_setup.level_samples)
+                                rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, recipe, divide_gains=False)
                             if rb is not None:
                                 edges_fit, limb = rb
                                 bg_refined = True
@@ -418,38 +314,38 @@ def estimate_region(
                         elif (
                             flat_field
                             and math.isfinite(gain_sigma)
-                            and gains.n_columns >= _FLAT_FIELD_MIN_COLUMNS
-                            and int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES
+                            and gains.n_columns >= recipe.flat_field_min_columns
+                            and int(np.sum(edges2.left_ok & edges2.right_ok)) >= recipe.long_ball_min_lines
                         ):
                             # the measured gains divided out, and the
                             # remaining gain error in the edges' sigmas
-                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, level_samples=shading_setup.level_samples)
+                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, recipe)
                             if ff is not None:
                                 edges_fit, limb = ff
                                 ff_used = bg_refined = True
                         t_shading += time.perf_counter() - t_m
-                    if edges_fit is not edges2 and int(np.sum(edges_fit.left_ok & edges_fit.right_ok)) >= _SPREAD_MIN_LINES:
+                    if edges_fit is not edges2 and int(np.sum(edges_fit.left_ok & edges_fit.right_ok)) >= recipe.spread_min_lines:
                         # the narrow edges matched: the ends' and the spread
                         # edges' pixels in their place
                         shaded = replace(edges_fit, profile_shade=shade_profile(limb, edges_fit))
-                        fit2 = fit_motion(camera, shaded, start, _SPREAD_PIXELS)
+                        fit2 = fit_motion(camera, shaded, start, recipe.spread_fit)
                         if fit2.converged:
                             # (a requested pixel fit that failed keeps saying so)
                             pixels_state = "spread" if pixels_state == "off" else pixels_state
                         else:
                             fit2 = None
                     if fit2 is None:
-                        fit2 = fit_motion(camera, edges_fit, start)
-                        if shading_setup.refit_law and edges_fit is edges2 and fit2.converged:
+                        fit2 = fit_motion(camera, edges_fit, start, recipe.edge_fit)
+                        if recipe.refit_law and edges_fit is edges2 and fit2.converged:
                             # the law and the limb model again at the fitted motion
                             # (the guess's normals are a pixel or so off), and the fit
                             t_r = time.perf_counter()
                             limb_r = ball_limb(
-                                camera, fit2.motion, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples
+                                camera, fit2.motion, image.data, edges, t_lines_s, bg_full, level_samples=recipe.level_samples
                             )
                             if limb_r is not None:
                                 edges_r = with_limb(edges, limb_r)
-                                fit_r = fit_motion(camera, edges_r, fit2.motion)
+                                fit_r = fit_motion(camera, edges_r, fit2.motion, recipe.edge_fit)
                                 if fit_r.converged:
                                     fit2, edges_fit, limb, refit_used = fit_r, edges_r, limb_r, True
                             # (the adopted refit's own time is the final fit's, time_fit_s)
@@ -464,7 +360,7 @@ def estimate_region(
         elif fit is None:
             t_shading = time.perf_counter() - t_s
     if fit is None:
-        fit = fit_motion(camera, edges, start if shading and start is not None else ig.motion)
+        fit = fit_motion(camera, edges, start if shading and start is not None else ig.motion, recipe.edge_fit)
     flags.extend(fit.flags)
     if not fit.converged:
         flags.append("not_converged")
@@ -517,7 +413,7 @@ def estimate_region(
             "edges": edges.edges_method,
             "column_gain_sigma": gain_sigma,
             "flat_fielded": ff_used and edges.edges_method == "matched",
-            "background_refined": (bg_refined and edges.edges_method == "matched") or shading_setup.refined_background,
+            "background_refined": (bg_refined and edges.edges_method == "matched") or recipe.refined_background,
             "shading_refit": refit_used,
             "shading": None
             if shading_model is None
@@ -530,12 +426,12 @@ def estimate_region(
     )
 
 
-def _shading_background(image: LineImage, detection: Detection, setup: ShadingSetup) -> np.ndarray:
-    """The background every edge of the image is measured on (DN, per pixel): the detector's, or refined (``setup.refined_background``)."""
-    return _full_background(refine_background(image.data, detection) if setup.refined_background else detection)
+def _shading_background(image: LineImage, detection: Detection, recipe: Recipe) -> np.ndarray:
+    """The background every edge of the image is measured on (DN, per pixel): the detector's, or refined (``recipe.refined_background``)."""
+    return _full_background(refine_background(image.data, detection, recipe=recipe) if recipe.refined_background else detection)
 
 
-def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=True, level_samples=(3, 2)):
+def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, recipe, divide_gains=True):
     """Matched edges measured on the image with the ball's measured column gains divided out, or None.
 
     Where the ball's interior shows column-gain scatter (PRNU, not
@@ -558,7 +454,7 @@ def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, ca
     """
     # the background of the ball's columns away from it (refine_background),
     # and the gains on that background
-    bg = _full_background(refine_background(image.data, detection, region))
+    bg = _full_background(refine_background(image.data, detection, region, recipe=recipe))
     if divide_gains:
         gains = column_gains(image.data, bg, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
         if not math.isfinite(gains.prnu_sigma):
@@ -567,11 +463,11 @@ def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, ca
     else:
         data = image.data
     edges = measure_edges(data, region, bg, detection.noise_dn, t_lines_s, saturation_dn=detection.saturation_dn, others=others)
-    limb = ball_limb(camera, start, data, edges, t_lines_s, bg, level_samples=level_samples)
+    limb = ball_limb(camera, start, data, edges, t_lines_s, bg, level_samples=recipe.level_samples)
     if limb is None:
         return None
     edges = with_limb(edges, limb)
-    if _pixel_fit_refusal(limb, edges, start, camera) is not None:
+    if _pixel_fit_refusal(limb, edges, start, camera, recipe) is not None:
         return None
     m = matched_edges(edges, limb)
     if m is edges:
@@ -607,15 +503,7 @@ def _with_gain_errors(edges, gains):
     return replace(edges, **out) if out else edges
 
 
-# the pixel fit's conditions: the fitted light at most this fraction of the
-# contrast, the lines' brightness about the law at most this (relative), the
-# ball's image moving along the sensor by at most this during the exposure (px)
-_UNIFORM_LIGHT = 0.05
-_UNIFORM_LEVEL = 0.02
-_MAX_LATERAL_PX = 0.3
-
-
-def _pixel_fit_refusal(limb, edges, motion: BallMotion, camera: LineScanCamera) -> str | None:
+def _pixel_fit_refusal(limb, edges, motion: BallMotion, camera: LineScanCamera, recipe: Recipe) -> str | None:
     """Why the pixel fit of the ball's ends may not be used here, or None.
 
     ``"not_uniform"``: the pixel model multiplies each pixel's coverage by
@@ -639,10 +527,10 @@ def _pixel_fit_refusal(limb, edges, motion: BallMotion, camera: LineScanCamera) 
     speed errors 0.0001 % up to 0.30 px, 0.0023 % and 0.0064 % beyond.
     """
     light = float(np.linalg.norm(limb.shading.light_dn))
-    if not (light <= _UNIFORM_LIGHT * edges.contrast_dn and limb.level_rel_sigma <= _UNIFORM_LEVEL):
+    if not (light <= recipe.uniform_max_light * edges.contrast_dn and limb.level_rel_sigma <= recipe.uniform_max_level_rel_sigma):
         return "not_uniform"
     lateral_px = camera.focal_px * abs(motion.velocity_mps[1]) * camera.exposure / max(motion.position_m[2], 1e-9)
-    if lateral_px > _MAX_LATERAL_PX:
+    if lateral_px > recipe.max_lateral_px:
         return "lateral_motion"
     return None
 
@@ -657,18 +545,7 @@ def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
     return out
 
 
-# the balls' neighbourhood left out of their columns' background: this many
-# lines and pixels around each region's mask (its partly covered pixels
-# below the detection threshold), and a column's level from at least this
-# many remaining lines
-_BG_GUARD_LINES = 3
-_BG_GUARD_PX = 3
-_BG_MIN_LINES = 8
-# clipping window of the level's mean, noise sigmas (the detector's mode seeking)
-_BG_WINDOW_SIGMA = 4.5
-
-
-def refine_background(data: np.ndarray, detection: Detection, region: BallRegion | None = None) -> Detection:
+def refine_background(data: np.ndarray, detection: Detection, region: BallRegion | None = None, *, recipe: Recipe = Recipe()) -> Detection:
     """The detection with its balls' (or ``region``'s) columns' background levels measured away from the balls.
 
     The detector's per-column level (:mod:`ballscan.measure.detection`: the mean of
@@ -678,16 +555,17 @@ def refine_background(data: np.ndarray, detection: Detection, region: BallRegion
     columns was 0.1 sigma high, its edges and ends read inwards and the
     speed 1.5-2 sigma of the pixel bound high, in proportion to the noise
     (noise-free 0.2 sigma).  Here each column of a region's box (plus
-    ``_BG_GUARD_PX``) is re-levelled from its lines outside every region's
-    mask grown by ``_BG_GUARD_LINES`` lines and ``_BG_GUARD_PX`` pixels:
-    the mean, in the detector's drift model, of the values within +-4.5
-    noise sigmas of its level (two rounds); columns with fewer than
-    ``_BG_MIN_LINES`` such lines keep the detector's level.
+    ``recipe.background_guard_px``) is re-levelled from its lines outside
+    every region's mask grown by ``recipe.background_guard_lines`` lines and
+    ``recipe.background_guard_px`` pixels: the mean, in the detector's drift
+    model, of the values within ``recipe.background_window_sigma`` noise
+    sigmas of its level (two rounds); columns with fewer than
+    ``recipe.background_min_lines`` such lines keep the detector's level.
     """
     if not detection.regions:
         return detection
     n, w = detection.shape
-    gl, gp = _BG_GUARD_LINES, _BG_GUARD_PX
+    gl, gp = recipe.background_guard_lines, recipe.background_guard_px
     c_lo = max(min(r.col_start for r in detection.regions) - gp, 0)
     c_hi = min(max(r.col_stop for r in detection.regions) + gp, w)
     near = np.zeros((n, c_hi - c_lo), dtype=bool)
@@ -709,12 +587,12 @@ def refine_background(data: np.ndarray, detection: Detection, region: BallRegion
     v = (x - o) / np.where(g != 0, g, 1.0)
     far = ~near[:, idx]
     level = detection.background_dn[c_lo:c_hi][idx].astype(float)
-    half = _BG_WINDOW_SIGMA * detection.noise_dn[c_lo:c_hi][idx]
+    half = recipe.background_window_sigma * detection.noise_dn[c_lo:c_hi][idx]
     for _ in range(2):
         keep = far & (np.abs(v - level[None, :]) <= half[None, :])
         cnt = keep.sum(axis=0)
         mean = np.where(keep, v, 0.0).sum(axis=0) / np.maximum(cnt, 1)
-        level = np.where(cnt >= _BG_MIN_LINES, mean, level)
+        level = np.where(cnt >= recipe.background_min_lines, mean, level)
     b = detection.background_dn.astype(float, copy=True)
     b[c_lo + idx] = level
     return replace(detection, background_dn=b)
@@ -736,13 +614,8 @@ def estimate_image(
     camera: LineScanCamera,
     radius_m: float,
     *,
-    method: str = "fit",
+    recipe: Recipe = Recipe(),
     timestamps_s: np.ndarray | None = None,
-    shading: bool = True,
-    pixels: bool = False,
-    matched: bool = True,
-    flat_field: bool = True,
-    shading_setup: ShadingSetup = ShadingSetup(),
     columns: ColumnModel | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
@@ -754,28 +627,17 @@ def estimate_image(
         Its width must match the image's.
     radius_m : float
         Known ball radius, metres.
-    method : {"fit", "paper"}
+    recipe : Recipe
+        The estimator's strategy (:class:`ballscan.pipeline.recipe.Recipe`).
     timestamps_s : ndarray, optional
         Per-line timestamps (seconds) replacing ``i / line_rate``.
-    shading : bool
-        The fit's shading-aware second pass (see the module docstring).
-    pixels : bool
-        Fit the pixels of the balls' ends (see :func:`estimate_region`).
-    matched : bool
-        Matched edges on uniform balls (see :func:`estimate_region`).
-    flat_field : bool
-        On a sensor whose column gains scatter (PRNU), the matched edges on
-        the image with the measured gains divided out, on long balls (see
-        :func:`estimate_region`).
-    shading_setup : ShadingSetup
-        The shading pass's diagnostic settings (see :class:`ShadingSetup`).
     columns : ColumnModel, optional
         The image columns' background level and noise when they are known
         (the stream engine's, for an event's crop); else :func:`detect`
         learns them on the image.
     """
-    if method not in METHODS:
-        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
+    if not isinstance(recipe, Recipe):
+        raise ValueError(f"recipe: expected a Recipe, got {recipe!r}")
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     n_lines, width = image.data.shape
@@ -789,12 +651,10 @@ def estimate_image(
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image, columns=columns)
-    bg = _shading_background(image, det, shading_setup) if method == "fit" and det.regions else None
+    bg = _shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
     balls = [
         estimate_region(
-            image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field,
-            shading_setup=shading_setup,
-        )
+            image, det, r, camera, radius_m, t, recipe, background_dn=bg)
         for r in det.regions
     ]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
