@@ -174,7 +174,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     from ballscan.geometry.camera import LineScanCamera, line_times
     from ballscan.measure.detection import detect
     from ballscan.measure.edges import matched_edges, with_limb
-    from ballscan.pipeline.estimate import _full_background
+    from ballscan.pipeline.background import full_background
     from ballscan.solve.fit import averaged_model
     from ballscan.measure.images import LineImage
     from ballscan.geometry.motion import BallMotion
@@ -189,7 +189,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     img = LineImage(data, 1e12, 16, "flat ball")
     t = line_times(cam, 200)
     det = detect(img)
-    bg = _full_background(det)
+    bg = full_background(det)
     edges = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
     limb = ball_limb(cam, m, img.data, edges, t, bg)
     window = with_limb(edges, limb)

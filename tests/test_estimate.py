@@ -205,8 +205,8 @@ def _flat_16bit_ball(m: BallMotion, line_rate_hz: float, n_lines: int, prnu: flo
 
 
 def test_a_ball_on_few_lines_keeps_the_matched_edge_fit():
-    # 60 m/s at 10 kHz: about 11 lines; the spread lines' pixels are not
-    # used there (a review measured their speed errors 1.45 sigma RMS)
+    # 60 m/s at 10 kHz: about 11 lines, fewer than Recipe.spread_min_lines:
+    # the spread lines' pixels are not used there (their speed errors exceed their sigmas)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (60.0, 0.0, 0.0))
     b = _flat_16bit_ball(m, line_rate_hz=10000.0, n_lines=40, prnu=0.0, seed=3)
     assert b.extra["edges"] == "matched" and b.extra["pixels"] == "off"
@@ -227,7 +227,7 @@ def test_refined_background_of_a_ball_s_columns():
     # sweep: 0.09-0.10 sigma high); refine_background measures them away
     # from it (0.003-0.015 sigma measured)
     from ballscan.measure.detection import background_at, detect
-    from ballscan.pipeline.estimate import refine_background
+    from ballscan.pipeline.background import refine_background
 
     cam = LineScanCamera(2048, 4000.0, 1023.5, 35000.0)
     m = BallMotion(0.11, 0.0082, (0.0, 0.1, 3.0), (18.0, 0.0, 0.0))
@@ -308,3 +308,4 @@ def test_shading_options_of_the_recipe_reach_the_estimator():
         assert e.velocity_mps != plain.velocity_mps
         dv = np.subtract(e.velocity_mps, plain.velocity_mps)[:2]
         assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps)[:2])
+

@@ -88,7 +88,7 @@ def runs(long_stream):
     for ch in CHUNKS:
         src = RawLineSource(sim.raw, CAM.width, chunk_lines=ch, timestamps=sim.timestamps_path)
         out[ch] = list(process_stream(src, CAM, RADIUS, source="s.raw"))
-    # the crop's own background (StreamConfig.background="crop"), as the stream measured before session 11
+    # the crop's own background (StreamConfig.background="crop")
     src = RawLineSource(sim.raw, CAM.width, chunk_lines=64, timestamps=sim.timestamps_path)
     out["crop"] = list(process_stream(src, CAM, RADIUS, StreamConfig(background="crop"), source="s.raw"))
     return out
@@ -180,33 +180,19 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
             differ = e.extra["partial_levelled"] != rb.extra["partial_levelled"]
             ratios.append(np.abs(v - w) / (np.maximum(s, s_ref) if differ else s))
     ratios = np.array(ratios)  # (ball, [t_c, y0, z0, vx, vy, vz])
-    # measured with the shading-aware second pass: medians 0.08-0.26
-    # (the crop's own background and shading fit differ a little)
-    # Since session 4 (the renderer's finely sampled end lines, the shading
-    # pass's whole-pixel coverage) one ball of the 32 (30 lines long, V.z
-    # sigma 11 m/s) differs by 2.4 sigma in t_c and 2.7 in V.x: the crop
-    # keeps 60 edges, the whole width 62, and on so short a ball two end
-    # edges move V.x by that much (the crop's V.x is 1.3 sigma from the
-    # truth, the whole width's 1.6).  The other 31 balls stay within 1.5
-    # sigma.  Since session 5 (the partial lines levelled when they agree)
-    # two balls of 32 take different decisions on the crop and the whole
-    # width: the levelled fit's t_c sigma is 3-30x smaller, and in its units
-    # one ball's t_c moved 4.8 sigma (both fits 1.8 sigma from the truth); in
-    # the larger sigma 1.9.  Measured then: two balls above 1.5 (1.9 in t_c,
-    # 1.59 in V.x on a ball both fits level), the others within 1.26.
+    # the crop's own background and shading fit differ a little from the
+    # whole width's.  On very short balls (about 30 lines) two end edges more
+    # or less move V.x by a few sigmas, and a ball whose partial lines one
+    # fit levels and the other does not moves t_c by a few of the smaller
+    # sigma: at most two balls beyond 1.5, none beyond 3
     assert np.all(ratios <= 3.0)
     assert np.sum(np.any(ratios > 1.5, axis=1)) <= 2
-    # medians 0.10-0.19, V.x 0.50: the levelled partial lines (areas over the
-    # shading law's brightness) narrow V.x's sigma and follow the crop's own
-    # background and gain
+    # the levelled partial lines (areas over the shading law's brightness)
+    # narrow V.x's sigma and follow the crop's own background and gain
     assert np.all(np.median(ratios, axis=0) <= np.array([0.3, 0.3, 0.3, 0.6, 0.3, 0.3]))
-    # 4. on the engine's background (the default since session 11: the
-    #    engine's crop differs from the whole width's by 0.30 of a sigma in y0 and
-    #    z0, median), as accurate as the whole width: RMS error against the
-    #    truth, stream over whole width, measured 1.09 / 1.01 / 1.05 / 1.26 /
-    #    1.00 / 0.99 (on 32 balls the ratio's own scatter is about 0.2; on
-    #    the same stream without the ramp, seeds 7 / 8 / 9, V.x 1.08 / 0.93 /
-    #    0.96)
+    # 4. on the engine's background (the default), as accurate as the whole
+    #    width: the RMS error against the truth, stream over whole width,
+    #    within the ratio's own scatter on 32 balls (about 0.2)
     rmse_ratio = np.sqrt(np.mean(np.square(err["engine"]), axis=0) / np.mean(np.square(err["single"]), axis=0))
     assert np.all(rmse_ratio <= 1.4)
 
@@ -717,3 +703,4 @@ def test_crop_camera_equals_a_validated_replace():
         crop_camera(cam, 10, 20, exposure_s=2.0 / CAM.line_rate_hz)
     with pytest.raises(ValueError, match="width"):
         crop_camera(cam, 10, 11)
+
