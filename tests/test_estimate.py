@@ -10,6 +10,7 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
+from ballscan.solve.fit import FitSettings
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -309,3 +310,109 @@ def test_shading_options_of_the_recipe_reach_the_estimator():
         dv = np.subtract(e.velocity_mps, plain.velocity_mps)[:2]
         assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps)[:2])
 
+
+@pytest.mark.parametrize(
+    "field, bad",
+    [
+        ("method", "powell"),  # a Literal
+        ("shading_start", "truth"),  # a Literal
+        ("shading", 1),  # a switch
+        ("refit_law", "no"),  # a switch
+        ("level_samples", (0, 2)),  # a pair of positive integers
+        ("level_samples", (2.7, 1.9)),
+        ("level_samples", 3),
+        ("long_ball_min_lines", -1),  # an integer threshold
+        ("background_min_lines", 2.5),
+        ("matched_max_gain_sigma", float("nan")),  # a real threshold
+        ("max_lateral_px", -0.1),
+        ("uniform_max_light", True),
+        ("background_window_sigma", 0.0),
+        ("edge_fit", {"pixels": True}),  # fit settings
+        ("spread_fit", FitSettings()),  # fit settings of a pixel fit
+    ],
+)
+def test_recipe_refuses_a_bad_value_naming_its_field(field, bad):
+    with pytest.raises(ValueError, match=rf"^{field}: "):
+        Recipe(**{field: bad})
+
+
+def test_recipe_default_is_the_estimator_and_is_hashable():
+    assert Recipe() == Recipe(method="fit", shading=True, pixels=False, matched=True, flat_field=True)
+    assert hash(Recipe()) == hash(Recipe())
+    with pytest.raises(Exception):
+        Recipe().shading = False  # frozen
+    with pytest.raises(ValueError, match="recipe"):
+        estimate_image(_img(np.zeros((10, CAM.width))), CAM, 0.0335, recipe="fit")
+
+
+def _shaded_ball():
+    cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+    m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
+    r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
+    return cam, LineImage(r.image.astype(float), 255.0, 8, "shaded")
+
+
+def _flat_ball():
+    cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
+    m = BallMotion(0.0335, 300 / cam.line_rate_hz, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
+    r = render(cam, (m, Appearance.flat(0.8)), 600, background_level=0.1, noise=ideal, seed=1)
+    return cam, LineImage(r.image.astype(float), 255.0, 8, "flat")
+
+
+def _record_as_extra(b):
+    r = b.record
+    return {
+        "shading_pass": r.shading_pass,
+        "pixels": r.pixels,
+        "column_gain_sigma": r.column_gain_sigma,
+        "flat_fielded": r.flat_fielded,
+        "background_refined": r.background_refined,
+        "shading_refit": r.shading_refit,
+    }
+
+
+def test_stage_record_says_what_the_stages_did():
+    # a Lambertian-shaded ball: the shading pass's fit of its window edges
+    # (the pixel model does not describe it: no matched edges)
+    cam, img = _shaded_ball()
+    shaded = estimate_image(img, cam, 0.0335).balls[0]
+    rec = shaded.record
+    assert (rec.shading_pass, rec.second_measurement, rec.final_fit, rec.pixels) == ("used", "window", "edges", "off")
+    assert rec.column_gain_sigma is None and not rec.shading_refit
+    # a flat ball on an ideal sensor: matched edges and the spread lines' pixels
+    cam_f, img_f = _flat_ball()
+    flat = estimate_image(img_f, cam_f, 0.0335).balls[0]
+    rec = flat.record
+    assert (rec.shading_pass, rec.second_measurement, rec.final_fit, rec.pixels) == ("used", "matched", "spread", "spread")
+    assert rec.column_gain_sigma < 0.0015
+    # without the shading pass: the model-free edges' fit only
+    off = estimate_image(img, cam, 0.0335, recipe=Recipe(shading=False)).balls[0].record
+    assert (off.shading_pass, off.second_measurement, off.final_fit, off.pixels) == ("off", "none", "first_edges", "off")
+    # the JSON's diagnostics repeat the record; the record itself is not in the JSON
+    for b in (shaded, flat):
+        d = b.to_dict()
+        assert "record" not in d
+        assert {k: d[k] for k in _record_as_extra(b)} == _record_as_extra(b)
+    assert estimate_image(img, cam, 0.0335, recipe=Recipe(method="paper")).balls[0].record is None
+
+
+def test_a_recipe_other_than_the_default_reaches_the_estimator(tmp_path, capsys):
+    # shading off in the recipe is the CLI's --no-shading; matched off keeps the windows
+    from ballscan.cli.app import main
+    from ballscan.geometry.camera import save_camera
+    from ballscan.model.render import write_image
+
+    cam, img = _shaded_ball()
+    on = estimate_image(img, cam, 0.0335).balls[0]
+    off = estimate_image(img, cam, 0.0335, recipe=Recipe(shading=False)).balls[0]
+    assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off" and off.extra["shading"] is None
+    assert off.velocity_mps != on.velocity_mps
+    write_image(tmp_path / "b.png", img.data.astype(np.uint8))
+    save_camera(cam, tmp_path / "b.toml")
+    assert main(["estimate", str(tmp_path / "b.png"), "--camera", str(tmp_path / "b.toml"), "--radius", "0.0335", "--json", "--no-shading"]) == 0
+    cli = json.loads(capsys.readouterr().out)["balls"][0]
+    assert cli["velocity_mps"] == list(off.velocity_mps) and cli["shading_pass"] == "off"
+    cam_f, img_f = _flat_ball()
+    window = estimate_image(img_f, cam_f, 0.0335, recipe=Recipe(matched=False)).balls[0]
+    assert window.record.second_measurement == "window" and window.extra["edges"] == "window"

@@ -704,3 +704,22 @@ def test_crop_camera_equals_a_validated_replace():
     with pytest.raises(ValueError, match="width"):
         crop_camera(cam, 10, 11)
 
+
+@pytest.mark.parametrize(
+    "field, bad",
+    [
+        ("k_sigma", float("nan")),
+        ("ema_alpha", "0.5"),
+        ("margin_px", 1.5),
+        ("noise_floor_dn", 0.0),
+        ("saturation_dn", -1.0),
+        ("keep_crops", 1),
+        ("line_offset", "yes"),
+        ("recipe", "fit"),
+        ("background", "image"),
+    ],
+)
+def test_stream_config_refuses_a_bad_value_naming_its_field(field, bad):
+    with pytest.raises(ValueError, match=rf"^{field}: "):
+        StreamConfig(**{field: bad})
+    assert StreamConfig(recipe=Recipe(method="paper")).recipe.method == "paper"
