@@ -93,12 +93,17 @@ def estimate_region(
     t0 = time.perf_counter()
     ball = BallInput(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn)
     detected = detect_stage(ball)
-    lines = dict(first_line=region.line_start, last_line=region.line_stop - 1)
     try:
         guess = key_points_stage(ball, detected)
     except ValueError as exc:
         return BallEstimate.undetermined_estimate(
-            recipe.method, radius_m, f"initial guess impossible: {exc}", detected.flags, **lines, run_time_s=time.perf_counter() - t0
+            recipe.method,
+            radius_m,
+            f"initial guess impossible: {exc}",
+            detected.flags,
+            first_line=region.line_start,
+            last_line=region.line_stop - 1,
+            run_time_s=time.perf_counter() - t0,
         )
     initial = _initial_estimate(guess)
     t_init = time.perf_counter() - t0
@@ -110,15 +115,10 @@ def estimate_region(
     second = None
     if recipe.shading and shading is not None and shading.state == "built" and pixel.fit is None:
         second = second_measurement_stage(ball, first, shading)
-    final = final_fit_stage(ball, guess, first, shading or Shading("no_start"), pixel, second)
+    final = final_fit_stage(ball, guess, first, shading, pixel, second)
     record = stage_record(recipe, shading, pixel, second, final)
-    times = {
-        "time_initial_s": t_init,
-        "time_edges_s": first.time_edges_s,
-        "time_fit_s": final.fit.run_time_s,
-        "time_shading_s": _shading_time(recipe, first, shading, pixel, second, final),
-    }
-    return _fit_estimate(ball, _guess_flags(detected, guess), initial, final, record, times, t0)
+    t_shading = _shading_time(recipe, first, shading, pixel, second, final)
+    return _fit_estimate(ball, _guess_flags(detected, guess), initial, final, record, t0, t_init, first.time_edges_s, t_shading)
 
 
 def _initial_estimate(guess: InitialGuess) -> BallEstimate:
@@ -169,8 +169,23 @@ def _shading_time(recipe: Recipe, first: FirstFit, shading: Shading | None, pixe
     return measured + pixel.time_s + final.time_attempts_s
 
 
-def _fit_estimate(ball: BallInput, flags: list[str], initial: BallEstimate, final: FinalFit, record: StageRecord, times: dict, t0: float) -> BallEstimate:
-    """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.fit.propagate`)."""
+def _fit_estimate(
+    ball: BallInput,
+    flags: list[str],
+    initial: BallEstimate,
+    final: FinalFit,
+    record: StageRecord,
+    t0: float,
+    t_init: float,
+    t_edges: float,
+    t_shading: float,
+) -> BallEstimate:
+    """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.fit.propagate`).
+
+    ``t0`` is the ball's start time (``time.perf_counter``); ``t_init``,
+    ``t_edges`` and ``t_shading`` the seconds of the key points, the first
+    edge measurement and the shading pass.
+    """
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
     unc = propagate(ball.camera, fit.motion, fit.covariance)
@@ -215,10 +230,10 @@ def _fit_estimate(ball: BallInput, flags: list[str], initial: BallEstimate, fina
             "direction_sigma_deg": unc.direction_sigma_deg,
             "position_cov_m2": _cov_block(cov, [None, 1, 2]),
             "velocity_cov_m2ps2": cov[3:6, 3:6],
-            "time_initial_s": times["time_initial_s"],
-            "time_edges_s": times["time_edges_s"],
-            "time_fit_s": times["time_fit_s"],
-            "time_shading_s": times["time_shading_s"],
+            "time_initial_s": t_init,
+            "time_edges_s": t_edges,
+            "time_fit_s": fit.run_time_s,
+            "time_shading_s": t_shading,
             "shading_pass": record.shading_pass,
             "pixels": record.pixels,
             "edges": final.edges.edges_method,

@@ -384,22 +384,20 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
     gains = column_gains(ball.image.data, first.background_dn, r.mask, r.line_start, r.col_start, r.polarity, d.saturation_dn)
     sigma = gains.prnu_sigma
     long_ball = int(np.sum(edges.left_ok & edges.right_ok)) >= recipe.long_ball_min_lines
-    kind, found = "window", None
+    found = None
     # NaN (a ball too small to tell) is not flat-fielded
     if math.isfinite(sigma) and sigma <= recipe.matched_max_gain_sigma:
         if long_ball:
-            kind, found = "refined_background", _flat_fielded_matched(ball, first.start, divide_gains=False)
+            found = _flat_fielded_matched(ball, first.start, divide_gains=False)
         if found is None:
             m = matched_edges(edges, shading.limb)
-            kind, found = ("matched", (m, shading.limb)) if m is not edges else ("window", None)
+            found = SecondMeasurement("matched", m, shading.limb) if m is not edges else None
     elif recipe.flat_field and math.isfinite(sigma) and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
-        kind, found = "flat_fielded", _flat_fielded_matched(ball, first.start, divide_gains=True)
-    if found is None:
-        return replace(window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
-    return SecondMeasurement(kind, found[0], found[1], sigma, time.perf_counter() - t0)
+        found = _flat_fielded_matched(ball, first.start, divide_gains=True)
+    return replace(found or window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
 
 
-def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool) -> tuple[EdgeMeasurements, LimbProfile] | None:
+def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool) -> SecondMeasurement | None:
     """Matched edges measured on the ball's columns' background away from it, with its measured column gains divided out, or None.
 
     Both on the background of the ball's columns measured away from it
@@ -432,7 +430,9 @@ def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool
     m = matched_edges(edges, limb)
     if m is edges:
         return None
-    return (_with_gain_errors(m, gains) if gains is not None else m), limb
+    if gains is None:
+        return SecondMeasurement("refined_background", m, limb)
+    return SecondMeasurement("flat_fielded", _with_gain_errors(m, gains), limb)
 
 
 def _with_gain_errors(edges: EdgeMeasurements, gains: ColumnGains) -> EdgeMeasurements:
@@ -480,8 +480,6 @@ class FinalFit:
         The edges fitted.
     shading : ShadingModel or None
         The shading law of the shading path's fit (None on ``"first_edges"``).
-    shaded_converged : bool or None
-        Whether the shading path's last fit converged (None where it fitted nothing).
     time_attempts_s : float
         Seconds of the shading path's fits.
     time_refit_s : float
@@ -492,12 +490,13 @@ class FinalFit:
     fit: FitResult
     edges: EdgeMeasurements
     shading: ShadingModel | None = None
-    shaded_converged: bool | None = None
     time_attempts_s: float = 0.0
     time_refit_s: float = 0.0
 
 
-def final_fit_stage(ball: BallInput, guess: InitialGuess, first: FirstFit, shading: Shading, pixel: PixelFit, second: SecondMeasurement | None) -> FinalFit:
+def final_fit_stage(
+    ball: BallInput, guess: InitialGuess, first: FirstFit, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None
+) -> FinalFit:
     """The pixel fit where it was used, else the shading path's fit of the second measurement, else the model-free edges' fit.
 
     After matched edges on at least ``recipe.spread_min_lines`` lines the
@@ -508,31 +507,30 @@ def final_fit_stage(ball: BallInput, guess: InitialGuess, first: FirstFit, shadi
     its start (with the shading pass on) or from the key-point guess.
     """
     recipe = ball.recipe
-    if pixel.fit is not None:
-        return FinalFit("pixels", pixel.fit, shading.edges, shading.limb.shading, True)
+    if pixel.fit is not None and shading is not None:
+        return FinalFit("pixels", pixel.fit, shading.edges, shading.limb.shading)
     t0 = time.perf_counter()
-    shaded, refit_s = (None, 0.0) if second is None else _shaded_fit(ball, first, shading, second)
+    shaded = None if second is None else _shaded_fit(ball, first, second)
     attempts_s = time.perf_counter() - t0
-    if shaded is not None and shaded[1].converged:
-        path, fit, edges, limb = shaded
-        return FinalFit(path, fit, edges, limb.shading, True, attempts_s, refit_s)
+    if shaded is not None and shaded.fit.converged:
+        return replace(shaded, time_attempts_s=attempts_s)
     start = first.start if recipe.shading and first.start is not None else guess.motion
     fit = fit_motion(ball.camera, first.edges, start, recipe.edge_fit)
-    return FinalFit("first_edges", fit, first.edges, None, None if shaded is None else False, attempts_s, refit_s)
+    return FinalFit("first_edges", fit, first.edges, None, attempts_s, 0.0 if shaded is None else shaded.time_refit_s)
 
 
-def _shaded_fit(ball: BallInput, first: FirstFit, shading: Shading, second: SecondMeasurement) -> tuple[tuple[FinalPath, FitResult, EdgeMeasurements, LimbProfile], float]:
-    """The shading path's fit of the second measurement: ``((path, fit, edges, limb), refit seconds)``."""
+def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> FinalFit:
+    """The shading path's fit of the second measurement (converged or not)."""
     recipe, camera = ball.recipe, ball.camera
     edges, limb = second.edges, second.limb
     if second.kind != "window" and int(np.sum(edges.left_ok & edges.right_ok)) >= recipe.spread_min_lines:
         # the narrow edges matched: the ends' and the spread edges' pixels in their place
         spread = fit_motion(camera, replace(edges, profile_shade=shade_profile(limb, edges)), first.start, recipe.spread_fit)
         if spread.converged:
-            return ("spread", spread, edges, limb), 0.0
+            return FinalFit("spread", spread, edges, limb.shading)
     fit = fit_motion(camera, edges, first.start, recipe.edge_fit)
     if not (recipe.refit_law and second.kind == "window" and fit.converged):
-        return ("edges", fit, edges, limb), 0.0
+        return FinalFit("edges", fit, edges, limb.shading)
     # the law and the limb model again at the fitted motion (the guess's
     # normals are a pixel or so off), and the fit
     t0 = time.perf_counter()
@@ -542,8 +540,8 @@ def _shaded_fit(ball: BallInput, first: FirstFit, shading: Shading, second: Seco
         fit_r = fit_motion(camera, edges_r, fit.motion, recipe.edge_fit)
         if fit_r.converged:
             # the adopted refit's own time is the final fit's (time_fit_s)
-            return ("refit", fit_r, edges_r, limb_r), time.perf_counter() - t0 - fit_r.run_time_s
-    return ("edges", fit, edges, limb), time.perf_counter() - t0
+            return FinalFit("refit", fit_r, edges_r, limb_r.shading, time_refit_s=time.perf_counter() - t0 - fit_r.run_time_s)
+    return FinalFit("edges", fit, edges, limb.shading, time_refit_s=time.perf_counter() - t0)
 
 
 # ------------------------------------------------------------------ the record
