@@ -16,7 +16,7 @@ mean within ``1 / sqrt(N)`` of 0; RMS z = 2 means the reported sigma is half
 the actual error.  Also the edges used (``extra["edges"]``).
 
 ``--start``, ``--level-samples``, ``--refined-background`` and ``--refit-law`` set the
-shading pass's diagnostic options (:class:`ballscan.pipeline.estimate.ShadingSetup`).
+shading pass's options of the estimator's :class:`ballscan.pipeline.recipe.Recipe`.
 ``--clean`` also renders each ball noise-free (16 bits, no PRNU) and prints
 its errors in units of the noisy image's sigmas: the estimator's own
 (model) error, which no noise averages away.
@@ -50,7 +50,8 @@ import numpy as np  # noqa: E402
 from joblib import Parallel, delayed  # noqa: E402
 
 from ballscan.geometry.camera import LineScanCamera  # noqa: E402
-from ballscan.pipeline.estimate import ShadingSetup, estimate_image  # noqa: E402
+from ballscan.pipeline.estimate import estimate_image  # noqa: E402
+from ballscan.pipeline.recipe import Recipe  # noqa: E402
 from ballscan.measure.images import LineImage  # noqa: E402
 from ballscan.geometry.motion import BallMotion  # noqa: E402
 from ballscan.model.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render  # noqa: E402
@@ -96,7 +97,7 @@ def _random_motion(case: Case, rng: np.random.Generator, t_c_s: float) -> BallMo
     )
 
 
-def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup(), clean: bool = False) -> tuple[np.ndarray, np.ndarray, str]:
+def one_ball(case: Case, k: int, recipe: Recipe = Recipe(), clean: bool = False) -> tuple[np.ndarray, np.ndarray, str]:
     """z-scores of ball ``k`` of ``case``, of its noise-free twin (NaN unless ``clean``) and the edges it used."""
     rng = np.random.default_rng(1000 + k)
     cam = case.camera
@@ -107,7 +108,7 @@ def one_ball(case: Case, k: int, setup: ShadingSetup = ShadingSetup(), clean: bo
     none = np.full(6, np.nan)
 
     def measured(image: LineImage):
-        balls = estimate_image(image, cam, RADIUS_M, shading_setup=setup).balls
+        balls = estimate_image(image, cam, RADIUS_M, recipe=recipe).balls
         return balls[0] if len(balls) == 1 and balls[0].t_c_s is not None else None
 
     r = render(cam, [(m, app)], n_img, background_level=0.12, noise=SensorNoise(), seed=k, settings=FINE)
@@ -180,7 +181,12 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--stream", choices=("engine", "crop"), help="measure the balls in a stream (process_stream) on this background instead of as single images")
     args = ap.parse_args(argv)
     try:
-        setup = ShadingSetup(args.start, tuple(int(k) for k in args.level_samples.split(",")), args.refined_background, args.refit_law)
+        recipe = Recipe(
+            shading_start=args.start,
+            level_samples=tuple(int(k) for k in args.level_samples.split(",")),
+            refined_background=args.refined_background,
+            refit_law=args.refit_law,
+        )
     except ValueError as exc:
         ap.error(str(exc))
     names = [c for c in args.cases.split(",") if c]
@@ -189,9 +195,9 @@ def main(argv: list[str] | None = None) -> int:
         ap.error(f"unknown case(s) {', '.join(unknown)}; known: {', '.join(CASES)}")
     if args.balls < 2:
         ap.error("--balls: at least 2")
-    if args.stream and (args.clean or setup != ShadingSetup()):
+    if args.stream and (args.clean or recipe != Recipe()):
         ap.error("--stream: the stream's estimator has the default shading pass and no noise-free twins")
-    print(f"stream, background={args.stream!r}" if args.stream else f"shading pass: {setup}")
+    print(f"stream, background={args.stream!r}" if args.stream else f"recipe: {recipe}")
     print(f"z = (estimate - truth) / sigma over {args.balls} balls per case; an honest sigma: RMS 1, |mean| < {2 / np.sqrt(args.balls):.2f} (2 s.e.)")
     header = f"{'case':24s} {'lines':>5s}  " + "  ".join(f"{n:>11s}" for n in NAMES) + "  edges"
     print(header)
@@ -203,7 +209,7 @@ def main(argv: list[str] | None = None) -> int:
             done = Parallel(n_jobs=args.jobs)(delayed(stream_balls)(case, ks, args.stream) for ks in parts if ks)
             out = [o for part in done for o in part]
         else:
-            out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, setup, args.clean) for k in range(args.balls))
+            out = Parallel(n_jobs=args.jobs)(delayed(one_ball)(case, k, recipe, args.clean) for k in range(args.balls))
         kinds = Counter(o[2] for o in out)
         for label, col in ((name, 0), (f"{name} clean", 1)):
             z = np.array([o[col] for o in out])

@@ -92,12 +92,11 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
     from ballscan.measure.images import LineImage
     from ballscan.model.render import render
 
-    factor, value, trial, variants, spread = args
-    if spread:
-        # an experiment: the final fit's settings changed (estimate._SPREAD_PIXELS)
-        import ballscan.pipeline.estimate as E
+    from ballscan.pipeline.recipe import Recipe
 
-        E._SPREAD_PIXELS = replace(E._SPREAD_PIXELS, **spread)
+    factor, value, trial, variants, spread = args
+    # an experiment: the spread-pixel fit's settings changed (Recipe.spread_fit)
+    recipe = Recipe(spread_fit=replace(Recipe().spread_fit, **spread))
     spec, state, geom, app = trial_scene(factor, value, trial)
     truth = geom.motion
     cam = spec.scene.camera
@@ -106,10 +105,10 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
     rendered = render(cam, (truth, app), geom.n_lines, background_level=spec.scene.background_level, noise=spec.scene.noise, seed=int(state[0]))
     noise = spec.scene.noise
 
-    def measure(name, data, **kw):
+    def measure(name, data, pixels=False):
         t0 = time.perf_counter()
         img = LineImage(np.asarray(data, dtype=float), float(noise.max_dn), noise.bits, name)
-        rep = estimate_image(img, cam, R, method="fit", **kw)
+        rep = estimate_image(img, cam, R, recipe=replace(recipe, pixels=pixels))
         b, _ = ex._pick(rep, truth.t_c_s)
         err, sig, info = _vector(b, truth)
         out[name] = {"err": err, "sig": sig, "info": info, "time": time.perf_counter() - t0}
@@ -179,7 +178,7 @@ def main() -> None:
     ap.add_argument("--variants", default="default,pixels,noprnu,truegain")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=None, help="save the trial errors (npz)")
-    ap.add_argument("--spread", default="", help="experiment: FitSettings of the spread-pixel fit (estimate._SPREAD_PIXELS) changed, e.g. 'pixel_nodes=16,pixel_window_px=6.0'")
+    ap.add_argument("--spread", default="", help="experiment: FitSettings of the spread-pixel fit (Recipe.spread_fit) changed, e.g. 'pixel_nodes=16,pixel_window_px=6.0'")
     a = ap.parse_args()
     import ast
 

@@ -41,6 +41,7 @@ import numpy as np  # noqa: E402
 from ballscan.geometry.camera import LineScanCamera, line_times  # noqa: E402
 from ballscan.measure.detection import detect  # noqa: E402
 from ballscan.pipeline.estimate import estimate_region  # noqa: E402
+from ballscan.pipeline.recipe import Recipe  # noqa: E402
 from ballscan.measure.images import LineImage  # noqa: E402
 from ballscan.geometry.motion import BallMotion  # noqa: E402
 from ballscan.solve.precision import pixel_crlb  # noqa: E402
@@ -60,9 +61,9 @@ WHITE_DN = 1000.0  # DN per unit of linear grey; contrast = 700 DN
 TRUTH_SAMPLING = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
 
 
-# label -> (estimate_region's method, its ``pixels``): the paper's method, the
-# default fit (edges and levelled end areas) and the fit of the ends' pixels
-METHODS = {"paper": ("paper", False), "fit": ("fit", False), "pixels": ("fit", True)}
+# label -> estimate_region's recipe: the paper's method, the default fit
+# (edges and levelled end areas) and the fit of the ends' pixels
+METHODS = {"paper": Recipe(method="paper"), "fit": Recipe(), "pixels": Recipe(pixels=True)}
 
 
 def geometries() -> list[tuple[str, BallMotion]]:
@@ -93,7 +94,7 @@ def run(runs: int, noise_dn: float, repeat: int = 3) -> list[dict]:
             if len(det.regions) != 1:
                 raise RuntimeError(f"{gname}: {len(det.regions)} balls detected")
             for method in METHODS:
-                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method][0], pixels=METHODS[method][1])
+                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method])
                 a = acc[method]
                 a["det"].append(t_det)
                 if method != "paper":
@@ -102,7 +103,7 @@ def run(runs: int, noise_dn: float, repeat: int = 3) -> list[dict]:
                     a["refine"].append(b.extra["time_fit_s"])
                     # the least of `repeat` runs of the same estimate: the fit's
                     # cost without this shared machine's interruptions
-                    again = [estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method][0], pixels=METHODS[method][1]) for _ in range(repeat - 1)]
+                    again = [estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method]) for _ in range(repeat - 1)]
                     a["least"].append(min([b.extra["time_fit_s"]] + [x.extra["time_fit_s"] for x in again]))
                 else:
                     a["edges"].append(0.0)

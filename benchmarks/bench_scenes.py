@@ -35,11 +35,12 @@ import numpy as np  # noqa: E402
 
 from ballscan.geometry.camera import load_camera  # noqa: E402
 from ballscan.pipeline.estimate import estimate_image  # noqa: E402
+from ballscan.pipeline.recipe import Recipe  # noqa: E402
 from ballscan.measure.images import LineImage, load_image  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_DIRS = (HERE.parent.parent / "shared" / "scenes", HERE.parent / "tests" / "data" / "scenes")
-VARIANTS = {"fit": dict(method="fit"), "fit, 1 pass": dict(method="fit", shading=False), "paper": dict(method="paper")}
+VARIANTS = {"fit": Recipe(), "fit, 1 pass": Recipe(shading=False), "paper": Recipe(method="paper")}
 
 
 def renoise(clean_y: np.ndarray, noise: dict, seed: int) -> np.ndarray:
@@ -66,7 +67,7 @@ def run(scene_dir: Path, seeds: int, variants: list[str]) -> list[dict]:
         for seed in range(seeds):
             image = LineImage(renoise(clean_y, truth["noise"], 1000 + seed), 255.0, 8, f"{name}#{seed}")
             for variant in variants:
-                est = estimate_image(image, camera, balls[0]["radius_m"], **VARIANTS[variant]).balls
+                est = estimate_image(image, camera, balls[0]["radius_m"], recipe=VARIANTS[variant]).balls
                 # one estimate per true ball: the nearest t_c within 5 line
                 # periods, each estimate used once
                 free = [b for b in est if b.t_c_s is not None]

@@ -42,6 +42,7 @@ from ballscan.measure.detection import detect  # noqa: E402
 from ballscan.measure.images import LineImage  # noqa: E402
 from ballscan.geometry.motion import BallMotion  # noqa: E402
 from ballscan.model.render import Appearance, SensorNoise, apply_sensor, render  # noqa: E402
+from ballscan.pipeline.recipe import Recipe  # noqa: E402
 from ballscan.stream.engine import StreamConfig, preload_estimator, process_stream  # noqa: E402
 
 W = 2048
@@ -161,7 +162,7 @@ def main(argv: list[str] | None = None) -> int:
     empty = run(n, None)
     with_balls = run(n, 10_000)
     # the fit without its shading-aware second pass (`watch --no-shading`)
-    fast = run(n, 10_000, config=StreamConfig(shading=False))
+    fast = run(n, 10_000, config=StreamConfig(recipe=Recipe(shading=False)))
     from concurrent.futures import ProcessPoolExecutor
 
     with ProcessPoolExecutor(1, initializer=preload_estimator) as ex:

@@ -205,8 +205,8 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     from ballscan.measure.detection import detect
     from ballscan.measure.edges import with_limb
     from ballscan.measure.matched import matched_edges
-    from ballscan.pipeline.estimate import _full_background
     from ballscan.model.averaged import averaged_model
+    from ballscan.pipeline.background import full_background
     from ballscan.measure.images import LineImage
     from ballscan.geometry.motion import BallMotion
     from ballscan.model.render import Appearance, RenderSettings, render
@@ -220,7 +220,7 @@ def _flat_ball_edges(noise_dn: float, seed: int):
     img = LineImage(data, 1e12, 16, "flat ball")
     t = line_times(cam, 200)
     det = detect(img)
-    bg = _full_background(det)
+    bg = full_background(det)
     edges = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
     limb = ball_limb(cam, m, img.data, edges, t, bg)
     window = with_limb(edges, limb)

@@ -9,6 +9,8 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
+from ballscan.solve.fit import FitSettings
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -26,11 +28,11 @@ def _img(data: np.ndarray, sat: float = 255.0) -> LineImage:
 @pytest.mark.parametrize("method", ["fit", "paper"])
 def test_empty_and_saturated_images_give_no_ball(method):
     flat = _img(np.full((120, 2048), 20.0))
-    assert estimate_image(flat, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(flat, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
     sat = _img(np.full((120, 2048), 255.0))
-    assert estimate_image(sat, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(sat, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
     noise = _img(np.random.default_rng(0).normal(20, 2, (120, 2048)).round())
-    assert estimate_image(noise, CAM, 0.0335, method=method).balls == ()
+    assert estimate_image(noise, CAM, 0.0335, recipe=Recipe(method=method)).balls == ()
 
 
 @pytest.mark.parametrize("method", ["fit", "paper"])
@@ -38,7 +40,7 @@ def test_two_balls_give_two_estimates_in_tc_order(method):
     a = BallMotion(0.0335, 0.0016, (0, 0.25, 3.0), (30.0, 0, 0))
     b = BallMotion(0.0335, 0.0014, (0, -0.3, 3.2), (25.0, 1.0, 0))
     r = render(CAM, [(a, Appearance.flat(0.8)), (b, Appearance.flat(0.8))], 160, noise=SensorNoise(), seed=2)
-    balls = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    balls = estimate_image(_img(r.image), CAM, 0.0335, recipe=Recipe(method=method)).balls
     assert len(balls) == 2
     assert balls[0].t_c_s < balls[1].t_c_s
     assert abs(balls[0].position_m[1] - b.position_m[1]) < 0.01 and abs(balls[1].position_m[1] - a.position_m[1]) < 0.01
@@ -48,7 +50,7 @@ def test_two_balls_give_two_estimates_in_tc_order(method):
 def test_ball_cut_by_first_line_is_flagged(method):
     m = BallMotion(0.0335, 0.0004, (0, 0.02, 3.0), (30.0, 0, 0))
     r = render(CAM, (m, Appearance.flat(0.8)), 120, noise=SensorNoise(), seed=1)
-    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, method=method).balls
+    (ball,) = estimate_image(_img(r.image), CAM, 0.0335, recipe=Recipe(method=method)).balls
     assert "cut_first_line" in ball.flags
     assert ball.first_line == 0
 
@@ -59,7 +61,7 @@ def test_ball_cut_by_sensor_end_is_flagged():
     # needs that: see the detection module's limits)
     m = BallMotion(0.0335, 0.003, (0, -1.03, 3.0), (30.0, 0, 0))
     r = render(CAM, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=1)
-    balls = estimate_image(_img(r.image), CAM, 0.0335, method="fit").balls
+    balls = estimate_image(_img(r.image), CAM, 0.0335).balls
     assert len(balls) == 1 and "cut_sensor_end" in balls[0].flags
 
 
@@ -85,7 +87,7 @@ def test_reference_scenes_paper_method(name):
     truth = _truth(name)
     img = load_image(SCENES / f"{name}.png")
     cam = load_camera(SCENES / f"{name}.camera.toml")
-    rep = estimate_image(img, cam, truth[0]["radius_m"], method="paper")
+    rep = estimate_image(img, cam, truth[0]["radius_m"], recipe=Recipe(method="paper"))
     assert len(rep.balls) == len(truth)
     for est, tb in zip(rep.balls, sorted(truth, key=lambda b: b["t_c_s"])):
         assert ("cut_first_line" in est.flags) == (name == "pub_cut_first_line")
@@ -106,7 +108,7 @@ def test_world_frame_values_with_a_pose():
     cam = CAM.with_pose(R, [0.1, -0.2, 0.5])
     m = BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 2.0, 0.0))
     r = render(cam, (m, Appearance.flat(0.8)), 150, noise=SensorNoise(), seed=5)
-    (ball,) = estimate_image(_img(r.image), cam, 0.0335, method="fit").balls
+    (ball,) = estimate_image(_img(r.image), cam, 0.0335).balls
     w = ball.to_dict(cam)["world"]
     np.testing.assert_allclose(w["position_m"], cam.camera_to_world(np.array(ball.position_m)), atol=1e-12)
     np.testing.assert_allclose(w["velocity_mps"], cam.vectors_to_world(np.array(ball.velocity_mps)), atol=1e-12)
@@ -137,7 +139,7 @@ def test_cut_sensor_end_ball_through_the_json_path():
     m = BallMotion(0.0335, 0.003, (0, 1.0, 3.0), (30.0, 1.0, -0.5))  # centre 24 px inside the last pixel
     cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
     r = render(cam, (m, Appearance.flat(0.8)), 300, noise=SensorNoise(), seed=3)
-    rep = estimate_image(_img(r.image), cam, 0.0335, method="fit")
+    rep = estimate_image(_img(r.image), cam, 0.0335)
     import json as _json
 
     doc = _json.loads(rep.to_json(cam))
@@ -156,7 +158,7 @@ def test_timestamps_slower_than_the_nominal_line_rate():
 
 
 @pytest.mark.slow
-def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
+def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
     # A flat ball on a sensor without column-gain scatter gets the matched
     # edges; the same ball with 0.8 % PRNU (the ball's interior shows it:
     # 0.0063 measured) gets them on the crop with the measured gains divided
@@ -172,18 +174,15 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed(monkeypatch):
             r = render(cam, (m, app), 200, background_level=0.1, noise=noise, seed=4)
             img = LineImage(r.image.astype(float), float(noise.max_dn), 16, tex)
             for matched in (True, False):
-                b = estimate_image(img, cam, 0.0335, matched=matched).balls[0]
+                b = estimate_image(img, cam, 0.0335, recipe=Recipe(matched=matched)).balls[0]
                 seen[prnu, tex, matched] = b
                 assert abs(b.speed_mps - m.speed_mps) < 3.0 * b.speed_sigma_mps
     # the length gate off: the short PRNU ball flat-fielded
-    from ballscan.pipeline import estimate as est
-
     img_prnu = LineImage(
         render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008), seed=4).image.astype(float),
         65535.0, 16, "none",
     )
-    monkeypatch.setattr(est, "_FLAT_FIELD_MIN_LINES", 0)
-    forced = estimate_image(img_prnu, cam, 0.0335).balls[0]
+    forced = estimate_image(img_prnu, cam, 0.0335, recipe=Recipe(long_ball_min_lines=0)).balls[0]
     assert forced.extra["edges"] == "matched" and forced.extra["pixels"] == "spread" and forced.extra["flat_fielded"]
     assert abs(forced.speed_mps - m.speed_mps) < 3.0 * forced.speed_sigma_mps
     flat = seen[0.0, "none", True]
@@ -207,8 +206,8 @@ def _flat_16bit_ball(m: BallMotion, line_rate_hz: float, n_lines: int, prnu: flo
 
 
 def test_a_ball_on_few_lines_keeps_the_matched_edge_fit():
-    # 60 m/s at 10 kHz: about 11 lines; the spread lines' pixels are not
-    # used there (a review measured their speed errors 1.45 sigma RMS)
+    # 60 m/s at 10 kHz: about 11 lines, fewer than Recipe.spread_min_lines:
+    # the spread lines' pixels are not used there (their speed errors exceed their sigmas)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (60.0, 0.0, 0.0))
     b = _flat_16bit_ball(m, line_rate_hz=10000.0, n_lines=40, prnu=0.0, seed=3)
     assert b.extra["edges"] == "matched" and b.extra["pixels"] == "off"
@@ -229,7 +228,7 @@ def test_refined_background_of_a_ball_s_columns():
     # sweep: 0.09-0.10 sigma high); refine_background measures them away
     # from it (0.003-0.015 sigma measured)
     from ballscan.measure.detection import background_at, detect
-    from ballscan.pipeline.estimate import refine_background
+    from ballscan.pipeline.background import refine_background
 
     cam = LineScanCamera(2048, 4000.0, 1023.5, 35000.0)
     m = BallMotion(0.11, 0.0082, (0.0, 0.1, 3.0), (18.0, 0.0, 0.0))
@@ -290,30 +289,130 @@ def test_long_ball_on_a_flat_fielded_sensor_measured_on_its_refined_background()
     assert np.mean(speed) < 1.2 and np.sqrt(np.mean(np.square(vx))) < 2.0, (speed, vx)
 
 
-def test_shading_setup_is_checked_and_its_default_is_the_estimator():
-    from ballscan.pipeline.estimate import ShadingSetup
-
-    for bad in (dict(start="truth"), dict(level_samples=(0, 2)), dict(level_samples="32"), dict(level_samples=(2.7, 1.9)),
-                dict(level_samples=(True, True)), dict(level_samples=3), dict(refit_law="no"), dict(refined_background=1)):
-        with pytest.raises(ValueError):
-            ShadingSetup(**bad)
-    assert ShadingSetup(level_samples=[8, 4]).level_samples == (8, 4)  # stored as a tuple: hashable
-    hash(ShadingSetup(level_samples=[8, 4]))
+def test_shading_options_of_the_recipe_reach_the_estimator():
+    assert Recipe(level_samples=[8, 4]).level_samples == (8, 4)  # stored as a tuple: hashable
+    hash(Recipe(level_samples=[8, 4]))
     cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
     m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
     r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
     img = LineImage(r.image.astype(float), 255.0, 8, "shaded")
     plain = estimate_image(img, cam, 0.0335).balls[0]
-    # the estimator before ShadingSetup existed (session 9's final code, 72c03ba) on this image
-    # (pinned: a change of the default estimator updates it knowingly)
+    # the default estimator on this image (pinned: a change of the default estimator updates it knowingly)
     assert plain.velocity_mps == pytest.approx((12.05793171784064, 0.3408214486809053, -0.47047512671892494), rel=0, abs=1e-6)
     assert not plain.extra["shading_refit"] and not plain.extra["background_refined"]
-    other = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup("loose_fit", (8, 4), True)).balls[0]
+    other = estimate_image(img, cam, 0.0335, recipe=Recipe(shading_start="loose_fit", level_samples=(8, 4), refined_background=True)).balls[0]
     assert other.extra["shading_pass"] == "used" and other.extra["background_refined"]
-    refit = estimate_image(img, cam, 0.0335, shading_setup=ShadingSetup(refit_law=True)).balls[0]
+    refit = estimate_image(img, cam, 0.0335, recipe=Recipe(refit_law=True)).balls[0]
     assert refit.extra["shading_pass"] == "used" and refit.extra["shading_refit"]
     # the same ball along and across the sensor within a few of its sigmas either way (V.z's is metres per second)
     for e in (other, refit):
         assert e.velocity_mps != plain.velocity_mps
         dv = np.subtract(e.velocity_mps, plain.velocity_mps)[:2]
         assert np.all(np.abs(dv) < 3.0 * np.asarray(plain.velocity_sigma_mps)[:2])
+
+
+@pytest.mark.parametrize(
+    "field, bad",
+    [
+        ("method", "powell"),  # a Literal
+        ("shading_start", "truth"),  # a Literal
+        ("shading", 1),  # a switch
+        ("refit_law", "no"),  # a switch
+        ("level_samples", (0, 2)),  # a pair of positive integers
+        ("level_samples", (2.7, 1.9)),
+        ("level_samples", 3),
+        ("long_ball_min_lines", -1),  # an integer threshold
+        ("background_min_lines", 2.5),
+        ("matched_max_gain_sigma", float("nan")),  # a real threshold
+        ("max_lateral_px", -0.1),
+        ("uniform_max_light", True),
+        ("background_window_sigma", 0.0),
+        ("edge_fit", {"pixels": True}),  # fit settings
+        ("spread_fit", FitSettings()),  # fit settings of a pixel fit
+    ],
+)
+def test_recipe_refuses_a_bad_value_naming_its_field(field, bad):
+    with pytest.raises(ValueError, match=rf"^{field}: "):
+        Recipe(**{field: bad})
+
+
+def test_recipe_default_is_the_estimator_and_is_hashable():
+    assert Recipe() == Recipe(method="fit", shading=True, pixels=False, matched=True, flat_field=True)
+    assert hash(Recipe()) == hash(Recipe())
+    with pytest.raises(Exception):
+        Recipe().shading = False  # frozen
+    with pytest.raises(ValueError, match="recipe"):
+        estimate_image(_img(np.zeros((10, CAM.width))), CAM, 0.0335, recipe="fit")
+
+
+def _shaded_ball():
+    cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
+    m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
+    r = render(cam, [(m, Appearance(texture="none", shading=True, ball_level=0.8))], 120, background_level=0.12, seed=3)
+    return cam, LineImage(r.image.astype(float), 255.0, 8, "shaded")
+
+
+def _flat_ball():
+    cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
+    m = BallMotion(0.0335, 300 / cam.line_rate_hz, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
+    r = render(cam, (m, Appearance.flat(0.8)), 600, background_level=0.1, noise=ideal, seed=1)
+    return cam, LineImage(r.image.astype(float), 255.0, 8, "flat")
+
+
+def _record_as_extra(b):
+    r = b.record
+    return {
+        "shading_pass": r.shading_pass,
+        "pixels": r.pixels,
+        "column_gain_sigma": r.column_gain_sigma,
+        "flat_fielded": r.flat_fielded,
+        "background_refined": r.background_refined,
+        "shading_refit": r.shading_refit,
+    }
+
+
+def test_stage_record_says_what_the_stages_did():
+    # a Lambertian-shaded ball: the shading pass's fit of its window edges
+    # (the pixel model does not describe it: no matched edges)
+    cam, img = _shaded_ball()
+    shaded = estimate_image(img, cam, 0.0335).balls[0]
+    rec = shaded.record
+    assert (rec.shading_pass, rec.second_measurement, rec.final_fit, rec.pixels) == ("used", "window", "edges", "off")
+    assert rec.column_gain_sigma is None and not rec.shading_refit
+    # a flat ball on an ideal sensor: matched edges and the spread lines' pixels
+    cam_f, img_f = _flat_ball()
+    flat = estimate_image(img_f, cam_f, 0.0335).balls[0]
+    rec = flat.record
+    assert (rec.shading_pass, rec.second_measurement, rec.final_fit, rec.pixels) == ("used", "matched", "spread", "spread")
+    assert rec.column_gain_sigma < 0.0015
+    # without the shading pass: the model-free edges' fit only
+    off = estimate_image(img, cam, 0.0335, recipe=Recipe(shading=False)).balls[0].record
+    assert (off.shading_pass, off.second_measurement, off.final_fit, off.pixels) == ("off", "none", "first_edges", "off")
+    # the JSON's diagnostics repeat the record; the record itself is not in the JSON
+    for b in (shaded, flat):
+        d = b.to_dict()
+        assert "record" not in d
+        assert {k: d[k] for k in _record_as_extra(b)} == _record_as_extra(b)
+    assert estimate_image(img, cam, 0.0335, recipe=Recipe(method="paper")).balls[0].record is None
+
+
+def test_a_recipe_other_than_the_default_reaches_the_estimator(tmp_path, capsys):
+    # shading off in the recipe is the CLI's --no-shading; matched off keeps the windows
+    from ballscan.cli.app import main
+    from ballscan.geometry.camera import save_camera
+    from ballscan.model.render import write_image
+
+    cam, img = _shaded_ball()
+    on = estimate_image(img, cam, 0.0335).balls[0]
+    off = estimate_image(img, cam, 0.0335, recipe=Recipe(shading=False)).balls[0]
+    assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off" and off.extra["shading"] is None
+    assert off.velocity_mps != on.velocity_mps
+    write_image(tmp_path / "b.png", img.data.astype(np.uint8))
+    save_camera(cam, tmp_path / "b.toml")
+    assert main(["estimate", str(tmp_path / "b.png"), "--camera", str(tmp_path / "b.toml"), "--radius", "0.0335", "--json", "--no-shading"]) == 0
+    cli = json.loads(capsys.readouterr().out)["balls"][0]
+    assert cli["velocity_mps"] == list(off.velocity_mps) and cli["shading_pass"] == "off"
+    cam_f, img_f = _flat_ball()
+    window = estimate_image(img_f, cam_f, 0.0335, recipe=Recipe(matched=False)).balls[0]
+    assert window.record.second_measurement == "window" and window.extra["edges"] == "window"

@@ -142,7 +142,7 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # 16-bit sensor does: the loss there is the window edges' on ~500 lines.
 # Session 8: the matched edges (and the spread lines' pixels) on PRNU
 # sensors too, measured on the crop with the ball's measured column gains
-# divided out (estimate._flat_fielded_matched; balls of >= 64 measured
+# divided out (pipeline.estimate: balls of >= 64 measured
 # columns), the background of its columns measured away from it (the
 # detector's level there was 0.1 noise sigma high at R = 0.11 m, in
 # proportion to the noise: +1.1e-5 on the speed, 1.8 sigma of the bound)
@@ -156,7 +156,7 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # R = 0.11 m, within 1.5x at the other six (0.12x R = 0.02 m, 0.70x
 # 4.7 m/s, 0.26x 60 m/s, 0.47x 0 deg, 1.31x 60 deg, 0.48x 5 800 lines/s).
 # Merged with the flat-fielded path only on balls of >= 250 lines with both
-# edges (estimate._FLAT_FIELD_MIN_LINES: on the stream bench's 109-line
+# edges (Recipe.long_ball_min_lines: on the stream bench's 109-line
 # balls its speed sigma was 1.45x small) and the fit's exact Jacobians:
 # 1.7x at both (0.000705 % vs 0.00041 %, 0.00272 % vs 0.00157 %).
 # Session 9, measured on 32 seeds of each point (the test's 8 first):
@@ -204,7 +204,7 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # statistic: an efficient estimator's exceeds 1.5x with probability 0.12,
 # one at 1.15x / 1.3x the bound with 0.23 / 0.35.
 # Then the spread lines' pixel windows reach 20 px beyond half the edge
-# spread, not 3 (estimate._SPREAD_PIXELS: each end's free brightness is
+# spread, not 3 (Recipe.spread_fit: each end's free brightness is
 # measured on the ball's interior, not on the ramps' inner pixels; fit
 # minus the efficient estimator, 128 seeds: mean +0.19 / +0.51 / +0.51 ->
 # +0.14 / +0.19 / +0.21 sigma, RMS 0.55 / 0.91 / 0.83 -> 0.46 / 0.62 /

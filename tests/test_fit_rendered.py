@@ -36,6 +36,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, RenderSettings, SensorNoise, apply_sensor, render
@@ -57,7 +58,7 @@ def _image(data: np.ndarray) -> LineImage:
 
 
 def _estimate(data: np.ndarray, camera: LineScanCamera, radius: float):
-    balls = estimate_image(_image(data), camera, radius, method="fit").balls
+    balls = estimate_image(_image(data), camera, radius).balls
     if len(balls) != 1:
         raise AssertionError(f"expected one ball, found {len(balls)}")
     return balls[0]
@@ -143,7 +144,7 @@ def test_clean_reference_scenes_speed_error():
         cam = load_camera(SCENES / f"{name}.camera.toml")
         img = load_image(SCENES / "clean" / f"{name}.png")
         truth = _scene_balls(name)
-        est = estimate_image(img, cam, truth[0]["radius_m"], method="fit").balls
+        est = estimate_image(img, cam, truth[0]["radius_m"]).balls
         assert len(est) == len(truth), name
         for tb in truth:
             eb = min(est, key=lambda e: abs(e.t_c_s - tb["t_c_s"]))
@@ -186,7 +187,7 @@ def _noisy_flat_runs(m: BallMotion, seed: int, pixels: bool = False, runs: int =
     for _ in range(runs):
         img = LineImage(clean * 1000.0 + 5.0 * rng.standard_normal(clean.shape), 1e12, 16, "fine")
         det = detect(img)
-        out.append(estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t, "fit", pixels=pixels))
+        out.append(estimate_region(img, det, det.regions[0], CAM, R_TENNIS, t, Recipe(pixels=pixels)))
     return np.array([b.speed_mps - m.speed_mps for b in out]), np.array([b.speed_sigma_mps for b in out]), out
 
 
@@ -197,7 +198,7 @@ def test_pixel_fit_of_the_ends_near_the_cramer_rao_bound():
 
     m0 = _oblique(0.0)
     clean = render(CAM, (m0, Appearance.flat(0.8)), 200, background_level=0.1, noise=None, settings=FINE).clean
-    b = estimate_image(LineImage(clean * 65535.0, 65535.0, 16, "fine"), CAM, R_TENNIS, pixels=True).balls[0]
+    b = estimate_image(LineImage(clean * 65535.0, 65535.0, 16, "fine"), CAM, R_TENNIS, recipe=Recipe(pixels=True)).balls[0]
     assert b.extra["pixels"] == "used"
     # measured -0.0003 % (edges and areas: -0.012 % on this render), V.z 2e-5 m/s
     assert abs(b.speed_mps - m0.speed_mps) / m0.speed_mps < 2e-5
@@ -243,7 +244,7 @@ def test_pixel_fit_refuses_a_shaded_ball():
     m = _oblique(0.0)
     clean = render(CAM, (m, app), 200, background_level=0.1, noise=None).clean
     img = LineImage(clean * 65535.0, 65535.0, 16, "shaded")
-    asked = estimate_image(img, CAM, R_TENNIS, pixels=True).balls[0]
+    asked = estimate_image(img, CAM, R_TENNIS, recipe=Recipe(pixels=True)).balls[0]
     plain = estimate_image(img, CAM, R_TENNIS).balls[0]
     assert asked.extra["pixels"] == "not_uniform" and plain.extra["pixels"] == "off"
     assert asked.velocity_mps == plain.velocity_mps
@@ -255,19 +256,19 @@ def test_pixel_fit_cut_ball_lateral_motion_and_no_shading():
     cut = BallMotion(R_TENNIS, 0.003, (0.0, -0.998, 3.0), (30.0, 0.0, 0.0))  # centre at u = 25 px
     clean = render(CAM, (cut, Appearance.flat(0.8)), 300, background_level=0.1, noise=None).clean
     img = LineImage(clean * 1000.0 + 5.0 * np.random.default_rng(0).standard_normal(clean.shape), 1e12, 16, "cut")
-    b = estimate_image(img, CAM, R_TENNIS, pixels=True).balls[0]
+    b = estimate_image(img, CAM, R_TENNIS, recipe=Recipe(pixels=True)).balls[0]
     # measured: used, -0.0009 +- 0.0021 m/s (edges and areas: -0.0028 +- 0.020)
     assert b.extra["pixels"] == "used" and "cut_sensor_end" in b.flags
     assert abs(b.speed_mps - cut.speed_mps) < 3 * b.speed_sigma_mps
 
     lateral = BallMotion(R_TENNIS, 0.002, (0.0, 0.01, 3.0), (21.2, 21.2, 0.0))  # 0.42 px along the sensor per exposure
     clean = render(CAM, (lateral, Appearance.flat(0.8)), 200, background_level=0.1, noise=None).clean
-    assert estimate_image(LineImage(clean * 65535.0, 65535.0, 16, "lateral"), CAM, R_TENNIS, pixels=True).balls[0].extra["pixels"] == "lateral_motion"
+    assert estimate_image(LineImage(clean * 65535.0, 65535.0, 16, "lateral"), CAM, R_TENNIS, recipe=Recipe(pixels=True)).balls[0].extra["pixels"] == "lateral_motion"
 
     app = Appearance(ball_level=0.8, shading=True, light_dir=(-0.35, -0.45, -0.82), ambient=0.35)
     clean = render(CAM, (_oblique(0.0), app), 200, background_level=0.1, noise=None).clean
     img = LineImage(clean * 65535.0, 65535.0, 16, "shaded")
-    asked = estimate_image(img, CAM, R_TENNIS, shading=False, pixels=True).balls[0]
-    plain = estimate_image(img, CAM, R_TENNIS, shading=False).balls[0]
+    asked = estimate_image(img, CAM, R_TENNIS, recipe=Recipe(shading=False, pixels=True)).balls[0]
+    plain = estimate_image(img, CAM, R_TENNIS, recipe=Recipe(shading=False)).balls[0]
     assert asked.extra["pixels"] == "not_uniform" and asked.extra["shading_pass"] == "off"
     assert asked.velocity_mps == plain.velocity_mps and asked.extra["shading"] is None

@@ -94,6 +94,7 @@ def test_every_kernel_compiles_one_signature_only():
     # first seen: 0.5 s inside a stream's ball
     from ballscan.measure.detection import ColumnModel, detect
     from ballscan.pipeline.estimate import estimate_image
+    from ballscan.pipeline.recipe import Recipe
     from ballscan.measure.images import LineImage
     from ballscan.model.render import Appearance, SensorNoise, render
     from ballscan.stream.engine import preload_estimator
@@ -106,7 +107,7 @@ def test_every_kernel_compiles_one_signature_only():
         r = render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=noise, seed=4)
         img = LineImage(r.image.astype(float), float(noise.max_dn), 16, "k")
         for pixels in (False, True):
-            estimate_image(img, cam, 0.0335, pixels=pixels)
+            estimate_image(img, cam, 0.0335, recipe=Recipe(pixels=pixels))
         # and on known columns (the stream's engine background: read-only arrays)
         own = detect(img)
         estimate_image(img, cam, 0.0335, columns=ColumnModel(own.background_dn, own.noise_dn))

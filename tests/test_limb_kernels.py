@@ -13,7 +13,7 @@ from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.measure.robust import median as _median
 from ballscan.measure.detection import detect
 from ballscan.errors import GeometryError
-from ballscan.pipeline.estimate import _full_background
+from ballscan.pipeline.background import full_background
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -157,7 +157,7 @@ def _ball(k1: float = 0.0, texture: str = "tennis", seed: int = 4):
     image = LineImage(r.image.astype(float), float(noise.max_dn), 16, "shaded ball")
     t = line_times(cam, image.data.shape[0])
     det = detect(image)
-    bg = _full_background(det)
+    bg = full_background(det)
     edges = E.measure_edges(image.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
     limb = ball_limb(cam, MOTION, image.data, edges, t, bg)
     assert limb is not None
@@ -315,7 +315,7 @@ def _interior(texture: str, light: bool = True, seed: int = 2):
     image = LineImage(data, 1e9, 16, "ball")
     t = line_times(cam, 200)
     det = detect(image)
-    edges = E.measure_edges(image.data, det.regions[0], _full_background(det), det.noise_dn, t)
+    edges = E.measure_edges(image.data, det.regions[0], full_background(det), det.noise_dn, t)
     got = {}
     orig = shading.shading_fit
 
@@ -325,7 +325,7 @@ def _interior(texture: str, light: bool = True, seed: int = 2):
 
     shading.shading_fit = grab
     try:
-        ball_limb(cam, MOTION, image.data, edges, t, _full_background(det))
+        ball_limb(cam, MOTION, image.data, edges, t, full_background(det))
     finally:
         shading.shading_fit = orig
     return got["y"], got["n"]

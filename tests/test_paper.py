@@ -7,6 +7,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.solve.paper import gradient_image, render_coverage
@@ -54,7 +55,7 @@ def paper_results():
     for name, dark in _KEYS:
         cam, m, n_lines, _ = CASES[name]
         app = Appearance(ball_level=0.05 if dark else 0.8, shading=False)
-        (ball,) = estimate_image(_image(cam, m, n_lines, app, 0.6 if dark else 0.1), cam, m.radius_m, method="paper").balls
+        (ball,) = estimate_image(_image(cam, m, n_lines, app, 0.6 if dark else 0.1), cam, m.radius_m, recipe=Recipe(method="paper")).balls
         out[name, dark] = ball
     return out
 
@@ -114,7 +115,7 @@ def test_textured_noisy_ball_found_and_measured():
     m = BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 2.0, 0.0))
     app = Appearance(ball_level=0.65, texture="tennis", seam_level=0.95, orientation_seed=4)
     img = _image(cam, m, 150, app, 0.1, seed=9)
-    (ball,) = estimate_image(img, cam, m.radius_m, method="paper").balls
+    (ball,) = estimate_image(img, cam, m.radius_m, recipe=Recipe(method="paper")).balls
     # found and measured in the sensor plane; V.z is the paper method's weak axis (see above)
     assert abs(ball.velocity_mps[0] - m.velocity_mps[0]) / m.velocity_mps[0] < 0.02
     assert abs(ball.velocity_mps[1] - m.velocity_mps[1]) < 0.5

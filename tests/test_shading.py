@@ -11,8 +11,10 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.measure.detection import detect
 from ballscan.measure.edges import EdgeMeasurements, measure_edges, with_limb
-from ballscan.pipeline.estimate import _full_background, estimate_image
 from ballscan.model.averaged import averaged_model
+from ballscan.pipeline.background import full_background
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -74,7 +76,7 @@ def test_fit_shading_settings_validated_by_name(kw, name):
 def test_limb_profile_settings_validated_at_construction():
     r, img, _ = _shaded()
     e, reg, t = _edges(img, limb_on=False)
-    limb = ball_limb(CAM, MOTION, img, e, t, _full_background(detect(LineImage(img, 1e9, 16, "render"))))
+    limb = ball_limb(CAM, MOTION, img, e, t, full_background(detect(LineImage(img, 1e9, 16, "render"))))
     from dataclasses import replace
 
     replace(limb, level_rel_sigma=float("nan"))  # not measured
@@ -86,7 +88,7 @@ def test_limb_profile_settings_validated_at_construction():
 def _edges(img, limb_on: bool):
     image = LineImage(img, 1e9, 16, "render")
     det = detect(image)
-    bg = _full_background(det)
+    bg = full_background(det)
     reg = det.regions[0]
     t = line_times(CAM, img.shape[0])
     e0 = measure_edges(img, reg, bg, 0.5, t)
@@ -119,7 +121,7 @@ def test_texture_next_to_the_edge_keeps_the_model_free_value():
     r, img, _ = _shaded()
     e, reg, t = _edges(img, False)
     image = LineImage(img, 1e9, 16, "render")
-    bg = _full_background(detect(image))
+    bg = full_background(detect(image))
     limb = ball_limb(CAM, MOTION, img, e, t, bg)
     # the left edges the model corrects without a seam, and a seam on the run
     # just inside the level run on ten of them
@@ -147,7 +149,7 @@ def test_estimate_reports_the_shading_and_can_skip_it():
     r, img, _ = _shaded()
     image = LineImage(img, 1e9, 16, "render")
     on = estimate_image(image, CAM, MOTION.radius_m).balls[0]
-    off = estimate_image(image, CAM, MOTION.radius_m, shading=False).balls[0]
+    off = estimate_image(image, CAM, MOTION.radius_m, recipe=Recipe(shading=False)).balls[0]
     assert on.extra["shading"] is not None and off.extra["shading"] is None
     assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off"
     assert off.extra["time_shading_s"] == 0.0
@@ -191,7 +193,7 @@ def test_with_limb_equals_measuring_again(name):
     image = LineImage(np.asarray(data, dtype=float), 255.0, 8, name)
     det = detect(image)
     assert len(det.regions) == len(motions)
-    bg = _full_background(det)
+    bg = full_background(det)
     t = line_times(CAM, data.shape[0])
     flags = set()
     for reg in det.regions:
@@ -259,7 +261,7 @@ def test_no_area_level_where_a_line_is_saturated():
     motions, data = _noisy_scenes()["saturated"]
     image = LineImage(np.asarray(data, dtype=float), 255.0, 8, "saturated")
     det = detect(image)
-    bg = _full_background(det)
+    bg = full_background(det)
     t = line_times(CAM, data.shape[0])
     plain = measure_edges(image.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
     limb = ball_limb(CAM, motions[0], image.data, plain, t, bg)
@@ -302,7 +304,7 @@ def flat_noise_free():
     image = LineImage(r.image.astype(float), 65535.0, 16, "render")
     t = line_times(CAM, 200)
     det = detect(image)
-    bg = _full_background(det)
+    bg = full_background(det)
     first = measure_edges(image.data, det.regions[0], bg, det.noise_dn, t)
     limb = ball_limb(CAM, MOTION, image.data, first, t, bg)
     me = averaged_model(CAM, MOTION.to_params()[None], MOTION.radius_m, first.t_s, n_nodes=8)
@@ -380,7 +382,7 @@ def test_flat_ball_shading_fit_does_not_run_away(monkeypatch):
     img = LineImage(data, 1e12, 16, "flat ball")
     t = line_times(cam, 200)
     det = detect(img)
-    bg = _full_background(det)
+    bg = full_background(det)
     edges = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
 
     def run():
@@ -419,7 +421,7 @@ def test_a_light_behind_a_flat_ball_is_not_fitted():
         data = 1000.0 * r.clean + 3.0 * rng.standard_normal(r.clean.shape)
         img = LineImage(data, 1e9, 16, "ball")
         det = detect(img)
-        bg = _full_background(det)
+        bg = full_background(det)
         edges = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, saturation_dn=det.saturation_dn)
         law = ball_limb(cam, m, img.data, edges, t, bg).shading
         assert (np.linalg.norm(law.light_dn) > 0) == expect_light, law

@@ -15,6 +15,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, save_camera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, apply_sensor, render, write_image
@@ -88,7 +89,7 @@ def runs(long_stream):
     for ch in CHUNKS:
         src = RawLineSource(sim.raw, CAM.width, chunk_lines=ch, timestamps=sim.timestamps_path)
         out[ch] = list(process_stream(src, CAM, RADIUS, source="s.raw"))
-    # the crop's own background (StreamConfig.background="crop"), as the stream measured before session 11
+    # the crop's own background (StreamConfig.background="crop")
     src = RawLineSource(sim.raw, CAM.width, chunk_lines=64, timestamps=sim.timestamps_path)
     out["crop"] = list(process_stream(src, CAM, RADIUS, StreamConfig(background="crop"), source="s.raw"))
     return out
@@ -153,7 +154,7 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
             c0, c1 = r.crop_cols
             # 1. the very same numbers as estimate_image on the event's crop (with the engine's columns)
             assert (r.crop_columns is None) == (bg == "crop")
-            same = estimate_crop(np.asarray(data[l0:l1, c0:c1]), ts[l0:l1], crop_camera(CAM, c0, c1), RADIUS, "fit", 255.0, 8, "crop", columns=r.crop_columns)
+            same = estimate_crop(np.asarray(data[l0:l1, c0:c1]), ts[l0:l1], crop_camera(CAM, c0, c1), RADIUS, Recipe(), 255.0, 8, "crop", columns=r.crop_columns)
             k = int(np.argmin([abs(b.t_c_s - e.t_c_s) for b in same]))
             assert same[k].t_c_s == e.t_c_s and same[k].position_m == e.position_m and same[k].velocity_mps == e.velocity_mps
             v = np.r_[e.t_c_s, e.position_m[1:], e.velocity_mps]
@@ -180,33 +181,19 @@ def test_accuracy_as_single_image_fit(long_stream, runs):
             differ = e.extra["partial_levelled"] != rb.extra["partial_levelled"]
             ratios.append(np.abs(v - w) / (np.maximum(s, s_ref) if differ else s))
     ratios = np.array(ratios)  # (ball, [t_c, y0, z0, vx, vy, vz])
-    # measured with the shading-aware second pass: medians 0.08-0.26
-    # (the crop's own background and shading fit differ a little)
-    # Since session 4 (the renderer's finely sampled end lines, the shading
-    # pass's whole-pixel coverage) one ball of the 32 (30 lines long, V.z
-    # sigma 11 m/s) differs by 2.4 sigma in t_c and 2.7 in V.x: the crop
-    # keeps 60 edges, the whole width 62, and on so short a ball two end
-    # edges move V.x by that much (the crop's V.x is 1.3 sigma from the
-    # truth, the whole width's 1.6).  The other 31 balls stay within 1.5
-    # sigma.  Since session 5 (the partial lines levelled when they agree)
-    # two balls of 32 take different decisions on the crop and the whole
-    # width: the levelled fit's t_c sigma is 3-30x smaller, and in its units
-    # one ball's t_c moved 4.8 sigma (both fits 1.8 sigma from the truth); in
-    # the larger sigma 1.9.  Measured then: two balls above 1.5 (1.9 in t_c,
-    # 1.59 in V.x on a ball both fits level), the others within 1.26.
+    # the crop's own background and shading fit differ a little from the
+    # whole width's.  On very short balls (about 30 lines) two end edges more
+    # or less move V.x by a few sigmas, and a ball whose partial lines one
+    # fit levels and the other does not moves t_c by a few of the smaller
+    # sigma: at most two balls beyond 1.5, none beyond 3
     assert np.all(ratios <= 3.0)
     assert np.sum(np.any(ratios > 1.5, axis=1)) <= 2
-    # medians 0.10-0.19, V.x 0.50: the levelled partial lines (areas over the
-    # shading law's brightness) narrow V.x's sigma and follow the crop's own
-    # background and gain
+    # the levelled partial lines (areas over the shading law's brightness)
+    # narrow V.x's sigma and follow the crop's own background and gain
     assert np.all(np.median(ratios, axis=0) <= np.array([0.3, 0.3, 0.3, 0.6, 0.3, 0.3]))
-    # 4. on the engine's background (the default since session 11: the
-    #    engine's crop differs from the whole width's by 0.30 of a sigma in y0 and
-    #    z0, median), as accurate as the whole width: RMS error against the
-    #    truth, stream over whole width, measured 1.09 / 1.01 / 1.05 / 1.26 /
-    #    1.00 / 0.99 (on 32 balls the ratio's own scatter is about 0.2; on
-    #    the same stream without the ramp, seeds 7 / 8 / 9, V.x 1.08 / 0.93 /
-    #    0.96)
+    # 4. on the engine's background (the default), as accurate as the whole
+    #    width: the RMS error against the truth, stream over whole width,
+    #    within the ratio's own scatter on 32 balls (about 0.2)
     rmse_ratio = np.sqrt(np.mean(np.square(err["engine"]), axis=0) / np.mean(np.square(err["single"]), axis=0))
     assert np.all(rmse_ratio <= 1.4)
 
@@ -492,7 +479,7 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     z = np.load(npz[0])
     crop = load_image(str(npz[0]).replace(".columns.npz", ".png")).data
     cam = replace(crop_camera(CAM, *z["crop_cols"].tolist()), exposure_s=1.0 / CAM.line_rate_hz)
-    again = estimate_crop(crop, z["times_s"], cam, RADIUS, "fit", 255.0, 8, "crop", columns=ColumnModel(z["background_dn"], z["noise_dn"]))
+    again = estimate_crop(crop, z["times_s"], cam, RADIUS, Recipe(), 255.0, 8, "crop", columns=ColumnModel(z["background_dn"], z["noise_dn"]))
     first = json.loads(printed.splitlines()[0])
     assert list(again[0].velocity_mps) == first["velocity_mps"] and again[0].t_c_s == first["t_c_s"]
     app = typer.Typer()
@@ -656,7 +643,7 @@ def test_stream_background_switch_reaches_the_estimator():
         assert (r.crop_columns is None) == (bg == "crop")
         (c0, c1) = r.crop_cols
         cam = replace(crop_camera(CAM, c0, c1), exposure_s=1.0 / CAM.line_rate_hz)
-        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", columns=r.crop_columns)
+        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, Recipe(), 255.0, 8, "crop", columns=r.crop_columns)
         assert ref[0].velocity_mps == r.estimate.velocity_mps
         got[bg] = r
     # the engine's level of the crop's columns: learned on the 1 400 lines before the ball
@@ -670,33 +657,53 @@ def test_stream_background_switch_reaches_the_estimator():
 
 
 def test_stream_shading_switch_reaches_the_estimator():
-    """StreamConfig.shading is what estimate_image gets (the same numbers as on the crop)."""
+    """StreamConfig.recipe.shading is what estimate_image gets (the same numbers as on the crop)."""
     m = BallMotion(RADIUS, 300 / CAM.line_rate_hz, (0.0, 0.05, 3.0), (30.0, 1.0, 0.0))
     data = render(CAM, [(m, Appearance(texture="none", shading=True))], 600, background_level=0.1, noise=SensorNoise(), seed=5).image
     for shading in (True, False):
-        eng = StreamEngine(CAM, RADIUS, StreamConfig(shading=shading, keep_crops=True))
+        eng = StreamEngine(CAM, RADIUS, StreamConfig(recipe=Recipe(shading=shading), keep_crops=True))
         res = eng.push(data) + eng.finish()
         assert len(res) == 1
         r = res[0]
         (c0, c1) = r.crop_cols
         cam = replace(crop_camera(CAM, c0, c1), exposure_s=1.0 / CAM.line_rate_hz)  # as the engine does without timestamps
-        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, "fit", 255.0, 8, "crop", shading, columns=r.crop_columns)
+        ref = estimate_crop(r.crop, r.crop_times_s, cam, RADIUS, Recipe(shading=shading), 255.0, 8, "crop", columns=r.crop_columns)
         assert ref[0].velocity_mps == r.estimate.velocity_mps
         assert (r.estimate.extra["shading"] is not None) == shading
 
 
 def test_stream_matched_switch_reaches_the_estimator():
     # a flat ball on an ideal 8-bit sensor: the engine's estimates use the
-    # matched edges unless StreamConfig.matched (watch --no-matched) is off
+    # matched edges unless the recipe's matched (watch --no-matched) is off
     cam = LineScanCamera(width=240, focal_px=3000.0, principal_px=119.5, line_rate_hz=50000.0)
     m = BallMotion(0.0335, 300 / cam.line_rate_hz, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     ideal = SensorNoise(bits=8, white_dn=230.0, black_dn=6.0, read_dn=1.0, full_well_e=None, prnu_sigma=0.0)
     data = render(cam, (m, Appearance.flat(0.8)), 600, background_level=0.1, noise=ideal, seed=1).image
     seen = {}
     for matched in (True, False):
-        eng = StreamEngine(cam, 0.0335, StreamConfig(matched=matched))
+        eng = StreamEngine(cam, 0.0335, StreamConfig(recipe=Recipe(matched=matched)))
         res = eng.push(data) + eng.finish()
         assert len(res) == 1
         seen[matched] = res[0].estimate
     assert seen[True].extra["edges"] == "matched" and seen[False].extra["edges"] == "window"
     assert seen[True].velocity_mps != seen[False].velocity_mps
+
+
+@pytest.mark.parametrize(
+    "field, bad",
+    [
+        ("k_sigma", float("nan")),
+        ("ema_alpha", "0.5"),
+        ("margin_px", 1.5),
+        ("noise_floor_dn", 0.0),
+        ("saturation_dn", -1.0),
+        ("keep_crops", 1),
+        ("line_offset", "yes"),
+        ("recipe", "fit"),
+        ("background", "image"),
+    ],
+)
+def test_stream_config_refuses_a_bad_value_naming_its_field(field, bad):
+    with pytest.raises(ValueError, match=rf"^{field}: "):
+        StreamConfig(**{field: bad})
+    assert StreamConfig(recipe=Recipe(method="paper")).recipe.method == "paper"

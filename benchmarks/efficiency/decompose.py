@@ -83,12 +83,12 @@ def run_one(args):
     if variant == "truegain":
         data = (data - noise.black_dn) / rd.column_gain[None, :] + noise.black_dn
     log.clear()
-    import ballscan.pipeline.estimate as E
+    import ballscan.pipeline.stages as S
 
     if truebg:
         # the background's expectation (DN) in place of the detector's / refined one
         level = noise.black_dn + noise.white_dn * spec.scene.background_level * (rd.column_gain if variant == "default" else 1.0)
-        E._full_background = lambda det: np.broadcast_to(level, det.shape).astype(float)
+        S.full_background = lambda det: np.broadcast_to(level, det.shape).astype(float)
     rep = estimate_image(LineImage(data, float(noise.max_dn), noise.bits, "t"), cam, spec.scene.radius_m)
     b, _ = ex._pick(rep, truth.t_c_s)
     # the last solve and the selection it solved

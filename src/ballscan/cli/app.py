@@ -123,6 +123,7 @@ def estimate(
     """Measure every ball in a line-scan image."""
     from ..geometry.camera import line_times, load_camera
     from ..pipeline.estimate import estimate_image
+    from ..pipeline.recipe import Recipe
     from ..measure.images import load_image, load_timestamps
     from ..pipeline.report import format_table
 
@@ -131,7 +132,8 @@ def estimate(
     cam = load_camera(camera)
     img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
     ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
-    report = estimate_image(img, cam, radius, method=method, timestamps_s=ts, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
+    recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
+    report = estimate_image(img, cam, radius, recipe=recipe, timestamps_s=ts)
     if as_json:
         typer.echo(report.to_json(cam))
     else:

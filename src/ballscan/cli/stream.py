@@ -21,6 +21,7 @@ import typer
 
 from ..geometry.camera import LineScanCamera, crop_camera, load_camera
 from ..errors import BallscanError
+from ..pipeline.recipe import Recipe
 from ..stream.engine import StreamConfig, StreamResult, process_stream
 
 __all__ = ["watch", "batch", "open_source", "save_event"]
@@ -205,7 +206,7 @@ def watch(
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
     # the settings first: a bad one is reported before a pipe or a camera is opened
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, method=method, shading=shading, matched=matched, background=background, keep_crops=save_events is not None)
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
     src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")

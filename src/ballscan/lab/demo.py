@@ -6,6 +6,7 @@ from pathlib import Path
 
 from ..geometry.camera import line_times
 from ..pipeline.estimate import estimate_image
+from ..pipeline.recipe import Recipe
 from ..measure.images import load_image
 from ..pipeline.plot import save_overlay
 from .simulate import SimulationRequest, run_simulation
@@ -30,7 +31,7 @@ def run_demo(out_dir: Path, preset: str = "tennis-serve") -> list[str]:
     said = [f"rendered {png} ({image.data.shape[0]} lines x {image.data.shape[1]} px), camera {cam_path}, truth {truth_path}",
             f"truth: speed {truth.speed_mps:.4f} m/s, velocity {tuple(round(v, 4) for v in truth.velocity_mps)} m/s, position {truth.position_m} m"]
     for method in ("paper", "fit"):
-        report = estimate_image(image, camera, truth.radius_m, method=method)
+        report = estimate_image(image, camera, truth.radius_m, recipe=Recipe(method=method))
         plot = out_dir / f"{preset}.{method}.png"
         save_overlay(plot, image.data, camera, report, t)
         (out_dir / f"{preset}.{method}.json").write_text(report.to_json(camera))

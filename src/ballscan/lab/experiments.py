@@ -647,6 +647,7 @@ def run_trial(spec: TrialSpec) -> tuple[TrialRow, ...]:
         One per method, in :data:`METHODS` order.
     """
     from ..pipeline.estimate import estimate_image
+    from ..pipeline.recipe import Recipe
     from ..measure.images import LineImage
     from ..model.render import render
 
@@ -676,9 +677,9 @@ def run_trial(spec: TrialSpec) -> tuple[TrialRow, ...]:
         t1 = time.perf_counter()
         try:
             if method == "pixels":
-                rep = estimate_image(image, cam, spec.scene.radius_m, method="fit", pixels=True)
+                rep = estimate_image(image, cam, spec.scene.radius_m, recipe=Recipe(pixels=True))
             else:
-                rep = estimate_image(image, cam, spec.scene.radius_m, method=method)
+                rep = estimate_image(image, cam, spec.scene.radius_m, recipe=Recipe(method=method))
             ball, extra = _pick(rep, truth.t_c_s)
             if method == "pixels" and ball is not None and ball.extra.get("pixels") != "used":
                 extra = extra + [f"pixels_{ball.extra.get('pixels')}"]
@@ -1371,6 +1372,7 @@ def plot_fig7_overlays(cfg: ExperimentConfig, path: str | Path, texture: str | N
     import matplotlib.pyplot as plt
 
     from ..pipeline.estimate import estimate_image
+    from ..pipeline.recipe import Recipe
     from ..measure.images import LineImage
     from ..pipeline.plot import plot_estimates
     from ..model.render import render
@@ -1389,7 +1391,7 @@ def plot_fig7_overlays(cfg: ExperimentConfig, path: str | Path, texture: str | N
         img = LineImage(r.image.astype(float), float(scene.noise.max_dn), scene.noise.bits, "overlay")
         t = line_times(scene.camera, geom.n_lines)
         for i, m in enumerate(methods):
-            rep = estimate_image(img, scene.camera, scene.radius_m, method=m)
+            rep = estimate_image(img, scene.camera, scene.radius_m, recipe=Recipe(method=m))
             ax = axes[i, j]
             plot_estimates(img.data, scene.camera, rep, t, ax=ax, margin_px=15)
             s = rep.balls[0].speed_mps if rep.balls and rep.balls[0].speed_mps is not None else math.nan

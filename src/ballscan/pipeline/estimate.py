@@ -3,7 +3,7 @@
 ``estimate_image`` runs the whole chain on one line-scan image and returns
 an :class:`~ballscan.pipeline.results.EstimateReport` with one
 :class:`~ballscan.pipeline.results.BallEstimate` per detected ball, in the order of
-``t_c``.  Two refinements are available:
+``t_c``.  The :class:`~ballscan.pipeline.recipe.Recipe` chooses one of two refinements:
 
 ``"paper"``
     the gradient-image matching of the paper with Powell's method
@@ -14,39 +14,48 @@ an :class:`~ballscan.pipeline.results.EstimateReport` with one
     passes when ``shading`` is on (the default): the first fit's motion and
     the ball's fitted Lambertian shading (:mod:`ballscan.measure.shading`) give the
     profile of every edge, the edges are measured again with it and fitted
-    again.
+    again (the stages of :mod:`ballscan.pipeline.stages`).
 """
 
 from __future__ import annotations
 
-import math
-import numbers
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
-from scipy import ndimage as ndi
 
-from ..geometry.camera import LineScanCamera, line_times
-from ..measure.detection import BallRegion, ColumnModel, Detection, background_at, detect, region_background
-from ..measure.robust import median
-from ..measure.edges import measure_edges, with_limb
-from ..measure.matched import matched_edges
 from ..errors import ImageFileError
-from ..solve.fit import fit_motion
-from ..solve.settings import FitSettings
-from ..solve.uncertainty import propagate
-from ..measure.flatfield import column_gains, flat_fielded
-from ..measure.images import LineImage
-from ..solve.initial import InitialGuess, find_keypoints, initial_guess
+from ..geometry.camera import LineScanCamera, line_times
 from ..geometry.motion import BallMotion
+from ..measure.detection import BallRegion, ColumnModel, Detection, detect
+from ..measure.robust import median
+from ..measure.images import LineImage
+from ..solve.uncertainty import propagate
+from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
+from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
-from ..measure.shading import ball_limb, shade_profile
+from .stages import (
+    BallInput,
+    Detected,
+    FinalFit,
+    FirstFit,
+    PixelFit,
+    SecondMeasurement,
+    Shading,
+    StageRecord,
+    detect_stage,
+    final_fit_stage,
+    first_fit_stage,
+    key_points_stage,
+    pixel_fit_stage,
+    second_measurement_stage,
+    shading_background,
+    shading_stage,
+    stage_record,
+)
 
-__all__ = ["METHODS", "NormalisedBox", "ShadingSetup", "normalised_box", "estimate_image", "estimate_region"]
-
-METHODS = ("fit", "paper")
+__all__ = ["estimate_image", "estimate_region"]
 
 #: keys of an estimate that each motion parameter determines
 _PARAM_KEYS = {
@@ -59,162 +68,6 @@ _PARAM_KEYS = {
 }
 
 
-@dataclass(frozen=True)
-class NormalisedBox:
-    """A ball's neighbourhood mapped to background 0, ball 1.
-
-    Attributes
-    ----------
-    data : ndarray (n_lines, n_cols)
-        ``polarity * (I - background) / |contrast|``.
-    sigma : ndarray (n_cols,)
-        Pixel noise in the same units.
-    mask : ndarray of bool
-        The detector's ball pixels within the box.
-    line_offset, col_offset : int
-        Image line and pixel of ``data[0, 0]``.
-    """
-
-    data: np.ndarray
-    sigma: np.ndarray
-    mask: np.ndarray
-    line_offset: int
-    col_offset: int
-
-
-def normalised_box(image: LineImage, detection: Detection, region: BallRegion, margin: int = 3) -> NormalisedBox:
-    """The region's box plus ``margin`` pixels, normalised by the measured contrast."""
-    bg, noise, (ls, cs) = region_background(detection, region, margin=margin)
-    contrast = abs(region.contrast_dn)
-    if not contrast > 0:
-        raise ValueError(f"region {region.index}: zero ball/background contrast")
-    data = region.polarity * (image.data[ls, cs] - bg) / contrast
-    mask = np.zeros(data.shape, dtype=bool)
-    r0, c0 = region.line_start - ls.start, region.col_start - cs.start
-    mask[r0 : r0 + region.mask.shape[0], c0 : c0 + region.mask.shape[1]] = region.mask
-    return NormalisedBox(data=data, sigma=noise / contrast, mask=mask, line_offset=ls.start, col_offset=cs.start)
-
-
-def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
-    if t.size < 3:
-        return False
-    period = float(median(np.diff(t)))
-    seg = np.diff(t[max(first - 1, 0) : last + 2])
-    return bool(np.any(seg > 1.5 * period))
-
-
-@dataclass(frozen=True)
-class ShadingSetup:
-    """How the fit's shading-aware second pass is set up (the defaults are the estimator's).
-
-    The other settings are diagnostics of the shaded balls' bias
-    (``benchmarks/bench_calibration.py --start, --level-samples,
-    --refined-background, --refit-law``; docs/benchmarks.md, calibration,
-    session 10), not yet the default: each moves the reported sigmas'
-    calibration closer on some cases and not on others.
-
-    Attributes
-    ----------
-    start : {"guess", "loose_fit"}
-        The motion the shading law and the limb model are built at: the
-        key-point guess (a loose fit of the model-free edges only where the
-        guess is degenerate), or always that loose fit (no outlier rounds,
-        cost tolerance 1e-3; the guess where it does not converge).
-    level_samples : (int, int)
-        Samples over the exposure and across the pixel's height of the
-        ends' mean brightness (:meth:`ballscan.measure.shading.LimbProfile.line_levels`).
-    refined_background : bool
-        Measure every ball's edges on its columns' background measured away
-        from the balls (:func:`refine_background`; by default only long
-        balls' matched edges are, see :func:`estimate_region`).
-    refit_law : bool
-        On the window edges' path, fit the shading law and the limb model
-        again at the fitted motion and fit once more from there (a
-        converged refit replaces the fit, ``extra["shading_refit"]``; about
-        4-5 ms more per stream crop, docs/benchmarks.md).
-    """
-
-    start: str = "guess"
-    level_samples: tuple[int, int] = (3, 2)
-    refined_background: bool = False
-    refit_law: bool = False
-
-    def __post_init__(self):
-        if self.start not in ("guess", "loose_fit"):
-            raise ValueError(f"start: expected 'guess' or 'loose_fit', got {self.start!r}")
-        ls = self.level_samples
-        if (
-            not isinstance(ls, (tuple, list))
-            or len(ls) != 2
-            or not all(isinstance(k, numbers.Integral) and not isinstance(k, bool) and k >= 1 for k in ls)
-        ):
-            raise ValueError(f"level_samples: expected two positive integers, got {ls!r}")
-        object.__setattr__(self, "level_samples", (int(ls[0]), int(ls[1])))
-        for name in ("refined_background", "refit_law"):
-            if not isinstance(getattr(self, name), bool):
-                raise ValueError(f"{name}: expected True or False, got {getattr(self, name)!r}")
-
-
-def _initial(box: NormalisedBox, region: BallRegion, camera: LineScanCamera, radius_m: float, t: np.ndarray) -> InitialGuess:
-    kp = find_keypoints(
-        box.data,
-        box.sigma,
-        box.mask,
-        box.line_offset,
-        box.col_offset,
-        t,
-        cut_first="cut_first_line" in region.flags,
-        cut_last="cut_last_line" in region.flags,
-    )
-    return initial_guess(kp, camera, radius_m)
-
-
-_FIRST_PASS = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
-# matched edges only where the ball's interior shows no more column-gain
-# scatter than this (relative; flatfield.column_gains): 8-bit renders read
-# 0-0.0019 without PRNU, 0.0015-0.0039 with 0.3 % (where a review measured
-# the matched edges' z0 sigma 1.7x too small), 0.0067-0.0083 with 0.8 %
-_MATCHED_MAX_GAIN_SIGMA = 0.0015
-# where the interior shows more scatter (PRNU), with flat_field, the matched edges on the
-# crop with the measured gains divided out (_flat_fielded_matched), on balls
-# with at least this many measured columns: at R = 0.02 m (50 columns, 8-bit)
-# the quick sweep's y0 and z0 errors were 1.9-2.0x their sigmas RMS there (the
-# window edges' 0.9-1.0x) and the speed no better (0.15x vs 0.12x the bound)
-_FLAT_FIELD_MIN_COLUMNS = 64
-# ... and at least this many lines with both edges: a column's gain error
-# repeats on every line whose edge sits in it, so the window edges' PRNU
-# error grows with the ball's length (a 5 m/s ball of 900 lines: V.x 5.5x
-# its sigma RMS, speed 1-sigma covering 8 %; flat-fielded 1.39x, 83 %),
-# while on short balls the flat-fielded edges' sigmas come out small (the
-# stream bench's 8-bit balls of 109 lines, 0.8 % PRNU: speed errors 1.45x
-# their sigma RMS over 9 balls, the window edges' 0.67x, at 2.6x the time)
-_FLAT_FIELD_MIN_LINES = 250
-# with the matched edges, the pixels of the ball's ends and of the lines whose
-# edges spread over 0.3 px or more (the sharp lines keep their matched edges):
-# bench_fit's images (100 runs), fit 1.35x / 1.25x -> 1.03x / 1.06x the pixel bound.
-# 32 Gauss-Legendre nodes per piece of the exposure in the pixel model: a
-# pixel's coverage has kinks where a node's chord end crosses a pixel border,
-# so with 8 nodes the model is a staircase in the parameters (coverage up to
-# 0.024 off, moving as the nodes cross borders) and the solution lands on its
-# steps: on the quick sweep's long balls (32 seeds) V.x moved by 0.53, 0.31
-# and 0.33 sigma of the bound RMS from 8 to 32 nodes (R = 0.11 m, 4.7 m/s,
-# 140 000 lines/s), by 0.07-0.10 from 32 to 64; R = 0.11 m's V.x RMSE 1.27x
-# -> 1.14x the bound (benchmarks/bench_efficiency.py; docs/experiments.md,
-# session 10).  Windows reaching 20 px beyond half the edge spread (not 3):
-# each end's free brightness is then measured on the ball's interior, not
-# on the edge ramps' few inner pixels (with 3 px it cost V.x 4-7 % of its
-# sigma on the bound's own model, and the ramps' far tails biased it); the
-# fit minus the efficient estimator on the same noise (128 seeds), 3 -> 20
-# px: mean +0.19 / +0.51 / +0.51 -> +0.14 / +0.19 / +0.21 sigma, RMS
-# 0.55 / 0.91 / 0.83 -> 0.46 / 0.62 / 0.67 at R = 0.11 m / 4.7 m/s /
-# 140 000 lines/s (6, 12 and 40 px: between, and level with 20)
-_SPREAD_PIXELS = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
-# ... on balls of at least this many lines with both edges: on ~11 lines (60
-# m/s at 10 kHz) a review measured its speed errors 1.45 sigma RMS (the
-# matched-edge fit's 1.11)
-_SPREAD_MIN_LINES = 20
-
-
 def estimate_region(
     image: LineImage,
     detection: Detection,
@@ -222,257 +75,121 @@ def estimate_region(
     camera: LineScanCamera,
     radius_m: float,
     t_lines_s: np.ndarray,
-    method: str = "fit",
+    recipe: Recipe = Recipe(),
     background_dn: np.ndarray | None = None,
-    shading: bool = True,
-    pixels: bool = False,
-    matched: bool = True,
-    flat_field: bool = True,
-    shading_setup: ShadingSetup = ShadingSetup(),
 ) -> BallEstimate:
-    """Estimate one detected ball's motion (see the module docstring).
+    """Estimate one detected ball's motion with ``recipe`` (see the module docstring).
 
-    ``background_dn`` is the detector's background on the whole image
-    (``background_at`` over all lines and pixels); pass it when measuring
-    several regions of one image so it is built once.  ``shading`` turns the
-    fit's second, shading-aware pass on (see the module docstring; a few ms
-    per ball, ``extra["time_shading_s"]``; ``extra["time_fit_s"]`` is the
-    final fit's).  ``pixels`` fits the pixels of the ball's edge windows and
-    ends in the final fit (``pixels`` of :class:`ballscan.solve.fit.FitSettings`)
-    when the ball is uniform and its image does not move along the sensor
-    during the exposure (:func:`_pixel_fit_refusal`; the test needs the
-    shading model, which is then fitted even with ``shading`` off but kept
-    only for the pixel fit): for untextured balls and a continuous exposure.
-    Where it is not used the result is that of the same call without
-    ``pixels``, and ``extra["pixels"]`` says why: "off", "used", "spread" (see ``matched``),
-    "not_uniform", "lateral_motion", "no_start", "no_shading_model",
-    "not_converged".  ``matched`` (with the shading pass, on the same
-    condition as the pixel fit) measures the narrow edges by fitting the
-    shading model's profile to their windows
-    (:func:`ballscan.measure.edges.matched_edges`: the edge pixel's own noise, not
-    the window's and its level run's): as they are where the ball's
-    interior shows no column-gain scatter
-    (:func:`ballscan.measure.flatfield.column_gains`, a flat-fielded sensor), and
-    with ``flat_field`` where it shows some (PRNU) on the image with the
-    measured gains divided out of the ball's lines, the background of its
-    columns measured away from it (:func:`refine_background`) and each
-    matched edge's sigma carrying the gain error that remains
-    (``extra["flat_fielded"]``; balls with at least 64 measured columns and
-    250 lines with both edges: on shorter balls the window edges' sigmas
-    are the honest ones, see ``_FLAT_FIELD_MIN_LINES``).  On a
-    flat-fielded sensor the matched edges of balls of 250 lines or more are
-    measured again on that background too (``extra["background_refined"]``,
-    True also with ``flat_fielded``): the detector's level next to the
-    ball is a tenth of a noise sigma high, an error common to every line,
-    which on a 900-line 8-bit ball put the speed 2.4 of its sigmas high.  ``extra["edges"]`` says which
-    ("window" or "matched") and ``extra["column_gain_sigma"]`` the scatter
-    measured (None where the condition failed before it was measured, NaN
-    where the ball is too small to measure it: then the windows are kept).  With the matched edges the
-    final fit takes the pixels of the ball's ends and of the lines whose
-    edges spread over 0.3 px in place of their areas and edges
-    (``extra["pixels"]`` "spread"; on balls of at least 20 lines with both
-    edges; the matched-edge fit where it does not converge).
-    ``shading_setup`` holds the shading pass's diagnostic settings
-    (:class:`ShadingSetup`; the default is the estimator described here);
-    with ``refined_background`` and no ``background_dn`` the region's
-    background is refined here.
+    ``background_dn`` is the image's background at every line and pixel
+    (:func:`ballscan.pipeline.stages.shading_background`); pass it when
+    measuring several regions of one image so it is built once.  The fit
+    runs the stages of :mod:`ballscan.pipeline.stages`; the estimate's
+    ``record`` (:class:`~ballscan.pipeline.stages.StageRecord`) says which
+    path they took, and ``extra`` repeats it for the JSON output
+    (``shading_pass``, ``pixels``, ``edges``, ``column_gain_sigma``,
+    ``flat_fielded``, ``background_refined``, ``shading_refit``) with the
+    run times (``time_initial_s``, ``time_edges_s``, ``time_shading_s``:
+    the shading pass's own, ``time_fit_s``: the reported fit's).
     """
-    if method not in METHODS:
-        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
     t0 = time.perf_counter()
-    flags = list(region.flags)
-    if _dropped_lines(t_lines_s, region.line_start, region.line_stop - 1):
-        flags.append("dropped_lines")
-    box = normalised_box(image, detection, region)
+    ball = BallInput(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn)
+    detected = detect_stage(ball)
     try:
-        ig = _initial(box, region, camera, radius_m, t_lines_s)
+        guess = key_points_stage(ball, detected)
     except ValueError as exc:
         return BallEstimate.undetermined_estimate(
-            method,
+            recipe.method,
             radius_m,
             f"initial guess impossible: {exc}",
-            tuple(flags),
+            detected.flags,
             first_line=region.line_start,
             last_line=region.line_stop - 1,
             run_time_s=time.perf_counter() - t0,
         )
-    if ig.degenerate:
-        flags.append("initial_degenerate")
-    initial_est = BallEstimate.from_motion(
-        ig.motion,
+    initial = _initial_estimate(guess)
+    t_init = time.perf_counter() - t0
+    if recipe.method == "paper":
+        return _paper_estimate(ball, detected, guess, initial, t0, t_init)
+    first = first_fit_stage(ball, guess)
+    shading = shading_stage(ball, first) if recipe.shading or recipe.pixels else None
+    pixel = pixel_fit_stage(ball, first, shading) if shading is not None else PixelFit("off")
+    second = None
+    if recipe.shading and shading is not None and shading.state == "built" and pixel.fit is None:
+        second = second_measurement_stage(ball, first, shading)
+    final = final_fit_stage(ball, guess, first, shading, pixel, second)
+    record = stage_record(recipe, shading, pixel, second, final)
+    t_shading = _shading_time(recipe, first, shading, pixel, second, final)
+    return _fit_estimate(ball, _guess_flags(detected, guess), initial, final, record, t0, t_init, first.time_edges_s, t_shading)
+
+
+def _initial_estimate(guess: InitialGuess) -> BallEstimate:
+    """The key-point guess as an estimate (``BallEstimate.initial``)."""
+    return BallEstimate.from_motion(
+        guess.motion,
         "initial",
-        flags=("initial_degenerate",) if ig.degenerate else (),
+        flags=("initial_degenerate",) if guess.degenerate else (),
+        extra={"duration_s": guess.duration_s, "depth_fallback": guess.depth_fallback, "depth_motion_sigma_m": guess.depth_motion_sigma_m},
+    )
+
+
+def _guess_flags(detected: Detected, guess: InitialGuess) -> list[str]:
+    return list(detected.flags) + (["initial_degenerate"] if guess.degenerate else [])
+
+
+def _paper_estimate(ball: BallInput, detected: Detected, guess: InitialGuess, initial: BallEstimate, t0: float, t_init: float) -> BallEstimate:
+    """The paper's refinement (:func:`ballscan.solve.paper.refine_paper`) from the key-point guess."""
+    box = detected.box
+    res = refine_paper(ball.camera, guess.motion, box.data, box.line_offset, box.col_offset, ball.t_lines_s)
+    flags = _guess_flags(detected, guess) + ([] if res.converged else ["not_converged"])
+    return BallEstimate.from_motion(
+        _vx_convention(res.motion, ball.camera),
+        "paper",
+        initial=initial,
+        flags=tuple(flags),
+        first_line=ball.region.line_start,
+        last_line=ball.region.line_stop - 1,
+        run_time_s=time.perf_counter() - t0,
         extra={
-            "duration_s": ig.duration_s,
-            "depth_fallback": ig.depth_fallback,
-            "depth_motion_sigma_m": ig.depth_motion_sigma_m,
+            "energy": res.energy,
+            "initial_energy": res.initial_energy,
+            "evaluations": res.n_evaluations,
+            "iterations": res.n_iterations,
+            "time_initial_s": t_init,
+            "time_refine_s": res.run_time_s,
         },
     )
-    t_init = time.perf_counter() - t0
 
-    if method == "paper":
-        res = refine_paper(camera, ig.motion, box.data, box.line_offset, box.col_offset, t_lines_s)
-        if not res.converged:
-            flags.append("not_converged")
-        return BallEstimate.from_motion(
-            _vx_convention(res.motion, camera),
-            "paper",
-            initial=initial_est,
-            flags=tuple(flags),
-            first_line=region.line_start,
-            last_line=region.line_stop - 1,
-            run_time_s=time.perf_counter() - t0,
-            extra={
-                "energy": res.energy,
-                "initial_energy": res.initial_energy,
-                "evaluations": res.n_evaluations,
-                "iterations": res.n_iterations,
-                "time_initial_s": t_init,
-                "time_refine_s": res.run_time_s,
-            },
-        )
 
-    t_e = time.perf_counter()
-    others = [r for r in detection.regions if r.index != region.index]
-    bg_full = background_dn if background_dn is not None else _shading_background(image, detection, shading_setup)
-    edges = measure_edges(
-        image.data,
-        region,
-        bg_full,
-        detection.noise_dn,
-        t_lines_s,
-        saturation_dn=detection.saturation_dn,
-        others=others,
-    )
-    t_edges = time.perf_counter() - t_e
-    shading_model = None
-    t_shading = 0.0
-    # what became of the second pass: "off", "used", or why it was not used
-    shading_pass = "off"
-    # and of the pixel fit: "off", "used", or why not
-    pixels_state = "off" if not pixels else "no_start"
-    # the columns' gain scatter, where the matched edges' condition measured it
-    gain_sigma = None
-    # whether the matched edges were measured on the crop with the measured gains divided out
-    ff_used = False
-    # whether they were measured on the ball's columns' background away from it (refine_background)
-    bg_refined = False
-    # whether ShadingSetup.refit_law's refit replaced the fit
-    refit_used = False
-    fit = None
-    if shading or pixels:
-        # The shading model needs the motion only roughly (its normals and edge
-        # spreads barely change with a percent of speed): the key-point guess
-        # will do; a degenerate one is first refined by a loose fit (no
-        # outlier rounds, cost tolerance 1e-3).
-        t_s = time.perf_counter()
-        start: BallMotion | None = ig.motion
-        if ig.degenerate or shading_setup.start == "loose_fit":
-            first = fit_motion(camera, edges, ig.motion, _FIRST_PASS)
-            start = first.motion if first.converged else (None if ig.degenerate else ig.motion)
-        shading_pass = "no_start"
-        if start is not None:
-            # second pass: the edges' limb levels from the ball's fitted shading
-            # (a Lambertian limb's brightness falls like sqrt(distance): a level
-            # taken inside and extrapolated linearly biases the lit side inwards)
-            limb = ball_limb(camera, start, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples)
-            shading_pass = "too_few_pixels"
-            if pixels:
-                pixels_state = "no_shading_model"
-            if limb is not None:
-                # the first pass's profile, windows and noise model are reused
-                edges2 = with_limb(edges, limb)
-                # a ball the shading law describes to its pixels (the pixel
-                # fit's and the matched edges' condition)
-                refusal = _pixel_fit_refusal(limb, edges2, start, camera)
-                edges_fit = edges2
-                t_shading = time.perf_counter() - t_s
-                fit2 = None
-                if pixels:
-                    pixels_state = refusal or "used"
-                    if pixels_state == "used":
-                        # the surface brightness the pixel model multiplies the coverage by
-                        shaded = replace(edges2, profile_shade=shade_profile(limb, edges2))
-                        fit2 = fit_motion(camera, shaded, start, FitSettings(pixels=True))
-                        if not fit2.converged:
-                            pixels_state, fit2 = "not_converged", None
-                if fit2 is None and shading:
-                    if matched and refusal is None:
-                        # and a flat-fielded sensor (the model's level in every
-                        # column): the model's profile, fitted to each edge
-                        # window, places the edge
-                        t_m = time.perf_counter()
-                        gains = column_gains(image.data, bg_full, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
-                        gain_sigma = gains.prnu_sigma
-                        # NaN (a ball too small to tell) is not flat-fielded
-                        if math.isfinite(gain_sigma) and gain_sigma <= _MATCHED_MAX_GAIN_SIGMA:
-                            rb = None
-                            if int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES:
-                                # a long ball: measured on its columns' background
-                                # away from it.  Only here: with that background
-                                # on every ball the shading pass reads shaded
-                                # balls' V.x low (bench_calibration, 112-268
-                                # lines: mean -1.1 to -2.1 sigma; docs/benchmarks.md)
-                                rb = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=False, level_samples=shading_setup.level_samples)
-                            if rb is not None:
-                                edges_fit, limb = rb
-                                bg_refined = True
-                            else:
-                                edges_fit = matched_edges(edges2, limb)
-                        elif (
-                            flat_field
-                            and math.isfinite(gain_sigma)
-                            and gains.n_columns >= _FLAT_FIELD_MIN_COLUMNS
-                            and int(np.sum(edges2.left_ok & edges2.right_ok)) >= _FLAT_FIELD_MIN_LINES
-                        ):
-                            # the measured gains divided out, and the
-                            # remaining gain error in the edges' sigmas
-                            ff = _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, level_samples=shading_setup.level_samples)
-                            if ff is not None:
-                                edges_fit, limb = ff
-                                ff_used = bg_refined = True
-                        t_shading += time.perf_counter() - t_m
-                    if edges_fit is not edges2 and int(np.sum(edges_fit.left_ok & edges_fit.right_ok)) >= _SPREAD_MIN_LINES:
-                        # the narrow edges matched: the ends' and the spread
-                        # edges' pixels in their place
-                        shaded = replace(edges_fit, profile_shade=shade_profile(limb, edges_fit))
-                        fit2 = fit_motion(camera, shaded, start, _SPREAD_PIXELS)
-                        if fit2.converged:
-                            # (a requested pixel fit that failed keeps saying so)
-                            pixels_state = "spread" if pixels_state == "off" else pixels_state
-                        else:
-                            fit2 = None
-                    if fit2 is None:
-                        fit2 = fit_motion(camera, edges_fit, start)
-                        if shading_setup.refit_law and edges_fit is edges2 and fit2.converged:
-                            # the law and the limb model again at the fitted motion
-                            # (the guess's normals are a pixel or so off), and the fit
-                            t_r = time.perf_counter()
-                            limb_r = ball_limb(
-                                camera, fit2.motion, image.data, edges, t_lines_s, bg_full, level_samples=shading_setup.level_samples
-                            )
-                            if limb_r is not None:
-                                edges_r = with_limb(edges, limb_r)
-                                fit_r = fit_motion(camera, edges_r, fit2.motion)
-                                if fit_r.converged:
-                                    fit2, edges_fit, limb, refit_used = fit_r, edges_r, limb_r, True
-                            # (the adopted refit's own time is the final fit's, time_fit_s)
-                            t_shading += time.perf_counter() - t_r - (fit2.run_time_s if refit_used else 0.0)
-                if fit2 is not None:
-                    shading_pass = "not_converged"
-                    if fit2.converged:
-                        edges, fit, shading_model, shading_pass = edges_fit, fit2, limb.shading, "used"
-        if not shading and fit is None:
-            # the shading model was fitted only for the pixel fit, which did not run
-            shading_pass, t_shading = "off", 0.0
-        elif fit is None:
-            t_shading = time.perf_counter() - t_s
-    if fit is None:
-        fit = fit_motion(camera, edges, start if shading and start is not None else ig.motion)
-    flags.extend(fit.flags)
-    if not fit.converged:
-        flags.append("not_converged")
-    unc = propagate(camera, fit.motion, fit.covariance)
+def _shading_time(recipe: Recipe, first: FirstFit, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None, final: FinalFit) -> float:
+    """Seconds of the shading pass: its start, model and second measurement where its fit is reported, all its work where it is not."""
+    if shading is None or (final.path == "first_edges" and not recipe.shading):
+        return 0.0
+    measured = first.time_s + shading.time_s + (second.time_s if second is not None else 0.0)
+    if final.path != "first_edges":
+        return measured + final.time_refit_s
+    return measured + pixel.time_s + final.time_attempts_s
+
+
+def _fit_estimate(
+    ball: BallInput,
+    flags: list[str],
+    initial: BallEstimate,
+    final: FinalFit,
+    record: StageRecord,
+    t0: float,
+    t_init: float,
+    t_edges: float,
+    t_shading: float,
+) -> BallEstimate:
+    """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.fit.propagate`).
+
+    ``t0`` is the ball's start time (``time.perf_counter``); ``t_init``,
+    ``t_edges`` and ``t_shading`` the seconds of the key points, the first
+    edge measurement and the shading pass.
+    """
+    fit = final.fit
+    flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
+    unc = propagate(ball.camera, fit.motion, fit.covariance)
     undetermined = sorted({k for p in fit.undetermined for k in _PARAM_KEYS.get(p, (p,))})
     if undetermined:
         flags.append("degenerate")
@@ -481,9 +198,10 @@ def estimate_region(
         return None if key in undetermined else value
 
     cov = fit.covariance
+    law = final.shading
     return BallEstimate(
         method="fit",
-        radius_m=radius_m,
+        radius_m=ball.radius_m,
         t_c_s=keep("t_c_s", fit.motion.t_c_s),
         position_m=keep("position_m", fit.motion.position_m),
         velocity_mps=keep("velocity_mps", fit.motion.velocity_mps),
@@ -492,12 +210,13 @@ def estimate_region(
         position_sigma_m=keep("position_m", unc.position_sigma_m),
         velocity_sigma_mps=keep("velocity_mps", unc.velocity_sigma_mps),
         speed_sigma_mps=keep("speed_mps", unc.speed_sigma_mps),
-        initial=initial_est,
+        initial=initial,
         flags=tuple(flags),
         undetermined=tuple(undetermined),
-        first_line=region.line_start,
-        last_line=region.line_stop - 1,
+        first_line=ball.region.line_start,
+        last_line=ball.region.line_stop - 1,
         run_time_s=time.perf_counter() - t0,
+        record=record,
         extra={
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,
@@ -516,139 +235,18 @@ def estimate_region(
             "time_edges_s": t_edges,
             "time_fit_s": fit.run_time_s,
             "time_shading_s": t_shading,
-            "shading_pass": shading_pass,
-            "pixels": pixels_state,
-            "edges": edges.edges_method,
-            "column_gain_sigma": gain_sigma,
-            "flat_fielded": ff_used and edges.edges_method == "matched",
-            "background_refined": (bg_refined and edges.edges_method == "matched") or shading_setup.refined_background,
-            "shading_refit": refit_used,
+            "shading_pass": record.shading_pass,
+            "pixels": record.pixels,
+            "edges": final.edges.edges_method,
+            "column_gain_sigma": record.column_gain_sigma,
+            "flat_fielded": record.flat_fielded,
+            "background_refined": record.background_refined,
+            "shading_refit": record.shading_refit,
             "shading": None
-            if shading_model is None
-            else {
-                "ambient_dn": shading_model.ambient_dn,
-                "light_dn": list(shading_model.light_dn),
-                "residual_rms_dn": shading_model.residual_rms_dn,
-            },
+            if law is None
+            else {"ambient_dn": law.ambient_dn, "light_dn": list(law.light_dn), "residual_rms_dn": law.residual_rms_dn},
         },
     )
-
-
-def _shading_background(image: LineImage, detection: Detection, setup: ShadingSetup) -> np.ndarray:
-    """The background every edge of the image is measured on (DN, per pixel): the detector's, or refined (``setup.refined_background``)."""
-    return _full_background(refine_background(image.data, detection) if setup.refined_background else detection)
-
-
-def _flat_fielded_matched(image, detection, region, t_lines_s, others, start, camera, divide_gains=True, level_samples=(3, 2)):
-    """Matched edges measured on the image with the ball's measured column gains divided out, or None.
-
-    Where the ball's interior shows column-gain scatter (PRNU, not
-    flat-fielded): the gains of :func:`ballscan.measure.flatfield.column_gains`
-    are divided out of the ball's lines (:func:`ballscan.measure.flatfield.flat_fielded`),
-    the edges, the shading model and the matched edges are measured again
-    on that image, and each matched edge's sigma gets the gain error that
-    remains in its edge pixel (:func:`_with_gain_errors`).  None where the
-    flat-fielded ball fails the pixel fit's condition or no edge matched.
-    Both on the background of the ball's columns measured away from it
-    (:func:`refine_background`).  With ``divide_gains`` False (a
-    flat-fielded sensor) only that background is new: a long ball's
-    edges on the detector's level read it short and narrow (the quick
-    sweep's R = 0.11 m ball without PRNU, 32 seeds: speed +0.9 sigma of
-    the bound on average, see ``estimate_region``).
-
-    Returns
-    -------
-    (EdgeMeasurements, LimbProfile) or None
-    """
-    # the background of the ball's columns away from it (refine_background),
-    # and the gains on that background
-    bg = _full_background(refine_background(image.data, detection, region))
-    if divide_gains:
-        gains = column_gains(image.data, bg, region.mask, region.line_start, region.col_start, region.polarity, detection.saturation_dn)
-        if not math.isfinite(gains.prnu_sigma):
-            return None
-        data = flat_fielded(image.data, bg, gains, region.lines, detection.saturation_dn)
-    else:
-        data = image.data
-    edges = measure_edges(data, region, bg, detection.noise_dn, t_lines_s, saturation_dn=detection.saturation_dn, others=others)
-    limb = ball_limb(camera, start, data, edges, t_lines_s, bg, level_samples=level_samples)
-    if limb is None:
-        return None
-    edges = with_limb(edges, limb)
-    if _pixel_fit_refusal(limb, edges, start, camera) is not None:
-        return None
-    m = matched_edges(edges, limb)
-    if m is edges:
-        return None
-    return (_with_gain_errors(m, gains) if divide_gains else m), limb
-
-
-def _with_gain_errors(edges, gains):
-    """The matched edges' sigmas with their edge pixels' remaining column-gain error.
-
-    An edge in pixel ``j`` covering it by ``c`` moves by about ``dg_j c``
-    pixels for a gain error ``dg_j`` (:attr:`ColumnGains.gain_sigma`: the
-    measurement's posterior sigma, the gains' spread where the column was
-    not measured).  The error repeats on every line whose edge (same side)
-    sits in that pixel, which independent sigmas would average away: each
-    of those ``n_j`` lines gets ``n_j (sigma_g,j c)^2`` added to its
-    variance, so that their mean carries the whole error.
-    """
-    out = {}
-    for name, side in (("left", 1.0), ("right", -1.0)):
-        flag = getattr(edges, f"{name}_matched")
-        if flag is None or not flag.any():
-            continue
-        x = np.asarray(getattr(edges, f"{name}_px"), dtype=float)[flag]
-        j = np.rint(x).astype(int)
-        # covered fraction of the edge pixel (the ball inwards of the edge)
-        c = np.clip(0.5 + side * (j - x), 0.0, 1.0)
-        sg = np.nan_to_num(gains.residual_sigma(j))
-        _, inv, count = np.unique(j, return_inverse=True, return_counts=True)
-        sig = np.array(getattr(edges, f"{name}_sigma_px"), dtype=float, copy=True)
-        sig[flag] = np.sqrt(sig[flag] ** 2 + count[inv] * (sg * c) ** 2)
-        out[f"{name}_sigma_px"] = sig
-    return replace(edges, **out) if out else edges
-
-
-# the pixel fit's conditions: the fitted light at most this fraction of the
-# contrast, the lines' brightness about the law at most this (relative), the
-# ball's image moving along the sensor by at most this during the exposure (px)
-_UNIFORM_LIGHT = 0.05
-_UNIFORM_LEVEL = 0.02
-_MAX_LATERAL_PX = 0.3
-
-
-def _pixel_fit_refusal(limb, edges, motion: BallMotion, camera: LineScanCamera) -> str | None:
-    """Why the pixel fit of the ball's ends may not be used here, or None.
-
-    ``"not_uniform"``: the pixel model multiplies each pixel's coverage by
-    one brightness per end of the ball (times the shading law's relative
-    brightness), so texture or a steep limb shading bias it: on a noise-free
-    render of an untextured ball lit from the side (light 65 % of the
-    brightness) it put V.z 8.4 m/s (3.6 sigma) off where the edges were
-    within 0.5 m/s.  A flat ball with 5 DN of noise on 700 shows a light of
-    0.1-0.3 % of the contrast and a level scatter of 0.2-0.7 %; a rendered
-    tennis ball 5 %; a scatter that could not be measured (NaN) refuses.
-
-    ``"lateral_motion"``: the model takes each chord position at one mean
-    time of the exposure, right for the edges' mean positions and the areas
-    but not for a pixel's coverage when the image also moves along the
-    sensor (``vy``): at 70 deg and 80 m/s the coverage erred by up to 0.12
-    of the contrast where the areas agreed to 1e-6.  On noise-free, finely
-    sampled renders of the benchmark ball (30 m/s towards y) the pixel
-    fit's reduced chi-square grew with that motion: 0.09, 0.22, 0.51, 4.2
-    and 12 at 0.10, 0.21, 0.30, 0.42 and 0.52 px per exposure (the pixels'
-    sigma there is the 0.002 floor and the detector's noise floor), its
-    speed errors 0.0001 % up to 0.30 px, 0.0023 % and 0.0064 % beyond.
-    """
-    light = float(np.linalg.norm(limb.shading.light_dn))
-    if not (light <= _UNIFORM_LIGHT * edges.contrast_dn and limb.level_rel_sigma <= _UNIFORM_LEVEL):
-        return "not_uniform"
-    lateral_px = camera.focal_px * abs(motion.velocity_mps[1]) * camera.exposure / max(motion.position_m[2], 1e-9)
-    if lateral_px > _MAX_LATERAL_PX:
-        return "lateral_motion"
-    return None
 
 
 def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
@@ -659,74 +257,6 @@ def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:
             if i is not None and j is not None:
                 out[a, b] = cov[i, j]
     return out
-
-
-# the balls' neighbourhood left out of their columns' background: this many
-# lines and pixels around each region's mask (its partly covered pixels
-# below the detection threshold), and a column's level from at least this
-# many remaining lines
-_BG_GUARD_LINES = 3
-_BG_GUARD_PX = 3
-_BG_MIN_LINES = 8
-# clipping window of the level's mean, noise sigmas (the detector's mode seeking)
-_BG_WINDOW_SIGMA = 4.5
-
-
-def refine_background(data: np.ndarray, detection: Detection, region: BallRegion | None = None) -> Detection:
-    """The detection with its balls' (or ``region``'s) columns' background levels measured away from the balls.
-
-    The detector's per-column level (:mod:`ballscan.measure.detection`: the mean of
-    a +-4.5 sigma window about the column's mode) takes in the pixels a
-    ball covers by less than 4.5 sigma of the contrast, next to its mask: on
-    the quick sweep's R = 0.11 m ball (8-bit, 1.8 % noise) the level of its
-    columns was 0.1 sigma high, its edges and ends read inwards and the
-    speed 1.5-2 sigma of the pixel bound high, in proportion to the noise
-    (noise-free 0.2 sigma).  Here each column of a region's box (plus
-    ``_BG_GUARD_PX``) is re-levelled from its lines outside every region's
-    mask grown by ``_BG_GUARD_LINES`` lines and ``_BG_GUARD_PX`` pixels:
-    the mean, in the detector's drift model, of the values within +-4.5
-    noise sigmas of its level (two rounds); columns with fewer than
-    ``_BG_MIN_LINES`` such lines keep the detector's level.
-    """
-    if not detection.regions:
-        return detection
-    n, w = detection.shape
-    gl, gp = _BG_GUARD_LINES, _BG_GUARD_PX
-    c_lo = max(min(r.col_start for r in detection.regions) - gp, 0)
-    c_hi = min(max(r.col_stop for r in detection.regions) + gp, w)
-    near = np.zeros((n, c_hi - c_lo), dtype=bool)
-    box = np.ones((2 * gl + 1, 2 * gp + 1), dtype=bool)
-    for r in detection.regions:
-        # the mask grown by the guard box
-        grown = ndi.binary_dilation(np.pad(np.asarray(r.mask, dtype=bool), ((gl, gl), (gp, gp))), structure=box)
-        l0, k0 = r.line_start - gl, r.col_start - gp - c_lo
-        a0, b0 = max(l0, 0), max(k0, 0)
-        a1, b1 = min(l0 + grown.shape[0], n), min(k0 + grown.shape[1], c_hi - c_lo)
-        near[a0:a1, b0:b1] |= grown[a0 - l0 : a1 - l0, b0 - k0 : b1 - k0]
-    cols = np.zeros(c_hi - c_lo, dtype=bool)
-    for r in detection.regions if region is None else (region,):
-        cols[max(r.col_start - gp, c_lo) - c_lo : min(r.col_stop + gp, c_hi) - c_lo] = True
-    idx = np.flatnonzero(cols)
-    x = np.asarray(data[:, c_lo:c_hi][:, idx], dtype=float)
-    g = detection.line_gain[:, None]
-    o = detection.line_offset_dn[:, None]
-    v = (x - o) / np.where(g != 0, g, 1.0)
-    far = ~near[:, idx]
-    level = detection.background_dn[c_lo:c_hi][idx].astype(float)
-    half = _BG_WINDOW_SIGMA * detection.noise_dn[c_lo:c_hi][idx]
-    for _ in range(2):
-        keep = far & (np.abs(v - level[None, :]) <= half[None, :])
-        cnt = keep.sum(axis=0)
-        mean = np.where(keep, v, 0.0).sum(axis=0) / np.maximum(cnt, 1)
-        level = np.where(cnt >= _BG_MIN_LINES, mean, level)
-    b = detection.background_dn.astype(float, copy=True)
-    b[c_lo + idx] = level
-    return replace(detection, background_dn=b)
-
-
-def _full_background(detection: Detection) -> np.ndarray:
-    n, w = detection.shape
-    return background_at(detection, slice(0, n), slice(0, w))
 
 
 def _vx_convention(motion: BallMotion, camera: LineScanCamera) -> BallMotion:
@@ -740,13 +270,8 @@ def estimate_image(
     camera: LineScanCamera,
     radius_m: float,
     *,
-    method: str = "fit",
+    recipe: Recipe = Recipe(),
     timestamps_s: np.ndarray | None = None,
-    shading: bool = True,
-    pixels: bool = False,
-    matched: bool = True,
-    flat_field: bool = True,
-    shading_setup: ShadingSetup = ShadingSetup(),
     columns: ColumnModel | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
@@ -758,28 +283,17 @@ def estimate_image(
         Its width must match the image's.
     radius_m : float
         Known ball radius, metres.
-    method : {"fit", "paper"}
+    recipe : Recipe
+        The estimator's strategy (:class:`ballscan.pipeline.recipe.Recipe`).
     timestamps_s : ndarray, optional
         Per-line timestamps (seconds) replacing ``i / line_rate``.
-    shading : bool
-        The fit's shading-aware second pass (see the module docstring).
-    pixels : bool
-        Fit the pixels of the balls' ends (see :func:`estimate_region`).
-    matched : bool
-        Matched edges on uniform balls (see :func:`estimate_region`).
-    flat_field : bool
-        On a sensor whose column gains scatter (PRNU), the matched edges on
-        the image with the measured gains divided out, on long balls (see
-        :func:`estimate_region`).
-    shading_setup : ShadingSetup
-        The shading pass's diagnostic settings (see :class:`ShadingSetup`).
     columns : ColumnModel, optional
         The image columns' background level and noise when they are known
         (the stream engine's, for an event's crop); else :func:`detect`
         learns them on the image.
     """
-    if method not in METHODS:
-        raise ValueError(f"method: expected one of {METHODS}, got {method!r}")
+    if not isinstance(recipe, Recipe):
+        raise ValueError(f"recipe: expected a Recipe, got {recipe!r}")
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     n_lines, width = image.data.shape
@@ -793,13 +307,7 @@ def estimate_image(
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image, columns=columns)
-    bg = _shading_background(image, det, shading_setup) if method == "fit" and det.regions else None
-    balls = [
-        estimate_region(
-            image, det, r, camera, radius_m, t, method, background_dn=bg, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field,
-            shading_setup=shading_setup,
-        )
-        for r in det.regions
-    ]
+    bg = shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
+    balls = [estimate_region(image, det, r, camera, radius_m, t, recipe, background_dn=bg) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls))

@@ -10,12 +10,15 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
+
+if TYPE_CHECKING:
+    from .stages import StageRecord
 
 __all__ = ["BallEstimate", "EstimateReport", "FLAGS"]
 
@@ -66,6 +69,9 @@ class BallEstimate:
         Seconds spent on this ball.
     extra : dict
         Method-specific diagnostics (energy, evaluations, chi-square ...).
+    record : StageRecord or None
+        Which path the fit's stages took (:class:`ballscan.pipeline.stages.StageRecord`);
+        not part of the JSON output (``extra`` repeats it there).
     """
 
     method: str
@@ -85,6 +91,7 @@ class BallEstimate:
     last_line: int | None = None
     run_time_s: float = 0.0
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
+    record: "StageRecord | None" = field(default=None, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position_m", _tuple3(self.position_m))

@@ -39,7 +39,7 @@ import numpy as np
 from .._kernels import area_tables, as_arg, fit_jacobian, fit_residuals, select_lines
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
-from ..measure.detection import median as _median
+from ..measure.robust import median as _median
 from ..measure.edges import EdgeMeasurements
 from ..model.averaged import JacobianMemo, ModelEdges, ModelEvaluator, averaged_model, hybrid_jacobian, model_jacobian
 from ..model.pixels import PixelWindows, pixel_residuals, pixel_residuals_jacobian

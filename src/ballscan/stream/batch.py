@@ -164,6 +164,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         ts_path = _timestamps_beside(p)
         if p.suffix.lower() in RAW_SUFFIXES:
             from .sources import RawLineSource
+            from ..pipeline.recipe import Recipe
             from .engine import StreamConfig, process_stream
 
             from .engine import StreamError
@@ -171,7 +172,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             source = RawLineSource(p, camera.width, dtype, timestamps=ts_path, name=src)
             ests = []
             try:
-                for r in process_stream(source, camera, radius_m, StreamConfig(method=method, background=background), source=src):
+                for r in process_stream(source, camera, radius_m, StreamConfig(recipe=Recipe(method=method), background=background), source=src):
                     ests.append(r.estimate)
             except StreamError as exc:
                 # A damaged stream (e.g. a truncated last line): keep the balls
@@ -180,11 +181,12 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
                 return InputResult(src, rows, " ".join(str(exc).split()))
         else:
             from ..pipeline.estimate import estimate_image
+            from ..pipeline.recipe import Recipe
             from ..measure.images import load_image, load_timestamps
 
             img = load_image(p)
             ts = load_timestamps(ts_path, img.n_lines) if ts_path is not None else None
-            ests = list(estimate_image(img, camera, radius_m, method=method, timestamps_s=ts).balls)
+            ests = list(estimate_image(img, camera, radius_m, recipe=Recipe(method=method), timestamps_s=ts).balls)
         return InputResult(src, tuple(_row(src, k, e) for k, e in enumerate(ests)))
     except (BallscanError, ValueError, OSError) as exc:
         msg = " ".join(str(exc).split())

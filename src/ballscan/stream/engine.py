@@ -75,6 +75,7 @@ from ..measure.detection import ColumnModel, detect
 from ..measure.robust import median
 from ..errors import BallscanError
 from ..measure.images import LineImage
+from ..pipeline.recipe import Recipe
 from ..pipeline.results import BallEstimate
 
 __all__ = [
@@ -169,15 +170,10 @@ class StreamConfig:
         is reported cut.
     noise_floor_dn : float
         Smallest noise sigma (DN) used for the band.
-    method : {"fit", "paper"}
-        Estimator refinement.
-    shading : bool
-        The fit's shading-aware second pass (see :mod:`ballscan.pipeline.estimate`):
-        about half of a ball's estimation time; off trades V.z accuracy for
-        latency.
-    matched : bool
-        Matched edges on uniform balls of a flat-fielded sensor (``matched``
-        of :func:`ballscan.pipeline.estimate.estimate_region`).
+    recipe : Recipe
+        The estimator's strategy (:class:`ballscan.pipeline.recipe.Recipe`);
+        its ``shading`` pass is about half of a ball's estimation time, off
+        trades V.z accuracy for latency.
     saturation_dn : float or None
         Clipping level (DN); default the dtype's maximum.
     keep_crops : bool
@@ -212,9 +208,7 @@ class StreamConfig:
     ema_alpha: float = 0.25
     buffer_lines: int = 8192
     noise_floor_dn: float = 0.5
-    method: str = "fit"
-    shading: bool = True
-    matched: bool = True
+    recipe: Recipe = Recipe()
     saturation_dn: float | None = None
     keep_crops: bool = False
     line_offset: bool = True
@@ -227,22 +221,32 @@ class StreamConfig:
             if not ok:
                 raise ValueError(f"{name}: {why}, got {getattr(self, name)!r}")
 
-        need(math.isfinite(self.k_sigma) and self.k_sigma > 0, "k_sigma", "must be positive")
-        for name in ("min_run_px", "min_event_lines", "min_event_px", "margin_lines", "block_lines", "test_lines", "sample_step"):
+        def real(name: str) -> bool:
             v = getattr(self, name)
-            need(isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= 1, name, "must be an integer >= 1")
-        need(isinstance(self.margin_px, (int, np.integer)) and self.margin_px >= 0, "margin_px", "must be an integer >= 0")
-        need(0 < self.ema_alpha <= 1, "ema_alpha", "must be in (0, 1]")
+            return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool) and math.isfinite(v)
+
+        def integer(name: str) -> bool:
+            v = getattr(self, name)
+            return isinstance(v, (int, np.integer)) and not isinstance(v, bool)
+
+        need(real("k_sigma") and self.k_sigma > 0, "k_sigma", "must be positive")
+        for name in ("min_run_px", "min_event_lines", "min_event_px", "margin_lines", "block_lines", "test_lines", "sample_step"):
+            need(integer(name) and getattr(self, name) >= 1, name, "must be an integer >= 1")
+        need(integer("margin_px") and self.margin_px >= 0, "margin_px", "must be an integer >= 0")
+        need(real("ema_alpha") and 0 < self.ema_alpha <= 1, "ema_alpha", "must be in (0, 1]")
         need(self.block_lines >= 8, "block_lines", "must be at least 8")
         need(
             isinstance(self.buffer_lines, (int, np.integer)) and self.buffer_lines >= 2 * self.block_lines + 4 * self.margin_lines,
             "buffer_lines",
             "must be at least 2 * block_lines + 4 * margin_lines",
         )
-        need(self.noise_floor_dn > 0, "noise_floor_dn", "must be positive")
-        need(self.method in ("fit", "paper"), "method", "must be 'fit' or 'paper'")
-        need(isinstance(self.offset_columns, (int, np.integer)) and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
-        need(self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
+        need(real("noise_floor_dn") and self.noise_floor_dn > 0, "noise_floor_dn", "must be positive")
+        need(isinstance(self.recipe, Recipe), "recipe", "must be a Recipe")
+        need(self.saturation_dn is None or (real("saturation_dn") and self.saturation_dn > 0), "saturation_dn", "must be None or positive")
+        for name in ("keep_crops", "line_offset"):
+            need(isinstance(getattr(self, name), bool), name, "must be True or False")
+        need(integer("offset_columns") and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
+        need(real("max_line_offset_sigma") and self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
         need(self.background in BACKGROUNDS, "background", "must be 'engine' or 'crop'")
 
 
@@ -757,7 +761,7 @@ class StreamEngine:
 
     def _emit_cut(self, ev: _Event, out: list[StreamResult], why: str) -> None:
         est = BallEstimate(
-            method=self.config.method,
+            method=self.config.recipe.method,
             radius_m=self.radius_m,
             t_c_s=None,
             position_m=None,
@@ -803,8 +807,7 @@ class StreamEngine:
         # from the clean lines before the ball
         columns = ColumnModel(self._bg[c0:c1], np.sqrt(self._var[c0:c1])) if cfg.background == "engine" else None
         args = (
-            crop, times, camera, self.radius_m, cfg.method, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", cfg.shading, cfg.matched,
-            columns,
+            crop, times, camera, self.radius_m, cfg.recipe, sat, 8 * self.dtype.itemsize, f"{self.source}[{l0}:{l1}, {c0}:{c1}]", columns,
         )
         handoff = time.perf_counter() - self._chunk_arrival
         job = _Job(self._n_events, l0, l1, c0, c1, crop, times, self._chunk_arrival, handoff, ev.start, ev.last_hit, columns=columns)
@@ -875,12 +878,10 @@ def estimate_crop(
     times_s: np.ndarray,
     camera: LineScanCamera,
     radius_m: float,
-    method: str,
+    recipe: Recipe,
     saturation_dn: float,
     bits: int,
     name: str,
-    shading: bool = True,
-    matched: bool = True,
     columns: ColumnModel | None = None,
 ) -> tuple[BallEstimate, ...]:
     """Estimate the balls of one event crop (a top-level function: runs in worker processes too).
@@ -894,14 +895,11 @@ def estimate_crop(
     camera : LineScanCamera
         The crop's camera (:func:`crop_camera`).
     radius_m : float
-    method : {"fit", "paper"}
+    recipe : Recipe
+        The estimator's strategy.
     saturation_dn : float
     bits : int
     name : str
-    shading : bool
-        The fit's shading-aware second pass.
-    matched : bool
-        Matched edges where the ball and the sensor allow them.
     columns : ColumnModel, optional
         The crop columns' background and noise (the engine's model), else
         learned on the crop.
@@ -918,9 +916,9 @@ def estimate_crop(
 
     image = LineImage(crop.astype(np.float64), saturation_dn, bits, name)
     try:
-        return estimate_image(image, camera, radius_m, method=method, timestamps_s=times_s, shading=shading, matched=matched, columns=columns).balls
+        return estimate_image(image, camera, radius_m, recipe=recipe, timestamps_s=times_s, columns=columns).balls
     except (BallscanError, ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
-        return (BallEstimate.undetermined_estimate(method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
+        return (BallEstimate.undetermined_estimate(recipe.method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 
 
 def preload_estimator() -> None:

@@ -1,0 +1,195 @@
+"""The estimator's strategy: which refinement, which passes, and their thresholds.
+
+A :class:`Recipe` is everything :func:`ballscan.pipeline.estimate.estimate_image`
+chooses on its own; ``Recipe()`` is the estimator's default.  It is frozen
+and checked when it is built, so that a recipe handed to a stream engine or
+to worker processes is valid before the first ball arrives.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+from typing import Literal, get_args
+
+from ..solve.settings import FitSettings
+
+__all__ = ["METHODS", "SHADING_STARTS", "Method", "ShadingStart", "Recipe"]
+
+Method = Literal["fit", "paper"]
+ShadingStart = Literal["guess", "loose_fit"]
+
+METHODS: tuple[str, ...] = get_args(Method)
+SHADING_STARTS: tuple[str, ...] = get_args(ShadingStart)
+
+_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law")
+#: integer fields and their smallest allowed value
+_INTS = {
+    "flat_field_min_columns": 0,
+    "long_ball_min_lines": 0,
+    "spread_min_lines": 0,
+    "background_guard_lines": 0,
+    "background_guard_px": 0,
+    "background_min_lines": 1,
+}
+#: non-negative real fields
+_REALS = ("matched_max_gain_sigma", "uniform_max_light", "uniform_max_level_rel_sigma", "max_lateral_px", "background_window_sigma")
+_FITS = ("loose_fit", "pixel_fit", "spread_fit", "edge_fit")
+
+
+@dataclass(frozen=True)
+class Recipe:
+    """How :func:`ballscan.pipeline.estimate.estimate_image` measures a ball.
+
+    Attributes
+    ----------
+    method : {"fit", "paper"}
+        ``"fit"``: sub-pixel edges fitted by weighted least squares with
+        uncertainties; ``"paper"``: the paper's gradient-image matching with
+        Powell's method.  The other fields concern ``"fit"`` only.
+    shading : bool
+        The fit's second, shading-aware pass: the edges measured again with
+        the profile of the ball's fitted Lambertian shading, and fitted again.
+    pixels : bool
+        Fit the pixels of the ball's edge windows and ends in the final fit
+        where the ball is uniform and its image does not move along the
+        sensor during the exposure (untextured balls, continuous exposure).
+    matched : bool
+        Measure the narrow edges of uniform balls by fitting the shading
+        model's profile to their windows (a flat-fielded sensor).
+    flat_field : bool
+        Where the ball's interior shows column-gain scatter (PRNU), the
+        matched edges on the image with the measured gains divided out, on
+        long balls.
+    shading_start : {"guess", "loose_fit"}
+        The motion the shading law and the limb model are built at: the
+        key-point guess (a loose fit where the guess is degenerate), or
+        always the loose fit of the model-free edges.
+    level_samples : (int, int)
+        Samples over the exposure and across the pixel's height of the
+        ends' mean brightness (:meth:`ballscan.measure.shading.LimbProfile.line_levels`).
+    refined_background : bool
+        Measure every ball's edges on its columns' background measured away
+        from the balls (:func:`ballscan.pipeline.stages.refine_background`);
+        otherwise only long balls' matched edges are.
+    refit_law : bool
+        On the window edges' path, fit the shading law and the limb model
+        again at the fitted motion, and the motion once more from there.
+    matched_max_gain_sigma : float
+        Largest relative column-gain scatter of the ball's interior
+        (:func:`ballscan.measure.flatfield.column_gains`) at which the sensor
+        counts as flat-fielded and the matched edges are measured on the
+        image as it is: beyond, their sigmas come out too small.
+    flat_field_min_columns : int
+        Fewest measured columns for the flat-fielded matched edges: fewer
+        columns give gains too uncertain to divide out.
+    long_ball_min_lines : int
+        Fewest lines with both edges for a ball's matched edges to be
+        measured on its refined background, and for the flat-fielded
+        matched edges: a column's gain or level error repeats on every line
+        whose edge sits in it, so it matters on long balls; on short balls
+        the window edges' sigmas are the honest ones.
+    spread_min_lines : int
+        Fewest lines with both edges for the spread-pixel final fit after
+        matched edges: on fewer lines its speed errors exceed its sigmas.
+    uniform_max_light : float
+        Largest fitted directional light, as a fraction of the contrast, of
+        a ball the pixel model (one brightness per end times the shading
+        law) describes: the pixel fit's and the matched edges' condition.
+    uniform_max_level_rel_sigma : float
+        Largest relative scatter of the lines' brightness about the shading
+        law for the same condition (texture or a steep limb biases the
+        pixel model).
+    max_lateral_px : float
+        Largest motion of the ball's image along the sensor during the
+        exposure (pixels) for the same condition: the pixel model takes each
+        chord at one mean time of the exposure.
+    background_guard_lines, background_guard_px : int
+        The balls' neighbourhood left out of their columns' refined
+        background: this many lines and pixels around each region's mask
+        (its partly covered pixels fall below the detection threshold).
+    background_min_lines : int
+        Fewest remaining lines for a column's refined level; columns with
+        fewer keep the detector's level.
+    background_window_sigma : float
+        Half-width, in noise sigmas, of the window about a column's level
+        whose values the refined level averages (the detector's mode seeking).
+    loose_fit : FitSettings
+        The loose fit of the model-free edges that replaces a degenerate
+        key-point guess as the shading pass's start: no outlier rounds and a
+        coarse cost tolerance, as the shading model needs the motion only
+        roughly.
+    pixel_fit : FitSettings
+        The final fit with ``pixels``; its ``pixels`` must be True.
+    spread_fit : FitSettings
+        The final fit after matched edges: the pixels of the ball's ends and
+        of the lines whose edges spread over ``pixel_min_spread_px`` in place
+        of their edges (sharp lines keep their matched edges).  Enough
+        exposure nodes that the pixel coverage is smooth in the parameters,
+        and windows wide enough that each end's free brightness is measured
+        on the ball's interior.  Its ``pixels`` must be True.
+    edge_fit : FitSettings
+        The final fit of the edges (and end areas) where no pixel fit is used.
+    """
+
+    method: Method = "fit"
+    shading: bool = True
+    pixels: bool = False
+    matched: bool = True
+    flat_field: bool = True
+    shading_start: ShadingStart = "guess"
+    level_samples: tuple[int, int] = (3, 2)
+    refined_background: bool = False
+    refit_law: bool = False
+    matched_max_gain_sigma: float = 0.0015
+    flat_field_min_columns: int = 64
+    long_ball_min_lines: int = 250
+    spread_min_lines: int = 20
+    uniform_max_light: float = 0.05
+    uniform_max_level_rel_sigma: float = 0.02
+    max_lateral_px: float = 0.3
+    background_guard_lines: int = 3
+    background_guard_px: int = 3
+    background_min_lines: int = 8
+    background_window_sigma: float = 4.5
+    loose_fit: FitSettings = FitSettings(max_reject_rounds=0, cost_tol=1e-3)
+    pixel_fit: FitSettings = FitSettings(pixels=True)
+    spread_fit: FitSettings = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
+    edge_fit: FitSettings = FitSettings()
+
+    def __post_init__(self) -> None:
+        def bad(name: str, why: str) -> ValueError:
+            return ValueError(f"{name}: {why}, got {getattr(self, name)!r}")
+
+        if self.method not in METHODS:
+            raise bad("method", f"expected one of {METHODS}")
+        if self.shading_start not in SHADING_STARTS:
+            raise bad("shading_start", f"expected one of {SHADING_STARTS}")
+        for name in _BOOLS:
+            if not isinstance(getattr(self, name), bool):
+                raise bad(name, "expected True or False")
+        ls = self.level_samples
+        if not isinstance(ls, (tuple, list)) or len(ls) != 2 or not all(_is_int(k) and k >= 1 for k in ls):
+            raise bad("level_samples", "expected two positive integers")
+        object.__setattr__(self, "level_samples", (int(ls[0]), int(ls[1])))
+        for name, low in _INTS.items():
+            v = getattr(self, name)
+            if not (_is_int(v) and v >= low):
+                raise bad(name, f"expected an integer >= {low}")
+        for name in _REALS:
+            v = getattr(self, name)
+            if not (isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) and v >= 0):
+                raise bad(name, "expected a finite number >= 0")
+        if not self.background_window_sigma > 0:
+            raise bad("background_window_sigma", "expected a positive number")
+        for name in _FITS:
+            if not isinstance(getattr(self, name), FitSettings):
+                raise bad(name, "expected a FitSettings")
+        for name in ("pixel_fit", "spread_fit"):
+            if not getattr(self, name).pixels:
+                raise bad(name, "expected FitSettings with pixels=True")
+
+
+def _is_int(v: object) -> bool:
+    return isinstance(v, numbers.Integral) and not isinstance(v, bool)
