@@ -19,40 +19,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from .compiled import as_arg, jit
 
 
-def _jit(**options):
-    """``numba.njit`` cached on disk where numba finds a writable cache location, else compiled per process.
-
-    With ``cache=True`` numba raises at decoration when it has nowhere to
-    write (a read-only install without a writable home or
-    ``NUMBA_CACHE_DIR``); the estimator must still import there.
-    """
-
-    def decorate(func):
-        try:
-            return njit(cache=True, **options)(func)
-        except RuntimeError:
-            return njit(cache=False, **options)(func)
-
-    return decorate
-
-
-def as_arg(a, dtype=np.float64) -> np.ndarray:
-    """``a`` as a C-contiguous, writeable array of ``dtype`` (a copy only where it is not one).
-
-    Every kernel has one compiled signature, for such arrays; a read-only
-    (broadcast) or strided argument would compile another on first sight.
-    ``np.require`` does the same at several times the cost (a kernel's
-    arguments are converted some fifty times per ball).
-    """
-    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous and a.flags.writeable:
-        return a
-    return np.array(a, dtype=dtype, order="C")
-
-
-@_jit(inline="always")
+@jit(inline="always")
 def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> float:
     """Pixel of a normalised sensor coordinate (the camera's radial distortion)."""
     if k1 == 0.0 and k2 == 0.0:
@@ -61,7 +32,7 @@ def _project(n: float, principal: float, focal: float, k1: float, k2: float) -> 
     return principal + focal * (n * (1.0 + n2 * (k1 + k2 * n2)))
 
 
-@_jit()
+@jit()
 def averaged_samples(
     th: np.ndarray,
     t: np.ndarray,
@@ -236,7 +207,7 @@ def averaged_samples(
     return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _ramp_histogram(lo: np.ndarray, hi: np.ndarray, w: np.ndarray, a0: float, span: int, hw: np.ndarray, hwf: np.ndarray) -> bool:
     """One line's chord samples as a histogram over a unit grid of ``span`` pixels from ``a0`` (pixels).
 
@@ -278,14 +249,14 @@ def _ramp_histogram(lo: np.ndarray, hi: np.ndarray, w: np.ndarray, a0: float, sp
     return True
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _grid_coverage(hw: np.ndarray, hwf: np.ndarray, k: int) -> float:
     """Pixel ``k``'s coverage from :func:`_ramp_histogram` (exactly 0 where the two ramps of every sample cancel)."""
     cov = hw[k + 2] + hwf[k + 1]
     return 0.0 if abs(cov) < 1e-14 else cov
 
 
-@_jit()
+@jit()
 def _row_grids(cols: np.ndarray, mask: np.ndarray):
     """Each row's first used column (its unit grid's origin, pixels) and the widest row's span (pixels) of ``cols, mask`` (Np, K)."""
     Np, K = cols.shape
@@ -304,7 +275,7 @@ def _row_grids(cols: np.ndarray, mask: np.ndarray):
     return base, span
 
 
-@_jit()
+@jit()
 def pixel_residuals(
     s_lo: np.ndarray,
     s_hi: np.ndarray,
@@ -368,7 +339,7 @@ def pixel_residuals(
     return out
 
 
-@_jit()
+@jit()
 def _sample_buffers(S: int):
     """Output and scratch arrays of :func:`_line_samples_jacobian` for ``S`` samples per line."""
     return (
@@ -377,7 +348,7 @@ def _sample_buffers(S: int):
     )
 
 
-@_jit()
+@jit()
 def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf):
     """One line's chord samples (:func:`averaged_samples` with samples) and their derivatives, into ``buf``.
 
@@ -571,7 +542,7 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
                 dhi[jj, j] = fp_hi * ((d_a + d_b) * inv_den + (a_ + b_) * d_inv)
 
 
-@_jit()
+@jit()
 def averaged_edges_jacobian(
     th: np.ndarray,
     t: np.ndarray,
@@ -659,7 +630,7 @@ def averaged_edges_jacobian(
     return left, right, area, dl, dr, da
 
 
-@_jit()
+@jit()
 def pixel_residuals_jacobian(
     th: np.ndarray,
     t: np.ndarray,
@@ -804,7 +775,7 @@ def pixel_residuals_jacobian(
     return res, jac_out
 
 
-@_jit()
+@jit()
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
     """The chord model's edges and their analytic derivatives (:func:`ballscan.solve.fit.chord_jacobian`).
 
@@ -874,7 +845,7 @@ def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: flo
     return u, J, ok, xs, ws, taus
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _centres(t_row: float, sharp: bool, tk: np.ndarray, pos: np.ndarray, vel: np.ndarray, acc: np.ndarray, has_acc: bool, t_c: float, out: np.ndarray) -> int:
     """The sphere's centre ``(cx, cy, cz, |c|^2)`` (m, m^2) at each instant a row of line time ``t_row`` samples (see :func:`limb_values`), into ``out`` (n, 4); returns ``n``."""
     nt = 1 if sharp else tk.shape[0]
@@ -894,7 +865,7 @@ def _centres(t_row: float, sharp: bool, tk: np.ndarray, pos: np.ndarray, vel: np
     return nt
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _limb_rays(nu: float, bg: float, cen: np.ndarray, nt: int, hs: np.ndarray, nh: int, R2: float, light: np.ndarray, ambient: float, scale: float):
     """One sensor position's mean normalised brightness and coverage over its samples (see :func:`limb_values`).
 
@@ -932,7 +903,7 @@ def _limb_rays(nu: float, bg: float, cen: np.ndarray, nt: int, hs: np.ndarray, n
     return s_val / n_samples, s_hit / n_samples
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _heights(sharp: bool, hk: np.ndarray, focal_px: float, out: np.ndarray) -> int:
     """The heights across the line a row samples over the focal length (one, 0, when sharp), into ``out``; returns their number."""
     nh = 1 if sharp else hk.shape[0]
@@ -941,7 +912,7 @@ def _heights(sharp: bool, hk: np.ndarray, focal_px: float, out: np.ndarray) -> i
     return nh
 
 
-@_jit()
+@jit()
 def limb_values(
     t_rows: np.ndarray,
     n_u: np.ndarray,
@@ -987,7 +958,7 @@ def limb_values(
     return val, cov
 
 
-@_jit()
+@jit()
 def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.ndarray, base: np.ndarray, span: int) -> np.ndarray:
     """Averaged pixel coverage on unit grids (:func:`ballscan.solve.fit.pixel_coverage`).
 
@@ -1010,7 +981,7 @@ def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.n
     return out
 
 
-@_jit()
+@jit()
 def fit_residuals(
     left: np.ndarray, right: np.ndarray, area: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray, b: float,
     ml: np.ndarray, mr: np.ndarray, ma: np.ndarray, sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray,
@@ -1037,7 +1008,7 @@ def fit_residuals(
     return r
 
 
-@_jit()
+@jit()
 def fit_jacobian(
     dl: np.ndarray, dr: np.ndarray, da: np.ndarray, il: np.ndarray, ir: np.ndarray, ia: np.ndarray,
     sl: np.ndarray, sr: np.ndarray, sa: np.ndarray, tail: np.ndarray, with_bias: bool,
@@ -1075,7 +1046,7 @@ def fit_jacobian(
     return J
 
 
-@_jit()
+@jit()
 def block_ratio(r: np.ndarray, sizes) -> float:
     """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.solve.fit._block_scale`), else 1.
 
@@ -1097,7 +1068,7 @@ def block_ratio(r: np.ndarray, sizes) -> float:
     return best
 
 
-@_jit()
+@jit()
 def area_tables(
     area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float
 ):
@@ -1132,7 +1103,7 @@ def area_tables(
     return ma, sa, ok
 
 
-@_jit()
+@jit()
 def select_lines(
     presence: np.ndarray, valid: np.ndarray, spread: np.ndarray, left_ok: np.ndarray, right_ok: np.ndarray,
     left: np.ndarray, right: np.ndarray, end_line: np.ndarray, wide: bool, left_wide_ok: np.ndarray,
@@ -1173,7 +1144,7 @@ def select_lines(
     return use_l, use_r, use_a, wide_l, wide_r
 
 
-@_jit()
+@jit()
 def hybrid_rows(
     th: np.ndarray, t: np.ndarray, radius_m: float, exposure_s: float, focal_px: float, principal_px: float, k1: float,
     k2: float, g: np.ndarray, gw: np.ndarray, reach_max: float, fd_lines: np.ndarray, needed: np.ndarray,
@@ -1224,7 +1195,7 @@ def hybrid_rows(
     return dl, dr, da, fd
 
 
-@_jit()
+@jit()
 def equilibrated(AJ: np.ndarray):
     """Column norms ``cn = sqrt(diag(AJ))`` (1 where not positive) of a normal matrix and ``AJ / outer(cn, cn)``.
 
@@ -1243,7 +1214,7 @@ def equilibrated(AJ: np.ndarray):
     return cn, A
 
 
-@_jit()
+@jit()
 def damped(A: np.ndarray, lam: float) -> np.ndarray:
     """``A + lam * diag(diag(A))`` (the numpy expression's operations: ``+ lam * 0`` off the diagonal)."""
     n = A.shape[0]
@@ -1255,7 +1226,7 @@ def damped(A: np.ndarray, lam: float) -> np.ndarray:
     return out
 
 
-@_jit()
+@jit()
 def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
     """Whether the mask ``lines`` holds lines both before and after ``t_c`` (line times ``t``).
 
@@ -1270,7 +1241,7 @@ def on_both_sides(lines: np.ndarray, t: np.ndarray, t_c: float) -> bool:
     return before and after
 
 
-@_jit()
+@jit()
 def loose_rows(
     J: np.ndarray, r: np.ndarray, rows: np.ndarray, sa: np.ndarray, sa_loose: np.ndarray, model: np.ndarray, ma_loose: np.ndarray
 ):
@@ -1415,7 +1386,7 @@ def warm_up() -> None:
 # the edges' running medians 0.3 ms); one pass over the data does the same.
 
 
-@_jit()
+@jit()
 def _search_keys(s: np.ndarray, i: int, shift: float, x: float, right: bool) -> int:
     """Number of ``float64(s[i, j]) - shift`` (ascending in ``j``) below ``x`` (``right``: at most ``x``)."""
     lo = 0
@@ -1430,7 +1401,7 @@ def _search_keys(s: np.ndarray, i: int, shift: float, x: float, right: bool) -> 
     return lo
 
 
-@_jit()
+@jit()
 def _window_spread(s: np.ndarray, i: int, m: float, half: float):
     """Spread, count and mean offset of the values of row ``i`` of ``s`` within ``half`` of ``m``.
 
@@ -1457,7 +1428,7 @@ def _window_spread(s: np.ndarray, i: int, m: float, half: float):
     return math.sqrt(max(var, 0.0) * kk / max(kk - 1, 1)), k, mean
 
 
-@_jit()
+@jit()
 def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float):
     """Mode, noise sigma and final window count of each row of the row-sorted float32 ``s`` (:func:`ballscan.measure.detection._mode_seek`).
 
@@ -1512,7 +1483,7 @@ def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float)
     return centre, sig_out, cnt
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _root(parent: np.ndarray, q: int) -> int:
     """Root of ``q`` in the union-find forest ``parent`` (path halving)."""
     while parent[q] != q:
@@ -1521,7 +1492,7 @@ def _root(parent: np.ndarray, q: int) -> int:
     return q
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _grown(a: np.ndarray, size: int) -> np.ndarray:
     """A copy of the 1-D ``a`` with room for ``size`` entries."""
     out = np.empty(size, dtype=a.dtype)
@@ -1529,7 +1500,7 @@ def _grown(a: np.ndarray, size: int) -> np.ndarray:
     return out
 
 
-@_jit()
+@jit()
 def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, thr: np.ndarray):
     """8-connected labels, sizes and boxes of the pixels with ``|x - (gain b + offset)| > thr`` (:func:`ballscan.measure.detection.detect`).
 
@@ -1622,7 +1593,7 @@ def label_hits(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarra
     return lab, sizes[:n_lab].copy(), boxes[:n_lab].copy()
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _rank_in_counts(counts: np.ndarray, k: int) -> int:
     """Index of the value of rank ``k`` (0-based) in the histogram ``counts``."""
     seen = 0
@@ -1633,7 +1604,7 @@ def _rank_in_counts(counts: np.ndarray, k: int) -> int:
     return counts.size - 1
 
 
-@_jit()
+@jit()
 def integer_median_mad(d: np.ndarray):
     """``median(d)`` and ``median(|d - median(d)|)`` of float32 ``d`` holding small integers, by counting (:func:`ballscan.measure.detection._global_noise`).
 
@@ -1681,7 +1652,7 @@ def integer_median_mad(d: np.ndarray):
     return True, med, mad
 
 
-@_jit()
+@jit()
 def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
     """``scipy.ndimage.median_filter(x, size, mode="reflect")`` of a 1-D float64 ``x`` without NaN, ``size`` odd and below ``2 x.size`` (:func:`ballscan.measure.detection._background`).
 
@@ -1731,7 +1702,7 @@ def reflect_median_filter(x: np.ndarray, size: int) -> np.ndarray:
 
 # error_model="numpy": no zero-division check (the divisors are positive),
 # so the divisions vectorise (40 -> 23 us on a stream crop)
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs: np.ndarray, thr: np.ndarray, use_gain: bool):
     """Each line's drift samples with the first-pass ball pixels set to +inf, and their number per line (:func:`ballscan.measure.detection._background`).
 
@@ -1772,7 +1743,7 @@ def first_pass_lines(xs: np.ndarray, gain0: np.ndarray, offset0: np.ndarray, bs:
     return s, excluded
 
 
-@_jit()
+@jit()
 def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
     """Per row of the row-sorted ``s`` (excluded values +inf, ``excluded`` of them): the masked median and the kept count (:func:`ballscan.measure.detection._masked_median`)."""
     n_row, n = s.shape
@@ -1795,7 +1766,7 @@ def kept_median(s: np.ndarray, excluded: np.ndarray, big: float):
     return med, count
 
 
-@_jit()
+@jit()
 def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
     """Union of the per-line and per-column hole fills of the bool mask ``m`` (:func:`ballscan.measure.detection.detect`).
 
@@ -1825,7 +1796,7 @@ def fill_lines_and_cols(m: np.ndarray) -> np.ndarray:
     return out
 
 
-@_jit()
+@jit()
 def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np.ndarray) -> np.ndarray:
     """``in_group[lab[l0:l1, c0:c1]]``: the pixels of a group of labels in its box (:func:`ballscan.measure.detection.detect`)."""
     out = np.empty((l1 - l0, c1 - c0), dtype=np.bool_)
@@ -1835,7 +1806,7 @@ def group_mask(lab: np.ndarray, l0: int, l1: int, c0: int, c1: int, in_group: np
     return out
 
 
-@_jit()
+@jit()
 def multi_runs(m: np.ndarray, axis: int):
     """Lines (``axis=1``) or columns (``axis=0``) of the bool mask ``m`` in two or more runs of True: those with such a neighbour, and the others (:func:`ballscan.measure.detection._merged_runs`)."""
     h, w = m.shape
@@ -1863,7 +1834,7 @@ def multi_runs(m: np.ndarray, axis: int):
     return paired, lone
 
 
-@_jit()
+@jit()
 def region_values(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.ndarray, l0: int, c0: int, mask: np.ndarray, sat: float):
     """Ball-minus-background values of the mask's pixels (in raster order) and whether any is at or above ``sat`` (:func:`ballscan.measure.detection.detect`).
 
@@ -1884,13 +1855,13 @@ def region_values(x: np.ndarray, gain: np.ndarray, b: np.ndarray, offset: np.nda
     return vals[:k].copy(), saturated
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _nan_last_less(a: float, b: float) -> bool:
     """``a`` sorts before ``b`` in numpy's order (NaN last)."""
     return a < b or (b != b and a == a)
 
 
-@_jit()
+@jit()
 def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, floor_p: np.ndarray, fraction: float, max_walk: int):
     """The rough edges of :func:`ballscan.measure.edges._edge_pass` walked outwards towards a darker (shaded) limb.
 
@@ -1924,7 +1895,7 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
     return kl, kr
 
 
-@_jit()
+@jit()
 def inner_differences(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray):
     """Second differences inside the segments of :func:`ballscan.measure.edges._edge_pass` (the ball's own noise).
 
@@ -1959,7 +1930,7 @@ def inner_differences(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right
     return d2, pv, sv, per_col
 
 
-@_jit()
+@jit()
 def edge_windows(
     p: np.ndarray,
     sp: np.ndarray,
@@ -2116,7 +2087,7 @@ def edge_windows(
 # does the same with 8- or 16-bit lanes.  Each kernel exists for uint8 and
 # for uint16 lines (one signature each); the bodies are shared.
 
-@_jit(inline="always")
+@jit(inline="always")
 def _max_excess_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -> int:
     """Largest ``((x - lo - o) mod 256) - span`` over ``row``, or 0 (no pixel outside the band)."""
     # every operation in uint8 lanes (the wrap is the modulo) and over the
@@ -2131,7 +2102,7 @@ def _max_excess_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) ->
     return np.int64(mx)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _max_excess_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -> int:
     """:func:`_max_excess_u8` for uint16 values (modulo 65536)."""
     o16 = np.uint16(o & 65535)
@@ -2143,7 +2114,7 @@ def _max_excess_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -
     return np.int64(mx)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _outside_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: np.ndarray) -> None:
     """``out[j] = (x[j] - lo[j] - o) mod 256 > span[j]`` (1 or 0), vectorised as :func:`_max_excess_u8`."""
     o8 = np.uint8(o & 255)
@@ -2152,7 +2123,7 @@ def _outside_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: 
         out[j] = np.uint8(1) if d > span[j] else np.uint8(0)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _outside_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: np.ndarray) -> None:
     """:func:`_outside_u8` for uint16 values (modulo 65536)."""
     o16 = np.uint16(o & 65535)
@@ -2161,7 +2132,7 @@ def _outside_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out:
         out[j] = np.uint8(1) if d > span[j] else np.uint8(0)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _select_int(buf: np.ndarray, m: int, k: int) -> int:
     """The ``k``-th smallest (0-based) of ``buf[:m]`` (Hoare's selection; reorders ``buf``)."""
     lo = 0
@@ -2190,7 +2161,7 @@ def _select_int(buf: np.ndarray, m: int, k: int) -> int:
     return buf[k]
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _kth_in_window(hist: np.ndarray, T: int, neg: int, k: int) -> int:
     """The ``k``-th smallest value (0-based), known to lie in ``[-T, T]``, of the values histogrammed in ``hist`` (bin ``v + T``); ``neg`` values are negative.
 
@@ -2213,7 +2184,7 @@ def _kth_in_window(hist: np.ndarray, T: int, neg: int, k: int) -> int:
     return t
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _line_offset(row: np.ndarray, ocols: np.ndarray, bg16: np.ndarray, max_off: int, buf: np.ndarray, hist: np.ndarray, T: int) -> int:
     """Offset (whole DN) of ``row`` from the background: ``clip(rint(median(16 x - bg16) / 16), -max_off, max_off)``.
 
@@ -2267,7 +2238,7 @@ def _line_offset(row: np.ndarray, ocols: np.ndarray, bg16: np.ndarray, max_off: 
     return np.int64(min(max(v, -np.float64(max_off)), np.float64(max_off)))
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets, off_ring, hit_ring):
     """The body of :func:`stream_line_test_u8` / ``_u16`` (see there)."""
     cap, w = ring.shape
@@ -2324,7 +2295,7 @@ def _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets,
     return idx[:k], cnt[:k], cmin[:k], cmax[:k]
 
 
-@_jit()
+@jit()
 def stream_line_test_u8(
     ring: np.ndarray,
     first: int,
@@ -2374,7 +2345,7 @@ def stream_line_test_u8(
     return _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets, off_ring, hit_ring)
 
 
-@_jit()
+@jit()
 def stream_line_test_u16(
     ring: np.ndarray,
     first: int,
@@ -2393,7 +2364,7 @@ def stream_line_test_u16(
     return _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets, off_ring, hit_ring)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _block_sums(ring, off_ring, rows):
     """The body of :func:`stream_block_sums_u8` / ``_u16``."""
     w = ring.shape[1]
@@ -2410,7 +2381,7 @@ def _block_sums(ring, off_ring, rows):
     return t1.astype(np.float64), t2.astype(np.float64)
 
 
-@_jit()
+@jit()
 def stream_block_sums_u8(ring: np.ndarray, off_ring: np.ndarray, rows: np.ndarray):
     """Per-column sums of ``x - o`` and of ``(x - o)**2`` over the ring rows ``rows`` (``o`` each row's offset).
 
@@ -2431,7 +2402,7 @@ def stream_block_sums_u8(ring: np.ndarray, off_ring: np.ndarray, rows: np.ndarra
     return _block_sums(ring, off_ring, rows)
 
 
-@_jit()
+@jit()
 def stream_block_sums_u16(ring: np.ndarray, off_ring: np.ndarray, rows: np.ndarray):
     """:func:`stream_block_sums_u8` for a uint16 ``ring``."""
     return _block_sums(ring, off_ring, rows)
@@ -2468,7 +2439,7 @@ def warm_up_stream() -> None:
 # the numpy form's did.)
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _normalised(u: float, principal: float, focal: float, k1: float, k2: float):
     """Undistorted normalised coordinate of sensor position ``u`` and whether it converged (:meth:`ballscan.geometry.camera.LineScanCamera.backproject`).
 
@@ -2492,7 +2463,7 @@ def _normalised(u: float, principal: float, focal: float, k1: float, k2: float):
     return n, abs(n * (1.0 + k1 * n2 + k2 * n2 * n2) - n_d) <= tol
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _limb_point(o, sg, edge_m, bg_row, width, cen, nt, hs, nh, focal, principal, k1, k2, R2, light, ambient, scale):
     """The model's normalised value and coverage at offset ``o`` (pixels inwards) from a row's mean edge ``edge_m``, and whether its ray converged (:func:`_limb_rays`)."""
     u = edge_m + sg * o
@@ -2503,7 +2474,7 @@ def _limb_point(o, sg, edge_m, bg_row, width, cen, nt, hs, nh, focal, principal,
     return v, c, ok
 
 
-@_jit(inline="always", error_model="numpy")
+@jit(inline="always", error_model="numpy")
 def _limb_row_profile(
     r, at, sg, px, c_lo, c_hi, c_w, span, hwb, frac, want_point, point, wk, n_use, run_lo, run_hi,
     edge_m, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
@@ -2590,7 +2561,7 @@ def _limb_row_profile(
     return True, rays_ok
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def limb_levels(
     sg: np.ndarray,
     px: np.ndarray,
@@ -2771,7 +2742,7 @@ def limb_levels(
 # sums as numpy does (pairwise), so the law is the same to the last bit.
 
 
-@_jit()
+@jit()
 def _pairwise_sum(a: np.ndarray) -> float:
     """``np.sum`` of a contiguous float64 array: numpy's pairwise summation (blocks of 128 in eight lanes)."""
     n = a.shape[0]
@@ -2801,7 +2772,7 @@ def _pairwise_sum(a: np.ndarray) -> float:
     return _pairwise_sum(a[:n2]) + _pairwise_sum(a[n2:])
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray) -> float:
     """The robust scale (1.4826 MAD, floored at 1e-9) of residuals ``r`` and their Huber weights at ``huber_k`` of it into ``w`` (the Huber rounds of :func:`ballscan.measure.shading.fit_shading`)."""
     med = np.median(r)
@@ -2815,7 +2786,7 @@ def _huber_weights(r: np.ndarray, huber_k: float, w: np.ndarray, buf: np.ndarray
     return scale
 
 
-@_jit()
+@jit()
 def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations: int, diverged: float, flat_tol: float):
     """The robust fit of ``I = A + max(0, n . b)`` to interior pixels (:func:`ballscan.measure.shading.fit_shading`).
 
@@ -2898,7 +2869,7 @@ def shading_fit(y: np.ndarray, normals: np.ndarray, huber_k: float, n_iterations
 # numpy's pairwise sums (_pairwise_sum), so the results are its bits.
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def line_level_sums(
     offsets: np.ndarray,
     inside: np.ndarray,
@@ -2973,7 +2944,7 @@ def line_level_sums(
     return val_sum, cov_sum, rays_ok
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def level_scatter(
     lines_img: np.ndarray,
     lo: np.ndarray,
@@ -3078,7 +3049,7 @@ def level_scatter(
     return math.sqrt(max(_pairwise_sum(d[:n_good]) / n_good - _pairwise_sum(v[:n_good]) / n_good, 0.0)), _pairwise_sum(n_px[:n_good]) / n_good, rays_ok
 
 
-@_jit()
+@jit()
 def interior_normals(
     t_rows: np.ndarray,
     cols: np.ndarray,
@@ -3163,7 +3134,7 @@ def interior_normals(
 # second sort.
 
 
-@_jit()
+@jit()
 def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
     """Medians of the masked values from the sorted box of :func:`ballscan.measure.flatfield._masked_median`.
 
@@ -3193,7 +3164,7 @@ def sorted_medians(v: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarray:
     return out
 
 
-@_jit()
+@jit()
 def median_deviations(v: np.ndarray, mask: np.ndarray):
     """Each row's median of the masked values and their median absolute deviation from it (:func:`ballscan.measure.flatfield._column_median_mad`).
 
@@ -3276,7 +3247,7 @@ def median_deviations(v: np.ndarray, mask: np.ndarray):
 _FLOAT_MAX = float(np.finfo(np.float64).max)
 
 
-@_jit()
+@jit()
 def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
     """Each line's first and last pixel whose ``p`` reaches ``fraction`` of its ``peak`` (0 and the last pixel where none does; :func:`ballscan.measure.edges._edge_pass`).
 
@@ -3300,7 +3271,7 @@ def rough_edges(p: np.ndarray, peak: np.ndarray, fraction: float):
     return k_left, k_right
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.ndarray:
     """The pixels' noise with the ball's shot noise, ``sqrt(sp**2 + excess * clip(q / p_in, 0, 2))`` (:func:`ballscan.measure.edges._edge_pass`).
 
@@ -3338,7 +3309,7 @@ def shot_noise(p: np.ndarray, sp: np.ndarray, excess: float, p_in: float) -> np.
     return out
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, c0: int):
     """Each line's summed coverage, its sigma and its centroid (:func:`ballscan.measure.edges._edge_pass`).
 
@@ -3373,7 +3344,7 @@ def line_coverage(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right: np
     return area, area_sig, centroid
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def level_gradients(
     pl0: np.ndarray,
     pl1: np.ndarray,
@@ -3422,7 +3393,7 @@ def level_gradients(
     return raw_rel, rel_var, rel_sig
 
 
-@_jit()
+@jit()
 def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
     """The running median of :func:`ballscan.measure.edges._running_median` over each of ``n_blocks`` equal blocks of ``x`` (the edges' four sides at once).
 
@@ -3477,7 +3448,7 @@ def running_medians(x: np.ndarray, n_blocks: int, n: int) -> np.ndarray:
     return out
 
 
-@_jit()
+@jit()
 def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides: int, threshold: float) -> np.ndarray:
     """The smoothed relative level gradients of :func:`ballscan.measure.edges._edge_pass` that are applied, 0 elsewhere.
 
@@ -3511,7 +3482,7 @@ def shaded_sides(rel: np.ndarray, rel_sig: np.ndarray, use: np.ndarray, n_sides:
     return out
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def window_edges(
     rel: np.ndarray,
     rel_var: np.ndarray,
@@ -3561,7 +3532,7 @@ def window_edges(
     return L, e, var
 
 
-@_jit(error_model="numpy")
+@jit(error_model="numpy")
 def finished_edges(
     e: np.ndarray,
     var: np.ndarray,
@@ -3632,7 +3603,7 @@ def finished_edges(
     return ok, edge, sig, tex, level, end_line
 
 
-@_jit()
+@jit()
 def limb_pixels(rows: np.ndarray, sgn: np.ndarray, win_first: np.ndarray, win_last: np.ndarray, n_win: np.ndarray, lev: np.ndarray, deep: np.ndarray):
     """The pixel centres of :func:`limb_levels`'s rows ``rows`` of the edges of :func:`ballscan.measure.edges._edge_pass`.
 
@@ -3666,7 +3637,7 @@ def limb_pixels(rows: np.ndarray, sgn: np.ndarray, win_first: np.ndarray, win_la
     return sg, px, kw
 
 
-@_jit()
+@jit()
 def finite_rows(a: np.ndarray) -> np.ndarray:
     """``np.all(np.isfinite(a), axis=1)`` of a 2-D array (each row stops at its first non-finite value)."""
     n, w = a.shape
@@ -3687,7 +3658,7 @@ def finite_rows(a: np.ndarray) -> np.ndarray:
 # (R, 3, n) arrays; one pass does the same subtractions.
 
 
-@_jit()
+@jit()
 def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.ndarray, right: np.ndarray, inv: np.ndarray, sg: np.ndarray):
     """The chord samples of rows as offsets inwards from their edge (:meth:`ballscan.measure.shading.LimbProfile._chords`).
 
@@ -3720,7 +3691,7 @@ def chord_rows(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, left: np.nda
     return lo, hi, w
 
 
-@_jit()
+@jit()
 def unique_lines(lines: np.ndarray):
     """``np.unique(lines, return_inverse=True)`` of a non-empty array of integers spanning a short range (a table of the range: no sort)."""
     first = lines.min()
@@ -3740,7 +3711,7 @@ def unique_lines(lines: np.ndarray):
     return uniq, inv
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _nan_to_num(x: float) -> float:
     """``np.nan_to_num`` of one float64."""
     if x != x:
@@ -3752,7 +3723,7 @@ def _nan_to_num(x: float) -> float:
     return x
 
 
-@_jit()
+@jit()
 def level_spans(left: np.ndarray, right: np.ndarray, spread: np.ndarray, m: int):
     """The sampled span of each line for :meth:`ballscan.measure.shading.LimbProfile.line_levels`.
 

@@ -53,8 +53,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage as ndi
 
+from ..compiled import as_arg
 from .._kernels import (
-    as_arg,
     fill_lines_and_cols,
     first_pass_lines,
     group_mask,

@@ -43,8 +43,9 @@ import math
 
 import numpy as np
 
+from ..compiled import as_arg
 from .._kernels import (
-    as_arg, edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
+    edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
     rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
 from ..errors import GeometryError

@@ -39,7 +39,8 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
-from .._kernels import as_arg, median_deviations, sorted_medians
+from ..compiled import as_arg
+from .._kernels import median_deviations, sorted_medians
 from .detection import median as _median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]

@@ -32,7 +32,8 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from .._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
+from ..compiled import as_arg
+from .._kernels import chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from ..geometry.camera import LineScanCamera
 from .edges import EdgeMeasurements
 from ..errors import GeometryError

@@ -71,8 +71,9 @@ import numpy as np
 from scipy.optimize import least_squares
 from scipy.special import chdtri
 
+from ..compiled import as_arg
 from .._kernels import (
-    area_tables, as_arg, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
+    area_tables, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
     fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
 )
 from .._kernels import pixel_residuals as _kernel_pixel_residuals

@@ -1,0 +1,41 @@
+"""The project's numba decorator and the conversion of a kernel's array arguments.
+
+Every compiled loop of the package is decorated with :func:`jit` (compiled
+on first use and cached on disk) and called on arrays passed through
+:func:`as_arg`, so that each kernel holds one compiled signature.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+
+def jit(**options):
+    """``numba.njit`` cached on disk where numba finds a writable cache location, else compiled per process.
+
+    With ``cache=True`` numba raises at decoration when it has nowhere to
+    write (a read-only install without a writable home or
+    ``NUMBA_CACHE_DIR``); the estimator must still import there.
+    """
+
+    def decorate(func):
+        try:
+            return njit(cache=True, **options)(func)
+        except RuntimeError:
+            return njit(cache=False, **options)(func)
+
+    return decorate
+
+
+def as_arg(a, dtype=np.float64) -> np.ndarray:
+    """``a`` as a C-contiguous, writeable array of ``dtype`` (a copy only where it is not one).
+
+    Every kernel has one compiled signature, for such arrays; a read-only
+    (broadcast) or strided argument would compile another on first sight.
+    ``np.require`` does the same at several times the cost (a kernel's
+    arguments are converted some fifty times per ball).
+    """
+    if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous and a.flags.writeable:
+        return a
+    return np.array(a, dtype=dtype, order="C")
