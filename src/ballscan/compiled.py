@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from numba.extending import register_jitable
 
 
 def jit(**options):
@@ -39,3 +40,16 @@ def as_arg(a, dtype=np.float64) -> np.ndarray:
     if isinstance(a, np.ndarray) and a.dtype == dtype and a.flags.c_contiguous and a.flags.writeable:
         return a
     return np.array(a, dtype=dtype, order="C")
+
+
+def jitable(func):
+    """``func`` unchanged for Python callers, and compiled inline into any kernel that calls it.
+
+    The formulas the numpy code and the kernels share (the lens model,
+    :mod:`ballscan.geometry.lens`) are written once as plain functions on
+    floats and arrays; a kernel calling one compiles the same body into its
+    own loop (``numba.extending.register_jitable`` with ``inline="always"``),
+    which composes: a shared function may call another.
+    """
+    return register_jitable(inline="always")(func)
+
