@@ -389,7 +389,7 @@ def _random_mask(rng, max_side=60):
 def test_label_hits_equals_the_threshold_then_ndimage_label_bincount_and_find_objects():
     from scipy import ndimage as ndi
 
-    from ballscan._kernels import label_hits
+    from ballscan.measure._detection_kernels import label_hits
 
     rng = np.random.default_rng(3)
     for trial in range(300):
@@ -452,7 +452,7 @@ def _first_pass_numpy(xs, gain0, offset0, bs, thr, use_gain):
 
 
 def test_first_pass_lines_and_masked_median_equal_their_numpy_form():
-    from ballscan._kernels import first_pass_lines
+    from ballscan.measure._detection_kernels import first_pass_lines
     from ballscan.measure.detection import _masked_median
 
     rng = np.random.default_rng(4)
@@ -493,7 +493,7 @@ def _fill_numpy(m):
 
 
 def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
-    from ballscan._kernels import fill_lines_and_cols, region_values
+    from ballscan.measure._detection_kernels import fill_lines_and_cols, region_values
 
     rng = np.random.default_rng(5)
     for _ in range(300):
@@ -514,7 +514,7 @@ def test_fill_lines_and_cols_and_region_values_equal_their_numpy_form():
 
 
 def test_integer_median_mad_equals_the_two_selections():
-    from ballscan._kernels import integer_median_mad
+    from ballscan.measure._detection_kernels import integer_median_mad
     from ballscan.measure.detection import median
 
     rng = np.random.default_rng(6)
@@ -533,7 +533,7 @@ def test_integer_median_mad_equals_the_two_selections():
 def test_reflect_median_filter_equals_ndimage_median_filter():
     from scipy import ndimage as ndi
 
-    from ballscan._kernels import reflect_median_filter
+    from ballscan.measure._detection_kernels import reflect_median_filter
 
     rng = np.random.default_rng(7)
     for trial in range(500):
@@ -544,7 +544,7 @@ def test_reflect_median_filter_equals_ndimage_median_filter():
 
 
 def test_multi_runs_and_group_mask_equal_their_numpy_form():
-    from ballscan._kernels import group_mask, multi_runs
+    from ballscan.measure._detection_kernels import group_mask, multi_runs
 
     def paired(multi):
         pair = multi[:-1] & multi[1:]
@@ -576,9 +576,10 @@ def test_multi_runs_and_group_mask_equal_their_numpy_form():
 def test_detection_kernels_compile_one_signature_only():
     # a second signature (a strided or read-only argument) would be compiled
     # when first seen, inside a stream's ball
-    from ballscan import _kernels as K
+    from ballscan.measure import _detection_kernels as K
+    from ballscan.pipeline.warmup import warm_up
 
-    K.warm_up()
+    warm_up()
     rng = np.random.default_rng(9)
     for name in ("pub_two_close", "pub_cut_first_line"):
         detect(_scene(name)[0])

@@ -315,7 +315,7 @@ def _profile(rng, n, w):
 
 
 def test_shot_noise_is_the_numpy_forms_bit_for_bit():
-    from ballscan._kernels import shot_noise
+    from ballscan.measure._edge_kernels import shot_noise
 
     rng = np.random.default_rng(11)
     for n, w in ((1, 7), (2, 5), (3, 9), (40, 70), (90, 150)):
@@ -328,7 +328,7 @@ def test_shot_noise_is_the_numpy_forms_bit_for_bit():
 
 
 def test_shaded_sides_is_the_numpy_forms_bit_for_bit():
-    from ballscan._kernels import shaded_sides
+    from ballscan.measure._edge_kernels import shaded_sides
 
     rng = np.random.default_rng(12)
     for trial in range(200):
@@ -351,7 +351,7 @@ def test_shaded_sides_is_the_numpy_forms_bit_for_bit():
 
 
 def test_line_coverage_is_the_numpy_forms_bit_for_bit():
-    from ballscan._kernels import line_coverage
+    from ballscan.measure._edge_kernels import line_coverage
 
     rng = np.random.default_rng(13)
     for n, w in ((1, 3), (5, 8), (40, 70), (90, 150), (20, 300)):
@@ -375,7 +375,7 @@ def test_line_coverage_is_the_numpy_forms_bit_for_bit():
 
 
 def test_finished_edges_is_the_numpy_forms_bit_for_bit():
-    from ballscan._kernels import finished_edges
+    from ballscan.measure._edge_kernels import finished_edges
 
     rng = np.random.default_rng(14)
     for n in (1, 7, 80):
@@ -434,7 +434,7 @@ def _running_median_loop(x, n):
 
 
 def test_running_medians_are_the_former_kernels_bit_for_bit():
-    from ballscan._kernels import running_medians
+    from ballscan.measure._edge_kernels import running_medians
 
     rng = np.random.default_rng(15)
     for trial in range(600):
@@ -458,7 +458,7 @@ def test_running_medians_are_the_former_kernels_bit_for_bit():
 def test_level_gradients_and_window_edges_are_the_numpy_forms_bit_for_bit():
     import math
 
-    from ballscan._kernels import level_gradients, window_edges
+    from ballscan.measure._edge_kernels import level_gradients, window_edges
 
     rng = np.random.default_rng(16)
     for n_level in (1, 2, 3):
@@ -502,7 +502,7 @@ def test_level_gradients_and_window_edges_are_the_numpy_forms_bit_for_bit():
 
 
 def test_rough_edges_are_the_numpy_forms():
-    from ballscan._kernels import rough_edges
+    from ballscan.measure._edge_kernels import rough_edges
 
     rng = np.random.default_rng(17)
     for n, w in ((1, 1), (3, 8), (40, 70), (120, 80)):
@@ -516,7 +516,7 @@ def test_rough_edges_are_the_numpy_forms():
 
 
 def test_limb_pixels_and_finite_rows_are_the_numpy_forms():
-    from ballscan._kernels import finite_rows, limb_pixels
+    from ballscan.measure._edge_kernels import finite_rows, limb_pixels
 
     rng = np.random.default_rng(18)
     R = 40

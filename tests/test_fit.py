@@ -385,7 +385,7 @@ def test_averaged_edges_jacobian_equals_central_differences(distorted, deg):
     round-off); the area's y0 / vy columns are perspective only (a
     hundred times smaller than its other columns), 1e-4 relative.
     """
-    from ballscan._kernels import averaged_edges_jacobian
+    from ballscan.model._forward_kernels import averaged_edges_jacobian
     from ballscan.model.silhouette import _gauss
 
     a = np.radians(deg)
@@ -485,7 +485,7 @@ def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
 
 def test_fit_kernels_equal_their_numpy_forms():
     """The compiled residuals, Jacobian and block ratio give the numpy expressions' values bit for bit."""
-    from ballscan._kernels import block_ratio, fit_jacobian, fit_residuals
+    from ballscan.solve._fit_kernels import block_ratio, fit_jacobian, fit_residuals
 
     rng = np.random.default_rng(7)
     n = 150
@@ -524,7 +524,7 @@ def test_fit_kernels_equal_their_numpy_forms():
 
 def test_area_tables_kernel_equals_its_numpy_form():
     """The compiled levelled areas give the numpy expressions' values bit for bit (NaN and infinite sigmas too)."""
-    from ballscan._kernels import area_tables
+    from ballscan.solve._fit_kernels import area_tables
 
     rng = np.random.default_rng(3)
     n = 300
@@ -555,7 +555,7 @@ def test_area_tables_kernel_equals_its_numpy_form():
 @pytest.mark.parametrize("wide, end_line_areas", [(True, True), (False, True), (True, False)])
 def test_select_lines_kernel_equals_its_numpy_form(wide, end_line_areas):
     """The compiled residual selection gives the numpy expressions' masks."""
-    from ballscan._kernels import select_lines
+    from ballscan.solve._fit_kernels import select_lines
 
     rng = np.random.default_rng(11)
     n = 400
@@ -590,7 +590,8 @@ def test_select_lines_kernel_equals_its_numpy_form(wide, end_line_areas):
 @pytest.mark.parametrize("masks", [False, True])
 def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
     """hybrid_jacobian's compiled analytic path gives the chord-and-averaged-model rows of the numpy form bit for bit."""
-    from ballscan._kernels import averaged_edges_jacobian, chord_edges, hybrid_rows
+    from ballscan.model._forward_kernels import averaged_edges_jacobian, chord_edges
+    from ballscan.solve._fit_kernels import hybrid_rows
     from ballscan.model.silhouette import _gauss
 
     cam, m = _serve()
@@ -626,7 +627,7 @@ def test_hybrid_rows_kernel_equals_its_numpy_form(masks):
 
 def test_step_matrix_kernels_equal_their_numpy_forms():
     """The Levenberg-Marquardt step's equilibration and damping give the numpy expressions' matrices bit for bit."""
-    from ballscan._kernels import damped, equilibrated
+    from ballscan.solve._fit_kernels import damped, equilibrated
 
     rng = np.random.default_rng(13)
     for p in (6, 7):
@@ -646,7 +647,7 @@ def test_step_matrix_kernels_equal_their_numpy_forms():
 
 def test_on_both_sides_kernel_equals_its_numpy_form():
     """The compiled test of lines before and after t_c agrees with the numpy expression."""
-    from ballscan._kernels import on_both_sides
+    from ballscan.solve._fit_kernels import on_both_sides
 
     rng = np.random.default_rng(17)
     t = np.arange(60) * 1e-4
@@ -662,7 +663,7 @@ def test_on_both_sides_kernel_equals_its_numpy_form():
 @pytest.mark.parametrize("p", [6, 7])
 def test_loose_rows_kernel_equals_its_numpy_form(p):
     """The partial verdict's loose rows and equilibrated Jacobians equal the numpy expressions' bit for bit."""
-    from ballscan._kernels import loose_rows
+    from ballscan.solve._fit_kernels import loose_rows
 
     rng = np.random.default_rng(19)
     for M in (9, 40, 230):

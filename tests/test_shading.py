@@ -445,7 +445,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
 
 
 def test_fast_helpers_equal_the_numpy_forms():
-    """_even_picks, _nan_to_num and _unique_lines (compiled: _kernels.unique_lines) against the numpy forms they replace."""
+    """_even_picks, _nan_to_num and _unique_lines (compiled: _shading_kernels.unique_lines) against the numpy forms they replace."""
     from ballscan.measure.shading import _even_picks, _nan_to_num, _unique_lines
 
     rng = np.random.default_rng(3)
@@ -462,7 +462,7 @@ def test_fast_helpers_equal_the_numpy_forms():
 
 
 def test_chord_rows_equals_the_numpy_form():
-    from ballscan._kernels import chord_rows
+    from ballscan.measure._shading_kernels import chord_rows
 
     rng = np.random.default_rng(4)
     u_lo, u_hi, wgt = (rng.normal(size=(6, 3, 4)) for _ in range(3))
@@ -488,7 +488,7 @@ def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
 
 
 def test_level_spans_equals_the_numpy_form():
-    from ballscan._kernels import level_spans
+    from ballscan.measure._shading_kernels import level_spans
 
     rng = np.random.default_rng(5)
     left, right, spread = rng.normal(100.0, 5.0, 30), rng.normal(140.0, 5.0, 30), rng.uniform(0.0, 2.0, 30)

@@ -54,7 +54,7 @@ import numpy as np
 from scipy import ndimage as ndi
 
 from ..compiled import as_arg
-from .._kernels import (
+from ._detection_kernels import (
     fill_lines_and_cols,
     first_pass_lines,
     group_mask,
@@ -316,7 +316,7 @@ def _masked_median(s: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.
     give 0; check the count.
     """
     s.sort(axis=1)
-    # compiled (_kernels.kept_median): the look-up as numpy index arithmetic
+    # compiled (_detection_kernels.kept_median): the look-up as numpy index arithmetic
     # was some ten operations on per-line arrays, 50 us on a stream crop
     return kept_median(s, as_arg(excluded, np.int64), _BIG)
 
@@ -343,7 +343,7 @@ def _mode_seek(
         Per row: the mode, the noise sigma and the number of values in the
         final window.
     """
-    # compiled (_kernels.mode_seek): the numpy form of these rounds, some
+    # compiled (_detection_kernels.mode_seek): the numpy form of these rounds, some
     # sixty whole-array operations, took 0.75 ms on a stream crop (150 x 200)
     return mode_seek(as_arg(s, np.float32), as_arg(start), as_arg(sigma), float(floor))
 
@@ -425,7 +425,7 @@ def _column_modes(
     if np.isnan(col_med).any():
         neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
     else:
-        # compiled (_kernels.reflect_median_filter): the same values, 4 against 17 us
+        # compiled (_detection_kernels.reflect_median_filter): the same values, 4 against 17 us
         neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
@@ -457,7 +457,7 @@ def _line_drift(
     # background pixels only.
     bs = b[::step]
     thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
-    # compiled (_kernels.first_pass_lines): the residual, the exclusion and
+    # compiled (_detection_kernels.first_pass_lines): the residual, the exclusion and
     # the samples as numpy passes were some ten whole-array operations and
     # temporaries, 0.1 ms on a stream crop
     samples, n_excluded = first_pass_lines(
@@ -514,7 +514,7 @@ def _merged_runs(m: np.ndarray, closed: np.ndarray, axis: int) -> np.ndarray:
     split at such a column into two "overlapping" balls, V.x 6 and 43 sigma
     of the bound off).
     """
-    # compiled (_kernels.multi_runs): 3 against 9 us as numpy on a ball's box
+    # compiled (_detection_kernels.multi_runs): 3 against 9 us as numpy on a ball's box
     out, lone = multi_runs(as_arg(closed, np.bool_), axis)
     if np.any(lone):
         light, _ = multi_runs(as_arg(_close(m, _NOTCH_CLOSE_PX), np.bool_), axis)
@@ -713,7 +713,7 @@ def detect(
     b, noise, gain, offset, model = _background(x32, floor, first_pass_k=3.0, known=columns)
     # The pixels with |x - background| > k_sigma noise (in float32), labelled
     # 8-connected, with their sizes and boxes: compiled
-    # (_kernels.label_hits), where the threshold's numpy passes, ndi.label,
+    # (_detection_kernels.label_hits), where the threshold's numpy passes, ndi.label,
     # np.bincount and ndi.find_objects took 0.25 ms on a stream crop; the
     # same labels.  The offset is 0 in the gain model: adding it there
     # changes no residual.
@@ -738,7 +738,7 @@ def detect(
                 continue  # a hot pixel run along one line or one column
             in_group = np.zeros(nlab + 1, dtype=bool)
             in_group[np.asarray(grp) + 1] = True
-            # compiled (_kernels.group_mask): in_group[lab[l0:l1, c0:c1]], 3 against 15 us
+            # compiled (_detection_kernels.group_mask): in_group[lab[l0:l1, c0:c1]], 3 against 15 us
             m = group_mask(lab, l0, l1, c0, c1, in_group)
             closed = _close(m, gap)
             merged = bool(np.any(_merged_runs(m, closed, 1)) or np.any(_merged_runs(m, closed, 0)))
@@ -753,7 +753,7 @@ def detect(
     built = []
     x64 = as_arg(x)
     for l0, c0, m, merged in regions_raw:
-        # compiled (_kernels.fill_lines_and_cols, _kernels.region_values): as
+        # compiled (_detection_kernels.fill_lines_and_cols, _detection_kernels.region_values): as
         # numpy the fill and the values took 0.15 ms per ball
         filled = fill_lines_and_cols(as_arg(m, np.bool_))
         h, wd = filled.shape

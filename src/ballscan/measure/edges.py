@@ -44,10 +44,11 @@ import math
 import numpy as np
 
 from ..compiled import as_arg
-from .._kernels import (
-    edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
+from ._edge_kernels import (
+    edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_pixels, line_coverage,
     rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
+from ._shading_kernels import limb_levels
 from ..errors import GeometryError
 
 # np.median's value by a full sort (several times faster on these sizes)
@@ -438,7 +439,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     ----------
     limb : LimbProfile-like
         See :func:`measure_edges`; its ``rows`` give the model to the
-        compiled loop (:func:`ballscan._kernels.limb_levels`), which
+        compiled loop (:func:`ballscan.measure._shading_kernels.limb_levels`), which
         evaluates the model as its ``pixel_coverage``, ``surface`` and
         ``__call__`` do.
     e, var0, L0 : ndarray (R,)
@@ -549,7 +550,7 @@ def measure_edges(
         The ball's brightness model across the left (side +1) or right (-1)
         edge of image lines, a :class:`ballscan.measure.shading.LimbProfile`:
         ``limb.rows(lines, sides)`` gives the model as the arguments of the
-        compiled levels (:func:`ballscan._kernels.limb_levels`, which
+        compiled levels (:func:`ballscan.measure._shading_kernels.limb_levels`, which
         evaluates it as the profile's ``pixel_coverage``, ``surface`` and
         ``__call__`` do), ``limb.spread_px`` the model's edge spread per
         image line (pixels), which selects the narrow and wide windows to
@@ -838,7 +839,7 @@ def _edge_pass(
                 sig_bg = float(_median(sp_both))
             if p_in > 0 and sig_in > sig_bg:
                 # each pixel's signal for its noise from its column neighbours,
-                # not its own value (compiled: see _kernels.shot_noise)
+                # not its own value (compiled: see _edge_kernels.shot_noise)
                 sp = shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
 
     # Every edge estimate at once: for each window (narrow, then wide) the

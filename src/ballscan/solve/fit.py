@@ -72,12 +72,12 @@ from scipy.optimize import least_squares
 from scipy.special import chdtri
 
 from ..compiled import as_arg
-from .._kernels import (
-    area_tables, averaged_samples, block_ratio, chord_edges, coverage_grid, damped, equilibrated, fit_jacobian,
-    fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
+from ..model._forward_kernels import averaged_samples, chord_edges, coverage_grid
+from ..model._forward_kernels import pixel_residuals as _kernel_pixel_residuals
+from ..model._forward_kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
+from ._fit_kernels import (
+    area_tables, block_ratio, damped, equilibrated, fit_jacobian, fit_residuals, hybrid_rows, loose_rows, on_both_sides, select_lines,
 )
-from .._kernels import pixel_residuals as _kernel_pixel_residuals
-from .._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from ..geometry.camera import LineScanCamera
 from ..measure.detection import median as _median
 from ..measure.edges import EdgeMeasurements
@@ -204,7 +204,7 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     density.  ``full=False`` skips the edge spread and the validity test
     (``spread_px`` and ``valid`` are then None).  The fit calls it some ten
     times per ball: one compiled loop over the samples
-    (:func:`ballscan._kernels.averaged_samples`).
+    (:func:`ballscan.model._forward_kernels.averaged_samples`).
     """
     # contiguous and writeable: the kernel's one compiled signature
     th = as_arg(np.atleast_2d(th))
@@ -231,7 +231,7 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
 
 
 def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
-    """:func:`ballscan._kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
+    """:func:`ballscan.model._forward_kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
     g, gw = _gauss(n_nodes)
     return (
         float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
@@ -351,7 +351,7 @@ def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
     derivatives, finite garbage where ``ok`` is False; ``x, w`` are the
     centre's offset from the viewing plane and its depth at each line, m,
     ``tau = t - t_c``, s.  One compiled loop over the lines
-    (:func:`ballscan._kernels.chord_edges`).
+    (:func:`ballscan.model._forward_kernels.chord_edges`).
     """
     return chord_edges(
         as_arg(theta), as_arg(t), float(radius_m),
@@ -487,9 +487,9 @@ def hybrid_jacobian(
     analytic : bool
         On the lines that would get finite differences, the averaged
         model's exact derivatives instead
-        (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
+        (:func:`ballscan.model._forward_kernels.averaged_edges_jacobian`; without a known
         acceleration; one compiled call with the chord's,
-        :func:`ballscan._kernels.hybrid_rows`); ``memo`` is then only told
+        :func:`ballscan.solve._fit_kernels.hybrid_rows`); ``memo`` is then only told
         the lines.
 
     Returns
@@ -648,7 +648,7 @@ class FitSettings:
         long balls, 0.07-0.10 from 32 to 64); the opt-in pixel fit keeps 8.
     pixel_jacobian : {"analytic", "fd"}
         The pixel residuals' Jacobian: exact, by forward-mode derivatives in
-        one compiled pass (:func:`ballscan._kernels.pixel_residuals_jacobian`;
+        one compiled pass (:func:`ballscan.model._forward_kernels.pixel_residuals_jacobian`;
         without a known acceleration), or forward differences of six
         perturbed evaluations (``"fd"``, and always with an acceleration).
         On the 30-degree benchmark ball the differences (step 1e-3 of the
@@ -764,7 +764,7 @@ class FitSettings:
         The Jacobian rows of the lines where the chord's derivative does not
         hold (the ball's ends, the area lines; see ``jacobian_reach``):
         exact, by forward-mode derivatives of the averaged model in one
-        compiled pass (:func:`ballscan._kernels.averaged_edges_jacobian`;
+        compiled pass (:func:`ballscan.model._forward_kernels.averaged_edges_jacobian`;
         without a known acceleration), or its forward differences
         (``"fd"``, with ``jacobian_nodes`` and the reuse of ``jacobian_reuse_px``).
     jacobian_reach : float
@@ -929,7 +929,7 @@ def _select(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettings):
     to ``max_spread_wide_px`` (the wide window's); area lines: no usable
     edge, and the line's area is not spoiled (``edges.end_line``), or no
     signal at all (lines around the ball).  Returns ``(use_l, use_r, use_a,
-    wide_l, wide_r)``; one compiled pass (:func:`ballscan._kernels.select_lines`).
+    wide_l, wide_r)``; one compiled pass (:func:`ballscan.solve._fit_kernels.select_lines`).
     """
     wide = edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px
     e = edges
@@ -1637,7 +1637,7 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
     Where a line's pixel centres lie on a grid of unit step (any order, gaps
     allowed: an edge's offsets, the fit's compacted windows, a bound's
     columns) the sum is a histogram of the samples' ends by pixel and its
-    cumulative sum (:func:`ballscan._kernels.coverage_grid`): O(samples +
+    cumulative sum (:func:`ballscan.model._forward_kernels.coverage_grid`): O(samples +
     pixels) per line.  Other centres take the direct sum over samples and
     pixels.
     """
@@ -1689,7 +1689,7 @@ def _pixel_residuals(camera, thetas: np.ndarray, R: float, pix: dict, acc, n_nod
 def _pixel_residuals_jacobian(camera, theta: np.ndarray, R: float, pix: dict, n_nodes: int) -> np.ndarray:
     """Exact derivatives (M, 6) of :func:`_pixel_residuals` at one parameter set ``theta`` (no acceleration).
 
-    One compiled pass (:func:`ballscan._kernels.pixel_residuals_jacobian`)
+    One compiled pass (:func:`ballscan.model._forward_kernels.pixel_residuals_jacobian`)
     in place of six perturbed evaluations of the samples and the coverage.
     """
     g, gw = _gauss(max(n_nodes, pix["nodes"]))
@@ -1815,7 +1815,7 @@ def _area_tables(edges: EdgeMeasurements, settings: FitSettings) -> tuple[np.nda
     if edges.area_level is None:
         z = np.zeros(n)
         return z, z, np.zeros(n, dtype=bool)
-    # one compiled pass over the lines (:func:`ballscan._kernels.area_tables`)
+    # one compiled pass over the lines (:func:`ballscan.solve._fit_kernels.area_tables`)
     return area_tables(
         as_arg(edges.area_px), as_arg(edges.area_sigma_px), as_arg(edges.area_level), as_arg(edges.area_level_sigma),
         settings.area_level_floor**2, settings.area_level_floor_px**2,
