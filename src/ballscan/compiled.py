@@ -49,7 +49,10 @@ def jitable(func):
     :mod:`ballscan.geometry.lens`) are written once as plain functions on
     floats and arrays; a kernel calling one compiles the same body into its
     own loop (``numba.extending.register_jitable`` with ``inline="always"``),
-    which composes: a shared function may call another.
+    which composes: a shared function may call another.  numba's disk cache
+    of a kernel is keyed to the kernel's own source file only: after an
+    edit of a shared function, delete the cached ``*.nbi``/``*.nbc`` files
+    (``__pycache__``) so that its callers compile again.
     """
     return register_jitable(inline="always")(func)
 

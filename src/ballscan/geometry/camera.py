@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CameraFileError, GeometryError
-from .lens import distorted_expanded, distortion_slope_expanded, undistorted
+from .lens import distorted, distortion_slope, project, undistorted
 
 __all__ = [
     "LineScanCamera",
@@ -120,11 +120,11 @@ class LineScanCamera:
     # -------------------------------------------------------------- distortion
     def distort(self, n: np.ndarray) -> np.ndarray:
         """Radial distortion ``n_d = n (1 + k1 n^2 + k2 n^4)`` (dimensionless), Eq. (2) (:mod:`ballscan.geometry.lens`)."""
-        return distorted_expanded(np.asarray(n, dtype=float), self.k1, self.k2)
+        return distorted(np.asarray(n, dtype=float), self.k1, self.k2)
 
     def distort_derivative(self, n: np.ndarray) -> np.ndarray:
         """``d n_d / d n = 1 + 3 k1 n^2 + 5 k2 n^4``."""
-        return distortion_slope_expanded(np.asarray(n, dtype=float), self.k1, self.k2)
+        return distortion_slope(np.asarray(n, dtype=float), self.k1, self.k2)
 
     def undistort(self, n_d: np.ndarray, tol_px: float = 1e-9) -> np.ndarray:
         """Invert :meth:`distort` by Newton's method to ``tol_px`` pixels (:func:`ballscan.geometry.lens.undistorted`).
@@ -148,8 +148,8 @@ class LineScanCamera:
 
     # -------------------------------------------------------------- projection
     def project_normalised(self, n: np.ndarray) -> np.ndarray:
-        """Pixel coordinate ``u`` of the undistorted normalised coordinate ``n = y / z``."""
-        return self.principal_px + self.focal_px * self.distort(n)
+        """Pixel coordinate ``u`` of the undistorted normalised coordinate ``n = y / z`` (:func:`ballscan.geometry.lens.project`)."""
+        return project(np.asarray(n, dtype=float), self.focal_px, self.principal_px, self.k1, self.k2)
 
     def project(self, y_m: np.ndarray, z_m: np.ndarray) -> np.ndarray:
         """Project points ``(0, y, z)`` of the viewing plane to ``u`` (pixels).

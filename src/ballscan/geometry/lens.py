@@ -23,7 +23,11 @@ from ..compiled import jit, jitable
 
 @jitable
 def distorted(n, k1, k2):
-    """Distorted normalised coordinate ``n_d = n (1 + k1 n^2 + k2 n^4)`` (dimensionless), Eq. (2)."""
+    """Distorted normalised coordinate ``n_d = n (1 + k1 n^2 + k2 n^4)`` (dimensionless), Eq. (2).
+
+    Evaluated as ``n (1 + n^2 (k1 + k2 n^2))`` on floats and arrays alike,
+    so that the camera and the kernels round alike.
+    """
     n2 = n * n
     return n * (1.0 + n2 * (k1 + k2 * n2))
 
@@ -36,23 +40,9 @@ def distortion_slope(n, k1, k2):
 
 
 @jitable
-def distorted_expanded(n, k1, k2):
-    """:func:`distorted` summed term by term, ``n (1 + k1 n^2 + k2 n^2 n^2)``: the form the inverse iterates on."""
-    n2 = n * n
-    return n * (1.0 + k1 * n2 + k2 * n2 * n2)
-
-
-@jitable
-def distortion_slope_expanded(n, k1, k2):
-    """:func:`distortion_slope` summed term by term, ``1 + 3 k1 n^2 + 5 k2 n^2 n^2``: the inverse's Newton slope."""
-    n2 = n * n
-    return 1.0 + 3.0 * k1 * n2 + 5.0 * k2 * n2 * n2
-
-
-@jitable
 def newton_step(n, n_d, k1, k2):
     """One Newton step's correction of ``n`` towards the undistorted coordinate of ``n_d`` (subtract it from ``n``)."""
-    return (distorted_expanded(n, k1, k2) - n_d) / distortion_slope_expanded(n, k1, k2)
+    return (distorted(n, k1, k2) - n_d) / distortion_slope(n, k1, k2)
 
 
 @jitable
@@ -81,7 +71,7 @@ def undistorted(n_d: np.ndarray, k1: float, k2: float, tol: float) -> tuple[np.n
         n = n - step
         if np.all(np.abs(step) < tol * 1e-3):
             break
-    return n, not np.any(np.abs(distorted_expanded(n, k1, k2) - n_d) > tol)
+    return n, not np.any(np.abs(distorted(n, k1, k2) - n_d) > tol)
 
 
 @jit(inline="always")
@@ -105,4 +95,4 @@ def normalised(u, focal_px, principal_px, k1, k2):
         n = n - step
         if abs(step) < tol * 1e-3:
             break
-    return n, abs(distorted_expanded(n, k1, k2) - n_d) <= tol
+    return n, abs(distorted(n, k1, k2) - n_d) <= tol
