@@ -89,6 +89,46 @@ def inner_differences(p: np.ndarray, sp: np.ndarray, k_left: np.ndarray, k_right
     return d2, pv, sv, per_col
 
 
+@jit(inline="always")
+def _level_runs(p, sp, sat, other, r, k, s, ni, n_level, i, lev, deep, pl0, pl1, sl0, sl1, sat_any, oth_any):
+    """Row ``i``'s level, deep and deeper runs of :func:`edge_windows` (line ``r``, edge pixel ``k``, sign ``s``).
+
+    Fills ``lev[i], deep[i]`` and the level run's end values and sigmas;
+    returns the three runs' sums and sums of squared sigmas and the
+    saturated / other ball flags, updated.
+    """
+    w = p.shape[1]
+    tl = 0.0
+    tl2 = 0.0
+    td = 0.0
+    td2 = 0.0
+    tdd = 0.0
+    tdd2 = 0.0
+    for j in range(n_level):
+        a = k + (ni + 1 + j) * s
+        lev[i, j] = a
+        c = min(max(a, 0), w - 1)
+        sat_any = sat_any or sat[r, c]
+        oth_any = oth_any or other[r, c]
+        if j == 0:
+            pl0[i] = p[r, c]
+            sl0[i] = sp[r, c]
+        if j == n_level - 1:
+            pl1[i] = p[r, c]
+            sl1[i] = sp[r, c]
+        tl += p[r, c]
+        tl2 += sp[r, c] * sp[r, c]
+        d = k + (ni + 1 + n_level + j) * s
+        deep[i, j] = d
+        c = min(max(d, 0), w - 1)
+        td += p[r, c]
+        td2 += sp[r, c] * sp[r, c]
+        c = min(max(d + n_level * s, 0), w - 1)
+        tdd += p[r, c]
+        tdd2 += sp[r, c] * sp[r, c]
+    return tl, tl2, td, td2, tdd, tdd2, sat_any, oth_any
+
+
 @jit()
 def edge_windows(
     p: np.ndarray,
@@ -194,34 +234,9 @@ def edge_windows(
             tw2 += sw[i, j] * sw[i, j]
         S[i] = tS
         sw2[i] = tw2
-        tl = 0.0
-        tl2 = 0.0
-        td = 0.0
-        td2 = 0.0
-        tdd = 0.0
-        tdd2 = 0.0
-        for j in range(n_level):
-            a = k + (ni + 1 + j) * s
-            lev[i, j] = a
-            c = min(max(a, 0), w - 1)
-            sat_any = sat_any or sat[r, c]
-            oth_any = oth_any or other[r, c]
-            if j == 0:
-                pl0[i] = p[r, c]
-                sl0[i] = sp[r, c]
-            if j == n_level - 1:
-                pl1[i] = p[r, c]
-                sl1[i] = sp[r, c]
-            tl += p[r, c]
-            tl2 += sp[r, c] * sp[r, c]
-            d = k + (ni + 1 + n_level + j) * s
-            deep[i, j] = d
-            c = min(max(d, 0), w - 1)
-            td += p[r, c]
-            td2 += sp[r, c] * sp[r, c]
-            c = min(max(d + n_level * s, 0), w - 1)
-            tdd += p[r, c]
-            tdd2 += sp[r, c] * sp[r, c]
+        tl, tl2, td, td2, tdd, tdd2, sat_any, oth_any = _level_runs(
+            p, sp, sat, other, r, k, s, ni, n_level, i, lev, deep, pl0, pl1, sl0, sl1, sat_any, oth_any,
+        )
         L_run[i] = tl / n_level
         sl2[i] = tl2 / nl2
         pd[i] = td / n_level

@@ -235,6 +235,94 @@ def _limb_row_profile(
     return True, rays_ok
 
 
+@jit(inline="always")
+def _grid_span(px: np.ndarray) -> int:
+    """The unit grid's span (pixels) over the rows' pixel centres ``px`` (R, K): the rows' offsets differ by whole pixels."""
+    span = 0
+    for r in range(px.shape[0]):
+        lo_px = np.inf
+        hi_px = -np.inf
+        for k in range(px.shape[1]):
+            lo_px = min(lo_px, px[r, k])
+            hi_px = max(hi_px, px[r, k])
+        span = max(span, int(np.rint(hi_px - lo_px)) + 1)
+    return span
+
+
+@jit(inline="always", error_model="numpy")
+def _deep_ratio(val: np.ndarray, kw: int, n_level: int, nd: int) -> float:
+    """The model's ratio of the run inside the level run to the level run (values ``val`` of the third profile)."""
+    run_in = 0.0
+    for k in range(kw, kw + n_level):
+        run_in += val[k]
+    run_deep = 0.0
+    for k in range(kw + n_level, val.shape[0]):
+        run_deep += val[k]
+    return (run_deep / nd) / (run_in / n_level)
+
+
+@jit(inline="always", error_model="numpy")
+def _limb_rounds(
+    r, e0r, L_run_r, S_r, sg_r, n_win_r, kw, n_level, px, c_lo, c_hi, c_w, span, hwb, frac, point, wk,
+    edge_m_r, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
+):
+    """Row ``r``'s two rounds of :func:`limb_levels` and the third profile (the texture test's, left in ``wk``).
+
+    Returns the row's edge, level and window ratio after the rounds,
+    whether the ratio was usable, whether the profiles had coverage, and
+    whether every ray's inverse distortion converged.
+    """
+    K = px.shape[1]
+    cov = wk[1]
+    val = wk[3]
+    row_ok = True
+    er = e0r
+    ratio = 1.0
+    Lr = L_run_r
+    usable = False
+    fine = True
+    for rnd in range(3):
+        at = er
+        # the window's and the level run's values, then the runs' (the texture test)
+        n_use, run_hi = (n_win_r, kw + n_level) if rnd < 2 else (0, K)
+        fine, ok = _limb_row_profile(
+            r, at, sg_r, px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0, point, wk, n_use, kw, run_hi,
+            edge_m_r, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
+        )
+        row_ok = row_ok and ok
+        if not fine:
+            break
+        if rnd == 2:
+            break
+        s_model = 0.0
+        c_model = 0.0
+        for k in range(kw):
+            if k < n_win_r:
+                s_model += val[k]
+                c_model += cov[k]
+        lev = 0.0
+        for k in range(kw, kw + n_level):
+            lev += val[k]
+        ratio = s_model / c_model / (lev / n_level)
+        usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
+        if not usable:
+            ratio = 1.0
+        Lr = L_run_r * ratio
+        covered = S_r / (Lr if Lr > 0.0 else 1.0)
+        er = at + sg_r * (c_model - covered) if usable else e0r
+    return er, Lr, ratio, usable, fine, row_ok
+
+
+@jit(inline="always", error_model="numpy")
+def _edge_variance(sw: np.ndarray, r: int, S_r: float, Lr: float, sl2_r: float, ratio: float) -> float:
+    """The variance (px^2) of row ``r``'s edge from the window's sigmas ``sw[r]`` and the level's variance ``sl2_r``, at level ``Lr``."""
+    Ls = Lr if Lr > 0.0 else 1.0
+    s_w2 = 0.0
+    for k in range(sw.shape[1]):
+        s_w2 += sw[r, k] ** 2
+    return s_w2 / Ls**2 + (S_r / Ls**2) ** 2 * sl2_r * ratio**2
+
+
 @jit(error_model="numpy")
 def limb_levels(
     sg: np.ndarray,
@@ -316,14 +404,7 @@ def limb_levels(
     var = var0.copy()
     L = L0.copy()
     # the unit grid's span: the rows' offsets differ by whole pixels
-    span = 0
-    for r in range(R):
-        lo_px = np.inf
-        hi_px = -np.inf
-        for k in range(K):
-            lo_px = min(lo_px, px[r, k])
-            hi_px = max(hi_px, px[r, k])
-        span = max(span, int(np.rint(hi_px - lo_px)) + 1)
+    span = _grid_span(px)
     hwb = np.empty((2, span + 2))
     frac = (np.arange(n_points) + 0.5) / n_points
     point = np.full((R, K), np.nan)
@@ -348,59 +429,19 @@ def limb_levels(
         nh_pt = _heights(sharp[r], hk, focal, hs_pt)
         _centres(t_rows[r], True, tk, pos, vel, acc, has_acc, t_c, cen_c)
         _heights(True, hk, focal, hs_c)
-        er = e0[r]
-        ratio = 1.0
-        Lr = L_run[r]
-        usable = False
-        fine = True
-        for rnd in range(3):
-            at = er
-            # the window's and the level run's values, then the runs' (the texture test)
-            n_use, run_hi = (n_win[r], kw + n_level) if rnd < 2 else (0, K)
-            fine, ok = _limb_row_profile(
-                r, at, sg[r], px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0, point, wk, n_use, kw, run_hi,
-                edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
-            )
-            rays_ok = rays_ok and ok
-            if not fine:
-                break
-            if rnd == 2:
-                break
-            s_model = 0.0
-            c_model = 0.0
-            for k in range(kw):
-                if k < n_win[r]:
-                    s_model += val[k]
-                    c_model += cov[k]
-            lev = 0.0
-            for k in range(kw, kw + n_level):
-                lev += val[k]
-            ratio = s_model / c_model / (lev / n_level)
-            usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
-            if not usable:
-                ratio = 1.0
-            Lr = L_run[r] * ratio
-            covered = S[r] / (Lr if Lr > 0.0 else 1.0)
-            er = at + sg[r] * (c_model - covered) if usable else e0[r]
+        er, Lr, ratio, usable, fine, row_ok = _limb_rounds(
+            r, e0[r], L_run[r], S[r], sg[r], n_win[r], kw, n_level, px, c_lo, c_hi, c_w, span, hwb, frac, point, wk,
+            edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
+        )
+        rays_ok = rays_ok and row_ok
         if not fine:
             # no coverage (a NaN chord sample): the model-free edge
             continue
         # texture test with the model at the new edge (the third profile)
-        run_in = 0.0
-        for k in range(kw, kw + n_level):
-            run_in += val[k]
-        run_deep = 0.0
-        for k in range(kw + n_level, K):
-            run_deep += val[k]
-        q_model = (run_deep / nd) / (run_in / n_level)
-        smooth = abs(q_data[r] - q_model) <= q_lim[r]
+        smooth = abs(q_data[r] - _deep_ratio(val, kw, n_level, nd)) <= q_lim[r]
         if usable and smooth:
-            Ls = Lr if Lr > 0.0 else 1.0
-            s_w2 = 0.0
-            for k in range(sw.shape[1]):
-                s_w2 += sw[r, k] ** 2
             edge[r] = er
-            var[r] = s_w2 / Ls**2 + (S[r] / Ls**2) ** 2 * sl2[r] * ratio**2
+            var[r] = _edge_variance(sw, r, S[r], Lr, sl2[r], ratio)
             L[r] = Lr
     return edge, var, L, rays_ok
 

@@ -23,6 +23,103 @@ from ..compiled import jit
 from ..geometry.lens import distortion_slope, project
 
 
+@jit(inline="always")
+def _line_centre(dt0, y0, z0, vx, vy, vz, ax, ay, az, has_acc):
+    """The ball centre's ``(x, y, z)`` (m) at ``dt0`` (s) from the crossing, and its speed along x (m/s)."""
+    if has_acc:
+        h2 = 0.5 * dt0 * dt0
+        x0 = vx * dt0 + ax * h2
+        z_line = z0 + vz * dt0 + az * h2
+        y_line = y0 + vy * dt0 + ay * h2
+        a1 = vx + ax * dt0
+    else:
+        x0 = vx * dt0
+        z_line = z0 + vz * dt0
+        y_line = y0 + vy * dt0
+        a1 = vx
+    return x0, y_line, z_line, a1
+
+
+@jit(inline="always")
+def _chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok):
+    """One line's chord samples of :func:`averaged_samples`, into ``ulo, uhi, wok`` (3 * n_nodes).
+
+    The quadrature over the three kink segments ``te`` (4, overwritten by
+    their angles) of the exposure's blur (half-widths ``A`` along the
+    motion, ``B`` across the pixel, m); returns the samples' total weight,
+    their weighted edge sums (pixels) and whether a weighted sample missed
+    the ball's tangent.
+    """
+    nn = g.shape[0]
+    AmB = abs(A - B)
+    ApB = A + B
+    te[0] = x0 - ApB
+    te[1] = x0 - AmB
+    te[2] = x0 + AmB
+    te[3] = x0 + ApB
+    for k in range(4):
+        te[k] = math.asin(min(max(te[k], -R), R) / R)
+    plateau = 1.0 / max(2.0 * max(A, B), 1e-300)
+    inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
+    inv_a1 = 1.0 / a1 if a1 != 0.0 else 0.0
+    mass = 0.0
+    sum_lo = 0.0
+    sum_hi = 0.0
+    invalid = False
+    for q in range(3):
+        half = (te[q + 1] - te[q]) / 2.0
+        for i in range(nn):
+            ang = te[q] + half * (1.0 + g[i])
+            d = R * math.sin(ang)
+            rho = R * math.cos(ang)
+            jac = rho * (half * gw[i])
+            dd = d - x0
+            dist = abs(dd)
+            if dist > AmB:
+                dens = max(ApB - dist, 0.0) * inv4AB
+            else:
+                dens = plateau
+            if not ApB > 0.0:
+                dens = 0.0
+            wgt = dens * jac
+            u_mean = 0.5 * (max(-A, dd - B) + min(A, dd + B))
+            dts = u_mean * inv_a1 + dt0
+            xc = vx * dts
+            yc = y0 + vy * dts
+            zc = z0 + vz * dts
+            if has_acc:
+                h2s = 0.5 * dts * dts
+                xc = xc + ax * h2s
+                yc = yc + ay * h2s
+                zc = zc + az * h2s
+            s = (xc - d) / (zc if zc > 0.0 else 1.0)
+            w = zc + s * xc
+            den = w * w - rho * rho
+            disc = yc * yc + den
+            ok = (w > rho) and (disc > 0.0)
+            j = q * nn + i
+            if ok:
+                root = math.sqrt(disc)
+                inv_den = 1.0 / den
+            else:
+                root = 1.0
+                inv_den = 0.0
+                if wgt > 0.0:
+                    invalid = True
+            a_ = yc * w
+            b_ = rho * root
+            lo = project((a_ - b_) * inv_den, focal_px, principal_px, k1, k2)
+            hi = project((a_ + b_) * inv_den, focal_px, principal_px, k1, k2)
+            wk = wgt if ok else 0.0
+            ulo[j] = lo
+            uhi[j] = hi
+            wok[j] = wk
+            mass += wk
+            sum_lo += wk * lo
+            sum_hi += wk * hi
+    return mass, sum_lo, sum_hi, invalid
+
+
 @jit()
 def averaged_samples(
     th: np.ndarray,
@@ -76,20 +173,9 @@ def averaged_samples(
         tp = 0 if t.shape[0] == 1 else p
         for n in range(N):
             dt0 = t[tp, n] - tc
-            if has_acc:
-                h2 = 0.5 * dt0 * dt0
-                x0 = vx * dt0 + ax * h2
-                z_line = z0 + vz * dt0 + az * h2
-                y_line = y0 + vy * dt0 + ay * h2
-                a1 = vx + ax * dt0
-            else:
-                x0 = vx * dt0
-                z_line = z0 + vz * dt0
-                y_line = y0 + vy * dt0
-                a1 = vx
+            x0, y_line, z_line, a1 = _line_centre(dt0, y0, z0, vx, vy, vz, ax, ay, az, has_acc)
             A = abs(a1) * (exposure_s / 2.0)
             B = max(z_line, 0.0) / (2.0 * focal_px)
-            AmB = abs(A - B)
             ApB = A + B
             if not want_samples and (x0 - ApB >= R or x0 + ApB <= -R):
                 # the line misses the ball: every kink clips to the same pole,
@@ -103,70 +189,9 @@ def averaged_samples(
                     spread[p, n] = 0.0
                     valid[p, n] = z_line > 0.0
                 continue
-            te[0] = x0 - ApB
-            te[1] = x0 - AmB
-            te[2] = x0 + AmB
-            te[3] = x0 + ApB
-            for k in range(4):
-                te[k] = math.asin(min(max(te[k], -R), R) / R)
-            plateau = 1.0 / max(2.0 * max(A, B), 1e-300)
-            inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
-            inv_a1 = 1.0 / a1 if a1 != 0.0 else 0.0
-            mass = 0.0
-            sum_lo = 0.0
-            sum_hi = 0.0
-            invalid = False
-            for q in range(3):
-                half = (te[q + 1] - te[q]) / 2.0
-                for i in range(nn):
-                    ang = te[q] + half * (1.0 + g[i])
-                    d = R * math.sin(ang)
-                    rho = R * math.cos(ang)
-                    jac = rho * (half * gw[i])
-                    dd = d - x0
-                    dist = abs(dd)
-                    if dist > AmB:
-                        dens = max(ApB - dist, 0.0) * inv4AB
-                    else:
-                        dens = plateau
-                    if not ApB > 0.0:
-                        dens = 0.0
-                    wgt = dens * jac
-                    u_mean = 0.5 * (max(-A, dd - B) + min(A, dd + B))
-                    dts = u_mean * inv_a1 + dt0
-                    xc = vx * dts
-                    yc = y0 + vy * dts
-                    zc = z0 + vz * dts
-                    if has_acc:
-                        h2s = 0.5 * dts * dts
-                        xc = xc + ax * h2s
-                        yc = yc + ay * h2s
-                        zc = zc + az * h2s
-                    s = (xc - d) / (zc if zc > 0.0 else 1.0)
-                    w = zc + s * xc
-                    den = w * w - rho * rho
-                    disc = yc * yc + den
-                    ok = (w > rho) and (disc > 0.0)
-                    j = q * nn + i
-                    if ok:
-                        root = math.sqrt(disc)
-                        inv_den = 1.0 / den
-                    else:
-                        root = 1.0
-                        inv_den = 0.0
-                        if wgt > 0.0:
-                            invalid = True
-                    a_ = yc * w
-                    b_ = rho * root
-                    lo = project((a_ - b_) * inv_den, focal_px, principal_px, k1, k2)
-                    hi = project((a_ + b_) * inv_den, focal_px, principal_px, k1, k2)
-                    wk = wgt if ok else 0.0
-                    ulo[j] = lo
-                    uhi[j] = hi
-                    wok[j] = wk
-                    mass += wk
-                    sum_lo += wk * lo
-                    sum_hi += wk * hi
+            mass, sum_lo, sum_hi, invalid = _chord_samples(
+                te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok,
+            )
             present = mass > 0.0
             inv_m = 1.0 / mass if present else 1.0
             lft = sum_lo * inv_m
@@ -339,20 +364,14 @@ def _sample_buffers(S: int):
     )
 
 
-@jit()
-def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf):
-    """One line's chord samples (:func:`averaged_samples` with samples) and their derivatives, into ``buf``.
+@jit(inline="always")
+def _kinks_jacobian(t_s, tc, z0, vx, vz, R, exposure_s, focal_px, te, dte, dc, dA, dB, dAmB):
+    """The blur's half-widths and the kinks' angles of one line (no acceleration), with their derivatives (:func:`_line_samples_jacobian`).
 
-    ``buf`` (:func:`_sample_buffers`) receives ``lo, hi, wk`` (S,) and
-    ``dlo, dhi`` (S, 6), ``dwk`` (6, S): their derivatives with respect to
-    ``th = (t_c, y0, z0, vx, vy, vz)`` by forward-mode differentiation by
-    hand (no acceleration); its other arrays are scratch.  Where a clip or
-    a branch holds, the derivative is that of the branch taken.
+    Fills ``dA, dB, dAmB`` (6,) and the kinks' angles ``te`` (4,) with their
+    derivatives ``dte`` (4, 6) (``dc`` is scratch); returns ``(dt0, x0, A,
+    B, |A - B|, A + B)`` (s, m).
     """
-    lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv = buf
-    tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
-    nn = g.shape[0]
-    # ---- the line's samples and their derivatives (averaged_samples' loop)
     dt0 = t_s - tc
     x0 = vx * dt0
     z_line = z0 + vz * dt0
@@ -403,6 +422,61 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
         else:
             for j in range(6):
                 dte[k, j] = 0.0
+    return dt0, x0, A, B, AmB, ApB
+
+
+@jit(inline="always")
+def _density_branch(ApB, AmB, dist, inv4AB, plateau):
+    """The blur density's branch at distance ``dist`` (m) from the centre (0: none, 1: ramp, 2: plateau) and its value (1/m)."""
+    if not ApB > 0.0:
+        return 0, 0.0
+    if dist > AmB:
+        if ApB - dist > 0.0:
+            return 1, (ApB - dist) * inv4AB
+        return 0, 0.0
+    return 2, plateau
+
+
+@jit(inline="always")
+def _density_coefficients(branch, dens, s_dd, inv4AB, plateau, mAB):
+    """The density's derivative as coefficients of ``d(A + B)``, ``d(A B)``, ``d dd`` and ``d max(A, B)`` on its branch."""
+    c_ab = 0.0
+    c_prod = 0.0
+    c_dd = 0.0
+    c_max = 0.0
+    if branch == 1:
+        c_ab = inv4AB
+        # (not inv4AB squared: it overflows for A B below 1e-154)
+        c_prod = -dens * inv4AB * 4.0
+        c_dd = -s_dd * inv4AB
+    elif branch == 2 and 2.0 * mAB > 1e-300:
+        c_max = -plateau * plateau * 2.0
+    return c_ab, c_prod, c_dd, c_max
+
+
+@jit(inline="always")
+def _pixel_and_gain(n, focal_px, principal_px, k1, k2):
+    """Pixel of the normalised coordinate ``n`` and its derivative ``du / dn`` (pixels)."""
+    if k1 == 0.0 and k2 == 0.0:
+        return principal_px + focal_px * n, focal_px
+    return project(n, focal_px, principal_px, k1, k2), focal_px * distortion_slope(n, k1, k2)
+
+
+@jit()
+def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k2, g, gw, buf):
+    """One line's chord samples (:func:`averaged_samples` with samples) and their derivatives, into ``buf``.
+
+    ``buf`` (:func:`_sample_buffers`) receives ``lo, hi, wk`` (S,) and
+    ``dlo, dhi`` (S, 6), ``dwk`` (6, S): their derivatives with respect to
+    ``th = (t_c, y0, z0, vx, vy, vz)`` by forward-mode differentiation by
+    hand (no acceleration); its other arrays are scratch.  Where a clip or
+    a branch holds, the derivative is that of the branch taken.
+    """
+    lo, hi, wk, dlo, dhi, dwk, te, dte, dc, dA, dB, dAmB, dang, dhalf, dx0v, dmaxv = buf
+    tc, y0, z0, vx, vy, vz = th[0], th[1], th[2], th[3], th[4], th[5]
+    nn = g.shape[0]
+    # ---- the line's samples and their derivatives (averaged_samples' loop)
+    dt0, x0, A, B, AmB, ApB = _kinks_jacobian(t_s, tc, z0, vx, vz, R, exposure_s, focal_px, te, dte, dc, dA, dB, dAmB)
     mAB = max(A, B)
     plateau = 1.0 / max(2.0 * mAB, 1e-300)
     inv4AB = 1.0 / max(4.0 * A * B, 1e-300)
@@ -427,20 +501,7 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
             dd = d - x0
             dist = abs(dd)
             s_dd = 1.0 if dd > 0.0 else (-1.0 if dd < 0.0 else 0.0)
-            # which branch of the density
-            if not ApB > 0.0:
-                branch = 0
-                dens = 0.0
-            elif dist > AmB:
-                if ApB - dist > 0.0:
-                    branch = 1
-                    dens = (ApB - dist) * inv4AB
-                else:
-                    branch = 0
-                    dens = 0.0
-            else:
-                branch = 2
-                dens = plateau
+            branch, dens = _density_branch(ApB, AmB, dist, inv4AB, plateau)
             wgt = dens * jac
             lo_m = dd - B
             hi_m = dd + B
@@ -467,30 +528,12 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
             n_lo = (a_ - b_) * inv_den
             n_hi = (a_ + b_) * inv_den
             jj = q * nn + i
-            if k1 == 0.0 and k2 == 0.0:
-                lo[jj] = principal_px + focal_px * n_lo
-                hi[jj] = principal_px + focal_px * n_hi
-                fp_lo = focal_px
-                fp_hi = focal_px
-            else:
-                lo[jj] = project(n_lo, focal_px, principal_px, k1, k2)
-                fp_lo = focal_px * distortion_slope(n_lo, k1, k2)
-                hi[jj] = project(n_hi, focal_px, principal_px, k1, k2)
-                fp_hi = focal_px * distortion_slope(n_hi, k1, k2)
+            lo[jj], fp_lo = _pixel_and_gain(n_lo, focal_px, principal_px, k1, k2)
+            hi[jj], fp_hi = _pixel_and_gain(n_hi, focal_px, principal_px, k1, k2)
             wk[jj] = wgt if ok else 0.0
             # the branches taken, as coefficients (a branch-free loop over the parameters)
             okf = 1.0 if ok else 0.0
-            c_ab = 0.0
-            c_prod = 0.0
-            c_dd = 0.0
-            c_max = 0.0
-            if branch == 1:
-                c_ab = inv4AB
-                # (not inv4AB squared: it overflows for A B below 1e-154)
-                c_prod = -dens * inv4AB * 4.0
-                c_dd = -s_dd * inv4AB
-            elif branch == 2 and 2.0 * mAB > 1e-300:
-                c_max = -plateau * plateau * 2.0
+            c_ab, c_prod, c_dd, c_max = _density_coefficients(branch, dens, s_dd, inv4AB, plateau, mAB)
             sel_lo = 1.0 if -A >= lo_m else 0.0
             sel_hi = 1.0 if A <= hi_m else 0.0
             zf = 1.0 if zpos else 0.0
@@ -618,6 +661,62 @@ def averaged_edges_jacobian(
     return left, right, area, dl, dr, da
 
 
+@jit(inline="always")
+def _end_derivatives(lo, hi, wk, dlo, dhi, a0, span, dend):
+    """The coverage derivatives ``dend`` (span, 6) of one row's pixels from its chord ends' motion (:func:`pixel_residuals_jacobian`).
+
+    A row's grid starts at ``a0`` (pixels).
+    """
+    # an end moves the coverage of the pixel that holds it (a sample with
+    # hi < lo covers nothing and moves nothing)
+    dend[:, :] = 0.0
+    for jj in range(lo.shape[0]):
+        wj = wk[jj]
+        if wj == 0.0 or hi[jj] < lo[jj]:
+            continue
+        tt = hi[jj] - a0
+        if 0.0 <= tt < span:
+            kk = int(math.floor(tt))
+            for j in range(6):
+                dend[kk, j] += wj * dhi[jj, j]
+        tt = lo[jj] - a0
+        if 0.0 <= tt < span:
+            kk = int(math.floor(tt))
+            for j in range(6):
+                dend[kk, j] -= wj * dlo[jj, j]
+
+
+@jit(inline="always")
+def _weight_histograms(lo, hi, dwk, a0, span, hwd, hwfd):
+    """The derivatives of :func:`ramp_histogram`'s cumulative histograms with respect to the samples' weights ``dwk`` (6, S), into ``hwd, hwfd``."""
+    # the weights' part: the coverage with the weights' derivatives (y0
+    # and vy leave the weights alone), four histograms in one pass
+    hwd[:, :] = 0.0
+    hwfd[:, :] = 0.0
+    for jj in range(lo.shape[0]):
+        lj = lo[jj]
+        hj = hi[jj]
+        if hj < lj:
+            hj = lj
+        for side in range(2):
+            x = hj if side == 0 else lj
+            sg = 1.0 if side == 0 else -1.0
+            tt = x - a0
+            if tt >= span:
+                for j in (0, 2, 3, 5):
+                    hwd[j, span + 1] += sg * dwk[j, jj]
+            elif tt >= -1.0:
+                fb = math.floor(tt)
+                bi = int(fb) + 1
+                fr = tt - fb
+                for j in (0, 2, 3, 5):
+                    hwd[j, bi] += sg * dwk[j, jj]
+                    hwfd[j, bi] += sg * dwk[j, jj] * fr
+    for j in (0, 2, 3, 5):
+        for bb in range(span, -1, -1):
+            hwd[j, bb] += hwd[j, bb + 1]
+
+
 @jit()
 def pixel_residuals_jacobian(
     th: np.ndarray,
@@ -678,49 +777,8 @@ def pixel_residuals_jacobian(
         # ---- the line's pixel coverage and its derivatives
         a0 = base[r] - 0.5
         okh = ramp_histogram(lo, hi, wk, a0, span, hw, hwf)
-        # an end moves the coverage of the pixel that holds it (a sample with
-        # hi < lo covers nothing and moves nothing)
-        dend[:, :] = 0.0
-        for jj in range(S):
-            wj = wk[jj]
-            if wj == 0.0 or hi[jj] < lo[jj]:
-                continue
-            tt = hi[jj] - a0
-            if 0.0 <= tt < span:
-                kk = int(math.floor(tt))
-                for j in range(6):
-                    dend[kk, j] += wj * dhi[jj, j]
-            tt = lo[jj] - a0
-            if 0.0 <= tt < span:
-                kk = int(math.floor(tt))
-                for j in range(6):
-                    dend[kk, j] -= wj * dlo[jj, j]
-        # the weights' part: the coverage with the weights' derivatives (y0
-        # and vy leave the weights alone), four histograms in one pass
-        hwd[:, :] = 0.0
-        hwfd[:, :] = 0.0
-        for jj in range(S):
-            lj = lo[jj]
-            hj = hi[jj]
-            if hj < lj:
-                hj = lj
-            for side in range(2):
-                x = hj if side == 0 else lj
-                sg = 1.0 if side == 0 else -1.0
-                tt = x - a0
-                if tt >= span:
-                    for j in (0, 2, 3, 5):
-                        hwd[j, span + 1] += sg * dwk[j, jj]
-                elif tt >= -1.0:
-                    fb = math.floor(tt)
-                    bi = int(fb) + 1
-                    fr = tt - fb
-                    for j in (0, 2, 3, 5):
-                        hwd[j, bi] += sg * dwk[j, jj]
-                        hwfd[j, bi] += sg * dwk[j, jj] * fr
-        for j in (0, 2, 3, 5):
-            for bb in range(span, -1, -1):
-                hwd[j, bb] += hwd[j, bb + 1]
+        _end_derivatives(lo, hi, wk, dlo, dhi, a0, span, dend)
+        _weight_histograms(lo, hi, dwk, a0, span, hwd, hwfd)
         for k in range(K):
             if not mask[r, k]:
                 continue
