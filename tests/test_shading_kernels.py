@@ -12,7 +12,6 @@ from ballscan.measure import edges as E
 from ballscan.geometry.camera import LineScanCamera, line_times
 from ballscan.measure.detection import median as _median
 from ballscan.measure.detection import detect
-from ballscan.errors import GeometryError
 from ballscan.pipeline.estimate import _full_background
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
@@ -507,3 +506,40 @@ def test_limb_values_equal_the_surface_normals_and_the_shading_law():
         assert np.abs(val[r] - v.mean(axis=(0, 1))).max() < 1e-12
         assert np.array_equal(cov[r], hit.mean(axis=(0, 1)))
     assert 0.0 < cov.mean() < 1.0  # rays on and off the ball
+
+
+def test_chord_rows_equals_the_numpy_form():
+    from ballscan.measure._shading_kernels import chord_rows
+
+    rng = np.random.default_rng(4)
+    u_lo, u_hi, wgt = (rng.normal(size=(6, 3, 4)) for _ in range(3))
+    left, right = rng.normal(size=6), rng.normal(size=6)
+    inv = rng.integers(0, 6, 15)
+    sg = rng.choice([1.0, -1.0, np.nan], 15)
+    lo, hi, w = chord_rows(*(a.reshape(6, 12) for a in (u_lo, u_hi, wgt)), left, right, inv, sg)
+    s3, le, ri = sg[:, None, None], left[inv][:, None, None], right[inv][:, None, None]
+    assert np.array_equal(lo.reshape(15, 3, 4), np.where(s3 > 0, u_lo[inv] - le, ri - u_hi[inv]))
+    assert np.array_equal(hi.reshape(15, 3, 4), np.where(s3 > 0, u_hi[inv] - le, ri - u_lo[inv]))
+    assert np.array_equal(w.reshape(15, 3, 4), wgt[inv])
+
+
+def test_level_spans_equals_the_numpy_form():
+    from ballscan.measure._shading_kernels import level_spans
+
+    rng = np.random.default_rng(5)
+    left, right, spread = rng.normal(100.0, 5.0, 30), rng.normal(140.0, 5.0, 30), rng.uniform(0.0, 2.0, 30)
+    left[3] = right[4] = spread[5] = np.nan
+    for m in (1, 2, 3):
+        pad = np.nan_to_num(spread) / 2.0 + 1.5
+        span = np.nan_to_num(right - left) + 2.0 * pad
+        got = level_spans(left, right, spread, m)
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * m
+    # an infinite spread as np.nan_to_num takes it; an infinite span: no maximum
+    spread[6] = np.inf
+    pad = np.nan_to_num(spread) / 2.0 + 1.5
+    span = np.nan_to_num(right - left) + 2.0 * pad
+    got = level_spans(left, right, spread, 2)
+    with np.errstate(over="ignore"):
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * 2
+    right[6] = np.inf
+    assert np.isnan(level_spans(left, right, spread, 2)[2])
