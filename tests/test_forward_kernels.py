@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from ballscan.geometry.camera import LineScanCamera
 from ballscan.geometry.motion import BallMotion
 from ballscan.model import _forward_kernels as K
-from ballscan.solve.fit import _model_core, param_scale, pixel_coverage
+from ballscan.solve.fit import _model_core, averaged_model, param_scale, pixel_coverage
 
 CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
 MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 2.0, 15.0))
@@ -58,3 +59,41 @@ def test_pixel_residuals_equal_coverage_times_shade_and_group_brightness():
         B = np.bincount(g, ck * p[mask] * ww) / np.bincount(g, ck * ck * ww)
         ref = (B[g] * ck - p[mask]) * wt[mask]
         assert np.abs(got[k] - ref).max() < 1e-10 * np.abs(ref).max()
+
+
+@pytest.mark.parametrize("distorted, deg", [(False, 30.0), (True, 60.0), (False, 0.0)])
+def test_averaged_edges_jacobian_equals_central_differences(distorted, deg):
+    """The compiled derivatives of the averaged edges and area (the Jacobian rows of the ball's ends) against central differences.
+
+    Over 170 lines from before the ball to after it.  Edges: 5e-9 to
+    1.6e-6 relative per column with steps of 1e-5 of the parameter scale
+    (1e-3 for y0, vy and vz, whose columns a small step leaves to
+    round-off); the area's y0 / vy columns are perspective only (a
+    hundred times smaller than its other columns), 1e-4 relative.
+    """
+    from ballscan.model._forward_kernels import averaged_edges_jacobian
+    from ballscan.model.silhouette import _gauss
+
+    a = np.radians(deg)
+    cam = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None, k1=-0.05 if distorted else 0.0, k2=0.01 if distorted else 0.0)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0 * np.cos(a), 1.5, 30.0 * np.sin(a)))
+    t = 0.002 + np.linspace(-1.3, 1.3, 170) * m.radius_m / m.velocity_mps[0]
+    th = m.to_params()
+    g, gw = _gauss(3)
+    L, Rr, A, dl, dr, da = averaged_edges_jacobian(th, t, m.radius_m, cam.exposure, cam.focal_px, cam.principal_px, cam.k1, cam.k2, g, gw)
+    me = averaged_model(cam, th[None], m.radius_m, t, n_nodes=3)
+    assert np.array_equal(L, me.left_px[0]) and np.array_equal(Rr, me.right_px[0]) and np.array_equal(A, me.area_px[0])
+    assert (me.presence[0] == 0).sum() > 10  # lines without the ball included
+    h = np.array([1e-5, 1e-3, 1e-5, 1e-5, 1e-3, 1e-3]) * param_scale(cam, m)
+    J = np.stack([dl, dr, da])
+    Jc = np.empty_like(J)
+    for j in range(6):
+        d = np.zeros(6)
+        d[j] = h[j]
+        p = averaged_model(cam, (th + d)[None], m.radius_m, t, n_nodes=3)
+        q = averaged_model(cam, (th - d)[None], m.radius_m, t, n_nodes=3)
+        for i, k in enumerate(("left_px", "right_px", "area_px")):
+            Jc[i, :, j] = (getattr(p, k)[0] - getattr(q, k)[0]) / (2 * h[j])
+    err = np.linalg.norm(J - Jc, axis=1) / np.linalg.norm(Jc, axis=1)
+    assert np.all(err[:2] < 1e-5), err
+    assert np.all(err[2, [0, 2, 3, 5]] < 1e-5) and np.all(err[2, [1, 4]] < 1e-3), err
