@@ -10,7 +10,7 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
-from ballscan.solve.fit import FitSettings
+from ballscan.solve.settings import FitSettings
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render

@@ -161,7 +161,7 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
 # 1.7x at both (0.000705 % vs 0.00041 %, 0.00272 % vs 0.00157 %).
 # Session 9, measured on 32 seeds of each point (the test's 8 first):
 # each pixel's shot-noise sigma had followed its own noisy value, which
-# gave the pixels reading high less weight (now _kernels.shot_noise):
+# gave the pixels reading high less weight (_edge_kernels.shot_noise):
 # mean speed error +0.36 -> +0.13 sigma of the bound at R = 0.11 m,
 # +0.57 -> +0.48 at 140 000 lines/s (paired shifts -0.23 +- 0.015 and
 # -0.08 +- 0.006).  Ratios here 1.72x -> 1.54x at R = 0.11 m, 1.73x ->

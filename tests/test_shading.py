@@ -468,7 +468,7 @@ def test_more_exposure_samples_bring_the_end_lines_levels_closer():
 
 
 def test_fast_helpers_equal_the_numpy_forms():
-    """_even_picks, _nan_to_num and _unique_lines (compiled: _kernels.unique_lines) against the numpy forms they replace."""
+    """_even_picks, _nan_to_num and _unique_lines (compiled: _shading_kernels.unique_lines) against the numpy forms they replace."""
     from ballscan.measure.shading import _even_picks, _nan_to_num, _unique_lines
 
     rng = np.random.default_rng(3)
@@ -484,21 +484,6 @@ def test_fast_helpers_equal_the_numpy_forms():
         assert np.array_equal(u, u0) and np.array_equal(i, i0) and u.dtype == u0.dtype
 
 
-def test_chord_rows_equals_the_numpy_form():
-    from ballscan._kernels import chord_rows
-
-    rng = np.random.default_rng(4)
-    u_lo, u_hi, wgt = (rng.normal(size=(6, 3, 4)) for _ in range(3))
-    left, right = rng.normal(size=6), rng.normal(size=6)
-    inv = rng.integers(0, 6, 15)
-    sg = rng.choice([1.0, -1.0, np.nan], 15)
-    lo, hi, w = chord_rows(*(a.reshape(6, 12) for a in (u_lo, u_hi, wgt)), left, right, inv, sg)
-    s3, le, ri = sg[:, None, None], left[inv][:, None, None], right[inv][:, None, None]
-    assert np.array_equal(lo.reshape(15, 3, 4), np.where(s3 > 0, u_lo[inv] - le, ri - u_hi[inv]))
-    assert np.array_equal(hi.reshape(15, 3, 4), np.where(s3 > 0, u_hi[inv] - le, ri - u_lo[inv]))
-    assert np.array_equal(w.reshape(15, 3, 4), wgt[inv])
-
-
 @pytest.mark.parametrize("n_time, n_height", [(1, 1), (3, 2), (5, 4), (8, 3)])
 def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
     from ballscan.measure.shading import LimbProfile, ShadingModel
@@ -508,25 +493,3 @@ def test_exposure_and_height_samples_equal_the_numpy_form(n_time, n_height):
     tk, hk = limb._samples_tk_hk(n_time, n_height)
     assert np.array_equal(tk, ((np.arange(n_time) + 0.5) / n_time - 0.5) * cam.exposure)
     assert np.array_equal(hk, (np.arange(n_height) + 0.5) / n_height - 0.5)
-
-
-def test_level_spans_equals_the_numpy_form():
-    from ballscan._kernels import level_spans
-
-    rng = np.random.default_rng(5)
-    left, right, spread = rng.normal(100.0, 5.0, 30), rng.normal(140.0, 5.0, 30), rng.uniform(0.0, 2.0, 30)
-    left[3] = right[4] = spread[5] = np.nan
-    for m in (1, 2, 3):
-        pad = np.nan_to_num(spread) / 2.0 + 1.5
-        span = np.nan_to_num(right - left) + 2.0 * pad
-        got = level_spans(left, right, spread, m)
-        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * m
-    # an infinite spread as np.nan_to_num takes it; an infinite span: no maximum
-    spread[6] = np.inf
-    pad = np.nan_to_num(spread) / 2.0 + 1.5
-    span = np.nan_to_num(right - left) + 2.0 * pad
-    got = level_spans(left, right, spread, 2)
-    with np.errstate(over="ignore"):
-        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * 2
-    right[6] = np.inf
-    assert np.isnan(level_spans(left, right, spread, 2)[2])

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CameraFileError, GeometryError
+from .lens import distorted, distortion_slope, project, undistorted
 
 __all__ = [
     "LineScanCamera",
@@ -120,18 +121,15 @@ class LineScanCamera:
 
     # -------------------------------------------------------------- distortion
     def distort(self, n: np.ndarray) -> np.ndarray:
-        """Radial distortion ``n_d = n (1 + k1 n^2 + k2 n^4)`` (dimensionless)."""
-        n = np.asarray(n, dtype=float)
-        n2 = n * n
-        return n * (1.0 + self.k1 * n2 + self.k2 * n2 * n2)
+        """Radial distortion ``n_d = n (1 + k1 n^2 + k2 n^4)`` (dimensionless), Eq. (2) (:mod:`ballscan.geometry.lens`)."""
+        return distorted(np.asarray(n, dtype=float), self.k1, self.k2)
 
     def distort_derivative(self, n: np.ndarray) -> np.ndarray:
         """``d n_d / d n = 1 + 3 k1 n^2 + 5 k2 n^4``."""
-        n2 = np.asarray(n, dtype=float) ** 2
-        return 1.0 + 3.0 * self.k1 * n2 + 5.0 * self.k2 * n2 * n2
+        return distortion_slope(np.asarray(n, dtype=float), self.k1, self.k2)
 
     def undistort(self, n_d: np.ndarray, tol_px: float = 1e-9) -> np.ndarray:
-        """Invert :meth:`distort` by Newton's method to ``tol_px`` pixels.
+        """Invert :meth:`distort` by Newton's method to ``tol_px`` pixels (:func:`ballscan.geometry.lens.undistorted`).
 
         Parameters
         ----------
@@ -139,26 +137,21 @@ class LineScanCamera:
             Distorted normalised coordinates.
         tol_px : float
             Stopping tolerance expressed in pixels on the sensor.
+
+        Raises
+        ------
+        GeometryError
+            If a coordinate lies outside the monotonic range of ``k1, k2``.
         """
-        n_d = np.asarray(n_d, dtype=float)
-        if self.k1 == 0.0 and self.k2 == 0.0:
-            return n_d.copy()
-        n = n_d.copy()
-        tol = tol_px / self.focal_px
-        for _ in range(50):
-            step = (self.distort(n) - n_d) / self.distort_derivative(n)
-            n = n - step
-            if np.all(np.abs(step) < tol * 1e-3):
-                break
-        residual = np.abs(self.distort(n) - n_d)
-        if np.any(residual > tol):
+        n, converged = undistorted(n_d, self.k1, self.k2, tol_px / self.focal_px)
+        if not converged:
             raise GeometryError("inverse distortion did not converge: coordinate outside the monotonic range of k1, k2")
         return n
 
     # -------------------------------------------------------------- projection
     def project_normalised(self, n: np.ndarray) -> np.ndarray:
-        """Pixel coordinate ``u`` of the undistorted normalised coordinate ``n = y / z``."""
-        return self.principal_px + self.focal_px * self.distort(n)
+        """Pixel coordinate ``u`` of the undistorted normalised coordinate ``n = y / z`` (:func:`ballscan.geometry.lens.project`)."""
+        return project(np.asarray(n, dtype=float), self.focal_px, self.principal_px, self.k1, self.k2)
 
     def project(self, y_m: np.ndarray, z_m: np.ndarray) -> np.ndarray:
         """Project points ``(0, y, z)`` of the viewing plane to ``u`` (pixels).

@@ -53,8 +53,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage as ndi
 
-from .._kernels import (
-    as_arg,
+from ..compiled import as_arg
+from ._detection_kernels import (
     fill_lines_and_cols,
     first_pass_lines,
     group_mask,
@@ -294,7 +294,7 @@ def _masked_median(s: np.ndarray, excluded: np.ndarray) -> tuple[np.ndarray, np.
     give 0; check the count.
     """
     s.sort(axis=1)
-    # the look-up, compiled (_kernels.kept_median)
+    # the look-up, compiled (_detection_kernels.kept_median)
     return kept_median(s, as_arg(excluded, np.int64), _BIG)
 
 
@@ -320,7 +320,7 @@ def _mode_seek(
         Per row: the mode, the noise sigma and the number of values in the
         final window.
     """
-    # compiled (_kernels.mode_seek): the rounds per row, without the numpy
+    # compiled (_detection_kernels.mode_seek): the rounds per row, without the numpy
     # form's whole-array temporaries
     return mode_seek(as_arg(s, np.float32), as_arg(start), as_arg(sigma), float(floor))
 
@@ -426,7 +426,7 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
     if np.isnan(col_med).any():
         neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
     else:
-        # compiled (_kernels.reflect_median_filter): ndi.median_filter's values
+        # compiled (_detection_kernels.reflect_median_filter): ndi.median_filter's values
         neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
@@ -450,7 +450,7 @@ def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: 
     bs = b[::step]
     thr = first_pass_k * np.maximum(sig[::step], noise_floor_dn)
     # the residual, the exclusion and the samples in one compiled pass
-    # (_kernels.first_pass_lines)
+    # (_detection_kernels.first_pass_lines)
     samples, n_excluded = first_pass_lines(
         as_arg(xs, np.float32), as_arg(gain0), as_arg(offset0), as_arg(bs), as_arg(thr), use_gain
     )
@@ -503,7 +503,7 @@ def _merged_runs(m: np.ndarray, closed: np.ndarray, axis: int) -> np.ndarray:
     than the closing's leave it in two runs (a fast ball of Fig. 5 would
     otherwise be split at such a column into two "overlapping" balls).
     """
-    # compiled (_kernels.multi_runs)
+    # compiled (_detection_kernels.multi_runs)
     out, lone = multi_runs(as_arg(closed, np.bool_), axis)
     if np.any(lone):
         light, _ = multi_runs(as_arg(_close(m, _NOTCH_CLOSE_PX), np.bool_), axis)
@@ -706,7 +706,7 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
     """The region of a raw mask: its holes filled, its contrast, polarity and flags."""
     n, w = x64.shape
     l0, c0 = raw.line_start, raw.col_start
-    # compiled (_kernels.fill_lines_and_cols, _kernels.region_values)
+    # compiled (_detection_kernels.fill_lines_and_cols, _detection_kernels.region_values)
     filled = fill_lines_and_cols(as_arg(raw.mask, np.bool_))
     h, wd = filled.shape
     vals, saturated = region_values(x64, bg.line_gain, bg.background_dn, bg.line_offset_dn, l0, c0, filled, sat)

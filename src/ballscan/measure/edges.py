@@ -42,10 +42,12 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from .._kernels import (
-    as_arg, edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_levels, limb_pixels, line_coverage,
+from ..compiled import as_arg
+from ._edge_kernels import (
+    edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_pixels, line_coverage,
     rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
+from ._shading_kernels import limb_levels
 from ..errors import GeometryError
 from .robust import median, weighted_median
 
@@ -466,7 +468,7 @@ def _limb_levels(limb, e, var0, L0, S, L_run, sl2, sw, n_win, win_first, win_las
     ----------
     limb : LimbProfile-like
         See :func:`measure_edges`; its ``rows`` give the model to the
-        compiled loop (:func:`ballscan._kernels.limb_levels`), which
+        compiled loop (:func:`ballscan.measure._shading_kernels.limb_levels`), which
         evaluates the model as its ``pixel_coverage``, ``surface`` and
         ``__call__`` do.
     e, var0, L0 : ndarray (R,)
@@ -534,7 +536,7 @@ def _running_median(x: np.ndarray, n: int, blocks: int = 1) -> np.ndarray:
     if n <= 1 or x.size == 0:
         return x.copy()
     # the median of the finite entries (the mean of the middle two for an
-    # even count), as np.nanmedian; compiled (_kernels.running_medians)
+    # even count), as np.nanmedian; compiled (_edge_kernels.running_medians)
     return running_medians(as_arg(x), int(blocks), int(n))
 
 
@@ -576,7 +578,7 @@ def measure_edges(
         The ball's brightness model across the left (side +1) or right (-1)
         edge of image lines, a :class:`ballscan.measure.shading.LimbProfile`:
         ``limb.rows(lines, sides)`` gives the model as the arguments of the
-        compiled levels (:func:`ballscan._kernels.limb_levels`, which
+        compiled levels (:func:`ballscan.measure._shading_kernels.limb_levels`, which
         evaluates it as the profile's ``pixel_coverage``, ``surface`` and
         ``__call__`` do), ``limb.spread_px`` the model's edge spread per
         image line (pixels), which selects the narrow and wide windows to
@@ -675,7 +677,7 @@ class _RoughEdges:
 
 @dataclass(frozen=True)
 class _WindowSums:
-    """The window and level-run sums of every edge estimate (:func:`ballscan._kernels.edge_windows`, in its order).
+    """The window and level-run sums of every edge estimate (:func:`ballscan.measure._edge_kernels.edge_windows`, in its order).
 
     Rows ``4 n`` (narrow window left and right, wide window left and
     right): ``S`` the window sums, ``sw`` the window pixels' sigmas (0 beyond
@@ -838,7 +840,7 @@ def _ball_noise(box: _Box, rough: _RoughEdges, s: EdgeSettings) -> np.ndarray:
         sig_bg = float(median(sp_both))
     if p_in > 0 and sig_in > sig_bg:
         # each pixel's signal for its noise from its column neighbours,
-        # not its own value (compiled: see _kernels.shot_noise)
+        # not its own value (compiled: see _edge_kernels.shot_noise)
         return shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
     return sp
 

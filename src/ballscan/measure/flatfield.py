@@ -37,7 +37,8 @@ import numpy as np
 from scipy.ndimage import convolve1d
 from scipy.signal import savgol_coeffs
 
-from .._kernels import as_arg, median_deviations, sorted_medians
+from ..compiled import as_arg
+from ._flatfield_kernels import median_deviations, sorted_medians
 from .robust import median
 
 __all__ = ["ColumnGains", "column_gains", "flat_fielded"]
@@ -136,7 +137,7 @@ def _masked_median(values: np.ndarray, mask: np.ndarray, axis: int) -> np.ndarra
 
     The masked values sort first with inf in the other places, and the
     middle ranks of each line's (or column's) count are picked in one
-    compiled loop (:func:`ballscan._kernels.sorted_medians`).
+    compiled loop (:func:`ballscan.measure._flatfield_kernels.sorted_medians`).
     """
     mask = as_arg(mask, np.bool_)
     return sorted_medians(as_arg(np.sort(np.where(mask, values, np.inf), axis=axis)), mask, int(axis))
@@ -146,7 +147,7 @@ def _column_median_mad(values: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray
     """``_masked_median(values, mask, 0)`` and the median of ``|values - it|`` where ``mask`` (each column's), by one sort.
 
     The deviations' median comes from the sorted values themselves
-    (:func:`ballscan._kernels.median_deviations`); only where a masked value
+    (:func:`ballscan.measure._flatfield_kernels.median_deviations`); only where a masked value
     is not finite are the deviations sorted as they are.
     """
     # (column by column along the transposed box: the columns of a box

@@ -32,7 +32,8 @@ import math
 from dataclasses import dataclass, field, replace
 import numpy as np
 
-from .._kernels import as_arg, chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
+from ..compiled import as_arg
+from ._shading_kernels import chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from ..geometry.camera import LineScanCamera
 from .edges import EdgeMeasurements
 from ..errors import GeometryError
@@ -100,8 +101,8 @@ def surface_normals(
 
     See Also
     --------
-    ballscan._kernels.limb_values : the same rays, compiled, for the limb profile.
-    ballscan._kernels.interior_normals : the same normals, compiled, for :func:`fit_shading`.
+    ballscan.measure._shading_kernels.limb_values : the same rays, compiled, for the limb profile.
+    ballscan.measure._shading_kernels.interior_normals : the same normals, compiled, for :func:`fit_shading`.
     """
     n_u = camera.backproject(np.asarray(u_px, dtype=float))
     h = np.asarray(h_px, dtype=float) / camera.focal_px
@@ -438,7 +439,7 @@ class LimbProfile:
         return self._samples[key]
 
     def rows(self, lines: np.ndarray, sides: np.ndarray, n_nodes: int = 4) -> tuple:
-        """The model of edges ``(lines, sides)`` as the model arguments of :func:`ballscan._kernels.limb_levels`.
+        """The model of edges ``(lines, sides)`` as the model arguments of :func:`ballscan.measure._shading_kernels.limb_levels`.
 
         Each row's chord samples (:meth:`pixel_coverage`'s, ``n_nodes``
         nodes) flattened to (R, 3 n), its line time, mean edge (NaN where
@@ -446,7 +447,7 @@ class LimbProfile:
         see the attributes), its line, the background, the samples over the
         exposure and the pixel's height, the camera's focal length,
         principal point and distortion and the shading law (the arguments
-        of :func:`ballscan._kernels.limb_values` from ``pos`` on).
+        of :func:`ballscan.measure._shading_kernels.limb_values` from ``pos`` on).
         """
         lines = np.asarray(lines, dtype=int)
         sg = np.asarray(sides, dtype=float)
@@ -457,7 +458,7 @@ class LimbProfile:
         )
 
     def _model(self, n_time: int | None = None, n_height: int | None = None) -> tuple:
-        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan._kernels.limb_levels`).
+        """The background, the samples, the camera and the shading law as the last arguments of the compiled levels (:func:`ballscan.measure._shading_kernels.limb_levels`).
 
         ``n_time`` and ``n_height`` (default the profile's) set the samples
         over the exposure and the pixel's height.
@@ -479,7 +480,7 @@ class LimbProfile:
         return tk, hk
 
     def _law(self) -> tuple:
-        """The motion and the shading law as the last arguments of :func:`ballscan._kernels.limb_values`."""
+        """The motion and the shading law as the last arguments of :func:`ballscan.measure._shading_kernels.limb_values`."""
         m = self.motion
         return (
             np.array(m.position_m, dtype=float), np.array(m.velocity_mps, dtype=float), np.array(m.acceleration_mps2, dtype=float),
@@ -538,7 +539,7 @@ def _unique_lines(lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(lines, return_inverse=True)`` of image lines (1-D integers within an image's height), without its sort.
 
     The lines of a ball's rows span some hundred consecutive values: a table
-    of them (compiled, :func:`ballscan._kernels.unique_lines`) gives the same
+    of them (compiled, :func:`ballscan.measure._shading_kernels.unique_lines`) gives the same
     sorted values and inverse at a fraction of the cost.
     """
     if lines.size == 0:

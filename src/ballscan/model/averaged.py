@@ -6,7 +6,7 @@ height and the exposure, as in :func:`ballscan.model.silhouette.silhouette`
 with ``model="averaged"``; here it is broadcast over a leading axis of
 parameter sets ``theta = (t_c, y0, z0, vx, vy, vz)``
 (:data:`ballscan.geometry.motion.PARAM_NAMES`; s, m, m, m/s, m/s, m/s) and
-evaluated by one compiled loop (:func:`ballscan._kernels.averaged_samples`).
+evaluated by one compiled loop (:func:`ballscan.model._forward_kernels.averaged_samples`).
 
 Its derivatives with respect to ``theta`` (the refinement's Jacobian,
 Eq. (7)-(10)):
@@ -26,7 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._kernels import as_arg, averaged_samples, chord_edges, hybrid_rows
+from ..compiled import as_arg
+from ._forward_kernels import averaged_samples, chord_edges, hybrid_rows
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 from .silhouette import _gauss
@@ -139,7 +140,7 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     density.  ``full=False`` skips the edge spread and the validity test
     (``spread_px`` and ``valid`` are then None).  The fit calls it some ten
     times per ball: one compiled loop over the samples
-    (:func:`ballscan._kernels.averaged_samples`).
+    (:func:`ballscan.model._forward_kernels.averaged_samples`).
     """
     # contiguous and writeable: the kernel's one compiled signature
     th = as_arg(np.atleast_2d(th))
@@ -166,7 +167,7 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
 
 
 def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
-    """:func:`ballscan._kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
+    """:func:`ballscan.model._forward_kernels.averaged_samples`' arguments after the line times: radius, camera, acceleration, nodes."""
     g, gw = _gauss(n_nodes)
     return (
         float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
@@ -295,7 +296,7 @@ def _chord_core(camera, theta, radius_m, t, acceleration_mps2):
     derivatives, finite garbage where ``ok`` is False; ``x, w`` are the
     centre's offset from the viewing plane and its depth at each line, m,
     ``tau = t - t_c``, s.  One compiled loop over the lines
-    (:func:`ballscan._kernels.chord_edges`).
+    (:func:`ballscan.model._forward_kernels.chord_edges`).
     """
     return chord_edges(
         as_arg(theta), as_arg(t), float(radius_m),
@@ -468,9 +469,9 @@ def hybrid_jacobian(
         finite differences then evaluate only the perturbed sets.
     analytic : bool
         The averaged model's exact derivatives instead of finite differences
-        (:func:`ballscan._kernels.averaged_edges_jacobian`; without a known
+        (:func:`ballscan.model._forward_kernels.averaged_edges_jacobian`; without a known
         acceleration; one compiled call with the chord's,
-        :func:`ballscan._kernels.hybrid_rows`); ``memo`` is then only told
+        :func:`ballscan.solve._fit_kernels.hybrid_rows`); ``memo`` is then only told
         the lines.
 
     Returns
@@ -517,7 +518,7 @@ def _analytic_rows(camera, theta, t, R, n_nodes, reach_limit, fd_lines, needed):
     """:func:`hybrid_jacobian` with ``analytic``: ``(d_left, d_right, d_area, fd)`` in one compiled call.
 
     The chord's derivatives, the lines ``fd`` that need the averaged model's
-    exact ones, and those (:func:`ballscan._kernels.hybrid_rows`).
+    exact ones, and those (:func:`ballscan.solve._fit_kernels.hybrid_rows`).
     """
     g, gw = _gauss(n_nodes)
     no_lines = np.zeros(0, dtype=bool)

@@ -17,9 +17,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._kernels import as_arg, coverage_grid
-from .._kernels import pixel_residuals as _kernel_pixel_residuals
-from .._kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
+from ..compiled import as_arg
+from ._forward_kernels import coverage_grid
+from ._forward_kernels import pixel_residuals as _kernel_pixel_residuals
+from ._forward_kernels import pixel_residuals_jacobian as _kernel_pixel_residuals_jacobian
 from ..geometry.camera import LineScanCamera
 from .averaged import _model_core
 from .silhouette import _gauss
@@ -96,7 +97,7 @@ def pixel_coverage(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, cols: np
     Where a line's pixel centres lie on a grid of unit step (any order, gaps
     allowed: an edge's offsets, the fit's compacted windows, a bound's
     columns) the sum is a histogram of the samples' ends by pixel and its
-    cumulative sum (:func:`ballscan._kernels.coverage_grid`): O(samples +
+    cumulative sum (:func:`ballscan.model._forward_kernels.coverage_grid`): O(samples +
     pixels) per line.  Other centres take the direct sum over samples and
     pixels.
     """
@@ -162,7 +163,7 @@ def pixel_residuals_jacobian(camera: LineScanCamera, theta: np.ndarray, R: float
     """Exact derivatives (M, 6) of :func:`pixel_residuals` at one parameter set ``theta`` (no acceleration).
 
     One compiled pass of forward-mode derivatives
-    (:func:`ballscan._kernels.pixel_residuals_jacobian`) in place of six
+    (:func:`ballscan.model._forward_kernels.pixel_residuals_jacobian`) in place of six
     perturbed evaluations of the samples and the coverage; per parameter
     unit (s, m, m/s).
     """

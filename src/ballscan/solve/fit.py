@@ -29,7 +29,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from scipy.special import chdtri
 
-from .._kernels import as_arg, loose_rows, on_both_sides
+from ..compiled import as_arg
+from ._fit_kernels import loose_rows, on_both_sides
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from ..measure.robust import median as _median

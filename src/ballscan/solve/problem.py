@@ -36,7 +36,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._kernels import area_tables, as_arg, fit_jacobian, fit_residuals, select_lines
+from ..compiled import as_arg
+from ._fit_kernels import area_tables, fit_jacobian, fit_residuals, select_lines
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from ..measure.robust import median as _median
@@ -228,7 +229,7 @@ def _area_tables(edges: EdgeMeasurements, settings: FitSettings) -> tuple[np.nda
     if edges.area_level is None:
         z = np.zeros(n)
         return z, z, np.zeros(n, dtype=bool)
-    # one compiled pass over the lines (:func:`ballscan._kernels.area_tables`)
+    # one compiled pass over the lines (:func:`ballscan.solve._fit_kernels.area_tables`)
     return area_tables(
         as_arg(edges.area_px), as_arg(edges.area_sigma_px), as_arg(edges.area_level), as_arg(edges.area_level_sigma),
         settings.area_level_floor**2, settings.area_level_floor_px**2,
@@ -274,7 +275,7 @@ def select_lines_of(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettin
     ``max_spread_wide_px`` (the wide window's); area lines: no usable edge,
     and the line's area is not spoiled (``edges.end_line``), or no signal at
     all (lines around the ball).  Returns ``(use_l, use_r, use_a, wide_l,
-    wide_r)``; one compiled pass (:func:`ballscan._kernels.select_lines`).
+    wide_r)``; one compiled pass (:func:`ballscan.solve._fit_kernels.select_lines`).
     """
     wide = edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px
     e = edges

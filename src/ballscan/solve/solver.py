@@ -16,7 +16,7 @@ from typing import Protocol
 import numpy as np
 from scipy.optimize import least_squares
 
-from .._kernels import damped, equilibrated
+from ._fit_kernels import damped, equilibrated
 from .settings import FitSettings
 
 __all__ = ["LeastSquaresProblem", "SolveResult", "levenberg_marquardt", "scipy_least_squares"]

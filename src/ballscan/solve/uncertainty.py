@@ -22,7 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._kernels import as_arg, block_ratio
+from ..compiled import as_arg
+from ._fit_kernels import block_ratio
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 

@@ -9,7 +9,7 @@ Pipeline per chunk
 1. **Ring buffer.** Lines (and their timestamps) are copied into a ring of
    ``buffer_lines`` lines: memory is fixed however long the stream runs.
 2. **Per-line test**, one compiled pass per line in the ring
-   (:func:`ballscan._kernels.stream_line_test_u8`), over pieces of at most
+   (:func:`ballscan.stream._line_kernels.stream_line_test_u8`), over pieces of at most
    ``test_lines`` lines (ending at block boundaries). With the current background
    ``b[j]`` and noise ``s[j]`` (DN) each column has an integer band
    ``[lo, hi] = [floor(b - k s), ceil(b + k s)]``. A pixel is outside the band
@@ -69,7 +69,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import _kernels
+from . import _line_kernels
 from ..geometry.camera import LineScanCamera, crop_camera
 from ..measure.detection import ColumnModel, detect
 from ..measure.robust import median
@@ -427,7 +427,7 @@ class StreamEngine:
             preload_estimator()
         else:
             # the engine's own kernels (the estimator's load in the workers)
-            _kernels.warm_up_stream()
+            _line_kernels.warm_up()
 
     # ------------------------------------------------------------------ public
     @property
@@ -703,7 +703,7 @@ class StreamEngine:
         # noise: they are removed before the variance, their mean kept in the
         # level (slow drift).
         idx = (lo + rows) % self._cap
-        sums = _kernels.stream_block_sums_u8 if self.dtype.itemsize == 1 else _kernels.stream_block_sums_u16
+        sums = _line_kernels.stream_block_sums_u8 if self.dtype.itemsize == 1 else _line_kernels.stream_block_sums_u16
         total, total2 = sums(self._ring, self._off, idx)
         off = self._off[idx].astype(np.float64)
         n = rows.size
@@ -723,7 +723,7 @@ class StreamEngine:
     def _line_test(self, start: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Stream lines ``[start, start + n)`` (in the ring) holding ball pixels: indices (from ``start``), counts, first and last column.
 
-        One compiled pass per line (:func:`ballscan._kernels.stream_line_test_u8`):
+        One compiled pass per line (:func:`ballscan.stream._line_kernels.stream_line_test_u8`):
         the line's offset (stored in the ring's ``_off``), the band test
         ``(x - lo - offset) mod 2**bits > hi - lo`` and the run rule; the hit
         flags go to the ring's ``_hit``. Counts are the positions starting
@@ -731,7 +731,7 @@ class StreamEngine:
         such position plus ``min_run_px - 1``.
         """
         cfg = self.config
-        kernel = _kernels.stream_line_test_u8 if self.dtype.itemsize == 1 else _kernels.stream_line_test_u16
+        kernel = _line_kernels.stream_line_test_u8 if self.dtype.itemsize == 1 else _line_kernels.stream_line_test_u16
         return kernel(
             self._ring, start % self._cap, n, self._lo, self._span, self._ocols, self._bg_ocols16, self._max_off,
             int(cfg.min_run_px), bool(cfg.line_offset), self._off, self._hit,
@@ -925,14 +925,15 @@ def preload_estimator() -> None:
     """Import the estimator's modules and load its compiled kernels (an ``initializer`` for worker processes).
 
     The first estimate in a fresh process otherwise carries ~0.3 s of
-    imports and ~0.2 s of loading the kernels (:func:`ballscan._kernels.warm_up`).
+    imports and ~0.2 s of loading the kernels (:func:`ballscan.pipeline.warmup.warm_up`).
     """
-    from .. import _kernels  # noqa: F401
-    from ..measure import edges
-    from ..pipeline import estimate
+    from ..measure import edges  # noqa: F401
+    from ..pipeline import estimate  # noqa: F401
+    from ..pipeline.warmup import warm_up
     from ..solve import fit  # noqa: F401
 
-    _kernels.warm_up()
+    warm_up()
+    _line_kernels.warm_up()
 
 
 def process_stream(

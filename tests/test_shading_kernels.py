@@ -1,4 +1,4 @@
-"""The compiled limb and shading kernels against the numpy code they replace (ballscan.measure.edges, ballscan.measure.shading)."""
+"""The shading model's kernels (ballscan.measure._shading_kernels) against the numpy code of ballscan.measure.edges and ballscan.measure.shading."""
 
 from __future__ import annotations
 
@@ -17,9 +17,12 @@ from ballscan.pipeline.background import full_background
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
-from ballscan.measure.shading import ball_limb
+from ballscan.measure.shading import ball_limb, surface_normals
+from ballscan.measure._shading_kernels import limb_values
 
 MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (30.0, 0.0, 8.0))
+LIMB_CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0, None)
+SPIN_MOTION = BallMotion(0.0335, 0.002, (0.0, 0.01, 3.0), (26.0, 2.0, 15.0))
 
 
 # ------------------------------------------------------- numpy references
@@ -233,25 +236,9 @@ def test_limb_levels_through_a_distorted_lens():
         assert np.nanmax(np.abs(a - b) / np.maximum(np.abs(b), 1.0)) < 1e-9
 
 
-def test_normalised_coordinate_equals_the_camera_and_reports_divergence():
-    from ballscan._kernels import _normalised
-
-    cam = _camera(k1=-0.4)
-    u = np.linspace(-800.0, 1000.0, 41)
-    ref = cam.backproject(u)
-    got = np.array([_normalised(x, cam.principal_px, cam.focal_px, cam.k1, cam.k2) for x in u], dtype=object)
-    assert all(ok for _, ok in got)
-    assert np.abs(np.array([n for n, _ in got]) - ref).max() * cam.focal_px < 1e-9
-    assert _normalised(5.0, 0.0, 1.0, 0.0, 0.0) == (5.0, True)
-    # beyond the monotonic range of the distortion (n_d above its maximum 0.609)
-    with pytest.raises(GeometryError):
-        cam.undistort(np.array([0.7]))
-    assert not _normalised(0.7 * cam.focal_px + cam.principal_px, cam.principal_px, cam.focal_px, cam.k1, cam.k2)[1]
-
-
 # ----------------------------------------------------------- shading fit
 def _reference_shading_fit(y, n, huber_k, n_iterations, diverged, flat_tol):
-    """The numpy form of :func:`ballscan._kernels.shading_fit` (the rounds of :func:`ballscan.measure.shading.fit_shading`)."""
+    """The numpy form of :func:`ballscan.measure._shading_kernels.shading_fit` (the rounds of :func:`ballscan.measure.shading.fit_shading`)."""
     X = np.column_stack([np.ones(y.size), n])
     X_dark = np.zeros((1, 4))
     X_dark[0, 0] = 1.0
@@ -331,18 +318,9 @@ def _interior(texture: str, light: bool = True, seed: int = 2):
     return got["y"], got["n"]
 
 
-def test_pairwise_sum_equals_numpy():
-    from ballscan._kernels import _pairwise_sum
-
-    rng = np.random.default_rng(0)
-    for n in list(range(0, 40)) + [127, 128, 129, 255, 256, 257, 799, 800, 1000, 4099]:
-        a = rng.standard_normal(n) * 10.0 ** rng.uniform(-8, 8, n)
-        assert _pairwise_sum(a) == np.sum(a), n
-
-
 @pytest.mark.parametrize("texture, light", [("none", True), ("tennis", True), ("none", False)])
 def test_shading_fit_equals_the_numpy_rounds(texture, light):
-    from ballscan._kernels import shading_fit
+    from ballscan.measure._shading_kernels import shading_fit
 
     y, n = _interior(texture, light)
     assert y.size >= 500
@@ -357,7 +335,7 @@ def test_shading_fit_equals_the_numpy_rounds(texture, light):
 
 
 def test_shading_fit_on_few_and_odd_pixels():
-    from ballscan._kernels import shading_fit
+    from ballscan.measure._shading_kernels import shading_fit
 
     rng = np.random.default_rng(5)
     for size in (50, 51, 8, 7):
@@ -481,7 +459,7 @@ def test_line_level_scatter_equals_the_numpy_form(shaded_ball):
 # ------------------------------------------------------- interior normals
 @pytest.mark.parametrize("k1", [0.0, -0.4])
 def test_interior_normals_equal_the_surface_normals_and_the_usable_box(k1):
-    from ballscan._kernels import interior_normals
+    from ballscan.measure._shading_kernels import interior_normals
     from ballscan.measure.shading import surface_normals
 
     cam = _camera(k1)
@@ -505,3 +483,64 @@ def test_interior_normals_equal_the_surface_normals_and_the_usable_box(k1):
         else:
             # each ray's Newton iteration stops on its own
             assert np.abs(n[hit] - ref_n[hit]).max() < 1e-9
+
+
+def test_limb_values_equal_the_surface_normals_and_the_shading_law():
+    rng = np.random.default_rng(4)
+    n_rows, width = 6, 9
+    t_rows = 0.002 + np.linspace(-8e-4, 8e-4, n_rows)
+    u = 1020.0 + rng.uniform(-40.0, 40.0, (n_rows, width))
+    bg = 100.0 + rng.standard_normal((n_rows, width))
+    sharp = np.array([True, False] * (n_rows // 2))
+    tk = (np.arange(4) + 0.5) / 4 * LIMB_CAM.exposure - LIMB_CAM.exposure / 2
+    hk = (np.arange(3) + 0.5) / 3 - 0.5
+    light = np.array([-60.0, 80.0, -200.0])
+    ambient, scale = 40.0, 700.0
+    val, cov = limb_values(
+        t_rows, LIMB_CAM.backproject(u), bg, sharp, tk, hk, LIMB_CAM.focal_px, np.array(SPIN_MOTION.position_m), np.array(SPIN_MOTION.velocity_mps),
+        np.zeros(3), SPIN_MOTION.t_c_s, SPIN_MOTION.radius_m, light, ambient, scale,
+    )
+    for r in range(n_rows):
+        ts, hs = (np.zeros(1), np.zeros(1)) if sharp[r] else (tk, hk)
+        hit, n = surface_normals(LIMB_CAM, SPIN_MOTION, t_rows[r] + ts[:, None, None], u[r][None, None, :], hs[None, :, None])
+        v = np.where(hit, (np.maximum(n @ light, 0.0) + ambient - bg[r]) / scale, 0.0)
+        assert np.abs(val[r] - v.mean(axis=(0, 1))).max() < 1e-12
+        assert np.array_equal(cov[r], hit.mean(axis=(0, 1)))
+    assert 0.0 < cov.mean() < 1.0  # rays on and off the ball
+
+
+def test_chord_rows_equals_the_numpy_form():
+    from ballscan.measure._shading_kernels import chord_rows
+
+    rng = np.random.default_rng(4)
+    u_lo, u_hi, wgt = (rng.normal(size=(6, 3, 4)) for _ in range(3))
+    left, right = rng.normal(size=6), rng.normal(size=6)
+    inv = rng.integers(0, 6, 15)
+    sg = rng.choice([1.0, -1.0, np.nan], 15)
+    lo, hi, w = chord_rows(*(a.reshape(6, 12) for a in (u_lo, u_hi, wgt)), left, right, inv, sg)
+    s3, le, ri = sg[:, None, None], left[inv][:, None, None], right[inv][:, None, None]
+    assert np.array_equal(lo.reshape(15, 3, 4), np.where(s3 > 0, u_lo[inv] - le, ri - u_hi[inv]))
+    assert np.array_equal(hi.reshape(15, 3, 4), np.where(s3 > 0, u_hi[inv] - le, ri - u_lo[inv]))
+    assert np.array_equal(w.reshape(15, 3, 4), wgt[inv])
+
+
+def test_level_spans_equals_the_numpy_form():
+    from ballscan.measure._shading_kernels import level_spans
+
+    rng = np.random.default_rng(5)
+    left, right, spread = rng.normal(100.0, 5.0, 30), rng.normal(140.0, 5.0, 30), rng.uniform(0.0, 2.0, 30)
+    left[3] = right[4] = spread[5] = np.nan
+    for m in (1, 2, 3):
+        pad = np.nan_to_num(spread) / 2.0 + 1.5
+        span = np.nan_to_num(right - left) + 2.0 * pad
+        got = level_spans(left, right, spread, m)
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * m
+    # an infinite spread as np.nan_to_num takes it; an infinite span: no maximum
+    spread[6] = np.inf
+    pad = np.nan_to_num(spread) / 2.0 + 1.5
+    span = np.nan_to_num(right - left) + 2.0 * pad
+    got = level_spans(left, right, spread, 2)
+    with np.errstate(over="ignore"):
+        assert np.array_equal(got[0], pad) and np.array_equal(got[1], span) and got[2] == np.max(span) * 2
+    right[6] = np.inf
+    assert np.isnan(level_spans(left, right, spread, 2)[2])
