@@ -14,7 +14,8 @@ Usage::
     python benchmarks/golden.py --check tests/data/golden.json --exact
 
 ``tests/test_golden.py`` runs the check with rtol 1e-12 (numpy's
-CPU-specific paths differ between machines); ``benchmarks/golden_compare.sh OLD NEW``
+CPU-specific paths differ between machines; the paper method's Powell
+search at :data:`PAPER_RTOL`, see :func:`check`); ``benchmarks/golden_compare.sh OLD NEW``
 records two commits on one machine and compares them bit for bit.
 """
 
@@ -117,6 +118,36 @@ def compare(a, b, rtol: float, path: str = "") -> list[str]:
     return [] if a == b else [f"{path}: {a!r} != {b!r}"]
 
 
+#: rtol of the paper method's outputs across library versions: scipy's Powell
+#: (Brent line searches) stops within its own tolerance, and a scipy release
+#: that changes its path moves the result by up to about 2e-5 relative
+#: (far below the method's own error) and its evaluation count by a few.
+PAPER_RTOL = 1e-4
+
+
+def check(recorded: dict, now: dict, rtol: float = 1e-12) -> list[str]:
+    """Differences of ``now`` from ``recorded``: ``rtol`` everywhere except the paper method's outputs (:data:`PAPER_RTOL`, evaluation counts not compared)."""
+
+    def paper_part(v):
+        return {k: x for k, x in v.items() if k.endswith("/paper")}
+
+    def without_evaluations(v):
+        if isinstance(v, dict):
+            return {k: without_evaluations(x) for k, x in v.items() if k != "evaluations"}
+        if isinstance(v, list):
+            return [without_evaluations(x) for x in v]
+        return v
+
+    rest = {k: v for k, v in recorded.items() if k != "estimate"}, {k: v for k, v in now.items() if k != "estimate"}
+    old_est, new_est = recorded.get("estimate", {}), now.get("estimate", {})
+    fit_old = {k: v for k, v in old_est.items() if not k.endswith("/paper")}
+    fit_new = {k: v for k, v in new_est.items() if not k.endswith("/paper")}
+    diffs = compare(rest[0], rest[1], rtol)
+    diffs += compare(fit_old, fit_new, rtol, "/estimate")
+    diffs += compare(without_evaluations(paper_part(old_est)), without_evaluations(paper_part(new_est)), max(rtol, PAPER_RTOL) if rtol > 0 else 0.0, "/estimate")
+    return diffs
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     g = ap.add_mutually_exclusive_group(required=True)
@@ -132,10 +163,11 @@ def main(argv: list[str] | None = None) -> int:
         args.write.write_text(json.dumps(now, indent=1, sort_keys=True) + "\n")
         print(f"{args.write}: {len(now['estimate'])} scene runs, {len(now['stream'])} stream estimates")
         return 0
-    diffs = compare(json.loads(args.check.read_text()), now, 0.0 if args.exact else 1e-12)
+    recorded = json.loads(args.check.read_text())
+    diffs = compare(recorded, now, 0.0) if args.exact else check(recorded, now)
     for d in diffs[:50]:
         print(d)
-    print(f"{len(diffs)} differences ({'bit for bit' if args.exact else 'rtol 1e-12'})")
+    print(f"{len(diffs)} differences ({'bit for bit' if args.exact else f'rtol 1e-12, the paper method {PAPER_RTOL:g}'})")
     return 1 if diffs else 0
 
 
