@@ -12,9 +12,9 @@ input finishes, so a crash loses at most the inputs in progress; a rerun
 skips every input already in the CSV or listed in the sidecar
 ``OUT.done`` (which also records inputs without any ball).
 
-Work is spread over local processes with joblib, or over a Dask
-distributed cluster (``scheduler="tcp://host:port"``; ``pip install
-"dask[distributed]"``, imported only then).
+Work is spread over local processes or a Dask distributed cluster
+(``scheduler="tcp://host:port"``) by :class:`ballscan.parallel.TaskExecutor`;
+each worker loads the estimator once before its first input.
 """
 
 from __future__ import annotations
@@ -23,11 +23,13 @@ import csv
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import BallscanError
+from ..parallel import TaskExecutor
 
 __all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "measure_input", "run_batch"]
 
@@ -150,8 +152,6 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         What a raw stream's balls are measured on (``StreamConfig.background``:
         the engine's running model of the crop's columns, or the crop's own).
     """
-    # Parallel workers: one thread each, the parallelism is across inputs.
-    os.environ.setdefault("OMP_NUM_THREADS", "1")
     src = str(path)
     try:
         p = Path(src)
@@ -232,13 +232,13 @@ def run_batch(
     camera : path or None
         Camera TOML for all inputs.
     jobs : int
-        Local processes (joblib; -1 = all cores).
+        Local processes (-1 = all cores; 1 = this process).
     scheduler : str or None
         Dask distributed scheduler address; overrides ``jobs``.
     method, dtype
         As for :func:`measure_input`.
     progress : bool
-        Show a rich progress bar on stderr.
+        Show a rich progress bar on stderr (when it is a terminal).
     background : {"engine", "crop"}
         As for :func:`measure_input` (raw streams only).
 
@@ -250,7 +250,7 @@ def run_batch(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     if method not in ("fit", "paper"):
         raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
-    from .engine import BACKGROUNDS
+    from .engine import BACKGROUNDS, preload_estimator
 
     if background not in BACKGROUNDS:
         raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
@@ -268,9 +268,11 @@ def run_batch(
         if new_file:
             writer.writeheader()
             fh.flush()
-        bar = _progress(progress, len(todo))
-        try:
-            for res in _results(todo, cam, radius_m, method, dtype, jobs, scheduler, background):
+        task = partial(measure_input, camera_path=cam, radius_m=radius_m, method=method, dtype=dtype, background=background)
+        with TaskExecutor(jobs, scheduler, warm_up=preload_estimator, progress=progress) as executor:
+            for outcome in executor.map(task, todo, label="batch"):
+                # measure_input reports the input's own faults; anything else it raised is the item's error
+                res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
                 if res.error is not None:
                     errors.append((res.source, res.error))
                 if res.error is None or res.rows:
@@ -282,65 +284,4 @@ def run_batch(
                     side.flush()
                     n_done += 1
                     n_balls += len(res.rows)
-                bar.advance()
-        finally:
-            bar.stop()
     return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors))
-
-
-def _results(todo: list[str], cam: str | None, radius_m: float, method: str, dtype: str, jobs: int, scheduler: str | None, background: str):
-    """Results as inputs finish (any order)."""
-    if not todo:
-        return
-    if scheduler is not None:
-        try:
-            from distributed import Client, as_completed
-        except ImportError:
-            raise BallscanError('--scheduler needs Dask distributed: pip install "dask[distributed]"') from None
-        try:
-            client = Client(scheduler, timeout="10s", set_as_default=False)
-        except (OSError, TimeoutError) as exc:
-            raise BallscanError(f"--scheduler {scheduler}: cannot connect ({' '.join(str(exc).split())[:160]})") from None
-        try:
-            futures = [client.submit(measure_input, p, cam, radius_m, method, dtype, background, pure=False) for p in todo]
-            for fut in as_completed(futures, loop=client.loop):
-                yield fut.result()
-        finally:
-            client.close()
-        return
-    if jobs == 1 or len(todo) == 1:
-        for p in todo:
-            yield measure_input(p, cam, radius_m, method, dtype, background)
-        return
-    from joblib import Parallel, delayed
-
-    par = Parallel(n_jobs=jobs, return_as="generator_unordered")
-    yield from par(delayed(measure_input)(p, cam, radius_m, method, dtype, background) for p in todo)
-
-
-class _NoBar:
-    def advance(self) -> None:
-        pass
-
-    def stop(self) -> None:
-        pass
-
-
-class _RichBar:
-    def __init__(self, total: int) -> None:
-        from rich.console import Console
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
-
-        self._p = Progress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(), console=Console(stderr=True), transient=False)
-        self._task = self._p.add_task("batch", total=total)
-        self._p.start()
-
-    def advance(self) -> None:
-        self._p.advance(self._task)
-
-    def stop(self) -> None:
-        self._p.stop()
-
-
-def _progress(enabled: bool, total: int):
-    return _RichBar(total) if enabled and total else _NoBar()

@@ -1,0 +1,299 @@
+"""Run one task function over many items: in this process, on local processes or on a Dask cluster.
+
+:class:`TaskExecutor` is the one executor of the package (batches of
+recordings, Monte-Carlo experiments). Its :meth:`~TaskExecutor.map` yields a
+:class:`TaskResult` per item as the items finish (in completion order), with
+one error policy everywhere:
+
+- an ``Exception`` raised by the task becomes a failed result carrying the
+  item and a one-line message; the other items still run and the caller
+  decides what a failure means;
+- ``KeyboardInterrupt`` (or any exception in the caller's loop) stops
+  everything: the items not started are dropped and the workers stop as
+  soon as their running task ends (a Ctrl-C in a terminal reaches them too).
+
+Where the tasks run:
+
+``scheduler="tcp://host:port"``
+    a Dask distributed cluster (``pip install "dask[distributed]"``, imported
+    only then), connected to within :data:`DASK_CONNECT_TIMEOUT_S`;
+``jobs == 1`` (or a first map of a single item)
+    this process, one item after the other;
+``jobs > 1`` (or ``-1``: every core available)
+    up to that many local processes (loky, bundled with joblib; no more than
+    the first map's items), each limited to one thread of BLAS/OpenMP/numba:
+    the parallelism is across items.
+
+The worker processes start with the first :meth:`~TaskExecutor.map` of a
+``with TaskExecutor(...)`` block and serve every map of it; leaving the block
+(normally, on an error or on an interrupt) shuts them down, so no worker
+outlives the block. The ``warm_up`` callable runs once in each worker before
+its first task (e.g. loading compiled kernels), in this process for
+``jobs == 1`` and on every worker connected at the first map for Dask; it
+only saves time, a task must not depend on it for its result.
+
+Only the errors module and third-party libraries are imported here (the
+base layer of the package).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from concurrent.futures import FIRST_COMPLETED, wait
+from dataclasses import dataclass
+from typing import Any, Generic, TypeVar
+
+from .errors import BallscanError
+
+__all__ = ["DASK_CONNECT_TIMEOUT_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores"]
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+#: Seconds to wait for a Dask scheduler to answer before giving up.
+DASK_CONNECT_TIMEOUT_S = 20.0
+
+#: Thread-count variables of the numerical libraries, set to 1 in local workers
+#: (several processes on one machine: one thread each, no oversubscription).
+_ONE_THREAD_ENV = {
+    name: "1"
+    for name in (
+        "OMP_NUM_THREADS",
+        "OPENBLAS_NUM_THREADS",
+        "MKL_NUM_THREADS",
+        "BLIS_NUM_THREADS",
+        "VECLIB_MAXIMUM_THREADS",
+        "NUMEXPR_NUM_THREADS",
+        "NUMBA_NUM_THREADS",
+    )
+}
+
+
+@dataclass(frozen=True)
+class TaskResult(Generic[T, R]):
+    """The outcome of one item.
+
+    Attributes
+    ----------
+    item
+        The item the task was called with.
+    value
+        What the task returned; None when it failed.
+    error : str or None
+        ``"ExceptionType: message"`` on one line when the task raised, else None.
+    """
+
+    item: T
+    value: R | None = None
+    error: str | None = None
+
+    @property
+    def ok(self) -> bool:
+        """True when the task returned."""
+        return self.error is None
+
+
+def available_cores() -> int:
+    """CPU cores this process may run on (at least 1)."""
+    if hasattr(os, "sched_getaffinity"):
+        return max(1, len(os.sched_getaffinity(0)))
+    return max(1, os.cpu_count() or 1)
+
+
+def _one_line(exc: BaseException) -> str:
+    text = " ".join(str(exc).split())
+    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
+
+
+def _call(func: Callable[[Any], Any], item: Any) -> tuple[Any, str | None]:
+    """Run one task where it is scheduled; an ``Exception`` becomes its one-line message."""
+    try:
+        return func(item), None
+    except Exception as exc:  # the error policy: a failed item is a result, not the end of the run
+        return None, _one_line(exc)
+
+
+class _Bar:
+    """A rich progress bar on stderr, shown only when asked and stderr is a terminal."""
+
+    def __init__(self, enabled: bool, label: str, total: int) -> None:
+        self._p = None
+        if not (enabled and total):
+            return
+        from rich.console import Console
+
+        console = Console(stderr=True)
+        if not console.is_terminal:
+            return
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+
+        self._p = Progress(
+            TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
+            console=console,
+        )  # fmt: skip
+        self._task = self._p.add_task(label, total=total)
+        self._p.start()
+
+    def advance(self) -> None:
+        if self._p is not None:
+            self._p.advance(self._task)
+
+    def stop(self) -> None:
+        if self._p is not None:
+            self._p.stop()
+            self._p = None
+
+
+class TaskExecutor:
+    """Where tasks run (see the module docstring); use as a context manager.
+
+    Parameters
+    ----------
+    jobs : int
+        Local processes; 1 runs the tasks in this process, -1 uses every
+        available core. Ignored with ``scheduler``.
+    scheduler : str or None
+        Dask distributed scheduler address (``tcp://host:8786``).
+    warm_up : callable or None
+        Called without arguments once in each worker before its first task.
+    progress : bool
+        Show a progress bar per map on stderr (never when stderr is not a terminal).
+
+    Raises
+    ------
+    ValueError
+        If ``jobs`` is not a positive integer or -1.
+    """
+
+    def __init__(self, jobs: int = 1, scheduler: str | None = None, *, warm_up: Callable[[], Any] | None = None, progress: bool = False) -> None:
+        if isinstance(jobs, bool) or not isinstance(jobs, int) or not (jobs >= 1 or jobs == -1):
+            raise ValueError(f"jobs: must be a positive integer or -1 (every core), got {jobs!r}")
+        self.jobs = available_cores() if jobs == -1 else jobs
+        self.scheduler = scheduler
+        self.warm_up = warm_up
+        self.progress = progress
+        self._pool = None  # loky ProcessPoolExecutor
+        self._client = None  # distributed.Client
+        self._warmed = False
+
+    # ------------------------------------------------------------------ lifetime
+    def __enter__(self) -> "TaskExecutor":
+        return self
+
+    def __exit__(self, exc_type, exc, tb) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Stop the workers (after the tasks they are running) and disconnect from Dask."""
+        pool, self._pool = self._pool, None
+        if pool is not None:
+            pool.shutdown(wait=True)
+        client, self._client = self._client, None
+        if client is not None:
+            client.close()
+        self._warmed = False
+
+    # ------------------------------------------------------------------ work
+    def map(self, func: Callable[[T], R], items: Iterable[T], label: str = "tasks") -> Iterator[TaskResult[T, R]]:
+        """Yield a :class:`TaskResult` for each item as it finishes (any order).
+
+        ``func`` and the items must be picklable for local processes and Dask
+        (module-level functions, plain data).
+        """
+        todo = list(items)
+        if not todo:
+            return
+        if self.scheduler is not None:
+            results = self._map_dask(func, todo)
+        elif self._pool is None and min(self.jobs, len(todo)) == 1:
+            # one worker would do: no process to start
+            results = self._map_here(func, todo)
+        else:
+            results = self._map_local(func, todo)
+        bar = _Bar(self.progress, label, len(todo))
+        try:
+            for res in results:
+                bar.advance()
+                yield res
+        except BaseException:
+            # an interrupt or an error in the caller's loop: drop the pending
+            # items now and stop the workers
+            results.close()
+            self.close()
+            raise
+        finally:
+            bar.stop()
+
+    def _map_here(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+        if self.warm_up is not None and not self._warmed:
+            self.warm_up()
+            self._warmed = True
+        for item in todo:
+            value, error = _call(func, item)
+            yield TaskResult(item, value, error)
+
+    def _map_local(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+        if self._pool is None:
+            from joblib.externals.loky.process_executor import ProcessPoolExecutor
+
+            self._pool = ProcessPoolExecutor(min(self.jobs, len(todo)), initializer=self.warm_up, env=dict(_ONE_THREAD_ENV))
+        pending = {self._pool.submit(_call, func, item): item for item in todo}
+        try:
+            while pending:
+                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+                for fut in done:
+                    item = pending.pop(fut)
+                    value, error = fut.result()
+                    yield TaskResult(item, value, error)
+        finally:
+            # items not started yet are dropped; the ones running finish before
+            # close() returns (a Ctrl-C in a terminal interrupts them too)
+            for fut in pending:
+                fut.cancel()
+
+    def _map_dask(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+        client = self._connect()
+        from distributed import as_completed
+
+        # pure=False: equal items are still separate tasks, and hashing them is wasted work
+        futures = client.map(_call, [func] * len(todo), todo, pure=False)
+        item_of = {fut.key: item for fut, item in zip(futures, todo)}
+        try:
+            with client.as_current():
+                for fut in as_completed(futures):
+                    value, error = fut.result()
+                    yield TaskResult(item_of[fut.key], value, error)
+        finally:
+            client.cancel([f for f in futures if not f.done()])
+
+    def _connect(self):
+        if self._client is not None:
+            return self._client
+        try:
+            from distributed import Client
+        except ImportError:
+            raise BallscanError('--scheduler needs Dask distributed: pip install "dask[distributed]" (or pip install \'ballscan[dask]\')') from None
+        try:
+            client = Client(self.scheduler, timeout=f"{DASK_CONNECT_TIMEOUT_S:g}s", set_as_default=False)
+        except (OSError, TimeoutError) as exc:
+            raise BallscanError(f"--scheduler {self.scheduler}: cannot connect ({' '.join(str(exc).split())[:160]})") from None
+        self._client = client
+        if self.warm_up is not None:
+            client.run(self.warm_up)
+        return client
+
+
+def run_tasks(
+    func: Callable[[T], R],
+    items: Iterable[T],
+    *,
+    jobs: int = 1,
+    scheduler: str | None = None,
+    warm_up: Callable[[], Any] | None = None,
+    progress: bool = False,
+    label: str = "tasks",
+) -> Iterator[TaskResult[T, R]]:
+    """One :meth:`TaskExecutor.map` in its own executor (workers stopped when the iteration ends)."""
+    with TaskExecutor(jobs, scheduler, warm_up=warm_up, progress=progress) as ex:
+        yield from ex.map(func, items, label)
