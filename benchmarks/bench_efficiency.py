@@ -109,7 +109,7 @@ def run_one(args: tuple[str, float, int, tuple[str, ...]]) -> dict:
         t0 = time.perf_counter()
         img = LineImage(np.asarray(data, dtype=float), float(noise.max_dn), noise.bits, name)
         rep = estimate_image(img, cam, R, recipe=replace(recipe, pixels=pixels))
-        b, _ = ex._pick(rep, truth.t_c_s)
+        b, _ = ex.pick_estimate(rep, truth.t_c_s)
         err, sig, info = _vector(b, truth)
         out[name] = {"err": err, "sig": sig, "info": info, "time": time.perf_counter() - t0}
 

@@ -22,6 +22,7 @@ import time
 
 from ballscan.geometry.camera import LineScanCamera
 from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.recipe import Recipe
 from ballscan.measure.images import LineImage
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -52,7 +53,7 @@ def main() -> None:
                 r = render(cam, (m, app), n, background_level=bg, noise=SensorNoise(), seed=seed)
                 img = LineImage(r.image.astype(float), 255.0, 8, name)
                 t0 = time.perf_counter()
-                balls = estimate_image(img, cam, m.radius_m, method="paper").balls
+                balls = estimate_image(img, cam, m.radius_m, recipe=Recipe(method="paper")).balls
                 dt = time.perf_counter() - t0
                 if len(balls) != 1:
                     print(f"  {name} {app_name} seed {seed}: {len(balls)} balls found")

@@ -90,7 +90,7 @@ def run_one(args):
         level = noise.black_dn + noise.white_dn * spec.scene.background_level * (rd.column_gain if variant == "default" else 1.0)
         S.full_background = lambda det: np.broadcast_to(level, det.shape).astype(float)
     rep = estimate_image(LineImage(data, float(noise.max_dn), noise.bits, "t"), cam, spec.scene.radius_m)
-    b, _ = ex._pick(rep, truth.t_c_s)
+    b, _ = ex.pick_estimate(rep, truth.t_c_s)
     # the last solve and the selection it solved
     i_lm = max(i for i, e in enumerate(log) if e[0] == "lm")
     i_sel = max(i for i, e in enumerate(log[:i_lm]) if e[0] == "sel")
