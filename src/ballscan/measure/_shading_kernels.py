@@ -21,7 +21,7 @@ import numpy as np
 
 from ..compiled import jit, pairwise_sum
 from ..geometry.lens import normalised
-from ..model._forward_kernels import grid_coverage, ramp_histogram
+from ..model.coverage import grid_coverage, ramp_histogram
 
 
 @jit(inline="always")

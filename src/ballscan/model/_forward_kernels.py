@@ -1,16 +1,15 @@
 """Compiled loops of the averaged silhouette: its chord samples, edges, pixel residuals and their Jacobians.
 
 The fit, the shading pass and the bounds evaluate the averaged silhouette
-(:func:`ballscan.solve.fit.averaged_model`) tens of times per ball on a few
+(:func:`ballscan.model.averaged.averaged_model`) tens of times per ball on a few
 thousand chord samples.  As numpy expressions that is some hundred array
 operations per call, whose fixed cost (a few microseconds each) dominates
 on a ball's hundred lines; one loop over the samples does the same
 arithmetic in one call.  The mathematics is that of
 :func:`ballscan.model.silhouette.silhouette` with ``model="averaged"`` (see
-its Notes; :func:`ballscan.solve.fit._model_core` documents the layout),
+its Notes; :func:`ballscan.model.averaged._model_core` documents the layout),
 which the tests compare it against.  The pixel model's coverage of a row's
-pixels by its chords (:func:`ramp_histogram`, :func:`grid_coverage`) is
-shared with the limb profile (:mod:`ballscan.measure._shading_kernels`).
+pixels by its chords is :mod:`ballscan.model.coverage`'s.
 """
 
 from __future__ import annotations
@@ -21,6 +20,7 @@ import numpy as np
 
 from ..compiled import jit
 from ..geometry.lens import distortion_slope, project
+from .coverage import grid_coverage, ramp_histogram
 
 
 @jit(inline="always")
@@ -223,55 +223,6 @@ def averaged_samples(
     return left, right, presence, area, spread, valid, s_lo, s_hi, s_w
 
 
-@jit(inline="always")
-def ramp_histogram(lo: np.ndarray, hi: np.ndarray, w: np.ndarray, a0: float, span: int, hw: np.ndarray, hwf: np.ndarray) -> bool:
-    """One line's chord samples as a histogram over a unit grid of ``span`` pixels from ``a0`` (pixels).
-
-    The overlap of ``[lo, hi]`` with pixel ``k`` (``[a0 + k, a0 + k + 1]``)
-    is ``ramp(hi - a) - ramp(lo - a)``, ``ramp = clip(., 0, 1)``; the sum
-    of the ramps over the samples is, for all the grid's pixels at once, a
-    histogram of the samples' ends by pixel (``hw``: weights, ``hwf``:
-    weights times the fractional position) and its cumulative sum.  On
-    return pixel ``k``'s coverage is ``hw[k + 2] + hwf[k + 1]`` (``hw``
-    holds the sums over the bins from each bin up).  An infinite end lies
-    beyond the grid; ``hi < lo`` covers nothing.  Returns False (the line's
-    coverage undefined) where a sample is NaN.
-    """
-    hw[:] = 0.0
-    hwf[:] = 0.0
-    for j in range(lo.shape[0]):
-        lj = lo[j]
-        hj = hi[j]
-        wj = w[j]
-        if lj != lj or hj != hj or wj != wj:
-            return False
-        if hj < lj:
-            hj = lj
-        for side in range(2):
-            x = hj if side == 0 else lj
-            sw = wj if side == 0 else -wj
-            t = x - a0
-            if t >= span:
-                # beyond the grid: every pixel's ramp at 1
-                hw[span + 1] += sw
-            elif t >= -1.0:
-                b = math.floor(t)
-                bi = int(b) + 1
-                hw[bi] += sw
-                hwf[bi] += sw * (t - b)
-            # else before the grid: no pixel's ramp
-    for b in range(span, -1, -1):
-        hw[b] += hw[b + 1]
-    return True
-
-
-@jit(inline="always")
-def grid_coverage(hw: np.ndarray, hwf: np.ndarray, k: int) -> float:
-    """Pixel ``k``'s coverage from :func:`ramp_histogram` (exactly 0 where the two ramps of every sample cancel)."""
-    cov = hw[k + 2] + hwf[k + 1]
-    return 0.0 if abs(cov) < 1e-14 else cov
-
-
 @jit()
 def _row_grids(cols: np.ndarray, mask: np.ndarray):
     """Each row's first used column (its unit grid's origin, pixels) and the widest row's span (pixels) of ``cols, mask`` (Np, K)."""
@@ -305,7 +256,7 @@ def pixel_residuals(
     n_groups: int,
     n_out: int,
 ) -> np.ndarray:
-    """Whitened pixel residuals ``(B_g s cov - p) w`` of ``P`` parameter sets (:func:`ballscan.solve.fit._pixel_residuals`).
+    """Whitened pixel residuals ``(B_g s cov - p) w`` of ``P`` parameter sets (:func:`ballscan.model.pixels.pixel_residuals`).
 
     ``s_lo, s_hi, s_w`` (P, Np, S) are the chord samples of the fitted
     lines; ``cols, mask, shade, w, p, group`` (Np, K) the pixels' centres,
@@ -823,7 +774,7 @@ def pixel_residuals_jacobian(
 
 @jit()
 def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: float, principal_px: float, k1: float, k2: float, acc: np.ndarray):
-    """The chord model's edges and their analytic derivatives (:func:`ballscan.solve.fit.chord_jacobian`).
+    """The chord model's edges and their analytic derivatives (:func:`ballscan.model.averaged.chord_jacobian`).
 
     Returns ``(u (2, N), J (2, N, 6), ok (N,), x (N,), w (N,), tau (N,))``:
     left (row 0) and right (row 1) edges in pixels and their derivatives
@@ -892,7 +843,7 @@ def chord_edges(theta: np.ndarray, t: np.ndarray, radius_m: float, focal_px: flo
 
 @jit()
 def coverage_grid(u_lo: np.ndarray, u_hi: np.ndarray, wgt: np.ndarray, idx: np.ndarray, base: np.ndarray, span: int) -> np.ndarray:
-    """Averaged pixel coverage on unit grids (:func:`ballscan.solve.fit.pixel_coverage`).
+    """Averaged pixel coverage on unit grids (:func:`ballscan.model.pixels.pixel_coverage`).
 
     ``u_lo, u_hi, wgt`` (P, N, S) chord samples; line ``n``'s pixels are
     ``base[n] + idx[n]`` (pixel centres, ``idx`` (N, C) integers from 0 to
