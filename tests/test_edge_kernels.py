@@ -143,7 +143,7 @@ def test_edge_windows_equal_their_numpy_form():
 
 # the first pass's compiled loops against the numpy forms they replace
 def _expected_signal_numpy(p):
-    """Each pixel's signal for its noise model from its column neighbours (the former ballscan.measure.edges._expected_signal)."""
+    """Each pixel's signal for its noise model from its column neighbours."""
     if p.shape[0] < 2:
         return p
     q = np.empty_like(p)

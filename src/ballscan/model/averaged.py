@@ -471,7 +471,7 @@ def hybrid_jacobian(
         The averaged model's exact derivatives instead of finite differences
         (:func:`ballscan.model._forward_kernels.averaged_edges_jacobian`; without a known
         acceleration; one compiled call with the chord's,
-        :func:`ballscan.solve._fit_kernels.hybrid_rows`); ``memo`` is then only told
+        :func:`ballscan.model._forward_kernels.hybrid_rows`); ``memo`` is then only told
         the lines.
 
     Returns
@@ -518,7 +518,7 @@ def _analytic_rows(camera, theta, t, R, n_nodes, reach_limit, fd_lines, needed):
     """:func:`hybrid_jacobian` with ``analytic``: ``(d_left, d_right, d_area, fd)`` in one compiled call.
 
     The chord's derivatives, the lines ``fd`` that need the averaged model's
-    exact ones, and those (:func:`ballscan.solve._fit_kernels.hybrid_rows`).
+    exact ones, and those (:func:`ballscan.model._forward_kernels.hybrid_rows`).
     """
     g, gw = _gauss(n_nodes)
     no_lines = np.zeros(0, dtype=bool)

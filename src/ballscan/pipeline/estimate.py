@@ -181,7 +181,7 @@ def _fit_estimate(
     t_edges: float,
     t_shading: float,
 ) -> BallEstimate:
-    """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.fit.propagate`).
+    """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.uncertainty.propagate`).
 
     ``t0`` is the ball's start time (``time.perf_counter``); ``t_init``,
     ``t_edges`` and ``t_shading`` the seconds of the key points, the first

@@ -85,7 +85,7 @@ def fit_jacobian(
 
 @jit()
 def block_ratio(r: np.ndarray, sizes) -> float:
-    """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.solve.fit._block_scale`), else 1.
+    """The largest significant block-mean variance ratio of one side's residuals (:func:`ballscan.solve.uncertainty.block_scale`), else 1.
 
     numpy's sums (:func:`pairwise_sum`) for the block means and their mean
     square, so that the ratios are those of the numpy expressions.
@@ -109,7 +109,7 @@ def block_ratio(r: np.ndarray, sizes) -> float:
 def area_tables(
     area: np.ndarray, area_sigma: np.ndarray, level: np.ndarray, level_sigma: np.ndarray, floor2: float, floor_px2: float
 ):
-    """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.solve.fit._area_tables`), per line.
+    """The fit's levelled areas, their 1-sigma and where they exist (:func:`ballscan.solve.problem.weight_tables`), per line.
 
     The numpy form's operations, line by line: a NaN ``level_sigma`` counts
     as infinite and an infinite one as the largest float (``np.nan_to_num``
@@ -147,7 +147,7 @@ def select_lines(
     right_wide_ok: np.ndarray, left_wide: np.ndarray, right_wide: np.ndarray, max_spread: float, max_spread_wide: float,
     end_line_areas: bool,
 ):
-    """The fit's residual selection (:func:`ballscan.solve.fit._select`), line by line.
+    """The fit's residual selection (:func:`ballscan.solve.problem.select_lines_of`), line by line.
 
     Returns the masks ``(use_l, use_r, use_a, wide_l, wide_r)``; the wide
     window's arrays are read only with ``wide``.
@@ -185,7 +185,7 @@ def select_lines(
 def equilibrated(AJ: np.ndarray):
     """Column norms ``cn = sqrt(diag(AJ))`` (1 where not positive) of a normal matrix and ``AJ / outer(cn, cn)``.
 
-    The Levenberg-Marquardt steps' equilibration (:func:`ballscan.solve.fit._levenberg_marquardt`),
+    The Levenberg-Marquardt steps' equilibration (:func:`ballscan.solve.solver.levenberg_marquardt`),
     the numpy expressions' operations.
     """
     n = AJ.shape[0]

@@ -64,7 +64,7 @@ class FitSettings:
         (limb shading and texture that the local level cannot follow).
     matched_floor_px : float
         The same for the edges measured by
-        :func:`ballscan.measure.edges.matched_edges` (the model's own error
+        :func:`ballscan.measure.matched.matched_edges` (the model's own error
         on them), pixels.
     texture_gain : float
         Multiplies the edges' texture indicator, added in quadrature to each

@@ -697,8 +697,8 @@ class StreamEngine:
         if rows.size < 2:
             return
         # The per-column sums of x - offset and its square over the sampled
-        # lines, in one compiled pass: exact integers (the former float32 /
-        # float64 sums of the same integers, bit for bit), without the
+        # lines, in one compiled pass: exact integers (the float64 sums of
+        # the same integers, bit for bit), without the
         # (lines, W) float copy. Fast per-line offsets (flicker) are not
         # noise: they are removed before the variance, their mean kept in the
         # level (slow drift).
