@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import shlex
 from pathlib import Path
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
 import typer
 
-from ..lab import experiments as ex
+if TYPE_CHECKING:  # the experiments (numba, scipy, matplotlib) load only when one runs
+    from ..lab import experiments as ex
 
 experiment_app = typer.Typer(
     add_completion=False,
@@ -44,6 +45,8 @@ def _command(*parts: str) -> str:
 
 
 def _report(res: ex.ExperimentResult, quick: bool) -> None:
+    from ..lab import experiments as ex
+
     cfg = res.config
     n_pts = sum(len(s.values) for s in cfg.sweeps)
     if quick:
@@ -70,6 +73,8 @@ def fig5(
     no_progress: bool = _NOPROG,
 ) -> None:
     """Synthetic sweeps of ball size, speed, direction and line rate (paper Fig. 5)."""
+    from ..lab import experiments as ex
+
     tex = _words(textures, ex.TEXTURES, "--textures")
     meth = _words(methods, ex.METHODS, "--methods")
     if quick:
@@ -100,6 +105,8 @@ def fig8(
     no_progress: bool = _NOPROG,
 ) -> None:
     """The laboratory rail: viewing-plane rotation 0/4/10 deg, 100/200 lines/s (paper Fig. 7-8)."""
+    from ..lab import experiments as ex
+
     tex = _words(textures, ex.TEXTURES, "--textures")
     meth = _words(methods, ex.METHODS, "--methods")
     cfg = ex.fig8_config(seed=seed, textures=tex or ex.TEXTURES, methods=meth or ex.DEFAULT_METHODS)
@@ -127,6 +134,8 @@ def custom(
     no_progress: bool = _NOPROG,
 ) -> None:
     """Sweeps of any factor on your own camera and ball (TOML config)."""
+    from ..lab import experiments as ex
+
     cfg = ex.load_config(config)
     if quick:
         cfg = ex.quick_config(cfg)

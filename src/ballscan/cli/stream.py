@@ -14,15 +14,15 @@ import json
 import sys
 import time
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import TYPE_CHECKING, Annotated, Optional
 
-import numpy as np
 import typer
 
-from ..geometry.camera import LineScanCamera, crop_camera, load_camera
 from ..errors import BallscanError
-from ..pipeline.recipe import Recipe
-from ..stream.engine import StreamConfig, StreamResult, process_stream
+
+if TYPE_CHECKING:  # the estimator (numba, scipy) loads only when a command runs
+    from ..geometry.camera import LineScanCamera
+    from ..stream.engine import StreamResult
 
 __all__ = ["watch", "batch", "open_source", "save_event"]
 
@@ -72,8 +72,11 @@ def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_
     list of Path
         Files written.
     """
-    from ..pipeline.plot import save_overlay
+    import numpy as np
+
+    from ..geometry.camera import crop_camera
     from ..model.render import write_image
+    from ..pipeline.plot import save_overlay
     from ..pipeline.results import EstimateReport
 
     folder.mkdir(parents=True, exist_ok=True)
@@ -202,6 +205,10 @@ def watch(
     ends the watch quietly. Called from Python it returns the number of
     balls printed.
     """
+    from ..geometry.camera import load_camera
+    from ..pipeline.recipe import Recipe
+    from ..stream.engine import StreamConfig, process_stream
+
     cam = load_camera(camera)
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
