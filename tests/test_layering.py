@@ -18,6 +18,7 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src" / "ballscan"
 LAYERS = ("geometry", "model", "measure", "solve", "pipeline", "stream", "lab", "cli")
 TOP = {"__main__": len(LAYERS)}  # ``python -m ballscan`` is the command itself
+FRONT_DOOR = "ballscan"  # the package's __init__ re-exports the public API of every stage (lazily)
 
 
 def _module_name(path: Path) -> str:
@@ -75,6 +76,8 @@ def test_the_package_has_its_stages():
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(SRC)))
 def test_no_import_of_a_higher_stage(path):
     here = _module_name(path)
+    if here == FRONT_DOOR:
+        return
     wrong = sorted({f"line {line}: {target}" for target, _, line, _ in _imports(path) if _layer(target) > _layer(here)})
     assert not wrong, f"{here} ({LAYERS[_layer(here)] if _layer(here) >= 0 else 'base'}) imports a higher stage: {wrong}"
 

@@ -7,9 +7,14 @@ on first use and cached on disk) and called on arrays passed through
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 from numba import njit
 from numba.extending import register_jitable
+
+#: Every kernel made by :func:`jit` (inline helpers aside), by the module that defines it.
+KERNELS: dict[str, list] = {}
 
 
 def jit(**options):
@@ -17,16 +22,52 @@ def jit(**options):
 
     With ``cache=True`` numba raises at decoration when it has nowhere to
     write (a read-only install without a writable home or
-    ``NUMBA_CACHE_DIR``); the estimator must still import there.
+    ``NUMBA_CACHE_DIR``); the estimator must still import there.  The
+    kernel is registered in :data:`KERNELS`, except an ``inline="always"``
+    helper, which compiles into its callers and has no code of its own.
     """
 
     def decorate(func):
         try:
-            return njit(cache=True, **options)(func)
+            kernel = njit(cache=True, **options)(func)
         except RuntimeError:
-            return njit(cache=False, **options)(func)
+            kernel = njit(cache=False, **options)(func)
+        if options.get("inline") != "always":
+            KERNELS.setdefault(func.__module__, []).append(kernel)
+        return kernel
 
     return decorate
+
+
+def _cache_file(kernel):
+    """numba's on-disk cache file of ``kernel``, or None where it is not cached."""
+    cache = getattr(kernel, "_cache", None)
+    return getattr(cache, "_cache_file", None)
+
+
+def is_cached(kernel) -> bool | None:
+    """Whether ``kernel`` has compiled code on disk for its current source (None where numba's cache cannot tell).
+
+    Reads numba's cache index (an internal of ``numba.core.caching``, stable
+    since numba 0.49), which is empty when the source changed since.
+    """
+    if getattr(kernel, "signatures", None):
+        return True  # already compiled or loaded in this process
+    try:
+        return bool(_cache_file(kernel)._load_index())
+    except Exception:  # a numba without this internal: unknown, not an error
+        return None
+
+
+def cache_dir(modules=None) -> str | None:
+    """The folder that holds the kernels' disk cache: ``NUMBA_CACHE_DIR`` when set, else the ``__pycache__`` folders under the package (or the user's cache for a read-only install).
+
+    ``modules``: the kernel modules to look at (default all); None when none is cached.
+    """
+    names = KERNELS if modules is None else [m for m in modules if m in KERNELS]
+    paths = [getattr(getattr(k, "_cache", None), "_cache_path", None) for m in names for k in KERNELS[m]]
+    paths = [str(p) for p in paths if p]
+    return os.path.commonpath(paths) if paths else None
 
 
 def as_arg(a, dtype=np.float64) -> np.ndarray:

@@ -32,10 +32,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cache
 
 import numpy as np
 from scipy.ndimage import convolve1d
-from scipy.signal import savgol_coeffs
 
 from ..compiled import as_arg
 from ._flatfield_kernels import median_deviations, sorted_medians
@@ -64,14 +64,24 @@ def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
     return v[:half] @ np.linalg.pinv(v)
 
 
-# scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp") as a fixed
-# linear filter: its coefficients and edge fits depend only on the window,
-# and computing them (two polynomial fits by scipy.linalg.lstsq per call)
-# would dominate column_gains' time on a stream ball
-_TREND_COEF = savgol_coeffs(_TREND_COLS, 2)
-_TREND_EDGE = _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2)
-# the fraction of a white (column-independent) gain pattern's variance that the trend takes
-_TREND_LEAK = float(np.sum(_TREND_COEF**2))
+
+
+@cache
+def _trend_filter() -> tuple[np.ndarray, np.ndarray, float]:
+    """``scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp")`` as a fixed linear filter: ``(coefficients, edge projection, leak)``.
+
+    The coefficients and edge fits depend only on the window; computing them
+    per call (two polynomial fits by ``scipy.linalg.lstsq``) would dominate
+    :func:`column_gains`' time on a stream ball.  ``leak`` is the fraction
+    of a white (column-independent) gain pattern's variance that the trend
+    takes.  scipy.signal is imported here, on the first long ball, not with
+    the package (it takes most of a second to import).
+    """
+    from scipy.signal import savgol_coeffs
+
+    coef = savgol_coeffs(_TREND_COLS, 2)
+    return coef, _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2), float(np.sum(coef**2))
+
 # a column whose ratio to the trend is off by more than this many sigmas
 # (the gains' scatter and its measurement's noise) is defective, not a gain
 _DEFECT_SIGMAS = 5.0
@@ -83,10 +93,11 @@ _DEFECT_FLOOR = 1e-3
 
 def _trend(x: np.ndarray) -> np.ndarray:
     """``savgol_filter(x, _TREND_COLS, 2, mode="interp")`` (the edges to rounding; ``x`` at least ``_TREND_COLS`` long)."""
-    y = convolve1d(x, _TREND_COEF, mode="constant")
+    coef, edge, _ = _trend_filter()
+    y = convolve1d(x, coef, mode="constant")
     h = _TREND_COLS // 2
-    y[:h] = _TREND_EDGE @ x[:_TREND_COLS]
-    y[-h:] = (_TREND_EDGE @ x[::-1][:_TREND_COLS])[::-1]
+    y[:h] = edge @ x[:_TREND_COLS]
+    y[-h:] = (edge @ x[::-1][:_TREND_COLS])[::-1]
     return y
 
 
@@ -274,7 +285,7 @@ def column_gains(
         # trend takes with the ball's shading (a white gain pattern leaves
         # sum(coef^2) = 0.2 of its variance in a 15-column quadratic, which
         # the posterior alone leaves out)
-        sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _TREND_LEAK)
+        sigma[cols[ok]] = np.sqrt(tau2 * var[ok] / (tau2 + var[ok]) + tau2 * _trend_filter()[2])
     # the defective columns keep gain 1 and their whole deviation as their error
     sigma[cols[far_all]] = np.maximum(d_far, math.sqrt(tau2))
     return ColumnGains(col_start, gain, n, float(np.sqrt(tau2)), int(ok.sum()), sigma)

@@ -40,7 +40,7 @@ import numpy as np
 
 from ..errors import ImageFileError
 
-__all__ = ["LineImage", "load_image", "load_timestamps", "DEFAULT_MAX_PIXELS"]
+__all__ = ["LineImage", "as_line_image", "load_image", "load_timestamps", "DEFAULT_MAX_PIXELS"]
 
 #: Default refusal limit on ``n_lines * W`` (about 268 million pixels, 2 GiB
 #: as float64): far above any real line-scan capture, far below what a forged
@@ -342,6 +342,73 @@ def load_image(
     sat = float(saturation_dn) if saturation_dn is not None else float(2**bits - 1)
     grey.setflags(write=False)
     return LineImage(data=grey, saturation_dn=sat, bits=bits, source=src)
+
+
+def as_line_image(
+    image: "LineImage | np.ndarray | str | os.PathLike[str]",
+    *,
+    bits: int | None = None,
+    saturation_dn: float | None = None,
+    source: str = "<array>",
+) -> LineImage:
+    """A :class:`LineImage` from what a caller holds: a ``LineImage``, a file path, or an array.
+
+    Parameters
+    ----------
+    image : LineImage, str, path-like or array (n_lines, W)
+        A path is loaded with :func:`load_image`.  An array holds digital
+        numbers as the camera gives them (row = scan line, column = sensor
+        pixel), integer or float, finite and non-negative.
+    bits : int, optional
+        Bits per sample of an array (1-16).  Default: 8 for ``uint8``, 16 for
+        ``uint16``; a float or wider integer array needs it (its saturation
+        level is ``2**bits - 1``).
+    saturation_dn : float, optional
+        Level (DN) at or above which a pixel is clipped (default
+        ``2**bits - 1``).
+    source : str
+        Name of an array in messages and in the result's ``image`` key.
+
+    Raises
+    ------
+    ImageFileError
+        For a path, as :func:`load_image`; for an array, one line naming
+        ``source``: not 2-D, fewer than 2 lines or pixels, not finite,
+        negative, or above ``2**bits - 1``.
+    ValueError
+        ``bits`` missing for a float array or out of range, or ``bits`` /
+        ``saturation_dn`` given with a ``LineImage``.
+    """
+    if isinstance(image, LineImage):
+        if bits is not None or saturation_dn is not None:
+            raise ValueError("bits, saturation_dn: a LineImage carries its own; give them with an array")
+        return image
+    if isinstance(image, (str, os.PathLike)):
+        if bits is not None:
+            raise ValueError("bits: a file's bit depth is its own; give bits with an array")
+        return load_image(image, saturation_dn=saturation_dn)
+    arr = np.asarray(image)
+    if bits is None:
+        if arr.dtype not in (np.uint8, np.uint16):
+            raise ValueError(f"bits: give the bit depth of a {arr.dtype} array (e.g. bits=12)")
+        bits = 8 * arr.dtype.itemsize
+    if isinstance(bits, bool) or not isinstance(bits, (int, np.integer)) or not 1 <= bits <= 16:
+        raise ValueError(f"bits: must be an integer from 1 to 16, got {bits!r}")
+    if arr.dtype.kind not in "uif":
+        raise ImageFileError(source, f"array of {arr.dtype}: need integer or float digital numbers")
+    if arr.ndim != 2 or min(arr.shape) < 2:
+        raise ImageFileError(source, f"array of shape {arr.shape}: need (n_lines, W) with at least 2 lines and 2 pixels")
+    data = np.array(arr, dtype=np.float64)
+    top = float(2**bits - 1)
+    if not np.all(np.isfinite(data)):
+        raise ImageFileError(source, "array holds NaN or infinite values")
+    lo, hi = float(data.min()), float(data.max())
+    if lo < 0 or hi > top:
+        raise ImageFileError(source, f"values {lo:g}..{hi:g} outside 0..{top:g} of {bits} bits")
+    if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
+        raise ImageFileError(source, f"saturation level must be a positive number, got {saturation_dn}")
+    data.setflags(write=False)
+    return LineImage(data=data, saturation_dn=top if saturation_dn is None else float(saturation_dn), bits=int(bits), source=source)
 
 
 def load_timestamps(path: str | os.PathLike[str], n_lines: int) -> np.ndarray:

@@ -19,22 +19,24 @@ an :class:`~ballscan.pipeline.results.EstimateReport` with one
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import replace
 
 import numpy as np
 
 from ..errors import ImageFileError
-from ..geometry.camera import LineScanCamera, line_times
+from ..geometry.camera import LineScanCamera, line_times, load_camera
 from ..geometry.motion import BallMotion
 from ..measure.detection import BallRegion, ColumnModel, Detection, detect
 from ..measure.robust import median
-from ..measure.images import LineImage
+from ..measure.images import LineImage, as_line_image
 from ..solve.uncertainty import propagate
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
+from .warmup import ensure_warm
 from .stages import (
     BallInput,
     Detected,
@@ -266,21 +268,27 @@ def _vx_convention(motion: BallMotion, camera: LineScanCamera) -> BallMotion:
 
 
 def estimate_image(
-    image: LineImage,
-    camera: LineScanCamera,
+    image: LineImage | np.ndarray | str | os.PathLike[str],
+    camera: LineScanCamera | str | os.PathLike[str],
     radius_m: float,
     *,
     recipe: Recipe = Recipe(),
     timestamps_s: np.ndarray | None = None,
     columns: ColumnModel | None = None,
+    bits: int | None = None,
 ) -> EstimateReport:
     """Detect and measure every ball of one line-scan image.
 
     Parameters
     ----------
-    image : LineImage
-    camera : LineScanCamera
-        Its width must match the image's.
+    image : LineImage, array (n_lines, W), or path
+        The image: loaded (:func:`ballscan.measure.images.load_image`), a
+        file path, or the camera's digital numbers as an array
+        (:func:`ballscan.measure.images.as_line_image`; ``bits`` gives a
+        float or 12-bit array's depth).
+    camera : LineScanCamera or path
+        The camera, or its TOML file (geometry.md).  Its width must match
+        the image's.
     radius_m : float
         Known ball radius, metres.
     recipe : Recipe
@@ -291,11 +299,23 @@ def estimate_image(
         The image columns' background level and noise when they are known
         (the stream engine's, for an event's crop); else :func:`detect`
         learns them on the image.
+    bits : int, optional
+        Bits per sample of an array ``image`` (default: 8 for ``uint8``, 16
+        for ``uint16``).
+
+    Returns
+    -------
+    EstimateReport
+        One :class:`BallEstimate` per ball found, in time order.
     """
+    image = as_line_image(image, bits=bits)
+    if not isinstance(camera, LineScanCamera):
+        camera = load_camera(camera)
     if not isinstance(recipe, Recipe):
         raise ValueError(f"recipe: expected a Recipe, got {recipe!r}")
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
+    ensure_warm()  # the kernels' loading (or first compilation) is no ball's run time
     n_lines, width = image.data.shape
     if width != camera.width:
         raise ImageFileError(image.source, f"has {width} pixels per line but the camera file says width = {camera.width}")

@@ -929,10 +929,10 @@ def preload_estimator() -> None:
     """
     from ..measure import edges  # noqa: F401
     from ..pipeline import estimate  # noqa: F401
-    from ..pipeline.warmup import warm_up
+    from ..pipeline.warmup import ensure_warm
     from ..solve import fit  # noqa: F401
 
-    warm_up()
+    ensure_warm()
     _line_kernels.warm_up()
 
 
