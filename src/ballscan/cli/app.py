@@ -15,7 +15,22 @@ import typer
 
 from ..errors import BallscanError
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, help="Ball position and velocity from line-scan images.")
+app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None, help="Ball position and velocity from line-scan images.")
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        typer.echo(f"ballscan {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _options(
+    version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True, help="Print the version and exit."),
+) -> None:
+    """Ball position and velocity from line-scan images."""
 
 
 def _vec(text: str, name: str) -> tuple[float, float, float]:
@@ -204,6 +219,20 @@ def demo(
         typer.echo(line)
 
 
+@app.command("warm-up")
+def warm_up_command() -> None:
+    """Compile (or load) every numerical kernel now, with progress: the first measurement after an install then starts at once.
+
+    The compiled code is cached on disk (beside the package's sources, or
+    in NUMBA_CACHE_DIR when that is set: point it at a shared folder for a
+    cluster's workers).
+    """
+    from ..pipeline.warmup import KERNEL_MODULES, warm_up
+
+    done = warm_up((*KERNEL_MODULES, "ballscan.stream._line_kernels"), show=None)
+    typer.echo(f"{done.kernels} kernels ready ({done.compiled} compiled now) in {done.time_s:.1f} s; cache: {done.cache_dir or 'none (memory only)'}")
+
+
 def _register_subcommands() -> None:
     """Experiments and line streams live in their own modules; the commands are theirs."""
     from .experiment import experiment_app
@@ -219,8 +248,11 @@ _register_subcommands()
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point: run the CLI, turning library errors into one-line messages."""
+    args = sys.argv[1:] if argv is None else list(argv)
+    if not args:
+        args = ["--help"]  # bare `ballscan`: the overview, and success
     try:
-        app(args=argv, prog_name="ballscan", standalone_mode=False)
+        app(args=args, prog_name="ballscan", standalone_mode=False)
     except BallscanError as exc:
         print(f"ballscan: error: {exc}", file=sys.stderr)
         return 2

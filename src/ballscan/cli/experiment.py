@@ -20,6 +20,7 @@ if TYPE_CHECKING:  # the experiments (numba, scipy, matplotlib) load only when o
 experiment_app = typer.Typer(
     add_completion=False,
     no_args_is_help=True,
+    rich_markup_mode=None,
     help="Reproduce the paper's experiments (Monte-Carlo sweeps, parallel, resumable).",
 )
 
