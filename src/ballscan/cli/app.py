@@ -120,7 +120,9 @@ def estimate(
     radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
     method: str = typer.Option("fit", "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
     as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess red, estimate green)."),
+    as_csv: bool = typer.Option(False, "--csv", help="Print CSV instead of a table: a header and one row per ball (the columns of batch)."),
+    units: str = typer.Option("m/s", "--units", help="Speed unit of the table: m/s, km/h or mph (JSON and CSV stay in m/s)."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess dashed orange, estimate blue)."),
     timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
     lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
@@ -140,10 +142,14 @@ def estimate(
     from ..pipeline.estimate import estimate_image
     from ..pipeline.recipe import Recipe
     from ..measure.images import load_image, load_timestamps
-    from ..pipeline.report import format_table
+    from ..pipeline.report import UNITS, format_table
 
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    if as_json and as_csv:
+        raise typer.BadParameter("give one of --json and --csv", param_hint="--csv")
+    if units not in UNITS:
+        raise typer.BadParameter(f"expected one of {', '.join(UNITS)}, got {units!r}", param_hint="--units")
     cam = load_camera(camera)
     img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
     ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
@@ -151,12 +157,25 @@ def estimate(
     report = estimate_image(img, cam, radius, recipe=recipe, timestamps_s=ts)
     if as_json:
         typer.echo(report.to_json(cam))
+    elif as_csv:
+        _print_csv(report, cam)
     else:
-        typer.echo(format_table(report))
+        typer.echo(format_table(report, cam, units))
     if plot is not None:
         from ..pipeline.plot import save_overlay
 
         save_overlay(plot, img.data, cam, report, line_times(cam, img.data.shape[0], ts))
+
+
+def _print_csv(report, camera) -> None:
+    import csv
+
+    from ..pipeline.report import CSV_COLUMNS, csv_row
+
+    writer = csv.DictWriter(sys.stdout, fieldnames=CSV_COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    for k, ball in enumerate(report.balls):
+        writer.writerow(csv_row(report.image, k, ball, camera))
 
 
 # ---------------------------------------------------------------- precision

@@ -219,6 +219,7 @@ def _fit_estimate(
         last_line=ball.region.line_stop - 1,
         run_time_s=time.perf_counter() - t0,
         record=record,
+        covariance=cov,
         extra={
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,
@@ -229,8 +230,6 @@ def _fit_estimate(
             "n_edges": fit.n_edges,
             "speed_correction_mps": unc.speed_correction_mps,
             "speed_raw_mps": unc.speed_raw_mps,
-            "direction_deg": unc.direction_deg,
-            "direction_sigma_deg": unc.direction_sigma_deg,
             "position_cov_m2": _cov_block(cov, [None, 1, 2]),
             "velocity_cov_m2ps2": cov[3:6, 3:6],
             "time_initial_s": t_init,
@@ -330,4 +329,4 @@ def estimate_image(
     bg = shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
     balls = [estimate_region(image, det, r, camera, radius_m, t, recipe, background_dn=bg) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
-    return EstimateReport(image=image.source, balls=tuple(balls))
+    return EstimateReport(image=image.source, balls=tuple(balls), recipe=recipe)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
 from typing import Literal, get_args
 
 from ..solve.settings import FitSettings
@@ -158,6 +158,10 @@ class Recipe:
     spread_fit: FitSettings = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
     edge_fit: FitSettings = FitSettings()
 
+    def changes(self) -> dict:
+        """The fields that differ from ``Recipe()`` (the results' ``recipe`` key: empty for the default)."""
+        return changes(self, Recipe())
+
     def __post_init__(self) -> None:
         def bad(name: str, why: str) -> ValueError:
             return ValueError(f"{name}: {why}, got {getattr(self, name)!r}")
@@ -189,6 +193,17 @@ class Recipe:
         for name in ("pixel_fit", "spread_fit"):
             if not getattr(self, name).pixels:
                 raise bad(name, "expected FitSettings with pixels=True")
+
+
+def changes(value, default) -> dict:
+    """The fields of a frozen settings dataclass ``value`` that differ from ``default``, nested settings as their own changes (JSON-ready)."""
+    out = {}
+    for f in fields(value):
+        a, b = getattr(value, f.name), getattr(default, f.name)
+        if a == b:
+            continue
+        out[f.name] = changes(a, b) if is_dataclass(a) and is_dataclass(b) else (list(a) if isinstance(a, tuple) else a)
+    return out
 
 
 def _is_int(v: object) -> bool:

@@ -16,8 +16,10 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
+from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, derive
 
 if TYPE_CHECKING:
+    from .recipe import Recipe
     from .stages import StageRecord
 
 __all__ = ["BallEstimate", "EstimateReport", "FLAGS"]
@@ -72,6 +74,12 @@ class BallEstimate:
     record : StageRecord or None
         Which path the fit's stages took (:class:`ballscan.pipeline.stages.StageRecord`);
         not part of the JSON output (``extra`` repeats it there).
+    covariance : ndarray (6, 6) or None
+        Of the fitted parameters in the order of
+        :data:`ballscan.solve.derived.COVARIANCE_PARAMETERS` (``t_c``, ``y0``,
+        ``z0``, ``vx``, ``vy``, ``vz``; seconds, metres, m/s); NaN in the rows
+        of undetermined parameters; None without uncertainties (the paper's
+        method).
     """
 
     method: str
@@ -92,6 +100,7 @@ class BallEstimate:
     run_time_s: float = 0.0
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
     record: "StageRecord | None" = field(default=None, compare=False)
+    covariance: np.ndarray | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position_m", _tuple3(self.position_m))
@@ -142,6 +151,12 @@ class BallEstimate:
             return None
         return BallMotion(self.radius_m, self.t_c_s, self.position_m, self.velocity_mps)
 
+    def derived(self, camera: LineScanCamera | None = None) -> Derived | None:
+        """Transverse speed, direction angles, the world frame and their sigmas (:func:`ballscan.solve.derived.derive`); None when the motion is undetermined."""
+        if self.position_m is None or self.velocity_mps is None:
+            return None
+        return derive(camera, self.position_m, self.velocity_mps, self.covariance)
+
     # ---------------------------------------------------------- serialisation
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
         """geometry.md estimate keys (plus diagnostics), JSON-ready."""
@@ -161,6 +176,16 @@ class BallEstimate:
             d["velocity_sigma_mps"] = _list(self.velocity_sigma_mps)
         if self.speed_sigma_mps is not None:
             d["speed_sigma_mps"] = self.speed_sigma_mps
+        if self.covariance is not None:
+            d["covariance"] = {"parameters": list(COVARIANCE_PARAMETERS), "matrix": np.asarray(self.covariance, dtype=float)}
+        der = self.derived(camera)
+        if der is not None:
+            d["speed_transverse_mps"] = der.speed_transverse_mps
+            if self.covariance is not None:
+                d["speed_transverse_sigma_mps"] = der.speed_transverse_sigma_mps
+                d["direction_deg"] = der.direction_deg
+                d["direction_sigma_deg"] = der.direction_sigma_deg
+                d["speed_direction_correlation"] = der.speed_direction_correlation
         d["flags"] = list(self.flags)
         d["undetermined"] = list(self.undetermined)
         d["first_line"] = self.first_line
@@ -176,35 +201,43 @@ class BallEstimate:
         return _jsonable(d)
 
     def _world(self, camera: LineScanCamera) -> dict[str, Any]:
-        w: dict[str, Any] = {}
-        if self.position_m is not None:
-            w["position_m"] = _list(camera.camera_to_world(np.asarray(self.position_m)))
-        else:
-            w["position_m"] = None
-        if self.velocity_mps is not None:
-            w["velocity_mps"] = _list(camera.vectors_to_world(np.asarray(self.velocity_mps)))
-        else:
-            w["velocity_mps"] = None
-        w["speed_mps"] = self.speed_mps
-        cov_p = self.extra.get("position_cov_m2")
-        cov_v = self.extra.get("velocity_cov_m2ps2")
-        R = camera.rotation_matrix.T  # camera -> world for free vectors
-        if cov_p is not None:
-            w["position_sigma_m"] = _list(np.sqrt(np.diag(R @ np.asarray(cov_p) @ R.T)))
-        if cov_v is not None:
-            w["velocity_sigma_mps"] = _list(np.sqrt(np.diag(R @ np.asarray(cov_v) @ R.T)))
+        der = self.derived(camera)
+        w: dict[str, Any] = {
+            "position_m": None if der is None else der.world_position_m,
+            "velocity_mps": None if der is None else der.world_velocity_mps,
+            "speed_mps": self.speed_mps,
+        }
+        if der is None:
+            return w
+        w["elevation_deg"] = der.elevation_deg
+        w["azimuth_deg"] = der.azimuth_deg
+        if self.covariance is not None:
+            w["position_sigma_m"] = der.world_position_sigma_m
+            w["velocity_sigma_mps"] = der.world_velocity_sigma_mps
+            w["speed_sigma_mps"] = self.speed_sigma_mps
+            w["elevation_sigma_deg"] = der.elevation_sigma_deg
+            w["azimuth_sigma_deg"] = der.azimuth_sigma_deg
+            w["covariance"] = {"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": der.world_covariance}
         return w
 
 
 @dataclass(frozen=True)
 class EstimateReport:
-    """All balls of one image, in the order of ``t_c_s``."""
+    """All balls of one image, in the order of ``t_c_s``, and the :class:`~ballscan.pipeline.recipe.Recipe` that measured them."""
 
     image: str
     balls: tuple[BallEstimate, ...]
+    recipe: "Recipe | None" = None
 
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
-        return {"image": self.image, "balls": [b.to_dict(camera) for b in self.balls]}
+        """geometry.md's result: the image, the package's version and the recipe's changes from the default (what made it), the balls."""
+        from .. import __version__
+
+        d: dict[str, Any] = {"image": self.image, "ballscan_version": __version__}
+        if self.recipe is not None:
+            d["recipe"] = self.recipe.changes()
+        d["balls"] = [b.to_dict(camera) for b in self.balls]
+        return d
 
     def to_json(self, camera: LineScanCamera | None = None) -> str:
         return json.dumps(self.to_dict(camera), indent=2, allow_nan=False)

@@ -30,19 +30,15 @@ import numpy as np
 
 from ..errors import BallscanError
 from ..parallel import TaskExecutor
+from ..pipeline.report import CSV_COLUMNS, csv_row
 
 __all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "measure_input", "run_batch"]
 
 IMAGE_SUFFIXES = (".png", ".tif", ".tiff")
 RAW_SUFFIXES = (".raw", ".bin", ".u8", ".u16")
 
-#: CSV columns: one row per ball (metres, seconds, m/s; sigmas are 1-sigma).
-COLUMNS = (
-    "source", "ball", "first_line", "last_line",
-    "t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps", "speed_mps",
-    "t_c_sigma_s", "x_sigma_m", "y_sigma_m", "z_sigma_m", "vx_sigma_mps", "vy_sigma_mps", "vz_sigma_mps", "speed_sigma_mps",
-    "flags", "undetermined", "method",
-)  # fmt: skip
+#: CSV columns: one row per ball (:data:`ballscan.pipeline.report.CSV_COLUMNS`, as ``estimate --csv``).
+COLUMNS = CSV_COLUMNS
 
 
 @dataclass(frozen=True)
@@ -108,32 +104,6 @@ def _timestamps_beside(path: Path) -> Path | None:
     return _beside(path, ".timestamps.npy") or _beside(path, ".timestamps.txt")
 
 
-def _row(source: str, k: int, est) -> dict:
-    def v3(v, i):
-        return "" if v is None else repr(float(v[i]))
-
-    def num(v):
-        return "" if v is None else repr(float(v))
-
-    return {
-        "source": source,
-        "ball": k,
-        "first_line": "" if est.first_line is None else int(est.first_line),
-        "last_line": "" if est.last_line is None else int(est.last_line),
-        "t_c_s": num(est.t_c_s),
-        "x_m": v3(est.position_m, 0), "y_m": v3(est.position_m, 1), "z_m": v3(est.position_m, 2),
-        "vx_mps": v3(est.velocity_mps, 0), "vy_mps": v3(est.velocity_mps, 1), "vz_mps": v3(est.velocity_mps, 2),
-        "speed_mps": num(est.speed_mps),
-        "t_c_sigma_s": num(est.t_c_sigma_s),
-        "x_sigma_m": v3(est.position_sigma_m, 0), "y_sigma_m": v3(est.position_sigma_m, 1), "z_sigma_m": v3(est.position_sigma_m, 2),
-        "vx_sigma_mps": v3(est.velocity_sigma_mps, 0), "vy_sigma_mps": v3(est.velocity_sigma_mps, 1), "vz_sigma_mps": v3(est.velocity_sigma_mps, 2),
-        "speed_sigma_mps": num(est.speed_sigma_mps),
-        "flags": " ".join(est.flags),
-        "undetermined": " ".join(est.undetermined),
-        "method": est.method,
-    }  # fmt: skip
-
-
 def measure_input(path: str, camera_path: str | None, radius_m: float, method: str = "fit", dtype: str = "uint8", background: str = "engine") -> InputResult:
     """Measure every ball of one input; never raises (a failure is in ``error``).
 
@@ -177,7 +147,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             except StreamError as exc:
                 # A damaged stream (e.g. a truncated last line): keep the balls
                 # measured before the fault, and report it.
-                rows = tuple(_row(src, k, e) for k, e in enumerate(ests))
+                rows = tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests))
                 return InputResult(src, rows, " ".join(str(exc).split()))
         else:
             from ..pipeline.estimate import estimate_image
@@ -187,7 +157,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             img = load_image(p)
             ts = load_timestamps(ts_path, img.n_lines) if ts_path is not None else None
             ests = list(estimate_image(img, camera, radius_m, recipe=Recipe(method=method), timestamps_s=ts).balls)
-        return InputResult(src, tuple(_row(src, k, e) for k, e in enumerate(ests)))
+        return InputResult(src, tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests)))
     except (BallscanError, ValueError, OSError) as exc:
         msg = " ".join(str(exc).split())
         return InputResult(src, (), msg if src in msg else f"{src}: {msg}")
@@ -195,7 +165,11 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
 
 def _done_sources(out_csv: Path) -> set[str]:
     done: set[str] = set()
-    if out_csv.is_file():
+    if out_csv.is_file() and out_csv.stat().st_size > 0:
+        with open(out_csv, newline="") as fh:
+            header = next(csv.reader(fh), [])
+        if tuple(header) != COLUMNS:
+            raise BallscanError(f"{out_csv}: its columns are not this version's ({len(header)} against {len(COLUMNS)}): give a new --out")
         with open(out_csv, newline="") as fh:
             for row in csv.DictReader(fh):
                 if row.get("source"):

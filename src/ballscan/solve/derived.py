@@ -1,0 +1,179 @@
+"""What a user reads off an estimate: the full covariance, the speed across the optical axis, direction angles and the world frame, each with its 1-sigma.
+
+Every quantity here is a function of the fitted parameters ``theta = (t_c,
+y0, z0, vx, vy, vz)`` (the dynamic sphere of Eq. (8), camera frame; the
+centre at ``t_c`` is ``(0, y0, z0)``) and its 6x6 covariance, propagated to
+first order (``J C J^T``).  The speed itself, with its bias correction, is
+:func:`ballscan.solve.uncertainty.propagate`'s.
+
+One line-scan camera measures ``vx`` and ``vy`` (across the optical axis)
+well and ``vz`` (along it) poorly: the speed across the optical axis,
+``|(vx, vy)|``, is typically hundreds of times more precise than the total
+speed, and the depth angle's sigma is correspondingly wide.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry.camera import LineScanCamera
+
+__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "direction_jacobian", "world_covariance"]
+
+#: The order of :attr:`BallEstimate.covariance`'s rows and columns (seconds, metres, m/s).
+COVARIANCE_PARAMETERS = ("t_c_s", "y0_m", "z0_m", "vx_mps", "vy_mps", "vz_mps")
+#: The order of the world frame's 7x7 covariance: the crossing time, the centre at it and the velocity.
+WORLD_COVARIANCE_PARAMETERS = ("t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps")
+
+
+@dataclass(frozen=True)
+class Derived:
+    """Quantities derived from one estimate and their 1-sigma (NaN where the covariance does not say).
+
+    Attributes
+    ----------
+    speed_transverse_mps, speed_transverse_sigma_mps : float
+        ``|(vx, vy)|``, the speed across the optical axis (in the plane of the
+        sensor line and the crossing direction), m/s.
+    direction_deg, direction_sigma_deg : ndarray (2,)
+        ``psi_y = atan2(vy, vx)`` (towards the sensor's ``+y``) and
+        ``psi_z = atan2(vz, vx)`` (towards the depth ``+z``), degrees.
+    speed_direction_correlation : ndarray (2,)
+        Correlation of the speed (linearised, ``|V|``) with ``psi_y`` and ``psi_z``.
+    world_position_m, world_velocity_mps : ndarray (3,) or None
+        The centre at ``t_c`` and the velocity in the world frame (a camera
+        with a pose), metres and m/s.
+    world_position_sigma_m, world_velocity_sigma_mps : ndarray (3,) or None
+    world_covariance : ndarray (7, 7) or None
+        Of :data:`WORLD_COVARIANCE_PARAMETERS`.
+    elevation_deg, elevation_sigma_deg : float or None
+        World frame: the angle of the velocity above the world ``X-Y`` plane
+        (``atan2(VZ, |(VX, VY)|)``; the launch angle where world ``Z`` is up).
+    azimuth_deg, azimuth_sigma_deg : float or None
+        World frame: ``atan2(VY, VX)``, from world ``X`` towards world ``Y``.
+    """
+
+    speed_transverse_mps: float
+    speed_transverse_sigma_mps: float
+    direction_deg: np.ndarray
+    direction_sigma_deg: np.ndarray
+    speed_direction_correlation: np.ndarray
+    world_position_m: np.ndarray | None = None
+    world_position_sigma_m: np.ndarray | None = None
+    world_velocity_mps: np.ndarray | None = None
+    world_velocity_sigma_mps: np.ndarray | None = None
+    world_covariance: np.ndarray | None = None
+    elevation_deg: float | None = None
+    elevation_sigma_deg: float | None = None
+    azimuth_deg: float | None = None
+    azimuth_sigma_deg: float | None = None
+
+
+def _linear_sigma(g: np.ndarray, C: np.ndarray) -> float:
+    """``sqrt(g C g)``, NaN where it is not a finite non-negative number."""
+    var = float(g @ C @ g)
+    return math.sqrt(var) if math.isfinite(var) and var >= 0 else math.nan
+
+
+def _sigmas(C: np.ndarray) -> np.ndarray:
+    d = np.diag(C).astype(float)
+    return np.where(d >= 0, np.sqrt(np.abs(d)), np.nan)
+
+
+def _angle_jacobian(a: float, b: float) -> np.ndarray:
+    """d atan2(b, a) / d(a, b), radians per unit."""
+    den = a * a + b * b
+    return np.array([-b / den, a / den]) if den > 0 else np.full(2, np.nan)
+
+
+def direction_jacobian(V: np.ndarray) -> np.ndarray:
+    """d (psi_y, psi_z) / d V (2, 3), radians per (m/s)."""
+    J = np.zeros((2, 3))
+    J[0, [0, 1]] = _angle_jacobian(V[0], V[1])
+    J[1, [0, 2]] = _angle_jacobian(V[0], V[2])
+    return J
+
+
+def world_covariance(camera: LineScanCamera, covariance: np.ndarray) -> np.ndarray:
+    """The 7x7 covariance of (t_c, world centre, world velocity) from the camera frame's 6x6.
+
+    The world centre is ``R^T ((0, y0, z0) - T)`` and the world velocity
+    ``R^T V`` (``X_cam = R X_world + T``, geometry.md's pose).
+    """
+    Rt = camera.rotation_matrix.T
+    J = np.zeros((7, 6))
+    J[0, 0] = 1.0
+    J[1:4, 1:3] = Rt[:, 1:3]
+    J[4:7, 3:6] = Rt
+    return J @ covariance @ J.T
+
+
+def _launch_angles(Vw: np.ndarray, Cvw: np.ndarray) -> tuple[float, float, float, float]:
+    """Elevation and azimuth of a world velocity and their sigmas, degrees."""
+    h = math.hypot(Vw[0], Vw[1])
+    elevation = math.atan2(Vw[2], h)
+    azimuth = math.atan2(Vw[1], Vw[0])
+    je = np.zeros(3)
+    if h > 0:
+        # d atan2(VZ, h) with dh/dVX = VX / h, dh/dVY = VY / h
+        dh_dz = _angle_jacobian(h, Vw[2])
+        je[:2] = dh_dz[0] * Vw[:2] / h
+        je[2] = dh_dz[1]
+    else:
+        je[:] = np.nan
+    ja = np.zeros(3)
+    ja[:2] = _angle_jacobian(Vw[0], Vw[1])
+    deg = math.degrees
+    return deg(elevation), deg(_linear_sigma(je, Cvw)), deg(azimuth), deg(_linear_sigma(ja, Cvw))
+
+
+def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: np.ndarray | None) -> Derived:
+    """:class:`Derived` of one estimate (``covariance``: 6x6 of :data:`COVARIANCE_PARAMETERS`, or None for no sigmas).
+
+    Parameters
+    ----------
+    camera : LineScanCamera or None
+        Its pose, if any, gives the world frame.
+    position_m : (3,) array-like
+        The centre at ``t_c`` (camera frame), metres.
+    velocity_mps : (3,) array-like
+        The velocity (camera frame), m/s.
+    covariance : ndarray (6, 6) or None
+    """
+    V = np.asarray(velocity_mps, dtype=float)
+    C = np.full((6, 6), np.nan) if covariance is None else np.asarray(covariance, dtype=float)
+    Cv = C[3:, 3:]
+    vt = math.hypot(V[0], V[1])
+    gt = np.array([V[0], V[1], 0.0]) / vt if vt > 0 else np.full(3, np.nan)
+    Jd = direction_jacobian(V)
+    Cd = Jd @ Cv @ Jd.T
+    speed = float(np.linalg.norm(V))
+    g = V / speed if speed > 0 else np.full(3, np.nan)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = (Jd @ Cv @ g) / (np.sqrt(np.diag(Cd)) * _linear_sigma(g, Cv))
+    out = dict(
+        speed_transverse_mps=vt,
+        speed_transverse_sigma_mps=_linear_sigma(gt, Cv),
+        direction_deg=np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])]),
+        direction_sigma_deg=np.degrees(_sigmas(Cd)),
+        speed_direction_correlation=np.clip(corr, -1.0, 1.0),
+    )
+    if camera is not None and camera.has_pose:
+        Cw = world_covariance(camera, C)
+        Vw = camera.vectors_to_world(V)
+        elev, elev_s, azim, azim_s = _launch_angles(Vw, Cw[4:, 4:])
+        out.update(
+            world_position_m=camera.camera_to_world(np.asarray(position_m, dtype=float)),
+            world_position_sigma_m=_sigmas(Cw[1:4, 1:4]),
+            world_velocity_mps=Vw,
+            world_velocity_sigma_mps=_sigmas(Cw[4:, 4:]),
+            world_covariance=Cw,
+            elevation_deg=elev,
+            elevation_sigma_deg=elev_s,
+            azimuth_deg=azim,
+            azimuth_sigma_deg=azim_s,
+        )
+    return Derived(**out)
