@@ -15,6 +15,9 @@ import typer
 
 from ..errors import BallscanError
 
+#: The presets and their ball radii (``ballscan.lab.presets.PRESETS``; written here so that ``--help`` loads no renderer).
+PRESET_HELP = "tennis-serve (R 0.0335 m), table-tennis (0.020 m), golf-drive (0.02135 m), baseball-pitch (0.0366 m), paper-rail (0.0335 m)"
+
 app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None, help="Ball position and velocity from line-scan images.")
 
 
@@ -48,7 +51,7 @@ def _vec(text: str, name: str) -> tuple[float, float, float]:
 def simulate(
     out: Optional[Path] = typer.Option(None, "--out", help="Output name: writes OUT.png, OUT.camera.toml, OUT.truth.json."),
     camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
-    preset: Optional[str] = typer.Option(None, "--preset", help="Named scene: tennis-serve, table-tennis, golf-drive, baseball-pitch, paper-rail."),
+    preset: Optional[str] = typer.Option(None, "--preset", help=f"Named scene (ball radius): {PRESET_HELP}."),
     radius: Optional[float] = typer.Option(None, "--radius", help="Ball radius R, metres."),
     position: Optional[str] = typer.Option(None, "--position", help="Centre at t_c: X,Y,Z in metres (X = 0)."),
     velocity: Optional[str] = typer.Option(None, "--velocity", help="Velocity VX,VY,VZ in m/s."),
@@ -189,6 +192,7 @@ def precision(
     pixel_noise: Optional[float] = typer.Option(None, "--pixel-noise", help="Pixel noise 1-sigma in DN (with --contrast): bound for any estimator on the image."),
     contrast: Optional[float] = typer.Option(None, "--contrast", help="Ball/background contrast in DN (with --pixel-noise)."),
     prnu: float = typer.Option(0.0, "--prnu", help="Relative 1-sigma of the columns' gains (PRNU) not flat-fielded, e.g. 0.008 (with --pixel-noise)."),
+    as_json: bool = typer.Option(False, "--json", help="Print JSON (one object per bound, under \"bounds\") instead of tables."),
 ) -> None:
     """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a rig."""
     from ..geometry.camera import load_camera
@@ -213,23 +217,31 @@ def precision(
         raise ValueError("precision: give --edge-noise PX, or --pixel-noise DN with --contrast DN")
     if prnu and pixel_noise is None:
         raise ValueError("precision: --prnu is a property of the pixels: give it with --pixel-noise DN and --contrast DN")
+    bounds = []
     if edge_noise is not None:
         if not edge_noise > 0:
             raise typer.BadParameter(f"must be positive, got {edge_noise}", param_hint="--edge-noise")
-        typer.echo(edge_crlb(cam, motion, edge_noise).to_text())
+        bounds.append(edge_crlb(cam, motion, edge_noise))
     if pixel_noise is not None:
         if contrast is None or not contrast != 0 or not pixel_noise > 0:
             raise ValueError("precision: --pixel-noise needs a positive noise and a non-zero --contrast")
         if not 0 <= prnu < 1:
             raise typer.BadParameter(f"must be in [0, 1), got {prnu}", param_hint="--prnu")
-        typer.echo(pixel_crlb(cam, motion, pixel_noise, abs(contrast), prnu_sigma=prnu).to_text())
+        bounds.append(pixel_crlb(cam, motion, pixel_noise, abs(contrast), prnu_sigma=prnu))
+    if as_json:
+        import json
+
+        typer.echo(json.dumps({"bounds": [b.to_dict() for b in bounds]}, indent=2, allow_nan=False))
+    else:
+        for b in bounds:
+            typer.echo(b.to_text())
 
 
 # ---------------------------------------------------------------- demo
 @app.command()
 def demo(
     out: Path = typer.Option(Path("demo_out"), "--out", help="Folder for the example files."),
-    preset: str = typer.Option("tennis-serve", "--preset", help="Scene to render."),
+    preset: str = typer.Option("tennis-serve", "--preset", help=f"Scene to render (ball radius): {PRESET_HELP}."),
 ) -> None:
     """Render an example, estimate it with both methods and plot the result."""
     from ..lab.demo import run_demo

@@ -24,10 +24,10 @@ experiment_app = typer.Typer(
     help="Reproduce the paper's experiments (Monte-Carlo sweeps, parallel, resumable).",
 )
 
-_JOBS = typer.Option(None, "--jobs", "-j", help="Local worker processes (default: all cores).")
+_JOBS = typer.Option(-1, "--jobs", "-j", help="Processes on this machine (1: this process; -1: all cores).")
 _SCHED = typer.Option(None, "--scheduler", help="Dask scheduler address (tcp://host:8786): run the trials there (needs ballscan[dask]).")
 _FRESH = typer.Option(False, "--fresh", help="Discard earlier results in --out instead of resuming.")
-_NOPROG = typer.Option(False, "--no-progress", help="No progress bars.")
+_PROGRESS = typer.Option(True, "--progress/--no-progress", help="Progress bars on stderr (shown only when it is a terminal).")
 _SEED = typer.Option(0, "--seed", help="Base seed; each trial's seed derives from it and the trial's identity.")
 
 
@@ -68,10 +68,10 @@ def fig5(
     textures: Optional[str] = typer.Option(None, "--textures", help="Comma list of none,tennis (default both; none with --quick)."),
     methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit,pixels (default initial,paper,fit; initial,fit with --quick)."),
     seed: int = _SEED,
-    jobs: Optional[int] = _JOBS,
+    jobs: int = _JOBS,
     scheduler: Optional[str] = _SCHED,
     fresh: bool = _FRESH,
-    no_progress: bool = _NOPROG,
+    progress: bool = _PROGRESS,
 ) -> None:
     """Synthetic sweeps of ball size, speed, direction and line rate (paper Fig. 5)."""
     from ..lab import experiments as ex
@@ -87,7 +87,7 @@ def fig5(
     cmd = _command("fig5", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []),
                    *(["--textures", textures] if textures else []), *(["--methods", methods] if methods else []),
                    *(["--points", str(points)] if points != 5 else []), *(["--seed", str(seed)] if seed else []))
-    res = ex.run_experiment(cfg, out, jobs=jobs, scheduler=scheduler, progress=not no_progress, fresh=fresh, command=cmd, quick=quick)
+    res = ex.run_experiment(cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, quick=quick)
     _report(res, quick)
 
 
@@ -100,10 +100,10 @@ def fig8(
     methods: Optional[str] = typer.Option(None, "--methods", help="Comma list of initial,paper,fit,pixels (default initial,paper,fit)."),
     overlays: bool = typer.Option(True, "--overlays/--no-overlays", help="Also draw Fig. 7-like overlay images."),
     seed: int = _SEED,
-    jobs: Optional[int] = _JOBS,
+    jobs: int = _JOBS,
     scheduler: Optional[str] = _SCHED,
     fresh: bool = _FRESH,
-    no_progress: bool = _NOPROG,
+    progress: bool = _PROGRESS,
 ) -> None:
     """The laboratory rail: viewing-plane rotation 0/4/10 deg, 100/200 lines/s (paper Fig. 7-8)."""
     from ..lab import experiments as ex
@@ -117,7 +117,7 @@ def fig8(
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("fig8", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []))
     res = ex.run_experiment(
-        cfg, out, jobs=jobs, scheduler=scheduler, progress=not no_progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
+        cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
     )
     _report(res, quick)
 
@@ -129,10 +129,10 @@ def custom(
     quick: bool = typer.Option(False, "--quick", help="End points of each sweep, 8 trials."),
     trials: Optional[int] = typer.Option(None, "--trials", help="Override the config's trials per point."),
     overlays: bool = typer.Option(False, "--overlays/--no-overlays", help="Also draw Fig. 7-like overlays (one image per point)."),
-    jobs: Optional[int] = _JOBS,
+    jobs: int = _JOBS,
     scheduler: Optional[str] = _SCHED,
     fresh: bool = _FRESH,
-    no_progress: bool = _NOPROG,
+    progress: bool = _PROGRESS,
 ) -> None:
     """Sweeps of any factor on your own camera and ball (TOML config)."""
     from ..lab import experiments as ex
@@ -144,6 +144,6 @@ def custom(
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("custom", "--config", str(config), "--out", str(out), "--quick" if quick else "")
     res = ex.run_experiment(
-        cfg, out, jobs=jobs, scheduler=scheduler, progress=not no_progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
+        cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
     )
     _report(res, quick)

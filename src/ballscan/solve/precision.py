@@ -29,6 +29,7 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..model.averaged import averaged_model
 from ..model.pixels import pixel_coverage
+from .derived import COVARIANCE_PARAMETERS
 from .problem import whitened_jacobian
 from .settings import FitSettings
 from .synthetic import synthetic_edges
@@ -89,6 +90,33 @@ class PrecisionBound:
     def sigmas(self) -> np.ndarray:
         """1-sigma of ``(t_c, y0, z0, vx, vy, vz)``."""
         return np.sqrt(np.diag(self.covariance))
+
+    def to_dict(self) -> dict:
+        """The bound as JSON-ready numbers: the motion it is evaluated at, each 1-sigma, and the 6x6 covariance (:data:`ballscan.solve.derived.COVARIANCE_PARAMETERS`)."""
+        m = self.motion
+        v = np.asarray(m.velocity_mps)
+
+        def num(x):
+            x = float(x)
+            return x if math.isfinite(x) else None
+
+        return {
+            "method": self.method,
+            "noise": self.noise,
+            "n_measurements": int(self.n_measurements),
+            "radius_m": m.radius_m,
+            "t_c_s": m.t_c_s,
+            "position_m": [num(x) for x in m.position_m],
+            "velocity_mps": [num(x) for x in m.velocity_mps],
+            "speed_mps": num(m.speed_mps),
+            "direction_deg": [math.degrees(math.atan2(v[1], v[0])), math.degrees(math.atan2(v[2], v[0]))],
+            "t_c_sigma_s": num(self.t_c_sigma_s),
+            "position_sigma_m": [num(x) for x in self.position_sigma_m],
+            "velocity_sigma_mps": [num(x) for x in self.velocity_sigma_mps],
+            "speed_sigma_mps": num(self.speed_sigma_mps),
+            "direction_sigma_deg": [num(x) for x in self.direction_sigma_deg],
+            "covariance": {"parameters": list(COVARIANCE_PARAMETERS), "matrix": [[num(x) for x in row] for row in self.covariance]},
+        }
 
     def to_text(self) -> str:
         """A plain-text table of the bounds (units in the header)."""
