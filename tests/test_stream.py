@@ -497,29 +497,6 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     assert pooled == [json.loads(s)["t_c_s"] for s in printed.splitlines()]
 
 
-def test_pylon_emulated_camera_plays_rendered_chunks(tmp_path, monkeypatch):
-    import importlib.util
-
-    if importlib.util.find_spec("pypylon") is None:
-        pytest.skip("pypylon not installed (optional extra)")
-    monkeypatch.setenv("PYLON_CAMEMU", "1")
-    from ballscan.stream.sources import PylonSource
-
-    data = small_stream(3072)
-    folder = tmp_path / "frames"
-    folder.mkdir()
-    for k, a in enumerate(range(0, 3072, 512)):
-        write_image(folder / f"f{k:03d}.png", data[a : a + 512])
-    try:
-        src = PylonSource(frames=6, width=512, height=512, image_folder=folder, timeout_s=5.0)
-        res = list(process_stream(src, CAM, RADIUS, source=src.name))
-    except SourceError as exc:  # pragma: no cover - depends on the pylon runtime
-        pytest.skip(f"pylon emulation unavailable: {exc}")
-    ref = list(process_stream(ArraySource(data, 512), CAM, RADIUS))
-    assert [r.estimate.t_c_s for r in res] == [r.estimate.t_c_s for r in ref]
-    assert len(res) == 2
-
-
 def test_chunk_dataclass_is_frozen():
     c = Chunk(np.zeros((2, 4), np.uint8))
     with pytest.raises(AttributeError):

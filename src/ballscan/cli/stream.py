@@ -36,19 +36,30 @@ def open_source(
     chunk_lines: int = 1024,
     timestamps: Path | None = None,
     timeout_s: float | None = None,
+    pfs: Path | None = None,
+    pixel_format: str | None = None,
+    pylon_timestamps: str = "none",
 ):
     """The line source named by ``source``.
 
     ``-`` is standard input (raw lines), a folder is a folder of image
-    chunks, ``pylon`` or ``pylon:SERIAL`` a Basler camera, anything else a
-    raw file or named pipe.
+    chunks, ``pylon`` or ``pylon:SERIAL`` a Basler camera (line times at the
+    camera file's ``line_rate_hz``), anything else a raw file or named pipe.
+    ``pfs``, ``pixel_format`` and ``pylon_timestamps`` are for a camera only.
     """
     from ..stream.sources import ImageFolderSource, PylonSource, RawLineSource
 
+    if source == "pylon" or source.startswith("pylon:"):
+        serial = source.partition(":")[2] or None
+        return PylonSource(
+            serial, line_rate_hz=camera.line_rate_hz, timeout_s=timeout_s or 5.0,
+            timestamps=pylon_timestamps, pixel_format=pixel_format, pfs=pfs,
+        )
+    given = [name for name, v in (("--pfs", pfs), ("--pixel-format", pixel_format)) if v is not None]
+    given += ["--pylon-timestamps"] if pylon_timestamps != "none" else []
+    if given:
+        raise ValueError(f"{' and '.join(given)}: only for a camera source (pylon or pylon:SERIAL), not {source!r}")
     w = int(width) if width is not None else camera.width
-    if source.startswith("pylon"):
-        serial = source.split(":", 1)[1] if ":" in source else None
-        return PylonSource(serial, timeout_s=timeout_s or 5.0)
     if source != "-" and Path(source).is_dir():
         return ImageFolderSource(source, w, timestamps=timestamps)
     return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps)

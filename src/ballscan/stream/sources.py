@@ -46,6 +46,11 @@ __all__ = [
     "ImageFolderSource",
     "ArraySource",
     "PylonSource",
+    "PylonFrames",
+    "block_gap",
+    "tick_frequency_hz",
+    "PYLON_PIXEL_FORMATS",
+    "PYLON_TIMESTAMPS",
     "SimulatedStream",
     "simulate_stream",
     "stream_balls",
@@ -366,6 +371,14 @@ class ArraySource:
 # --------------------------------------------------------------------------
 # Basler cameras through pypylon (optional extra)
 # --------------------------------------------------------------------------
+#: Pixel formats a pylon source grabs, with the sample type of their chunks.
+PYLON_PIXEL_FORMATS = {"Mono8": np.dtype(np.uint8), "Mono12": np.dtype(np.uint16), "Mono16": np.dtype(np.uint16)}
+#: Where a pylon source's line times come from (see :class:`PylonFrames`).
+PYLON_TIMESTAMPS = ("none", "grab", "chunk")
+_BLOCK_ID_INVALID = 2**64 - 1  # pylon's "this block ID must not be used"
+_GIGE_BLOCK_ID_MAX = 65535  # GigE block IDs (standard ID mode) run 1..65535 and wrap to 1
+
+
 def _import_pylon():
     """``(genicam, pylon)`` from pypylon, or a one-line SourceError when it is missing."""
     import warnings
@@ -382,12 +395,209 @@ def _import_pylon():
     return genicam, pylon
 
 
+def _pylon_message(exc: BaseException, limit: int = 160) -> str:
+    """A pylon exception's text on one line, at most ``limit`` characters."""
+    return " ".join(str(exc).split())[:limit]
+
+
+def block_gap(previous: int | None, block_id: int) -> int:
+    """Frames missing between two consecutive grab results, from their block IDs.
+
+    GigE cameras number frames 1..65535 and wrap to 1 (64-bit in extended ID
+    mode), USB3 cameras from 0 on (64-bit); ``2**64 - 1`` marks an invalid
+    ID and a camera without block IDs sends 0 for every frame.
+
+    Parameters
+    ----------
+    previous : int or None
+        Block ID of the frame before (None: this is the first frame).
+    block_id : int
+        Block ID of this frame.
+
+    Returns
+    -------
+    int
+        Frames lost in between (0 when the IDs cannot tell).
+    """
+    if previous is None or _BLOCK_ID_INVALID in (previous, block_id):
+        return 0
+    if block_id > previous:
+        return block_id - previous - 1
+    if 1 <= block_id < previous <= _GIGE_BLOCK_ID_MAX:
+        return _GIGE_BLOCK_ID_MAX - previous + block_id - 1
+    return 0
+
+
+def tick_frequency_hz(nodemap: Any, genicam: Any, name: str = "pylon") -> float:
+    """Timestamp ticks per second of a camera (Hz).
+
+    GigE cameras count ticks of ``GevTimestampTickFrequency``; USB3 cameras
+    (no such feature) count nanoseconds.
+
+    Parameters
+    ----------
+    nodemap : genicam.INodeMap
+        The camera's node map.
+    genicam : module
+        pypylon's ``genicam`` (for ``IsReadable``).
+    name : str
+        Name of the source in messages.
+
+    Returns
+    -------
+    float
+        Ticks per second: the feature's value, else 1e9.
+
+    Raises
+    ------
+    SourceError
+        If the camera reports a frequency that is not positive.
+    """
+    node = nodemap.GetNode("GevTimestampTickFrequency")
+    if node is None or not genicam.IsReadable(node):
+        return 1e9
+    f = float(node.GetValue())
+    if not f > 0:
+        raise SourceError(f"{name}: the camera reports GevTimestampTickFrequency = {f:g} Hz: its timestamps cannot be converted to seconds")
+    return f
+
+
+def _check_pylon_timing(line_rate_hz: float, timestamps: str) -> None:
+    if timestamps not in PYLON_TIMESTAMPS:
+        raise ValueError(f"--pylon-timestamps: must be one of {', '.join(PYLON_TIMESTAMPS)}, got {timestamps!r}")
+    if isinstance(line_rate_hz, bool) or not isinstance(line_rate_hz, (int, float, np.number)) or not line_rate_hz > 0:
+        raise ValueError(f"pylon source: the line rate must be positive (Hz), got {line_rate_hz!r}")
+
+
+class PylonFrames:
+    """Grab results to chunks: the lines copied, their times (s), block-ID gaps as dropped lines.
+
+    Line ``i`` of a frame gets the frame's time plus ``i / line_rate_hz``.
+    The frame's time is, by ``timestamps``:
+
+    - ``"none"``: its first line's index in the stream, counting the lines
+      of lost frames, over ``line_rate_hz`` (the engine's ``line /
+      line_rate`` where nothing is lost);
+    - ``"grab"``: the grab result's ``GetTimeStamp()``, camera ticks;
+    - ``"chunk"``: the frame's Timestamp chunk, camera ticks.
+
+    Ticks become seconds since the first frame's exposure start (integer
+    ticks subtracted first: no precision lost on a large clock). A gap of
+    ``k`` block IDs means ``k * Height`` lines were lost: the times jump
+    across it, so the engine flags a ball it crosses ``dropped_lines``;
+    stream line numbers count the lines delivered, as with a timestamps file.
+
+    Parameters
+    ----------
+    line_rate_hz : float
+        Lines per second (Hz).
+    timestamps : {"none", "grab", "chunk"}
+    tick_frequency_hz : float
+        Camera timestamp ticks per second (Hz); 1e9 for nanoseconds.
+    name : str
+        Name in messages.
+
+    Attributes
+    ----------
+    frames, lines_read : int
+        Frames and lines delivered.
+    dropped_frames, dropped_lines : int
+        Frames and lines lost (block-ID gaps).
+    gaps : list of (int, int)
+        ``(line, count)``: ``count`` lines lost after delivered line ``line``.
+    t0_ticks : int or None
+        Camera ticks of the first frame (camera timestamps only): the
+        absolute camera time of ``t`` s is ``t0_ticks / tick_frequency_hz + t``.
+    """
+
+    def __init__(self, line_rate_hz: float, timestamps: str = "none", tick_frequency_hz: float = 1e9, name: str = "pylon") -> None:
+        _check_pylon_timing(line_rate_hz, timestamps)
+        if not tick_frequency_hz > 0:
+            raise ValueError(f"{name}: tick frequency must be positive, got {tick_frequency_hz!r} Hz")
+        self.line_rate_hz = float(line_rate_hz)
+        self.timestamps = timestamps
+        self.tick_frequency_hz = float(tick_frequency_hz)
+        self.name = name
+        self.frames = self.lines_read = self.dropped_frames = self.dropped_lines = 0
+        self.gaps: list[tuple[int, int]] = []
+        self.t0_ticks: int | None = None
+        self._block: int | None = None
+        self._last_t = -math.inf
+
+    def chunk(self, result: Any) -> Chunk:
+        """The chunk of one grab result (its pixels copied: release it afterwards).
+
+        Parameters
+        ----------
+        result : pylon.GrabResult
+            Needs ``GrabSucceeded``, ``GetErrorDescription``, ``GetArray``,
+            ``GetBlockID``, and ``GetTimeStamp`` or ``ChunkTimestamp.Value``
+            for camera timestamps.
+
+        Raises
+        ------
+        SourceError
+            A failed grab, a frame that is not grey, camera times that do not
+            increase or a missing Timestamp chunk.
+        """
+        if not result.GrabSucceeded():
+            raise SourceError(f"{self.name}: grab failed after line {self.lines_read}: {result.GetErrorDescription()}")
+        lines = np.array(result.GetArray())
+        if lines.ndim != 2:
+            raise SourceError(f"{self.name}: frame {self.frames} is not a grey image (shape {lines.shape}; use a Mono pixel format)")
+        self._count_gap(int(result.GetBlockID()), lines.shape[0])
+        times = self._times(result, lines.shape[0])
+        self._last_t = float(times[-1])
+        self.frames += 1
+        self.lines_read += lines.shape[0]
+        return Chunk(lines, times)
+
+    def _count_gap(self, block_id: int, height: int) -> None:
+        missing = block_gap(self._block, block_id)
+        self._block = block_id
+        if missing:
+            self.dropped_frames += missing
+            self.dropped_lines += missing * height
+            self.gaps.append((self.lines_read - 1, missing * height))
+
+    def _times(self, result: Any, n: int) -> np.ndarray:
+        """Times of the frame's ``n`` lines (s)."""
+        if self.timestamps == "none":
+            first = self.lines_read + self.dropped_lines  # as the engine's line / line_rate, to the bit
+            return np.arange(first, first + n, dtype=np.float64) / self.line_rate_hz
+        return self._frame_time(result) + np.arange(n) / self.line_rate_hz
+
+    def _frame_time(self, result: Any) -> float:
+        """Camera time of the frame's first line (s since the first frame's)."""
+        ticks = self._ticks(result)
+        if self.t0_ticks is None:
+            self.t0_ticks = ticks
+        t = (ticks - self.t0_ticks) / self.tick_frequency_hz
+        if not t > self._last_t:
+            raise SourceError(
+                f"{self.name}: frame {self.frames} starts at {t:.9g} s, not after the previous frame's last line ({self._last_t:.9g} s): "
+                f"the camera's {self.timestamps} timestamps do not advance, or its line rate exceeds {self.line_rate_hz:g} Hz (--pylon-timestamps none counts lines instead)"
+            )
+        return t
+
+    def _ticks(self, result: Any) -> int:
+        if self.timestamps == "grab":
+            return int(result.GetTimeStamp())
+        try:
+            return int(result.ChunkTimestamp.Value)
+        except AttributeError:
+            raise SourceError(f"{self.name}: frame {self.frames} carries no Timestamp chunk (--pylon-timestamps chunk)") from None
+
+
 class PylonSource:
     """Lines grabbed from a Basler camera with pypylon (optional extra: ``pip install pypylon``).
 
     Each grabbed frame of a line-scan camera is ``Height`` lines of
     ``Width`` pixels; it becomes one chunk (``Mono8`` -> ``uint8``,
-    ``Mono12``/``Mono16`` -> ``uint16``).
+    ``Mono12``/``Mono16`` -> ``uint16``) with its lines' times from
+    :class:`PylonFrames`. The camera is set up in this order: the feature
+    file, ``Width``/``Height``, the emulator's image folder, ``PixelFormat``,
+    the Timestamp chunk.
 
     Parameters
     ----------
@@ -395,6 +605,9 @@ class PylonSource:
         Serial number of the camera (default: the first found). With the
         environment variable ``PYLON_CAMEMU=1`` (set before pypylon is
         imported) pylon offers emulated cameras.
+    line_rate_hz : float
+        Lines per second (Hz): the line times within a frame, and the
+        frames' times without camera timestamps.
     frames : int or None
         Stop after this many frames (default: run until interrupted).
     timeout_s : float
@@ -407,93 +620,169 @@ class PylonSource:
         For an emulated camera: play back the images of this folder
         (``ImageFilename``, ``ImageFileMode = On``, ``TestImageSelector =
         Off``; pylon plays them in name order and loops).
-    camera_timestamps : bool
-        Give each line the frame's timestamp (camera ticks, taken as ns) plus
-        its index times ``line_period_s``. Off by default: lines then get
-        ``line / line_rate`` from the engine.
-    line_period_s : float or None
-        Line period for ``camera_timestamps``.
+    timestamps : {"none", "grab", "chunk"}
+        Where the frames' times come from: the line count, the grab
+        results' timestamps or the Timestamp chunk (``ChunkModeActive``,
+        ``ChunkSelector = Timestamp``, ``ChunkEnable`` are set). Camera ticks
+        are converted with the camera's ``GevTimestampTickFrequency`` (Hz;
+        nanoseconds where it has none, as USB3 cameras).
+    pixel_format : {"Mono8", "Mono12", "Mono16"} or None
+        Set the camera's ``PixelFormat`` (default: leave it).
+    pfs : str, path-like or None
+        A pylon feature file (``.pfs``, saved by pylon Viewer) loaded into
+        the camera first.
+
+    Attributes
+    ----------
+    width : int or None
+        Pixels per line (the camera's, once grabbing).
+    max_dn : int or None
+        Largest sample value of the camera's pixel format (255, 4095 or
+        65535), once grabbing: the saturation level of Mono12 lines is
+        4095, not their ``uint16`` type's maximum.
     """
 
     def __init__(
         self,
         serial: str | None = None,
         *,
+        line_rate_hz: float,
         frames: int | None = None,
         timeout_s: float = 5.0,
         width: int | None = None,
         height: int | None = None,
         image_folder: str | os.PathLike[str] | None = None,
-        camera_timestamps: bool = False,
-        line_period_s: float | None = None,
+        timestamps: str = "none",
+        pixel_format: str | None = None,
+        pfs: str | os.PathLike[str] | None = None,
     ) -> None:
+        _check_pylon_timing(line_rate_hz, timestamps)
+        if pixel_format is not None and pixel_format not in PYLON_PIXEL_FORMATS:
+            raise ValueError(f"--pixel-format: must be one of {', '.join(PYLON_PIXEL_FORMATS)}, got {pixel_format!r}")
+        if pfs is not None and not Path(pfs).is_file():
+            raise SourceError(f"{os.fspath(pfs)}: no such pylon feature file (--pfs)")
         _import_pylon()
-        if camera_timestamps and not (line_period_s and line_period_s > 0):
-            raise ValueError("line_period_s: needed (positive) with camera_timestamps")
+        self.name = f"pylon:{serial or 'first'}"
         self.serial = serial
+        self.line_rate_hz = float(line_rate_hz)
         self.frames = frames
         self.timeout_s = float(timeout_s)
         self.set_width = width
         self.set_height = height
         self.image_folder = None if image_folder is None else os.fspath(image_folder)
-        self.camera_timestamps = camera_timestamps
-        self.line_period_s = line_period_s
-        self.name = f"pylon:{serial or 'first'}"
+        self.timestamps = timestamps
+        self.pixel_format = pixel_format
+        self.max_dn: int | None = None
+        self.pfs = None if pfs is None else os.fspath(pfs)
         self.width: int | None = width
-        self.lines_read = 0
+        self._frames = PylonFrames(self.line_rate_hz, timestamps, name=self.name)
+
+    @property
+    def lines_read(self) -> int:
+        """Lines delivered so far."""
+        return self._frames.lines_read
+
+    @property
+    def dropped_lines(self) -> int:
+        """Lines lost so far (block-ID gaps)."""
+        return self._frames.dropped_lines
+
+    @property
+    def gaps(self) -> list[tuple[int, int]]:
+        """``(line, count)`` of each block-ID gap: ``count`` lines lost after delivered line ``line``."""
+        return list(self._frames.gaps)
 
     def __iter__(self) -> Iterator[Chunk]:
         genicam, pylon = _import_pylon()
-
-        factory = pylon.TlFactory.GetInstance()
-        dev = None
-        for d in factory.EnumerateDevices():
-            if self.serial is None or d.GetSerialNumber() == self.serial:
-                dev = d
-                break
-        if dev is None:
-            raise SourceError(f"{self.name}: no Basler camera found (PYLON_CAMEMU=1 offers emulated ones)")
+        cam = self._open(genicam, pylon)
         try:
-            cam = pylon.InstantCamera(factory.CreateDevice(dev))
-            cam.Open()
-        except genicam.GenericException as exc:
-            raise SourceError(f"{self.name}: cannot open the camera ({' '.join(str(exc).split())[:160]})") from None
-        try:
-            if self.set_width is not None:
-                cam.Width.SetValue(int(self.set_width))
-            if self.set_height is not None:
-                cam.Height.SetValue(int(self.set_height))
-            if self.image_folder is not None:
-                cam.ImageFilename.SetValue(self.image_folder)
-                cam.ImageFileMode.SetValue("On")
-                cam.TestImageSelector.SetValue("Off")
-            self.width = int(cam.Width.GetValue())
+            self._frames = self._configure(cam, genicam, pylon)
             cam.StartGrabbing(pylon.GrabStrategy_OneByOne)
-            n = 0
-            while cam.IsGrabbing() and (self.frames is None or n < self.frames):
+            for result in self._results(cam, genicam, pylon):
                 try:
-                    res = cam.RetrieveResult(int(self.timeout_s * 1000), pylon.TimeoutHandling_ThrowException)
-                except genicam.TimeoutException:
-                    raise SourceStalled(f"{self.name}: no frame for {self.timeout_s:g} s after line {self.lines_read} (camera stalled)") from None
-                try:
-                    if not res.GrabSucceeded():
-                        raise SourceError(f"{self.name}: grab failed after line {self.lines_read}: {res.GetErrorDescription()}")
-                    arr = np.array(res.GetArray())
-                    tick_s = res.GetTimeStamp() * 1e-9
+                    chunk = self._frames.chunk(result)
                 finally:
-                    res.Release()
-                if arr.ndim != 2:
-                    raise SourceError(f"{self.name}: frame {n} is not a grey image (shape {arr.shape}; use a Mono pixel format)")
-                ts = tick_s + np.arange(arr.shape[0]) * self.line_period_s if self.camera_timestamps else None
-                n += 1
-                self.lines_read += arr.shape[0]
-                yield Chunk(arr, ts)
+                    result.Release()
+                yield chunk
         except genicam.GenericException as exc:
-            raise SourceError(f"{self.name}: pylon error after line {self.lines_read}: {' '.join(str(exc).split())[:200]}") from None
+            raise SourceError(f"{self.name}: pylon error after line {self.lines_read}: {_pylon_message(exc, 200)}") from None
         finally:
             if cam.IsGrabbing():
                 cam.StopGrabbing()
             cam.Close()
+
+    def _open(self, genicam: Any, pylon: Any) -> Any:
+        """The camera of ``serial`` (or the first), opened."""
+        factory = pylon.TlFactory.GetInstance()
+        devices = list(factory.EnumerateDevices())
+        dev = next((d for d in devices if self.serial is None or d.GetSerialNumber() == self.serial), None)
+        if dev is None:
+            found = ", ".join(d.GetSerialNumber() for d in devices) or "none; PYLON_CAMEMU=1 offers emulated ones"
+            raise SourceError(f"{self.name}: no Basler camera{' with serial number ' + self.serial if self.serial else ''} (found: {found})")
+        try:
+            cam = pylon.InstantCamera(factory.CreateDevice(dev))
+            cam.Open()
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.name}: cannot open the camera ({_pylon_message(exc)})") from None
+        return cam
+
+    def _configure(self, cam: Any, genicam: Any, pylon: Any) -> PylonFrames:
+        """Set the camera up; the frame converter for its clock."""
+        nodemap = cam.GetNodeMap()
+        if self.pfs is not None:
+            self._load_pfs(nodemap, genicam, pylon)
+        if self.set_width is not None:
+            self._set(nodemap, genicam, "Width", int(self.set_width))
+        if self.set_height is not None:
+            self._set(nodemap, genicam, "Height", int(self.set_height))
+        if self.image_folder is not None:
+            self._set(nodemap, genicam, "ImageFilename", self.image_folder)
+            self._set(nodemap, genicam, "ImageFileMode", "On")
+            self._set(nodemap, genicam, "TestImageSelector", "Off")
+        if self.pixel_format is not None:
+            self._set(nodemap, genicam, "PixelFormat", self.pixel_format, "--pixel-format")
+        if self.timestamps == "chunk":
+            for feature, value in (("ChunkModeActive", True), ("ChunkSelector", "Timestamp"), ("ChunkEnable", True)):
+                self._set(nodemap, genicam, feature, value, "--pylon-timestamps chunk")
+        self.max_dn = self._bits(nodemap)
+        self.width = int(nodemap.GetNode("Width").GetValue())
+        f = 1e9 if self.timestamps == "none" else tick_frequency_hz(nodemap, genicam, self.name)
+        return PylonFrames(self.line_rate_hz, self.timestamps, f, self.name)
+
+    def _load_pfs(self, nodemap: Any, genicam: Any, pylon: Any) -> None:
+        try:
+            pylon.FeaturePersistence.Load(self.pfs, nodemap, True)
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.pfs}: cannot load this pylon feature file into {self.name} ({_pylon_message(exc)})") from None
+
+    def _bits(self, nodemap: Any) -> int:
+        """Largest sample value of the camera's pixel format; SourceError unless Mono8/12/16."""
+        fmt = str(nodemap.GetNode("PixelFormat").ToString())
+        if fmt not in PYLON_PIXEL_FORMATS:
+            raise SourceError(f"{self.name}: the camera's PixelFormat is {fmt}; ballscan grabs {', '.join(PYLON_PIXEL_FORMATS)} (--pixel-format)")
+        return (1 << int(fmt[4:])) - 1
+
+    def _set(self, nodemap: Any, genicam: Any, feature: str, value: Any, option: str = "") -> None:
+        """Set a camera feature, or a one-line SourceError naming it, the value and the option that asked for it."""
+        node = nodemap.GetNode(feature)
+        why = f" ({option})" if option else ""
+        if node is None or not genicam.IsWritable(node):
+            raise SourceError(f"{self.name}: the camera has no writable {feature} to set to {value!r}{why}")
+        try:
+            node.SetValue(value)
+        except genicam.GenericException as exc:
+            raise SourceError(f"{self.name}: the camera refuses {feature} = {value!r}{why}: {_pylon_message(exc)}") from None
+
+    def _results(self, cam: Any, genicam: Any, pylon: Any) -> Iterator[Any]:
+        """Grab results until ``frames`` or the camera stops; SourceStalled after ``timeout_s`` without one."""
+        n = 0
+        while cam.IsGrabbing() and (self.frames is None or n < self.frames):
+            try:
+                result = cam.RetrieveResult(int(self.timeout_s * 1000), pylon.TimeoutHandling_ThrowException)
+            except genicam.TimeoutException:
+                raise SourceStalled(f"{self.name}: no frame for {self.timeout_s:g} s after line {self.lines_read} (camera stalled)") from None
+            n += 1
+            yield result
 
 
 # --------------------------------------------------------------------------
