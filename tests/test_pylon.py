@@ -14,8 +14,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from ballscan.cli.app import main
 from ballscan.cli.stream import open_source
-from ballscan.geometry.camera import LineScanCamera
+from ballscan.geometry.camera import LineScanCamera, save_camera
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render, write_image
 from ballscan.stream.engine import process_stream
@@ -173,6 +174,22 @@ def test_a_lost_frame_flags_the_ball_it_crosses_and_keeps_its_timing():
 
 
 # ------------------------------------------------------------ bad settings
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--pixel-format", "Mono10"], "--pixel-format: must be one of Mono8, Mono12, Mono16, got 'Mono10'"),
+        (["--pylon-timestamps", "camera"], "--pylon-timestamps: must be one of none, grab, chunk, got 'camera'"),
+        (["--pfs", "missing.pfs"], "missing.pfs: no such pylon feature file (--pfs)"),
+    ],
+)
+def test_bad_pylon_options_are_one_line_errors_before_a_camera_opens(tmp_path, capsys, monkeypatch, args, message):
+    monkeypatch.chdir(tmp_path)
+    save_camera(CAM, tmp_path / "cam.toml")
+    code = main(["watch", "pylon:123", "--camera", "cam.toml", "--radius", "0.0335", *args])
+    err = capsys.readouterr().err
+    assert code == 2 and err == f"ballscan: error: {message}\n"
+
+
 def test_pylon_options_are_refused_for_other_sources(tmp_path):
     with pytest.raises(ValueError, match=r"^--pfs and --pylon-timestamps: only for a camera source \(pylon or pylon:SERIAL\), not 'run.raw'$"):
         open_source("run.raw", CAM, pfs=tmp_path / "cam.pfs", pylon_timestamps="grab")

@@ -196,7 +196,10 @@ def watch(
     dtype: Annotated[str, typer.Option("--dtype", help="Raw sample type: uint8 or uint16 (little-endian).")] = "uint8",
     chunk_lines: Annotated[int, typer.Option("--chunk-lines", help="Lines read at a time from a raw source.")] = 1024,
     timestamps: Annotated[Optional[Path], typer.Option("--timestamps", help="Per-line timestamps (text or .npy), seconds.")] = None,
-    timeout: Annotated[Optional[float], typer.Option("--timeout", help="Give up when a pipe sends nothing for this many seconds.")] = None,
+    timeout: Annotated[Optional[float], typer.Option("--timeout", help="Give up when a pipe or a camera sends nothing for this many seconds (camera default 5).")] = None,
+    pfs: Annotated[Optional[Path], typer.Option("--pfs", help="Camera: a pylon feature file (.pfs, saved by pylon Viewer) loaded first.")] = None,
+    pixel_format: Annotated[Optional[str], typer.Option("--pixel-format", help="Camera: set its PixelFormat, Mono8, Mono12 or Mono16 (default: as it is).")] = None,
+    pylon_timestamps: Annotated[str, typer.Option("--pylon-timestamps", help="Camera: the frames' times from 'none' (the line count at the camera file's line rate, default), 'grab' (the grab results' timestamps) or 'chunk' (the Timestamp chunk); lost frames (block-ID gaps) flag a ball dropped_lines.")] = "none",
     method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
     shading: Annotated[bool, typer.Option("--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate).")] = True,
     matched: Annotated[bool, typer.Option("--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on).")] = True,
@@ -225,7 +228,10 @@ def watch(
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
     # the settings first: a bad one is reported before a pipe or a camera is opened
     cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
-    src = open_source(source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout)
+    src = open_source(
+        source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout,
+        pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps,
+    )
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
     stream = sys.stdout
