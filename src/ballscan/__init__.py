@@ -25,13 +25,7 @@ experiments) -> ``cli``.
 from __future__ import annotations
 
 import importlib
-from importlib import metadata as _metadata
 from typing import TYPE_CHECKING
-
-try:
-    __version__ = _metadata.version("ballscan")
-except _metadata.PackageNotFoundError:  # run from a source tree without installing
-    __version__ = "0+unknown"
 
 #: Public name -> the module that defines it.
 _EXPORTS = {
@@ -61,7 +55,20 @@ _EXPORTS = {
 __all__ = ["__version__", *sorted(_EXPORTS)]
 
 
+def _version() -> str:
+    """The installed distribution's version (importlib.metadata takes tens of milliseconds to import: read on first use)."""
+    from importlib import metadata
+
+    try:
+        return metadata.version("ballscan")
+    except metadata.PackageNotFoundError:  # run from a source tree without installing
+        return "0+unknown"
+
+
 def __getattr__(name: str):
+    if name == "__version__":
+        globals()["__version__"] = value = _version()
+        return value
     module = _EXPORTS.get(name)
     if module is None:
         raise AttributeError(f"module 'ballscan' has no attribute {name!r}")
@@ -71,10 +78,11 @@ def __getattr__(name: str):
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_EXPORTS))
+    return sorted(set(globals()) | set(_EXPORTS) | {"__version__"})
 
 
 if TYPE_CHECKING:  # what static checkers and IDEs see
+    __version__: str
     from .errors import BallscanError
     from .geometry.camera import LineScanCamera, load_camera, save_camera
     from .geometry.motion import BallMotion

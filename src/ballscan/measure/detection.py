@@ -51,7 +51,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import ndimage as ndi
 
 from ..compiled import as_arg
 from ._detection_kernels import (
@@ -424,7 +423,9 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
     # half a window long, and a ball covering that end would out-vote the background.
     size = min(win, 2 * w - 1)
     if np.isnan(col_med).any():
-        neighbours = ndi.median_filter(col_med, size=size, mode="reflect")
+        from scipy.ndimage import median_filter  # only here: scipy.ndimage takes a quarter second to import
+
+        neighbours = median_filter(col_med, size=size, mode="reflect")
     else:
         # compiled (_detection_kernels.reflect_median_filter): ndi.median_filter's values
         neighbours = reflect_median_filter(col_med, size)
@@ -631,6 +632,8 @@ def _group_components(
             & (c0[None, :] - gap < c1[:, None])
         )
         ii, jj = np.nonzero(np.triu(near, 1))
+        from scipy.ndimage import binary_dilation  # pieces near each other only
+
         st = np.ones((2 * gap + 1, 2 * gap + 1), dtype=bool)
         for i, j in zip(ii.tolist(), jj.tolist()):
             if find(i) == find(j):
@@ -639,7 +642,7 @@ def _group_components(
             ls = slice(min(l0[i], l0[j]), max(l1[i], l1[j]))
             cs = slice(min(c0[i], c0[j]), max(c1[i], c1[j]))
             sub = lab[ls, cs]
-            mi = ndi.binary_dilation(sub == ids[i] + 1, st)
+            mi = binary_dilation(sub == ids[i] + 1, st)
             if np.any(mi & (sub == ids[j] + 1)):
                 parent[find(i)] = find(j)
     groups: dict[int, list[int]] = {}

@@ -35,7 +35,6 @@ from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
-from scipy.ndimage import convolve1d
 
 from ..compiled import as_arg
 from ._flatfield_kernels import median_deviations, sorted_medians
@@ -94,6 +93,8 @@ _DEFECT_FLOOR = 1e-3
 def _trend(x: np.ndarray) -> np.ndarray:
     """``savgol_filter(x, _TREND_COLS, 2, mode="interp")`` (the edges to rounding; ``x`` at least ``_TREND_COLS`` long)."""
     coef, edge, _ = _trend_filter()
+    from scipy.ndimage import convolve1d
+
     y = convolve1d(x, coef, mode="constant")
     h = _TREND_COLS // 2
     y[:h] = edge @ x[:_TREND_COLS]

@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
-from scipy import ndimage as ndi
 
 from ..measure.detection import BallRegion, Detection, background_at
 from .recipe import Recipe
@@ -44,7 +43,9 @@ def refine_background(data: np.ndarray, detection: Detection, region: BallRegion
     box = np.ones((2 * gl + 1, 2 * gp + 1), dtype=bool)
     for r in detection.regions:
         # the mask grown by the guard box
-        grown = ndi.binary_dilation(np.pad(np.asarray(r.mask, dtype=bool), ((gl, gl), (gp, gp))), structure=box)
+        from scipy.ndimage import binary_dilation  # scipy.ndimage loads with the first refined background
+
+        grown = binary_dilation(np.pad(np.asarray(r.mask, dtype=bool), ((gl, gl), (gp, gp))), structure=box)
         l0, k0 = r.line_start - gl, r.col_start - gp - c_lo
         a0, b0 = max(l0, 0), max(k0, 0)
         a1, b1 = min(l0 + grown.shape[0], n), min(k0 + grown.shape[1], c_hi - c_lo)

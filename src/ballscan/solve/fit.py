@@ -27,7 +27,6 @@ import time
 from dataclasses import dataclass, field, replace
 
 import numpy as np
-from scipy.special import chdtri
 
 from ..compiled import as_arg
 from ._fit_kernels import loose_rows, on_both_sides
@@ -459,4 +458,6 @@ def _partial_verdict(states, sels, sol: SolveResult, settings: FitSettings) -> s
         return "agree"
     d = v[:, keep].T @ step
     stat = float(np.sum(d * d / w[keep]))
+    from scipy.special import chdtri  # scipy.special loads with the first partial end tested
+
     return "agree" if stat <= float(chdtri(int(keep.sum()), settings.partial_shift_p)) else "disagree"

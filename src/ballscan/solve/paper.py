@@ -32,7 +32,6 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import minimize
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
@@ -167,6 +166,8 @@ def refine_paper(
     opts = dict(POWELL_OPTIONS)
     if options:
         opts.update(options)
+    from scipy.optimize import minimize  # the paper method only: scipy.optimize loads then
+
     res = minimize(energy, np.zeros(6), method="Powell", options=opts)
     theta = theta0 + res.x * scale
     motion = BallMotion.from_params(theta, R, accel)

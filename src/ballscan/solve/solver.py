@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from ._fit_kernels import damped, equilibrated
 from .settings import FitSettings
@@ -229,6 +228,8 @@ def scipy_least_squares(
 ) -> SolveResult:
     """:func:`scipy.optimize.least_squares` (``trf``, tolerances 1e-12) on ``problem``, scaled by ``x_scale`` (the parameters' units)."""
     both = _Both(problem)
+    from scipy.optimize import least_squares  # the cross-check only: scipy.optimize loads then
+
     res = least_squares(
         both.residuals, x0, jac=both.jacobian, x_scale=x_scale, loss=loss, f_scale=settings.f_scale, method="trf",
         max_nfev=settings.max_nfev, xtol=1e-12, ftol=1e-12, gtol=1e-12,
