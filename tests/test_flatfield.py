@@ -142,3 +142,15 @@ def test_column_median_and_deviation_are_the_numpy_forms_bit_for_bit():
             mad = _masked_median_numpy(np.abs(v - med[None, :]), mask, 0)
             got = _column_median_mad(v, mask)
         assert np.array_equal(got[0], med, equal_nan=True) and np.array_equal(got[1], mad, equal_nan=True), trial
+
+
+def test_the_trend_is_scipys_savitzky_golay_filter():
+    from scipy.signal import savgol_coeffs, savgol_filter
+
+    from ballscan.measure.flatfield import _TREND_COLS, _trend, _trend_filter
+
+    coef, _, leak = _trend_filter()
+    np.testing.assert_allclose(coef, savgol_coeffs(_TREND_COLS, 2), rtol=0, atol=1e-14)
+    assert leak == pytest.approx(float(np.sum(coef**2)))
+    x = np.random.default_rng(1).normal(size=80).cumsum()
+    np.testing.assert_allclose(_trend(x.copy()), savgol_filter(x, _TREND_COLS, 2, mode="interp"), rtol=0, atol=1e-9)

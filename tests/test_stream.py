@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import typer
 
 from ballscan.geometry.camera import LineScanCamera, save_camera
 from ballscan.pipeline.estimate import estimate_image
@@ -359,7 +360,7 @@ def test_truncated_raw_stream_keeps_results(tmp_path, capsys):
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     with pytest.raises(TruncatedStream, match=r"t.raw: ends with a partial line of 100 bytes .*the 3000 complete lines before it were processed"):
-        watch(str(raw), cam_path, RADIUS, status=False)
+        watch(str(raw), cam_path, RADIUS, progress=False)
     lines = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
     assert len(lines) == 2
     for d in lines:
@@ -374,7 +375,7 @@ def test_wrong_raw_width_is_a_truncated_line(tmp_path):
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     with pytest.raises(Exception, match="--width 511 differs from the camera's width = 512"):
-        watch(str(raw), cam_path, RADIUS, width=511, status=False)
+        watch(str(raw), cam_path, RADIUS, width=511, progress=False)
 
 
 def test_image_folder_source_and_wrong_width(tmp_path):
@@ -465,7 +466,7 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     raw = write_raw(tmp_path / "s.raw", small_stream(3000))
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
-    n = watch(str(raw), cam_path, RADIUS, save_events=tmp_path / "ev", status=False)
+    n = watch(str(raw), cam_path, RADIUS, save_events=tmp_path / "ev", progress=False)
     assert n == 2
     printed = capsys.readouterr().out
     pngs = sorted(p.name for p in (tmp_path / "ev").glob("*.png"))
@@ -492,7 +493,7 @@ def test_watch_saves_events_and_runs_as_typer_command(tmp_path, capsys):
     assert "--out" not in CliRunner().invoke(app, ["watch", "--help"]).stdout
     # estimates in a worker process: the same lines out
     capsys.readouterr()
-    assert watch(str(raw), cam_path, RADIUS, status=False, workers=1) == 2
+    assert watch(str(raw), cam_path, RADIUS, progress=False, jobs=1) == 2
     pooled = [json.loads(s)["t_c_s"] for s in capsys.readouterr().out.splitlines()]
     assert pooled == [json.loads(s)["t_c_s"] for s in printed.splitlines()]
 
@@ -580,7 +581,7 @@ def test_watch_ctrl_c_ends_the_stream_and_measures_the_ball_in_view(tmp_path, mo
     monkeypatch.setattr(sc, "open_source", lambda *a, **k: Interrupted())
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
-    assert watch("whatever", cam_path, RADIUS, status=False) == 2
+    assert watch("whatever", cam_path, RADIUS, progress=False) == 2
     cap = capsys.readouterr()
     assert "interrupted after 3000 lines, 2 balls" in cap.err
     assert "cut_last_line" in json.loads(cap.out.splitlines()[-1])["flags"]
@@ -684,3 +685,30 @@ def test_stream_config_refuses_a_bad_value_naming_its_field(field, bad):
     with pytest.raises(ValueError, match=rf"^{field}: "):
         StreamConfig(**{field: bad})
     assert StreamConfig(recipe=Recipe(method="paper")).recipe.method == "paper"
+
+
+def test_watch_table_prints_one_readable_line_per_ball_and_keeps_the_status_apart(tmp_path, capsys):
+    data = small_stream(3000)
+    raw = write_raw(tmp_path / "t.raw", data)
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    assert watch(str(raw), cam_path, RADIUS, progress=False) == 2
+    as_json = [json.loads(s) for s in capsys.readouterr().out.splitlines()]
+    assert watch(str(raw), cam_path, RADIUS, output_format="table", units="km/h", progress=True) == 2
+    out = capsys.readouterr()
+    rows = out.out.splitlines()
+    assert len(rows) == 2
+    for row, d in zip(rows, as_json):
+        assert row.startswith(f"ball {d['event']} | lines {d['first_line']}-{d['last_line']} | {d['speed_mps'] * 3.6:.2f} ± ")
+        assert "km/h" in row and "across axis" in row
+    assert "lines/s" not in out.out and "lines/s" in out.err  # the status line only on stderr
+    assert "\r\x1b[K" in out.err  # wiped before each result
+
+
+def test_watch_refuses_bad_format_and_units(tmp_path):
+    cam_path = tmp_path / "cam.toml"
+    save_camera(CAM, cam_path)
+    with pytest.raises(typer.BadParameter, match="json"):
+        watch("whatever", cam_path, RADIUS, output_format="xml")
+    with pytest.raises(typer.BadParameter, match="km/h"):
+        watch("whatever", cam_path, RADIUS, units="knots")

@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated, Optional
 
@@ -24,7 +25,7 @@ if TYPE_CHECKING:  # the estimator (numba, scipy) loads only when a command runs
     from ..geometry.camera import LineScanCamera
     from ..stream.engine import StreamResult
 
-__all__ = ["watch", "batch", "open_source", "save_event"]
+__all__ = ["watch", "batch", "format_stream_line", "open_source", "save_event"]
 
 
 def open_source(
@@ -114,7 +115,10 @@ def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_
         cam = crop_camera(camera, *result.crop_cols)
         overlay = folder / f"{stem}_ball{ball_in_event}.overlay.png"
         est = result.estimate
-        save_overlay(overlay, result.crop.astype(float), cam, EstimateReport(png.name, (est,)), result.crop_times_s)
+        save_overlay(
+            overlay, result.crop.astype(float), cam, EstimateReport(png.name, (est,)), result.crop_times_s,
+            first_column=int(result.crop_cols[0]), first_line=int(result.crop_lines[0]),
+        )  # fmt: skip
         written.append(overlay)
     js = folder / f"{stem}_ball{ball_in_event}.json"
     js.write_text(json.dumps(result.to_dict(camera), indent=2, allow_nan=False))
@@ -140,12 +144,20 @@ class _Status:
             return
         self.last = now
         wall = now - self.t0
-        # Lag: how far the stream time read so far is behind the wall clock
-        # (meaningful for a real-time source; negative = faster than real time).
-        lag = wall - stream_time_s
+        # How far the stream read so far is behind the wall clock: for a
+        # real-time source, the reading's delay; a recording read faster than
+        # real time is not behind (0).
+        behind = max(wall - stream_time_s, 0.0)
         rate = lines / wall if wall > 0 else 0.0
-        sys.stderr.write(f"\r{lines:>12,d} lines | {rate / 1e3:8.1f} k lines/s | {balls:5d} balls | lag {lag * 1e3:9.1f} ms ")
+        sys.stderr.write(f"\r{lines:>12,d} lines | {rate / 1e3:8.1f} k lines/s | {balls:5d} balls | behind {behind * 1e3:9.1f} ms \x1b[K")
         sys.stderr.flush()
+
+    def clear(self) -> None:
+        """Wipe the status line, so that a result printed on a shared terminal starts on a clean line."""
+        if self.enabled:
+            sys.stderr.write("\r\x1b[K")
+            sys.stderr.flush()
+            self.last = 0.0  # redrawn at the next update
 
     def close(self, balls: int) -> None:
         if self.enabled:
@@ -208,24 +220,33 @@ def watch(
     margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
     save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs (and the engine's background of the crop's columns and its lines' times, .columns.npz, with which the crop's estimate is reproduced).")] = None,
-    status: Annotated[Optional[bool], typer.Option("--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
-    workers: Annotated[int, typer.Option("--workers", help="Processes that run the estimates (0: in the reading process).")] = 0,
+    output_format: Annotated[str, typer.Option("--format", help="'json' (one JSON line per ball, default) or 'table' (one readable line per ball).")] = "json",
+    units: Annotated[str, typer.Option("--units", help="Speed unit of --format table: m/s, km/h or mph.")] = "m/s",
+    progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", "--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", "--workers", help="Processes that run the estimates (0: in the reading process, default).")] = 0,
 ) -> int:
-    """Measure balls in a continuous line stream, one JSON line per ball as it is measured.
+    """Measure balls in a continuous line stream, one line per ball as it is measured.
 
-    Each line holds geometry.md's estimate keys plus source, first_line and
-    last_line (stream line numbers). The end of the stream or Ctrl-C
-    measures the ball in view and stops; a reader that goes away (| head)
-    ends the watch quietly. Called from Python it returns the number of
-    balls printed.
+    With --format json each line holds geometry.md's estimate keys plus
+    source, first_line and last_line (stream line numbers); with --format
+    table a readable line. Results go to stdout, the status line to stderr.
+    The end of the stream or Ctrl-C measures the ball in view and stops; a
+    reader that goes away (| head) ends the watch quietly.
     """
     from ..geometry.camera import load_camera
+    from ..pipeline.report import UNITS
     from ..pipeline.recipe import Recipe
     from ..stream.engine import StreamConfig, process_stream
 
     cam = load_camera(camera)
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    if output_format not in ("json", "table"):
+        raise typer.BadParameter(f"expected 'json' or 'table', got {output_format!r}", param_hint="--format")
+    if units not in UNITS:
+        raise typer.BadParameter(f"expected one of {', '.join(UNITS)}, got {units!r}", param_hint="--units")
+    if jobs < 0:
+        raise typer.BadParameter(f"must be >= 0, got {jobs}", param_hint="--jobs")
     # the settings first: a bad one is reported before a pipe or a camera is opened
     cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
     src = open_source(
@@ -234,28 +255,35 @@ def watch(
     )
     if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
         raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
+    if getattr(src, "max_dn", None) is not None and cfg.saturation_dn is None:
+        # a camera's 12-bit lines saturate at 4095, not at their type's 65535
+        cfg = replace(cfg, saturation_dn=float(src.max_dn))
     stream = sys.stdout
-    show = sys.stderr.isatty() if status is None else status
+    show = sys.stderr.isatty() if progress is None else progress
     st = _Status(bool(show))
     name = getattr(src, "name", source)
     n = 0
     per_event: dict[int, int] = {}
     gen = _Watched(src, st, cam.line_rate_hz)
     executor = None
-    if workers < 0:
-        raise typer.BadParameter(f"must be >= 0, got {workers}", param_hint="--workers")
-    if workers:
+    if not jobs:
+        from ..stream.engine import preload_estimator
+
+        preload_estimator()  # the kernels' loading is no ball's latency
+    if jobs:
         # Estimates (tens of ms each) in other processes: reading and the
         # per-line test keep up with the camera while balls are measured.
         from concurrent.futures import ProcessPoolExecutor
 
         from ..stream.engine import preload_estimator
 
-        executor = ProcessPoolExecutor(workers, initializer=preload_estimator)
+        executor = ProcessPoolExecutor(jobs, initializer=preload_estimator)
     try:
         for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None, executor=executor):
+            text = json.dumps(res.to_dict(cam), allow_nan=False) if output_format == "json" else format_stream_line(res, cam, units)
             try:
-                stream.write(json.dumps(res.to_dict(cam), allow_nan=False) + "\n")
+                st.clear()
+                stream.write(text + "\n")
                 stream.flush()
             except BrokenPipeError:
                 # The reader went away (e.g. `| head`): stop quietly.
@@ -272,9 +300,35 @@ def watch(
         st.close(n)
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
+    lost = getattr(src, "dropped_lines", 0)
+    if lost:
+        print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
     if gen.interrupted:
         print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
     return n
+
+
+def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str = "m/s") -> str:
+    """One readable line of a stream's ball: lines, speed ± sigma, the speed across the axis, direction, flags, latency."""
+    from ..pipeline.report import UNITS, FLAG_TEXT
+
+    b, u = result.estimate, UNITS[units]
+    parts = [f"ball {result.event_index}", f"lines {b.first_line}-{b.last_line}"]
+    if b.speed_mps is None:
+        parts.append("speed undetermined")
+    else:
+        sig = f" ± {b.speed_sigma_mps * u:.2f}" if b.speed_sigma_mps is not None else ""
+        parts.append(f"{b.speed_mps * u:.2f}{sig} {units}")
+        der = b.derived(camera)
+        if der is not None and b.covariance is not None:
+            parts.append(f"across axis {der.speed_transverse_mps * u:.2f} ± {der.speed_transverse_sigma_mps * u:.2f}")
+            parts.append(f"psi_y {der.direction_deg[0]:.1f} ± {der.direction_sigma_deg[0]:.1f} deg")
+            if der.elevation_deg is not None:
+                parts.append(f"elevation {der.elevation_deg:.1f} ± {der.elevation_sigma_deg:.1f} deg")
+    if b.flags:
+        parts.append("; ".join(FLAG_TEXT[f] for f in b.flags))
+    parts.append(f"{result.latency_s * 1e3:.1f} ms")
+    return " | ".join(parts)
 
 
 def batch(
@@ -282,19 +336,18 @@ def batch(
     out_csv: Annotated[Path, typer.Option("--out", help="CSV file: one row per ball; inputs already in it are skipped.")],
     radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
     camera: Annotated[Optional[Path], typer.Option("--camera", help="Camera TOML for all inputs (default: NAME.camera.toml beside each).")] = None,
-    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Parallel processes on this machine (-1: all cores).")] = 1,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Processes on this machine (1: this process, default; -1: all cores).")] = 1,
     scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Dask distributed scheduler address (tcp://HOST:PORT).")] = None,
     method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
     dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
-    progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar (default: when stderr is a terminal).")] = None,
+    progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar on stderr (default: when it is a terminal).")] = None,
     background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
     Inputs already in the CSV are skipped. Each input that fails is printed
     as one line on stderr and the command exits with status 1; the others
-    are in the CSV. Called from Python it returns the number of balls
-    written (and raises typer.Exit(1) after failures).
+    are in the CSV.
     """
     from ..stream.batch import run_batch
 

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
+from scipy.ndimage import convolve1d
 
 from ..compiled import as_arg
 from ._flatfield_kernels import median_deviations, sorted_medians
@@ -63,23 +64,23 @@ def _edge_projection(n: int, degree: int, half: int) -> np.ndarray:
     return v[:half] @ np.linalg.pinv(v)
 
 
-
-
 @cache
 def _trend_filter() -> tuple[np.ndarray, np.ndarray, float]:
     """``scipy.signal.savgol_filter(x, _TREND_COLS, 2, mode="interp")`` as a fixed linear filter: ``(coefficients, edge projection, leak)``.
 
-    The coefficients and edge fits depend only on the window; computing them
-    per call (two polynomial fits by ``scipy.linalg.lstsq``) would dominate
-    :func:`column_gains`' time on a stream ball.  ``leak`` is the fraction
-    of a white (column-independent) gain pattern's variance that the trend
-    takes.  scipy.signal is imported here, on the first long ball, not with
-    the package (it takes most of a second to import).
+    The centre coefficients of a quadratic Savitzky-Golay window of
+    ``2 m + 1`` points are ``(3 (3 m^2 + 3 m - 1) - 15 i^2) / ((2 m - 1)
+    (2 m + 1) (2 m + 3))`` for ``i = -m .. m`` (``scipy.signal.savgol_coeffs``
+    gives them to rounding; scipy.signal takes most of a second to import);
+    the edges are the least-squares quadratic through the first or last
+    window.  ``leak`` is the fraction of a white (column-independent) gain
+    pattern's variance that the trend takes.
     """
-    from scipy.signal import savgol_coeffs
+    m = _TREND_COLS // 2
+    i = np.arange(-m, m + 1, dtype=float)
+    coef = (3.0 * (3 * m * m + 3 * m - 1) - 15.0 * i * i) / ((2 * m - 1) * (2 * m + 1) * (2 * m + 3))
+    return coef, _edge_projection(_TREND_COLS, 2, m), float(np.sum(coef**2))
 
-    coef = savgol_coeffs(_TREND_COLS, 2)
-    return coef, _edge_projection(_TREND_COLS, 2, _TREND_COLS // 2), float(np.sum(coef**2))
 
 # a column whose ratio to the trend is off by more than this many sigmas
 # (the gains' scatter and its measurement's noise) is defective, not a gain
@@ -93,8 +94,6 @@ _DEFECT_FLOOR = 1e-3
 def _trend(x: np.ndarray) -> np.ndarray:
     """``savgol_filter(x, _TREND_COLS, 2, mode="interp")`` (the edges to rounding; ``x`` at least ``_TREND_COLS`` long)."""
     coef, edge, _ = _trend_filter()
-    from scipy.ndimage import convolve1d
-
     y = convolve1d(x, coef, mode="constant")
     h = _TREND_COLS // 2
     y[:h] = edge @ x[:_TREND_COLS]
