@@ -320,3 +320,23 @@ def test_matched_edges_get_their_own_floor_in_the_fit():
     assert np.allclose(T.sigma_right[~flag], np.sqrt(np.nan_to_num(e.right_sigma_px)[~flag] ** 2 + st.matched_floor_px**2))
     # without flags every edge has the window floor
     assert np.allclose(weight_tables(e, st).sigma_left, np.sqrt(s**2 + st.edge_floor_px**2))
+
+
+def test_a_neighbours_mask_is_cut_to_the_window_as_the_whole_images_would_be():
+    from types import SimpleNamespace
+
+    from ballscan.measure.edges import _region_pixels
+
+    rng = np.random.default_rng(4)
+    n, w = 60, 80
+    for _ in range(200):
+        r0, q0 = int(rng.integers(-5, n)), int(rng.integers(-5, w))
+        h, k = int(rng.integers(1, 30)), int(rng.integers(1, 30))
+        mask = rng.random((h, k)) < 0.6 if rng.random() < 0.7 else None
+        region = SimpleNamespace(line_start=max(r0, 0), line_stop=max(r0, 0) + h, col_start=max(q0, 0), col_stop=max(q0, 0) + k, mask=mask)
+        full = np.zeros((n, w), dtype=bool)
+        box = np.ones((h, k), dtype=bool) if mask is None else mask
+        full[region.line_start : region.line_start + h, region.col_start : region.col_start + k] = box[: n - region.line_start, : w - region.col_start]
+        l0, l1 = sorted(rng.integers(0, n, 2).tolist())
+        c0, c1 = sorted(rng.integers(0, w, 2).tolist())
+        np.testing.assert_array_equal(_region_pixels(region, l0, l1 + 1, c0, c1 + 1), full[l0 : l1 + 1, c0 : c1 + 1])

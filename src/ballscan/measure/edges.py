@@ -395,16 +395,21 @@ def _as_columns(value: Any, n_lines: int, width: int, name: str) -> np.ndarray:
     raise ValueError(f"{name}: expected a scalar, ({width},) or ({n_lines}, {width}) array, got shape {a.shape}")
 
 
-def _region_pixels(region: Any, n_lines: int, width: int) -> np.ndarray:
-    """Boolean full-image mask of a region (its mask box, or its whole box)."""
-    out = np.zeros((n_lines, width), dtype=bool)
-    l0, l1, c0, c1 = int(region.line_start), int(region.line_stop), int(region.col_start), int(region.col_stop)
+def _region_pixels(region: Any, l0: int, l1: int, c0: int, c1: int) -> np.ndarray:
+    """Boolean mask of a region (its mask, or its whole box) within the window ``[l0, l1) x [c0, c1)`` of the image.
+
+    Only the window is allocated: the cost is that of the window, not of
+    the image, however many other balls the image holds.
+    """
+    out = np.zeros((l1 - l0, c1 - c0), dtype=bool)
+    r0, r1, q0, q1 = int(region.line_start), int(region.line_stop), int(region.col_start), int(region.col_stop)
     mask = getattr(region, "mask", None)
-    if mask is None:
-        out[l0:l1, c0:c1] = True
-    else:
-        m = np.asarray(mask, dtype=bool)
-        out[l0 : l0 + m.shape[0], c0 : c0 + m.shape[1]] = m
+    m = np.ones((r1 - r0, q1 - q0), dtype=bool) if mask is None else np.asarray(mask, dtype=bool)
+    # the part of the region's box (mask) inside the window
+    a0, a1 = max(r0, l0), min(r0 + m.shape[0], l1)
+    b0, b1 = max(q0, c0), min(q0 + m.shape[1], c1)
+    if a0 < a1 and b0 < b1:
+        out[a0 - l0 : a1 - l0, b0 - c0 : b1 - c0] = m[a0 - r0 : a1 - r0, b0 - q0 : b1 - q0]
     return out
 
 
@@ -784,7 +789,7 @@ def _box(
     sat = raw >= saturation_dn if saturation_dn is not None else np.zeros_like(raw, dtype=bool)
     other = np.zeros((n, w), dtype=bool)
     for o in others:
-        om = _region_pixels(o, n_img, W)[l0:l1, c0:c1]
+        om = _region_pixels(o, l0, l1, c0, c1)
         # one pixel of dilation along the line: a neighbour's blur reaches it
         other |= om | np.roll(om, 1, axis=1) | np.roll(om, -1, axis=1)
     return _Box(
