@@ -408,3 +408,24 @@ def test_detection_kernels_compile_one_signature_only():
     for kernel in (K.label_hits, K.first_pass_lines, K.kept_median, K.fill_lines_and_cols, K.region_values,
                    K.integer_median_mad, K.reflect_median_filter, K.group_mask, K.multi_runs):
         assert len(kernel.signatures) == 1, (kernel.__name__, kernel.signatures)
+
+
+def test_a_long_images_columns_are_measured_on_a_sample_of_its_lines_as_on_all_of_them(monkeypatch):
+    from ballscan.measure import detection
+
+    rng = np.random.default_rng(8)
+    n, w, sigma = 3 * detection._MODE_LINES + 17, 300, 2.0
+    pattern = 40.0 + 6.0 * np.sin(np.arange(w) / 9.0) + rng.normal(0, 1.5, w)
+    data = np.clip(np.round(pattern[None, :] + rng.normal(0, sigma, (n, w))), 0, 255)
+    # a bright ball-like blob in the middle of the image
+    yy, xx = np.mgrid[0:n, 0:w]
+    data[(yy - n // 2) ** 2 / 40.0**2 + (xx - 150) ** 2 / 30.0**2 < 1] = 200.0
+    image = LineImage(data, 255.0, 8, "long")
+    sampled = detect(image)
+    monkeypatch.setattr(detection, "_MODE_LINES", n)
+    every = detect(image)
+    assert np.max(np.abs(sampled.background_dn - every.background_dn)) < 0.1 * sigma
+    assert np.max(np.abs(sampled.background_dn - pattern)) < 0.3 * sigma  # rounding to whole DN biases both alike
+    assert np.median(sampled.noise_dn) == pytest.approx(np.median(every.noise_dn), rel=0.05)
+    assert [(r.line_start, r.col_start) for r in sampled.regions] == [(r.line_start, r.col_start) for r in every.regions]
+    assert len(sampled.regions) == 1
