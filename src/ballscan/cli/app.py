@@ -8,6 +8,7 @@ stderr with exit status 2; nothing prints a traceback.
 from __future__ import annotations
 
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Optional
 
@@ -125,7 +126,8 @@ def estimate(
     as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
     as_csv: bool = typer.Option(False, "--csv", help="Print CSV instead of a table: a header and one row per ball (the columns of batch)."),
     units: str = typer.Option("m/s", "--units", help="Speed unit of the table: m/s, km/h or mph (JSON and CSV stay in m/s)."),
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess dashed orange, estimate blue)."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write an overlay PNG (initial guess dashed orange, estimate blue; of a long recording, the lines around its first ball)."),
+    max_pixels: int = typer.Option(2**28, "--max-pixels", help="Refuse images whose header claims more pixels (a guard against forged headers; raise it for long recordings)."),
     timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
     lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
@@ -140,12 +142,17 @@ def estimate(
         True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
     ),
 ) -> None:
-    """Measure every ball in a line-scan image."""
-    from ..geometry.camera import line_times, load_camera
-    from ..pipeline.estimate import estimate_image
+    """Measure every ball in a line-scan image.
+
+    An image longer than 8192 lines (the stream engine's buffer) is measured
+    as a stream of its lines: in its stored type, in bounded memory (an
+    uncompressed TIFF is memory-mapped), each ball on its own crop.
+    """
+    from ..geometry.camera import load_camera
+    from ..measure.images import load_timestamps, read_stored
     from ..pipeline.recipe import Recipe
-    from ..measure.images import load_image, load_timestamps
     from ..pipeline.report import UNITS, format_table
+    from ..stream.recording import measure_stored
 
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
@@ -153,11 +160,15 @@ def estimate(
         raise typer.BadParameter("give one of --json and --csv", param_hint="--csv")
     if units not in UNITS:
         raise typer.BadParameter(f"expected one of {', '.join(UNITS)}, got {units!r}", param_hint="--units")
+    if not max_pixels > 0:
+        raise typer.BadParameter(f"must be positive, got {max_pixels}", param_hint="--max-pixels")
+    if saturation is not None and not (saturation > 0 and saturation < float("inf")):
+        raise typer.BadParameter(f"must be a positive number, got {saturation}", param_hint="--saturation")
     cam = load_camera(camera)
-    img = load_image(image, lines_as_columns=lines_as_columns, saturation_dn=saturation)
-    ts = load_timestamps(timestamps, img.data.shape[0]) if timestamps else None
+    stored = read_stored(image, lines_as_columns=lines_as_columns, max_pixels=max_pixels)
+    ts = load_timestamps(timestamps, stored.n_lines) if timestamps else None
     recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
-    report = estimate_image(img, cam, radius, recipe=recipe, timestamps_s=ts)
+    report = measure_stored(stored, cam, radius, recipe, timestamps_s=ts, saturation_dn=saturation)
     if as_json:
         typer.echo(report.to_json(cam))
     elif as_csv:
@@ -165,9 +176,27 @@ def estimate(
     else:
         typer.echo(format_table(report, cam, units))
     if plot is not None:
-        from ..pipeline.plot import save_overlay
+        _plot(plot, stored, cam, report, ts)
 
-        save_overlay(plot, img.data, cam, report, line_times(cam, img.data.shape[0], ts))
+
+def _plot(path: Path, stored, camera, report, timestamps_s) -> None:
+    """The overlay of the whole image, or of a long recording's lines around its first ball (in its own line numbers)."""
+    import numpy as np
+
+    from ..geometry.camera import line_times
+    from ..pipeline.plot import save_overlay
+
+    t = line_times(camera, stored.n_lines, timestamps_s)
+    lo, hi = 0, stored.n_lines
+    if stored.n_lines > 8192 and report.balls:
+        first = report.balls[0]
+        lo = max((first.first_line or 0) - 64, 0)
+        hi = min((first.last_line or 0) + 65, stored.n_lines)
+        report = replace(report, balls=(first,))
+    data = np.asarray(stored.data[lo:hi], dtype=float)
+    if data.ndim == 3:
+        data = data[:, :, :3] @ np.array([0.299, 0.587, 0.114])
+    save_overlay(path, data, camera, report, t[lo:hi], first_line=lo)
 
 
 def _print_csv(report, camera) -> None:

@@ -40,7 +40,7 @@ import numpy as np
 
 from ..errors import ImageFileError
 
-__all__ = ["LineImage", "as_line_image", "load_image", "load_timestamps", "DEFAULT_MAX_PIXELS"]
+__all__ = ["LineImage", "StoredImage", "as_line_image", "line_image", "load_image", "load_timestamps", "read_stored", "DEFAULT_MAX_PIXELS"]
 
 #: Default refusal limit on ``n_lines * W`` (about 268 million pixels, 2 GiB
 #: as float64): far above any real line-scan capture, far below what a forged
@@ -186,7 +186,7 @@ def _read_png(path: Path, raw: bytes, src: str, max_pixels: int) -> tuple[np.nda
 # --------------------------------------------------------------------------
 # TIFF
 # --------------------------------------------------------------------------
-def _read_tiff(path: Path, size: int, src: str, max_pixels: int) -> tuple[np.ndarray, int]:
+def _read_tiff(path: Path, size: int, src: str, max_pixels: int, memory_map: bool = False) -> tuple[np.ndarray, int]:
     import logging
 
     import tifffile
@@ -228,14 +228,19 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int) -> tuple[np.nda
                             src, f"truncated TIFF (image data ends at byte {last}, file has {size})"
                         )
                 axes = page.axes
-                arr = page.asarray()
+                # an uncompressed grey image stored in one piece is mapped, not read
+                mapped = memory_map and page.is_memmappable and len(shape) == 2
+                arr = None if mapped else page.asarray()
+            if mapped:
+                arr = tifffile.memmap(str(path), page=0, mode="r")
     except ImageFileError:
         raise
     except Exception as exc:
         raise ImageFileError(src, f"cannot read TIFF ({_one_line(exc)})") from None
     finally:
         tiff_log.setLevel(level)
-    arr = np.asarray(arr)
+    if not isinstance(arr, np.memmap):
+        arr = np.asarray(arr)
     # Bring a samples axis (RGB / planar) to the end, refuse any other extra axis.
     if "S" in axes and arr.ndim == len(axes):
         arr = np.moveaxis(arr, axes.index("S"), -1)
@@ -262,6 +267,91 @@ def _to_grey(arr: np.ndarray, src: str) -> np.ndarray:
         # Rec. 601 luma of the stored values; alpha (4th sample) dropped.
         return arr[:, :, :3].astype(np.float64) @ _LUMA
     raise ImageFileError(src, f"not a 2-D image (decoded array shape {arr.shape})")
+
+
+@dataclass(frozen=True, eq=False)
+class StoredImage:
+    """An image file's samples as stored: grey ``uint8``/``uint16`` (a memory map for an uncompressed TIFF), or colour.
+
+    Attributes
+    ----------
+    data : numpy.ndarray
+        ``(n_lines, W)`` grey samples of the file's type, or ``(n_lines, W,
+        channels)`` colour samples.
+    bits : int
+        8 or 16.
+    source : str
+        Path of the file (used in messages).
+    """
+
+    data: np.ndarray
+    bits: int
+    source: str
+
+    @property
+    def is_grey(self) -> bool:
+        """True for one sample per pixel (what a stream engine measures as stored)."""
+        return self.data.ndim == 2
+
+    @property
+    def n_lines(self) -> int:
+        return int(self.data.shape[0])
+
+
+def read_stored(
+    path: str | os.PathLike[str],
+    *,
+    lines_as_columns: bool = False,
+    max_pixels: int = DEFAULT_MAX_PIXELS,
+    memory_map: bool = True,
+) -> StoredImage:
+    """Read a PNG or TIFF file's samples in their stored type, checked as :func:`load_image` checks them.
+
+    An uncompressed grey TIFF is memory-mapped (``memory_map``): its pixels
+    are read from the file as they are used, so an image far larger than
+    the memory can be measured line by line.  ``lines_as_columns`` copies
+    the transposed samples.  Raises :class:`ImageFileError` as
+    :func:`load_image` does.
+    """
+    src = os.fspath(path)
+    p = Path(src)
+    if not p.exists():
+        raise ImageFileError(src, "no such file")
+    if p.is_dir():
+        raise ImageFileError(src, "is a directory, not an image file")
+    try:
+        size = p.stat().st_size
+        with open(p, "rb") as fh:
+            head = fh.read(8)
+    except OSError as exc:
+        raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
+    if size == 0:
+        raise ImageFileError(src, "empty file (0 bytes)")
+    if head[:4] == _PNG_SIGNATURE[:4]:
+        if head != _PNG_SIGNATURE:
+            raise ImageFileError(src, "truncated or corrupt PNG signature")
+        try:
+            raw = p.read_bytes()
+        except OSError as exc:
+            raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
+        arr, bits = _read_png(p, raw, src, max_pixels)
+        del raw
+    elif head[:4] in _TIFF_MAGICS:
+        arr, bits = _read_tiff(p, size, src, max_pixels, memory_map)
+    else:
+        raise ImageFileError(src, "unknown image format (need PNG or TIFF)")
+    if arr.ndim == 3 and arr.shape[2] == 1:
+        arr = arr[:, :, 0]
+    if arr.ndim == 3 and arr.shape[2] == 2:  # grey + alpha: drop alpha
+        arr = np.ascontiguousarray(arr[:, :, 0])
+    if arr.ndim not in (2, 3) or (arr.ndim == 3 and arr.shape[2] not in (3, 4)):
+        raise ImageFileError(src, f"not a 2-D image (decoded array shape {arr.shape})")
+    if lines_as_columns:
+        arr = np.ascontiguousarray(np.swapaxes(arr, 0, 1))
+    n_lines, width = arr.shape[:2]
+    if n_lines < 2 or width < 2:
+        raise ImageFileError(src, f"image of {n_lines} lines x {width} pixels: need at least 2 lines and 2 pixels")
+    return StoredImage(arr, bits, src)
 
 
 def load_image(
@@ -300,48 +390,17 @@ def load_image(
         2 lines or 2 columns.
     """
     src = os.fspath(path)
-    p = Path(src)
-    if not p.exists():
-        raise ImageFileError(src, "no such file")
-    if p.is_dir():
-        raise ImageFileError(src, "is a directory, not an image file")
-    try:
-        size = p.stat().st_size
-        with open(p, "rb") as fh:
-            head = fh.read(8)
-    except OSError as exc:
-        raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
-    if size == 0:
-        raise ImageFileError(src, "empty file (0 bytes)")
     if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
         raise ImageFileError(src, f"saturation level must be a positive number, got {saturation_dn}")
+    return line_image(read_stored(path, lines_as_columns=lines_as_columns, max_pixels=max_pixels, memory_map=False), saturation_dn)
 
-    if head[:4] == _PNG_SIGNATURE[:4]:
-        if head != _PNG_SIGNATURE:
-            raise ImageFileError(src, "truncated or corrupt PNG signature")
-        try:
-            raw = p.read_bytes()
-        except OSError as exc:
-            raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
-        arr, bits = _read_png(p, raw, src, max_pixels)
-    elif head[:4] in _TIFF_MAGICS:
-        arr, bits = _read_tiff(p, size, src, max_pixels)
-    else:
-        raise ImageFileError(src, "unknown image format (need PNG or TIFF)")
 
-    grey = _to_grey(np.asarray(arr), src)
-    if lines_as_columns:
-        grey = np.ascontiguousarray(grey.T)
-    if grey.ndim != 2:
-        raise ImageFileError(src, f"not a 2-D image (shape {grey.shape})")
-    n_lines, width = grey.shape
-    if n_lines < 2 or width < 2:
-        raise ImageFileError(
-            src, f"image of {n_lines} lines x {width} pixels: need at least 2 lines and 2 pixels"
-        )
-    sat = float(saturation_dn) if saturation_dn is not None else float(2**bits - 1)
+def line_image(stored: StoredImage, saturation_dn: float | None = None) -> LineImage:
+    """The :class:`LineImage` (float64 grey, read-only) of a file's stored samples."""
+    grey = _to_grey(np.asarray(stored.data), stored.source)
+    sat = float(saturation_dn) if saturation_dn is not None else float(2**stored.bits - 1)
     grey.setflags(write=False)
-    return LineImage(data=grey, saturation_dn=sat, bits=bits, source=src)
+    return LineImage(data=grey, saturation_dn=sat, bits=stored.bits, source=stored.source)
 
 
 def as_line_image(

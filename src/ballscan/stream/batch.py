@@ -150,13 +150,13 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
                 rows = tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests))
                 return InputResult(src, rows, " ".join(str(exc).split()))
         else:
-            from ..pipeline.estimate import estimate_image
+            from ..measure.images import load_timestamps, read_stored
             from ..pipeline.recipe import Recipe
-            from ..measure.images import load_image, load_timestamps
+            from .recording import measure_stored
 
-            img = load_image(p)
-            ts = load_timestamps(ts_path, img.n_lines) if ts_path is not None else None
-            ests = list(estimate_image(img, camera, radius_m, recipe=Recipe(method=method), timestamps_s=ts).balls)
+            stored = read_stored(p)
+            ts = load_timestamps(ts_path, stored.n_lines) if ts_path is not None else None
+            ests = list(measure_stored(stored, camera, radius_m, Recipe(method=method), timestamps_s=ts).balls)
         return InputResult(src, tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests)))
     except (BallscanError, ValueError, OSError) as exc:
         msg = " ".join(str(exc).split())
