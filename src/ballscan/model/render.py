@@ -887,13 +887,36 @@ def truth_dict(balls: Sequence[BallMotion]) -> dict[str, Any]:
 
 
 def write_image(path: str | Path, image: np.ndarray) -> None:
-    """Write a stored image as greyscale PNG (``uint8`` or 16-bit ``uint16``).
+    """Write a stored image as greyscale PNG (``uint8`` or 16-bit ``uint16``), or TIFF.
 
+    The format follows the file's extension: ``.png`` (8- or 16-bit grey,
+    written with Pillow) or ``.tif`` / ``.tiff`` (written with tifffile).
     12-bit data stay ``0 .. 4095`` in the 16-bit file (geometry.md "Images").
-    """
-    import imageio.v3 as iio
 
+    Raises
+    ------
+    ValueError
+        If ``image`` is not a 2-D ``uint8`` or ``uint16`` array, or the
+        extension is none of those.
+    """
+    path = Path(path)
     arr = np.asarray(image)
     if arr.ndim != 2 or arr.dtype not in (np.uint8, np.uint16):
         raise ValueError(f"image: expected a 2-D uint8 or uint16 array, got {arr.dtype} of shape {arr.shape}")
-    iio.imwrite(Path(path), arr)
+    ext = path.suffix.lower()
+    if ext in (".tif", ".tiff"):
+        import tifffile
+
+        tifffile.imwrite(path, arr, photometric="minisblack")
+        return
+    if ext != ".png":
+        raise ValueError(f"image path: expected a .png, .tif or .tiff file name, got {path.name!r}")
+    from PIL import Image
+
+    height, width = arr.shape
+    if arr.dtype == np.uint8:
+        im = Image.frombytes("L", (width, height), np.ascontiguousarray(arr).tobytes())
+    else:
+        # Pillow's 16-bit grey mode is little-endian "I;16", saved as a 16-bit grey PNG
+        im = Image.frombytes("I;16", (width, height), arr.astype("<u2").tobytes())
+    im.save(path, format="PNG")
