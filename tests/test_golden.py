@@ -15,6 +15,7 @@ import importlib.util
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -27,11 +28,17 @@ def _golden():
     return mod
 
 
+#: The record is made with numpy >= 2.3; older numpy releases sum and reduce
+#: in other orders, which moves the fit's outputs by up to 7e-11 relative
+#: (the lowest supported numpy, 2.0, in CI's second run).
+RTOL = 1e-12 if tuple(int(p) for p in np.__version__.split(".")[:2]) >= (2, 3) else 1e-9
+
+
 @pytest.mark.slow
 def test_outputs_match_the_golden_record():
     golden = _golden()
     recorded = json.loads((ROOT / "tests" / "data" / "golden.json").read_text())
-    diffs = golden.check(recorded, golden.collect())
+    diffs = golden.check(recorded, golden.collect(), RTOL)
     assert not diffs, "\n".join(diffs[:20])
 
 
