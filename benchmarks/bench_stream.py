@@ -117,6 +117,8 @@ def run(n_chunks: int, ball_every_lines: int | None, executor=None, config: Stre
         "balls": n_results,
         "expected": len(balls),
         "latency_ms": (np.median(latencies) * 1e3, np.max(latencies) * 1e3) if latencies else (float("nan"), float("nan")),
+        "latency_p99_ms": float(np.percentile(latencies, 99) * 1e3) if latencies else float("nan"),
+        "latencies_ms": [x * 1e3 for x in latencies],
         "handoff_ms": (np.median(handoffs) * 1e3, np.max(handoffs) * 1e3) if handoffs else (float("nan"), float("nan")),
         "estimate_ms": (np.median(fit_times) * 1e3, np.max(fit_times) * 1e3) if fit_times else (float("nan"), float("nan")),
         "rest_ms": (np.median(rest) * 1e3, np.max(rest) * 1e3) if rest else (float("nan"), float("nan")),
