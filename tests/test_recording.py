@@ -92,3 +92,16 @@ def test_a_colour_recording_is_refused_by_the_engine(recording):
 
     with pytest.raises(BallscanError, match="8- or 16-bit grey"):
         measure_recording(StoredImage(np.zeros((10, CAM.width, 3), np.uint8), 8, "c.png"), CAM, RADIUS)
+
+
+@pytest.mark.parametrize("saturation", [0.0, -5.0, float("nan"), float("inf")])
+def test_a_bad_saturation_level_is_refused_naming_the_file_on_both_paths(recording, saturation):
+    from ballscan.errors import BallscanError
+    from ballscan.stream.recording import measure_stored
+
+    _, tif, _, _, _ = recording
+    long, short = read_stored(tif), read_stored(tif)
+    short = type(short)(np.ascontiguousarray(short.data[:500]), short.bits, short.source)
+    for stored in (long, short):
+        with pytest.raises(BallscanError, match="rec.tif.*saturation level must be a positive number"):
+            measure_stored(stored, CAM, RADIUS, saturation_dn=saturation)

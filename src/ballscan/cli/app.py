@@ -162,8 +162,6 @@ def estimate(
         raise typer.BadParameter(f"expected one of {', '.join(UNITS)}, got {units!r}", param_hint="--units")
     if not max_pixels > 0:
         raise typer.BadParameter(f"must be positive, got {max_pixels}", param_hint="--max-pixels")
-    if saturation is not None and not (saturation > 0 and saturation < float("inf")):
-        raise typer.BadParameter(f"must be a positive number, got {saturation}", param_hint="--saturation")
     cam = load_camera(camera)
     stored = read_stored(image, lines_as_columns=lines_as_columns, max_pixels=max_pixels)
     ts = load_timestamps(timestamps, stored.n_lines) if timestamps else None
@@ -185,10 +183,11 @@ def _plot(path: Path, stored, camera, report, timestamps_s) -> None:
 
     from ..geometry.camera import line_times
     from ..pipeline.plot import save_overlay
+    from ..stream.recording import is_recording
 
     t = line_times(camera, stored.n_lines, timestamps_s)
     lo, hi = 0, stored.n_lines
-    if stored.n_lines > 8192 and report.balls:
+    if is_recording(stored) and report.balls:
         first = report.balls[0]
         lo = max((first.first_line or 0) - 64, 0)
         hi = min((first.last_line or 0) + 65, stored.n_lines)

@@ -389,14 +389,13 @@ def load_image(
         truncated, corrupt, not 2-D, unsupported type, too large, or fewer than
         2 lines or 2 columns.
     """
-    src = os.fspath(path)
-    if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
-        raise ImageFileError(src, f"saturation level must be a positive number, got {saturation_dn}")
     return line_image(read_stored(path, lines_as_columns=lines_as_columns, max_pixels=max_pixels, memory_map=False), saturation_dn)
 
 
 def line_image(stored: StoredImage, saturation_dn: float | None = None) -> LineImage:
-    """The :class:`LineImage` (float64 grey, read-only) of a file's stored samples."""
+    """The :class:`LineImage` (float64 grey, read-only) of a file's stored samples; ``saturation_dn`` as for :func:`load_image`."""
+    if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
+        raise ImageFileError(stored.source, f"saturation level must be a positive number, got {saturation_dn}")
     grey = _to_grey(np.asarray(stored.data), stored.source)
     sat = float(saturation_dn) if saturation_dn is not None else float(2**stored.bits - 1)
     grey.setflags(write=False)

@@ -192,7 +192,7 @@ class BallEstimate:
         d["last_line"] = self.last_line
         d["run_time_s"] = self.run_time_s
         if camera is not None and camera.has_pose:
-            d["world"] = self._world(camera)
+            d["world"] = self._world(der)
         if self.initial is not None:
             d["initial"] = self.initial.to_dict(camera)
         for k, v in self.extra.items():
@@ -200,8 +200,8 @@ class BallEstimate:
         # NaN (a sigma of a parameter the fit could not determine) is not JSON: null
         return _jsonable(d)
 
-    def _world(self, camera: LineScanCamera) -> dict[str, Any]:
-        der = self.derived(camera)
+    def _world(self, der: Derived | None) -> dict[str, Any]:
+        """The ``"world"`` object from :meth:`derived` of a camera with a pose (None: the motion is undetermined)."""
         w: dict[str, Any] = {
             "position_m": None if der is None else der.world_position_m,
             "velocity_mps": None if der is None else der.world_velocity_mps,

@@ -26,6 +26,7 @@ from ..compiled import as_arg
 from ._fit_kernels import block_ratio
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
+from .derived import direction_jacobian
 
 __all__ = ["MotionUncertainty", "covariance_from_jacobian", "param_scale", "propagate", "residual_scale"]
 
@@ -268,12 +269,7 @@ def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray
     # position (0, y0, z0): x is exact by definition of t_c
     Cp = np.zeros((3, 3))
     Cp[1:, 1:] = C[1:3, 1:3]
-    vx = V[0]
-    Jd = np.zeros((2, 3))
-    for row, comp in ((0, 1), (1, 2)):
-        den = vx * vx + V[comp] ** 2
-        Jd[row, 0] = -V[comp] / den
-        Jd[row, comp] = vx / den
+    Jd = direction_jacobian(V)
     Cd = Jd @ Cv @ Jd.T
     out = dict(
         speed_mps=speed,

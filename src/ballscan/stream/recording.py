@@ -117,6 +117,8 @@ def measure_stored(
     and bounded memory.  ``stream`` defaults to ``StreamConfig(recipe=recipe)``.
     """
     cfg = StreamConfig(recipe=recipe) if stream is None else stream
+    if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
+        raise BallscanError(f"{stored.source}: saturation level must be a positive number, got {saturation_dn}")
     if is_recording(stored, cfg):
         if saturation_dn is not None and cfg.saturation_dn is None:
             cfg = replace(cfg, saturation_dn=float(saturation_dn))
