@@ -262,58 +262,6 @@ def _deep_ratio(val: np.ndarray, kw: int, n_level: int, nd: int) -> float:
 
 
 @jit(inline="always", error_model="numpy")
-def _limb_rounds(
-    r, e0r, L_run_r, S_r, sg_r, n_win_r, kw, n_level, px, c_lo, c_hi, c_w, span, hwb, frac, point, wk,
-    edge_m_r, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
-):
-    """Row ``r``'s two rounds of :func:`limb_levels` and the third profile (the texture test's, left in ``wk``).
-
-    Returns the row's edge, level and window ratio after the rounds,
-    whether the ratio was usable, whether the profiles had coverage, and
-    whether every ray's inverse distortion converged.
-    """
-    K = px.shape[1]
-    cov = wk[1]
-    val = wk[3]
-    row_ok = True
-    er = e0r
-    ratio = 1.0
-    Lr = L_run_r
-    usable = False
-    fine = True
-    for rnd in range(3):
-        at = er
-        # the window's and the level run's values, then the runs' (the texture test)
-        n_use, run_hi = (n_win_r, kw + n_level) if rnd < 2 else (0, K)
-        fine, ok = _limb_row_profile(
-            r, at, sg_r, px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0, point, wk, n_use, kw, run_hi,
-            edge_m_r, bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
-        )
-        row_ok = row_ok and ok
-        if not fine:
-            break
-        if rnd == 2:
-            break
-        s_model = 0.0
-        c_model = 0.0
-        for k in range(kw):
-            if k < n_win_r:
-                s_model += val[k]
-                c_model += cov[k]
-        lev = 0.0
-        for k in range(kw, kw + n_level):
-            lev += val[k]
-        ratio = s_model / c_model / (lev / n_level)
-        usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
-        if not usable:
-            ratio = 1.0
-        Lr = L_run_r * ratio
-        covered = S_r / (Lr if Lr > 0.0 else 1.0)
-        er = at + sg_r * (c_model - covered) if usable else e0r
-    return er, Lr, ratio, usable, fine, row_ok
-
-
-@jit(inline="always", error_model="numpy")
 def _edge_variance(sw: np.ndarray, r: int, S_r: float, Lr: float, sl2_r: float, ratio: float) -> float:
     """The variance (px^2) of row ``r``'s edge from the window's sigmas ``sw[r]`` and the level's variance ``sl2_r``, at level ``Lr``."""
     Ls = Lr if Lr > 0.0 else 1.0
@@ -325,43 +273,12 @@ def _edge_variance(sw: np.ndarray, r: int, S_r: float, Lr: float, sl2_r: float, 
 
 @jit(error_model="numpy")
 def limb_levels(
-    sg: np.ndarray,
-    px: np.ndarray,
-    n_win: np.ndarray,
-    kw: int,
-    n_level: int,
-    e0: np.ndarray,
-    var0: np.ndarray,
-    L0: np.ndarray,
-    S: np.ndarray,
-    L_run: np.ndarray,
-    sl2: np.ndarray,
-    sw: np.ndarray,
-    q_data: np.ndarray,
-    q_lim: np.ndarray,
-    n_points: int,
-    c_lo: np.ndarray,
-    c_hi: np.ndarray,
-    c_w: np.ndarray,
-    t_rows: np.ndarray,
-    edge_m: np.ndarray,
-    sharp: np.ndarray,
-    line_rows: np.ndarray,
-    background: np.ndarray,
-    tk: np.ndarray,
-    hk: np.ndarray,
-    focal: float,
-    principal: float,
-    k1: float,
-    k2: float,
-    pos: np.ndarray,
-    vel: np.ndarray,
-    acc: np.ndarray,
-    t_c: float,
-    radius_m: float,
-    light: np.ndarray,
-    ambient: float,
-    scale: float,
+    sg: np.ndarray, px: np.ndarray, n_win: np.ndarray, kw: int, n_level: int,
+    e0: np.ndarray, var0: np.ndarray, L0: np.ndarray, S: np.ndarray, L_run: np.ndarray, sl2: np.ndarray, sw: np.ndarray,
+    q_data: np.ndarray, q_lim: np.ndarray, n_points: int, c_lo: np.ndarray, c_hi: np.ndarray, c_w: np.ndarray,
+    t_rows: np.ndarray, edge_m: np.ndarray, sharp: np.ndarray, line_rows: np.ndarray, background: np.ndarray,
+    tk: np.ndarray, hk: np.ndarray, focal: float, principal: float, k1: float, k2: float,
+    pos: np.ndarray, vel: np.ndarray, acc: np.ndarray, t_c: float, radius_m: float, light: np.ndarray, ambient: float, scale: float,
 ):
     """The edges' inner levels and edges from the shading model (:func:`ballscan.measure.edges._limb_levels`).
 
@@ -429,11 +346,40 @@ def limb_levels(
         nh_pt = _heights(sharp[r], hk, focal, hs_pt)
         _centres(t_rows[r], True, tk, pos, vel, acc, has_acc, t_c, cen_c)
         _heights(True, hk, focal, hs_c)
-        er, Lr, ratio, usable, fine, row_ok = _limb_rounds(
-            r, e0[r], L_run[r], S[r], sg[r], n_win[r], kw, n_level, px, c_lo, c_hi, c_w, span, hwb, frac, point, wk,
-            edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
-        )
-        rays_ok = rays_ok and row_ok
+        er = e0[r]
+        ratio = 1.0
+        Lr = L_run[r]
+        usable = False
+        fine = True
+        for rnd in range(3):
+            at = er
+            # the window's and the level run's values, then the runs' (the texture test)
+            n_use, run_hi = (n_win[r], kw + n_level) if rnd < 2 else (0, K)
+            fine, ok = _limb_row_profile(
+                r, at, sg[r], px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0, point, wk, n_use, kw, run_hi,
+                edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
+            )
+            rays_ok = rays_ok and ok
+            if not fine:
+                break
+            if rnd == 2:
+                break
+            s_model = 0.0
+            c_model = 0.0
+            for k in range(kw):
+                if k < n_win[r]:
+                    s_model += val[k]
+                    c_model += cov[k]
+            lev = 0.0
+            for k in range(kw, kw + n_level):
+                lev += val[k]
+            ratio = s_model / c_model / (lev / n_level)
+            usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
+            if not usable:
+                ratio = 1.0
+            Lr = L_run[r] * ratio
+            covered = S[r] / (Lr if Lr > 0.0 else 1.0)
+            er = at + sg[r] * (c_model - covered) if usable else e0[r]
         if not fine:
             # no coverage (a NaN chord sample): the model-free edge
             continue
