@@ -200,6 +200,19 @@ BAD = [
     ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\ngravity_mps2 = [0, 0, -9.81]\n", "gravity_mps2", "pose"),
     ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nfocus = 3\n", "focus", "unknown"),
     ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nk1 = -5.0\n", "k1", "monotonic"),
+    # values no camera has: refused at load, before an estimate could overflow or run for minutes on them
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e300\n", "line_rate_hz", "outside the range"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e-9\n", "line_rate_hz", "outside the range"),
+    ("width = 2048\nfocal_px = 1e300\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "focal_px", "outside the range"),
+    ("width = 2048\nfocal_px = 0.001\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "focal_px", "outside the range"),
+    ("width = 20000000000\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n", "width", "outside the range"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = -1e300\nline_rate_hz = 1e4\n", "principal_px", "sensor widths"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nk1 = 1e300\n", "k1", "outside the range"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nexposure_s = 1e-300\n", "exposure_s", "shorter"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nexposure_s = -1e-5\n", "exposure_s", "positive"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = -inf\n", "line_rate_hz", "finite"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\n[pose]\nrotation = [[1,0,0],[0,1,0],[0,0,1]]\ntranslation = [0,0,1e300]\n", "pose.translation", "origin"),
+    ("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\ngravity_mps2 = [0, 0, -1e300]\n[pose]\nrotation = [[1,0,0],[0,1,0],[0,0,1]]\ntranslation = [0,0,0]\n", "gravity_mps2", "m/s^2"),
 ]
 
 
@@ -227,6 +240,22 @@ def test_unparseable_and_missing_files(tmp_path):
         load_camera(binary)
     with pytest.raises(CameraFileError, match="cannot read"):
         load_camera(tmp_path)  # a folder
+
+
+@pytest.mark.parametrize("nest", ["[" * 5000 + "]" * 5000, "{a = " * 5000 + "1" + "}" * 5000])
+def test_a_file_nested_5000_deep_is_a_clean_error(tmp_path, nest):
+    p = tmp_path / "deep.toml"
+    p.write_text("width = 2048\nfocal_px = 2500.0\nprincipal_px = 1023.5\nline_rate_hz = 1e4\nx = " + nest + "\n")
+    with pytest.raises(CameraFileError, match="nested too deeply") as info:
+        load_camera(p)
+    assert str(p) in str(info.value)
+
+
+def test_a_huge_file_is_refused_before_it_is_parsed(tmp_path):
+    p = tmp_path / "big.toml"
+    p.write_text("width = 2048\n" + "# padding\n" * 200_000)
+    with pytest.raises(CameraFileError, match="not a camera file"):
+        load_camera(p)
 
 
 def test_crop_camera_equals_a_validated_replace():

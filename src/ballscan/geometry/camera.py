@@ -367,6 +367,26 @@ def line_times(camera: LineScanCamera, n_lines: int, timestamps_s: np.ndarray | 
 
 _KNOWN_KEYS = {"width", "focal_px", "principal_px", "line_rate_hz", "exposure_s", "k1", "k2", "crossing", "gravity_mps2", "pose"}
 
+#: The ranges a real line-scan rig lies in, far wider than any camera sold:
+#: a value outside is a typing or unit error, refused at load (it would make
+#: every later computation overflow, or run for hours over an absurd
+#: number of pixels or lines).  ``principal_px`` within this many sensor
+#: widths of the sensor; ``exposure_s`` at least :data:`MIN_EXPOSURE_S`.
+PLAUSIBLE_RANGES = {
+    "width": (2, 1 << 20, "pixels"),
+    "focal_px": (1.0, 1e7, "pixels"),
+    "line_rate_hz": (1e-3, 1e8, "lines per second"),
+    "k1": (-1e6, 1e6, ""),
+    "k2": (-1e6, 1e6, ""),
+}
+PRINCIPAL_WIDTHS = 100
+MIN_EXPOSURE_S = 1e-10
+#: Largest translation of the pose (m) and gravity (m/s^2) taken as real.
+MAX_TRANSLATION_M = 1e6
+MAX_GRAVITY_MPS2 = 1e3
+#: A camera file is a dozen lines; anything beyond this many bytes is not one.
+MAX_CAMERA_FILE_BYTES = 1 << 20
+
 
 def _validate(cam: LineScanCamera) -> None:
     src = cam.source
@@ -388,12 +408,21 @@ def _validate(cam: LineScanCamera) -> None:
         raise bad("focal_px", f"must be positive, got {cam.focal_px!r}")
     if cam.line_rate_hz <= 0:
         raise bad("line_rate_hz", f"must be positive, got {cam.line_rate_hz!r}")
+    for key, (lo, hi, unit) in PLAUSIBLE_RANGES.items():
+        v = getattr(cam, key)
+        if not lo <= v <= hi:
+            raise bad(key, f"{v!r} is outside the range of any line-scan camera ({lo:g} to {hi:g}{' ' + unit if unit else ''})")
+    reach = PRINCIPAL_WIDTHS * cam.width
+    if not -reach <= cam.principal_px <= cam.width + reach:
+        raise bad("principal_px", f"{cam.principal_px!r} is more than {PRINCIPAL_WIDTHS} sensor widths off the sensor")
     if cam.exposure_s is not None:
         e = cam.exposure_s
         if isinstance(e, bool) or not isinstance(e, (int, float, np.floating)) or not math.isfinite(float(e)):
             raise bad("exposure_s", f"must be a finite number, got {e!r}")
         if e <= 0:
             raise bad("exposure_s", f"must be positive, got {e!r}")
+        if e < MIN_EXPOSURE_S:
+            raise bad("exposure_s", f"{e!r} s is shorter than any camera's exposure ({MIN_EXPOSURE_S:g} s)")
         if e > (1.0 / cam.line_rate_hz) * (1 + 1e-9):
             raise bad("exposure_s", f"{e!r} s exceeds the line period 1/line_rate_hz = {1.0 / cam.line_rate_hz!r} s")
     if cam.crossing not in (None, "+x", "-x"):
@@ -409,11 +438,15 @@ def _validate(cam: LineScanCamera) -> None:
             raise bad("pose.rotation", "is not a proper rotation (orthonormal with determinant +1)")
         if cam.translation_m is None:
             raise bad("pose.translation", "missing (a pose needs rotation and translation)")
-        _as_matrix(cam.translation_m, (3,), src, "pose.translation")
+        t = _as_matrix(cam.translation_m, (3,), src, "pose.translation")
+        if np.abs(t).max() > MAX_TRANSLATION_M:
+            raise bad("pose.translation", f"more than {MAX_TRANSLATION_M:g} m from the world origin")
     elif cam.translation_m is not None:
         raise bad("pose.rotation", "missing (a pose needs rotation and translation)")
     if cam.gravity_mps2 is not None:
-        _as_matrix(cam.gravity_mps2, (3,), src, "gravity_mps2")
+        g = _as_matrix(cam.gravity_mps2, (3,), src, "gravity_mps2")
+        if np.abs(g).max() > MAX_GRAVITY_MPS2:
+            raise bad("gravity_mps2", f"more than {MAX_GRAVITY_MPS2:g} m/s^2")
         if cam.rotation is None:
             raise bad("gravity_mps2", "needs a [pose] (gravity is given in the world frame)")
 
@@ -496,6 +529,8 @@ def load_camera(path: str | Path) -> LineScanCamera:
     """
     path = Path(path)
     try:
+        if path.is_file() and path.stat().st_size > MAX_CAMERA_FILE_BYTES:
+            raise CameraFileError(str(path), f"{path.stat().st_size} bytes: not a camera file (at most {MAX_CAMERA_FILE_BYTES})")
         text = path.read_bytes().decode("utf-8")
     except FileNotFoundError:
         raise CameraFileError(str(path), "file not found") from None
@@ -507,6 +542,8 @@ def load_camera(path: str | Path) -> LineScanCamera:
         d = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
+    except RecursionError:
+        raise CameraFileError(str(path), "not a camera file (arrays or tables nested too deeply to read)") from None
     return camera_from_dict(d, source=str(path))
 
 
