@@ -273,3 +273,140 @@ def test_timestamps_npy_errors(tmp_path):
         load_timestamps(p, 3)
     with pytest.raises(ImageFileError, match="missing.txt"):
         load_timestamps(tmp_path / "missing.txt", 3)
+
+
+# ---------------------------------------------------------------- strict decoding (declared size, palettes, limits)
+def _raw_png(width, height, depth, colour, rows: bytes, *, plte: bytes | None = None, extra: tuple = (), interlace: int = 0) -> bytes:
+    out = b"\x89PNG\r\n\x1a\n" + _chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, depth, colour, 0, 0, interlace))
+    if plte is not None:
+        out += _chunk(b"PLTE", plte)
+    for ctype, body in extra:
+        out += _chunk(ctype, body)
+    return out + _chunk(b"IDAT", zlib.compress(rows)) + _chunk(b"IEND", b"")
+
+
+def _rows(width, height, value=7) -> bytes:
+    return (b"\x00" + bytes([value]) * width) * height
+
+
+def test_png_with_less_data_than_its_header_declares_is_refused_not_padded(tmp_path):
+    p = tmp_path / "short.png"
+    p.write_bytes(_raw_png(64, 20_000, 8, 0, _rows(64, 220)))  # 20,000 lines declared, 220 in the data
+    e = _assert_error(p)
+    assert "truncated" in str(e) and "220 of 20000 lines" in str(e)
+
+
+def test_png_with_more_data_than_declared_is_refused(tmp_path):
+    p = tmp_path / "long.png"
+    p.write_bytes(_raw_png(64, 10, 8, 0, _rows(64, 11)))
+    assert "more image data" in str(_assert_error(p))
+
+
+def test_png_whose_data_stream_is_cut_is_refused(tmp_path):
+    rows = zlib.compress(bytes(range(256)) * 100)[:-30]
+    raw = b"\x89PNG\r\n\x1a\n" + _chunk(b"IHDR", struct.pack(">IIBBBBB", 255, 100, 8, 0, 0, 0, 0)) + _chunk(b"IDAT", rows) + _chunk(b"IEND", b"")
+    p = tmp_path / "cut.png"
+    p.write_bytes(raw)
+    assert "truncated" in str(_assert_error(p))
+
+
+def test_interlaced_png_of_the_declared_size_loads(tmp_path):
+    a = _grey(np.uint8, shape=(13, 21))
+    rows = b""
+    for x0, y0, dx, dy in ((0, 0, 8, 8), (4, 0, 8, 8), (0, 4, 4, 8), (2, 0, 4, 4), (0, 2, 2, 4), (1, 0, 2, 2), (0, 1, 1, 2)):
+        sub = a[y0::dy, x0::dx]
+        if sub.size:
+            rows += b"".join(b"\x00" + line.tobytes() for line in sub)
+    p = tmp_path / "adam7.png"
+    p.write_bytes(_raw_png(21, 13, 8, 0, rows, interlace=1))
+    np.testing.assert_array_equal(load_image(p).data, a)
+    p.write_bytes(_raw_png(21, 13, 8, 0, rows[:-22], interlace=1))  # its last line missing
+    assert "truncated" in str(_assert_error(p))
+
+
+def _palette_rows(width, height, index) -> bytes:
+    return (b"\x00" + bytes([index]) * width) * height
+
+
+@pytest.mark.parametrize(
+    "plte,index,word",
+    [
+        (None, 0, "without a PLTE"),  # missing palette
+        (bytes(7), 0, "7 bytes"),  # not whole entries
+        (bytes(12), 9, "index 9 beyond its palette of 4"),  # 4 entries, pixels use index 9
+        (bytes(3 * 257), 0, "771 bytes"),
+    ],
+)
+def test_invalid_palette_png_refused(tmp_path, plte, index, word):
+    p = tmp_path / "pal.png"
+    p.write_bytes(_raw_png(16, 8, 8, 3, _palette_rows(16, 8, index), plte=plte))
+    assert word in str(_assert_error(p))
+
+
+def test_valid_small_palette_png_loads(tmp_path):
+    plte = bytes([0, 0, 0, 100, 100, 100, 200, 200, 200, 255, 255, 255])
+    p = tmp_path / "pal4.png"
+    p.write_bytes(_raw_png(16, 8, 8, 3, _palette_rows(16, 8, 2), plte=plte))
+    np.testing.assert_allclose(load_image(p).data, 200.0)
+
+
+def test_palette_in_a_grey_png_refused(tmp_path):
+    p = tmp_path / "greypal.png"
+    p.write_bytes(_raw_png(16, 8, 8, 0, _rows(16, 8), plte=bytes(12)))
+    assert "grey image" in str(_assert_error(p))
+
+
+def test_png_over_the_limit_refused_from_its_header_before_the_rest_is_read(tmp_path, monkeypatch):
+    p = tmp_path / "huge.png"
+    p.write_bytes(_raw_png(16_384, 16_385, 8, 0, b""))
+    import ballscan.measure.images as images
+
+    def no_walk(*_):
+        raise AssertionError("the chunks were read")
+
+    monkeypatch.setattr(images, "_check_png", no_walk)
+    e = _assert_error(p, max_pixels=16_384 * 16_384)
+    assert "limit" in str(e)
+
+
+def test_png_much_larger_than_its_pixels_refused_unread(tmp_path):
+    p = tmp_path / "padded.png"
+    p.write_bytes(_raw_png(8, 8, 8, 0, _rows(8, 8), extra=((b"tEXt", b"k\x00" + bytes(17 << 20)),)))
+    assert "more than a PNG of 8 lines x 8 pixels can hold" in str(_assert_error(p))
+
+
+def test_image_at_the_pixel_limit_loads(tmp_path):
+    p = tmp_path / "at.png"
+    iio.imwrite(p, _grey(np.uint8, shape=(10, 10)))
+    assert load_image(p, max_pixels=100).data.shape == (10, 10)
+    t = tmp_path / "at_rgb.tif"
+    tifffile.imwrite(t, _grey(np.uint8, shape=(10, 10, 3)), photometric="rgb")
+    assert load_image(t, max_pixels=100).data.shape == (10, 10)
+
+
+def test_tiff_limit_counts_pixels_not_samples(tmp_path):
+    # 3 x 40 = 120 pixels: over a limit of 100 pixels, though 120 samples are under 4 x 100
+    p = tmp_path / "grey.tif"
+    tifffile.imwrite(p, _grey(np.uint8, shape=(3, 40)))
+    assert "120 pixels" in str(_assert_error(p, max_pixels=100))
+    rgb = tmp_path / "rgb.tif"
+    tifffile.imwrite(rgb, _grey(np.uint8, shape=(3, 40, 3)), photometric="rgb")
+    assert "120 pixels" in str(_assert_error(rgb, max_pixels=100))
+
+
+@pytest.mark.parametrize("ext", ["png", "tif"])
+def test_running_out_of_memory_is_a_refusal_naming_the_file(tmp_path, monkeypatch, ext):
+    p = tmp_path / f"img.{ext}"
+    iio.imwrite(p, _grey(np.uint8, shape=(30, 20)))
+    real_array = np.array
+
+    def no_memory(obj, *a, **kw):
+        if hasattr(obj, "getim") or hasattr(obj, "keyframe"):  # a decoded Pillow image, or a TIFF page
+            raise MemoryError
+        return real_array(obj, *a, **kw)
+
+    import tifffile as tf
+
+    monkeypatch.setattr(np, "array", no_memory)
+    monkeypatch.setattr(tf.TiffPage, "asarray", lambda *a, **k: (_ for _ in ()).throw(MemoryError()))
+    assert "not enough memory" in str(_assert_error(p))

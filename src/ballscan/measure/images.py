@@ -23,8 +23,15 @@ naming the file. The file's format is decided from its magic bytes, not its
 extension. Before any pixel data is decoded, the dimensions claimed by the
 PNG ``IHDR`` chunk or the TIFF directory are checked against ``max_pixels``
 so that a crafted header ("decompression bomb") cannot make us allocate
-memory; every PNG chunk's CRC is verified, so a flipped byte is reported
-rather than decoded into wrong pixels.
+memory; the limit counts pixels (lines x pixels per line) whatever the
+format and samples per pixel, and a PNG's header is read and checked before
+the rest of the file.  Every PNG chunk's CRC is verified, so a flipped byte
+is reported rather than decoded into wrong pixels; a PNG's compressed data
+must decompress to exactly the size its header declares (a truncated file is
+refused, never padded), and a palette image must have one valid palette
+(1 to 256 entries of 3 bytes, none in a grey image) that every pixel's
+index lies in.  A decoder that runs out of memory below the limit is a
+refusal naming the file, not a ``MemoryError``.
 """
 
 from __future__ import annotations
@@ -97,12 +104,76 @@ class LineImage:
 # --------------------------------------------------------------------------
 # PNG
 # --------------------------------------------------------------------------
-def _check_png(raw: bytes, src: str, max_pixels: int) -> tuple[int, int, int, int]:
-    """Walk the PNG chunks, verify CRCs and IHDR; return (W, H, depth, colour type)."""
-    pos = len(_PNG_SIGNATURE)
+#: Samples per pixel of each PNG colour type, and the bit depths the PNG specification allows it.
+_PNG_CHANNELS = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}
+_PNG_DEPTHS = {0: (1, 2, 4, 8, 16), 2: (8, 16), 3: (1, 2, 4, 8), 4: (8, 16), 6: (8, 16)}
+#: Adam7's passes: first column, first line, column step, line step.
+_ADAM7 = ((0, 0, 8, 8), (4, 0, 8, 8), (0, 4, 4, 8), (2, 0, 4, 4), (0, 2, 2, 4), (1, 0, 2, 2), (0, 1, 1, 2))
+#: Bytes a PNG may hold beyond its compressed pixels (metadata chunks, zlib's framing) before it is refused unread.
+_PNG_SLACK_BYTES = 16 << 20
+
+
+@dataclass(frozen=True)
+class _PngHeader:
+    """A PNG's IHDR: pixels per line, lines, bits per sample, colour type, interlace method."""
+
+    width: int
+    height: int
+    depth: int
+    colour: int
+    interlace: int
+
+    def filtered_bytes(self) -> int:
+        """Bytes of the decompressed image data the header declares (each line's filter byte included)."""
+        bits = _PNG_CHANNELS[self.colour] * self.depth
+        passes = _ADAM7 if self.interlace else ((0, 0, 1, 1),)
+        total = 0
+        for x0, y0, dx, dy in passes:
+            w = (self.width - x0 + dx - 1) // dx if self.width > x0 else 0
+            h = (self.height - y0 + dy - 1) // dy if self.height > y0 else 0
+            if w and h:
+                total += h * (1 + (w * bits + 7) // 8)
+        return total
+
+
+def _png_header(head: bytes, src: str, max_pixels: int) -> _PngHeader:
+    """The PNG's IHDR from the file's first 33 bytes, checked (size limit in pixels) before anything else is read."""
+    if len(head) < 33:
+        raise ImageFileError(src, "truncated PNG (no complete IHDR chunk)")
+    length, ctype = struct.unpack(">I4s", head[8:16])
+    if ctype != b"IHDR" or length != 13:
+        raise ImageFileError(src, "corrupt PNG (first chunk is not a valid IHDR)")
+    (crc,) = struct.unpack(">I", head[29:33])
+    if zlib.crc32(head[12:29]) & 0xFFFFFFFF != crc:
+        raise ImageFileError(src, "corrupt PNG (CRC mismatch in IHDR chunk at byte 8)")
+    width, height, depth, colour, compression, filtering, interlace = struct.unpack(">IIBBBBB", head[16:29])
+    # Refuse before anything is decoded, allocated or even read.
+    if width == 0 or height == 0:
+        raise ImageFileError(src, f"empty PNG image ({width} x {height} pixels)")
+    if width * height > max_pixels:
+        raise ImageFileError(
+            src, f"PNG header claims {height} lines x {width} pixels = {width * height} pixels, more than the limit of {max_pixels}"
+        )
+    if colour not in _PNG_CHANNELS or depth not in _PNG_DEPTHS[colour]:
+        raise ImageFileError(src, f"corrupt PNG (bit depth {depth} is not allowed for colour type {colour})")
+    if compression != 0 or filtering != 0 or interlace not in (0, 1):
+        raise ImageFileError(src, f"corrupt PNG (unknown compression {compression}, filter {filtering} or interlace {interlace} method)")
+    if depth not in (8, 16) and colour != 3:
+        raise ImageFileError(src, f"unsupported PNG bit depth {depth} (need 8 or 16)")
+    if depth == 16 and colour != 0:
+        raise ImageFileError(src, "16-bit colour or grey+alpha PNG is not supported (save as 16-bit grey PNG or TIFF)")
+    return _PngHeader(width, height, depth, colour, interlace)
+
+
+def _check_png(raw: bytes, src: str, header: _PngHeader) -> int:
+    """Walk the PNG's chunks (CRCs, order, palette) and check that its data decompresses to exactly the declared size.
+
+    Returns the palette's number of entries (0 without a palette).
+    """
+    pos = len(_PNG_SIGNATURE) + 25
     n = len(raw)
-    ihdr = None
-    seen_idat = False
+    idat: list[bytes] = []
+    palette = 0
     seen_iend = False
     while pos < n:
         if pos + 8 > n:
@@ -118,46 +189,85 @@ def _check_png(raw: bytes, src: str, max_pixels: int) -> tuple[int, int, int, in
         if zlib.crc32(body) & 0xFFFFFFFF != crc:
             name = ctype.decode("latin-1", "replace")
             raise ImageFileError(src, f"corrupt PNG (CRC mismatch in {name} chunk at byte {pos})")
-        if ihdr is None:
-            if ctype != b"IHDR" or length != 13:
-                raise ImageFileError(src, "corrupt PNG (first chunk is not a valid IHDR)")
-            ihdr = struct.unpack(">IIBBBBB", raw[pos + 8 : pos + 8 + 13])
-            width, height = ihdr[0], ihdr[1]
-            # Refuse before anything is decoded or allocated.
-            if width == 0 or height == 0:
-                raise ImageFileError(src, f"empty PNG image ({width} x {height} pixels)")
-            if width * height > max_pixels:
-                raise ImageFileError(
-                    src,
-                    f"PNG header claims {height} lines x {width} pixels = {width * height} pixels, "
-                    f"more than the limit of {max_pixels}",
-                )
+        if ctype == b"IHDR":
+            raise ImageFileError(src, "corrupt PNG (a second IHDR chunk)")
+        if ctype == b"PLTE":
+            palette = _check_palette(length, header, bool(idat), palette, src)
         elif ctype == b"IDAT":
-            seen_idat = True
+            idat.append(body[4:])
         elif ctype == b"IEND":
             seen_iend = True
             break
         pos = end
-    if ihdr is None:
-        raise ImageFileError(src, "truncated PNG (no IHDR chunk)")
-    if not seen_idat:
+    if not idat:
         raise ImageFileError(src, "truncated PNG (no image data)")
     if not seen_iend:
         raise ImageFileError(src, "truncated PNG (no IEND chunk)")
-    width, height, depth, colour = ihdr[0], ihdr[1], ihdr[2], ihdr[3]
-    if depth not in (8, 16) and not (colour == 3 and depth in (1, 2, 4)):
-        raise ImageFileError(src, f"unsupported PNG bit depth {depth} (need 8 or 16)")
-    if depth == 16 and colour != 0:
-        raise ImageFileError(
-            src, "16-bit colour or grey+alpha PNG is not supported (save as 16-bit grey PNG or TIFF)"
-        )
-    return width, height, depth, colour
+    if header.colour == 3 and not palette:
+        raise ImageFileError(src, "corrupt PNG (a palette image without a PLTE palette)")
+    _check_png_data(idat, header, src)
+    return palette
 
 
-def _read_png(path: Path, raw: bytes, src: str, max_pixels: int) -> tuple[np.ndarray, int]:
+def _check_palette(length: int, header: _PngHeader, after_data: bool, seen: int, src: str) -> int:
+    """The number of entries of a PLTE chunk of ``length`` bytes, checked against the PNG specification."""
+    if header.colour in (0, 4):
+        raise ImageFileError(src, "corrupt PNG (a PLTE palette in a grey image)")
+    if seen or after_data:
+        raise ImageFileError(src, "corrupt PNG (a second PLTE chunk, or one after the image data)")
+    if length == 0 or length % 3 or length // 3 > 256:
+        raise ImageFileError(src, f"corrupt PNG (a PLTE palette of {length} bytes: need 1 to 256 entries of 3 bytes)")
+    entries = length // 3
+    if header.colour == 3 and entries > 2**header.depth:
+        raise ImageFileError(src, f"corrupt PNG (a palette of {entries} entries for {header.depth}-bit indices)")
+    return entries
+
+
+def _check_png_data(idat: list[bytes], header: _PngHeader, src: str, piece: int = 1 << 24) -> None:
+    """The IDAT chunks' zlib stream decompresses to exactly the bytes the header declares (counted piece by piece, in bounded memory)."""
+    expected = header.filtered_bytes()
+    d = zlib.decompressobj()
+    got = 0
+    try:
+        for data in idat:
+            while data and got <= expected:
+                out = d.decompress(data, piece)
+                got += len(out)
+                data = d.unconsumed_tail
+            if got > expected or d.eof:
+                break
+        while not d.eof and got <= expected:  # what the decompressor holds back
+            out = d.decompress(b"", piece)
+            if not out:
+                got += len(d.flush())
+                break
+            got += len(out)
+    except zlib.error as exc:
+        raise ImageFileError(src, f"corrupt PNG (image data: {_one_line(exc)})") from None
+    if got > expected:
+        raise ImageFileError(src, f"corrupt PNG (more image data than the header's {header.height} lines x {header.width} pixels)")
+    if got < expected:
+        what = "" if header.interlace else f", {got // max(expected // header.height, 1)} of {header.height} lines"
+        raise ImageFileError(src, f"truncated PNG (image data holds {got} of the {expected} bytes its header declares{what})")
+    if not d.eof:
+        raise ImageFileError(src, "truncated PNG (the compressed image data does not end)")
+
+
+def _read_png(path: Path, src: str, size: int, max_pixels: int) -> tuple[np.ndarray, int]:
     from PIL import Image, PngImagePlugin
 
-    _, _, depth, colour = _check_png(raw, src, max_pixels)
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(33)
+            header = _png_header(head, src, max_pixels)
+            limit = header.filtered_bytes() + header.filtered_bytes() // 64 + _PNG_SLACK_BYTES
+            if size > limit:
+                raise ImageFileError(src, f"{size} bytes is more than a PNG of {header.height} lines x {header.width} pixels can hold ({limit})")
+            raw = head + fh.read()
+    except OSError as exc:
+        raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
+    palette = _check_png(raw, src, header)
+    del raw
     try:
         with warnings.catch_warnings():
             # Our own max_pixels check has run; Pillow's global bomb limit is not ours.
@@ -167,20 +277,27 @@ def _read_png(path: Path, raw: bytes, src: str, max_pixels: int) -> tuple[np.nda
             with PngImagePlugin.PngImageFile(str(path)) as im:
                 im.load()
                 if im.mode == "P":
+                    top = int(np.asarray(im).max())
+                    if top >= palette:
+                        raise ImageFileError(src, f"corrupt PNG (pixel index {top} beyond its palette of {palette} entries)")
                     im = im.convert("RGBA" if "transparency" in im.info else "RGB")
                 elif im.mode in ("1",):
                     im = im.convert("L")
                 arr = np.array(im)
     except ImageFileError:
         raise
+    except MemoryError:
+        raise ImageFileError(src, f"not enough memory to decode {header.height} lines x {header.width} pixels") from None
     except Exception as exc:  # Pillow raises many types for damaged streams
         raise ImageFileError(src, f"cannot decode PNG ({_one_line(exc)})") from None
-    if depth == 16 and arr.dtype != np.uint16:
+    if arr.shape[:2] != (header.height, header.width):
+        raise ImageFileError(src, f"PNG decoded to shape {arr.shape}, its header says {header.height} x {header.width}")
+    if header.depth == 16 and arr.dtype != np.uint16:
         # Pillow gives mode I;16 -> uint16, or "I" -> int32 holding 0..65535.
         if arr.dtype.kind in "iu" and arr.size and (arr.min() < 0 or arr.max() > 65535):
             raise ImageFileError(src, "16-bit PNG decoded out of range")
         arr = arr.astype(np.uint16)
-    return arr, (16 if depth == 16 else 8)
+    return arr, (16 if header.depth == 16 else 8)
 
 
 # --------------------------------------------------------------------------
@@ -193,6 +310,7 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int, memory_map: boo
 
     tiff_log = logging.getLogger("tifffile")
     level = tiff_log.level
+    count = 0
     tiff_log.setLevel(logging.CRITICAL)  # its notes on odd tags would break the one-line contract
     try:
         with warnings.catch_warnings():
@@ -205,14 +323,18 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int, memory_map: boo
                     )
                 page = tif.pages[0]
                 shape = tuple(int(s) for s in page.shape)
-                count = int(np.prod(shape, dtype=np.float64)) if shape else 0
+                axes = page.axes
+                samples = shape[axes.index("S")] if "S" in axes and len(axes) == len(shape) else 1
+                count = int(np.prod(shape, dtype=np.float64)) // max(samples, 1) if shape else 0
                 if count == 0:
                     raise ImageFileError(src, f"empty TIFF image (shape {shape})")
-                if count > max_pixels * 4:  # allow up to 4 samples per pixel
+                if count > max_pixels:  # pixels, whatever their samples
                     raise ImageFileError(
                         src,
-                        f"TIFF header claims shape {shape} = {count} samples, more than the limit",
+                        f"TIFF header claims shape {shape} = {count} pixels, more than the limit of {max_pixels}",
                     )
+                if samples > 4:
+                    raise ImageFileError(src, f"TIFF of {samples} samples per pixel (need grey or RGB(A))")
                 dtype = np.dtype(page.dtype) if page.dtype is not None else None
                 if dtype is None or dtype not in (np.dtype(np.uint8), np.dtype(np.uint16)):
                     raise ImageFileError(
@@ -227,7 +349,6 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int, memory_map: boo
                         raise ImageFileError(
                             src, f"truncated TIFF (image data ends at byte {last}, file has {size})"
                         )
-                axes = page.axes
                 # an uncompressed grey image stored in one piece is mapped, not read
                 mapped = memory_map and page.is_memmappable and len(shape) == 2
                 arr = None if mapped else page.asarray()
@@ -235,6 +356,8 @@ def _read_tiff(path: Path, size: int, src: str, max_pixels: int, memory_map: boo
                 arr = tifffile.memmap(str(path), page=0, mode="r")
     except ImageFileError:
         raise
+    except MemoryError:
+        raise ImageFileError(src, f"not enough memory to read its {count} pixels") from None
     except Exception as exc:
         raise ImageFileError(src, f"cannot read TIFF ({_one_line(exc)})") from None
     finally:
@@ -330,16 +453,19 @@ def read_stored(
     if head[:4] == _PNG_SIGNATURE[:4]:
         if head != _PNG_SIGNATURE:
             raise ImageFileError(src, "truncated or corrupt PNG signature")
-        try:
-            raw = p.read_bytes()
-        except OSError as exc:
-            raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
-        arr, bits = _read_png(p, raw, src, max_pixels)
-        del raw
+        arr, bits = _read_png(p, src, size, max_pixels)
     elif head[:4] in _TIFF_MAGICS:
         arr, bits = _read_tiff(p, size, src, max_pixels, memory_map)
     else:
         raise ImageFileError(src, "unknown image format (need PNG or TIFF)")
+    try:
+        return _as_stored(arr, bits, src, lines_as_columns)
+    except MemoryError:
+        raise ImageFileError(src, f"not enough memory for its {arr.size} samples") from None
+
+
+def _as_stored(arr: np.ndarray, bits: int, src: str, lines_as_columns: bool) -> StoredImage:
+    """The decoded samples as a :class:`StoredImage`: grey or colour, rows = scan lines, at least 2 x 2."""
     if arr.ndim == 3 and arr.shape[2] == 1:
         arr = arr[:, :, 0]
     if arr.ndim == 3 and arr.shape[2] == 2:  # grey + alpha: drop alpha
@@ -396,7 +522,10 @@ def line_image(stored: StoredImage, saturation_dn: float | None = None) -> LineI
     """The :class:`LineImage` (float64 grey, read-only) of a file's stored samples; ``saturation_dn`` as for :func:`load_image`."""
     if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
         raise ImageFileError(stored.source, f"saturation level must be a positive number, got {saturation_dn}")
-    grey = _to_grey(np.asarray(stored.data), stored.source)
+    try:
+        grey = _to_grey(np.asarray(stored.data), stored.source)
+    except MemoryError:
+        raise ImageFileError(stored.source, f"not enough memory for its {stored.data.size} samples as float64") from None
     sat = float(saturation_dn) if saturation_dn is not None else float(2**stored.bits - 1)
     grey.setflags(write=False)
     return LineImage(data=grey, saturation_dn=sat, bits=stored.bits, source=stored.source)

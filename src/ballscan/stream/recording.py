@@ -119,11 +119,14 @@ def measure_stored(
     cfg = StreamConfig(recipe=recipe) if stream is None else stream
     if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
         raise BallscanError(f"{stored.source}: saturation level must be a positive number, got {saturation_dn}")
-    if is_recording(stored, cfg):
-        if saturation_dn is not None and cfg.saturation_dn is None:
-            cfg = replace(cfg, saturation_dn=float(saturation_dn))
-        return measure_recording(stored, camera, radius_m, cfg, timestamps_s=timestamps_s)
-    return estimate_image(line_image(stored, saturation_dn), camera, radius_m, recipe=recipe, timestamps_s=timestamps_s)
+    try:
+        if is_recording(stored, cfg):
+            if saturation_dn is not None and cfg.saturation_dn is None:
+                cfg = replace(cfg, saturation_dn=float(saturation_dn))
+            return measure_recording(stored, camera, radius_m, cfg, timestamps_s=timestamps_s)
+        return estimate_image(line_image(stored, saturation_dn), camera, radius_m, recipe=recipe, timestamps_s=timestamps_s)
+    except MemoryError:
+        raise BallscanError(f"{stored.source}: not enough memory to measure its {stored.n_lines} lines x {stored.data.shape[1]} pixels") from None
 
 
 def is_recording(stored: StoredImage, config: StreamConfig = StreamConfig()) -> bool:
