@@ -156,6 +156,7 @@ def estimate(
 
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    _warn_radius(radius)
     if as_json and as_csv:
         raise typer.BadParameter("give one of --json and --csv", param_hint="--csv")
     if units not in UNITS:
@@ -175,6 +176,15 @@ def estimate(
         typer.echo(format_table(report, cam, units))
     if plot is not None:
         _plot(plot, stored, cam, report, ts)
+
+
+def _warn_radius(radius_m: float) -> None:
+    """A one-line warning on stderr for a radius no ball has (its balls are flagged implausible_radius)."""
+    from ..pipeline.plausibility import radius_problem
+
+    problem = radius_problem(radius_m)
+    if problem is not None:
+        print(f"ballscan: warning: --radius: {problem}", file=sys.stderr)
 
 
 def _plot(path: Path, stored, camera, report, timestamps_s) -> None:

@@ -34,6 +34,7 @@ from ..measure.images import LineImage, as_line_image
 from ..solve.uncertainty import propagate
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
+from .plausibility import assess
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
 from .warmup import ensure_warm
@@ -266,6 +267,23 @@ def _vx_convention(motion: BallMotion, camera: LineScanCamera) -> BallMotion:
     return BallMotion(motion.radius_m, motion.t_c_s, motion.position_m, (vx, *motion.velocity_mps[1:]), motion.acceleration_mps2)
 
 
+def _region_estimate(image: LineImage, detection: Detection, region: BallRegion, camera: LineScanCamera, radius_m: float, t_lines_s: np.ndarray, recipe: Recipe, background_dn: np.ndarray | None) -> BallEstimate:
+    """:func:`estimate_region`, or an undetermined estimate saying why where its numbers fail (a region without contrast, a singular fit)."""
+    t0 = time.perf_counter()
+    try:
+        return estimate_region(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn=background_dn)
+    except (ValueError, ArithmeticError) as exc:  # numpy's LinAlgError is a ValueError
+        return BallEstimate.undetermined_estimate(
+            recipe.method,
+            radius_m,
+            f"cannot be measured: {exc}",
+            tuple(region.flags),
+            first_line=region.line_start,
+            last_line=region.line_stop - 1,
+            run_time_s=time.perf_counter() - t0,
+        )
+
+
 def estimate_image(
     image: LineImage | np.ndarray | str | os.PathLike[str],
     camera: LineScanCamera | str | os.PathLike[str],
@@ -327,6 +345,6 @@ def estimate_image(
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image, columns=columns)
     bg = shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
-    balls = [estimate_region(image, det, r, camera, radius_m, t, recipe, background_dn=bg) for r in det.regions]
+    balls = [assess(_region_estimate(image, det, r, camera, radius_m, t, recipe, bg), r, image) for r in det.regions]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls), recipe=recipe)

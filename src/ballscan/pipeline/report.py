@@ -23,10 +23,15 @@ FLAG_TEXT = {
     "initial_degenerate": "the key-point guess was ill-conditioned",
     "not_converged": "the fit did not converge: do not trust it",
     "degenerate": "some quantities cannot be determined from this image",
+    "not_a_ball": "its silhouette is not a ball's: do not trust it",
+    "implausible_radius": "the radius is outside 1 mm to 0.5 m of any ball (the unit is metres)",
+    "implausible_speed": "faster than any sports ball: do not trust it",
+    "implausible_range": "farther from the camera than any sports field: check the radius and the camera file",
+    "wrong_bit_depth": "the 16-bit values look like pairs of 8-bit samples (8-bit data read as 16-bit?)",
 }
 
-#: Flags that make a result unreliable (marked in the table's first line).
-UNRELIABLE = ("not_converged", "degenerate")
+#: Flags that make a result unreliable (marked in the table's first line and beside its speed).
+UNRELIABLE = ("not_converged", "degenerate", "not_a_ball", "implausible_radius", "implausible_speed", "implausible_range", "wrong_bit_depth")
 
 #: CSV columns: one row per ball (SI units: metres, seconds, m/s, degrees; sigmas are 1-sigma; empty where unknown).
 CSV_COLUMNS = (
@@ -76,9 +81,11 @@ def format_ball(k: int, b: BallEstimate, camera: LineScanCamera | None = None, u
     if units not in UNITS:
         raise ValueError(f"units: expected one of {', '.join(UNITS)}, got {units!r}")
     u = UNITS[units]
-    warn = "  UNRELIABLE" if any(f in UNRELIABLE for f in b.flags) else ""
+    unreliable = [f for f in b.flags if f in UNRELIABLE]
+    warn = f"  UNRELIABLE ({', '.join(unreliable)})" if unreliable else ""
     lines = [f"ball {k}: method {b.method}, lines {b.first_line}-{b.last_line}, {b.run_time_s * 1e3:.1f} ms{warn}"]
-    lines.append(f"  speed        {_pm(b.speed_mps, b.speed_sigma_mps, '.4f', u)} {units}")
+    mark = "  (UNRELIABLE)" if unreliable and b.speed_mps is not None else ""
+    lines.append(f"  speed        {_pm(b.speed_mps, b.speed_sigma_mps, '.4f', u)} {units}{mark}")
     der = b.derived(camera)
     has_sigma = b.covariance is not None
     if der is not None:

@@ -35,6 +35,11 @@ FLAGS = (
     "initial_degenerate",
     "not_converged",
     "degenerate",
+    "not_a_ball",
+    "implausible_radius",
+    "implausible_speed",
+    "implausible_range",
+    "wrong_bit_depth",
 )
 
 
