@@ -104,10 +104,8 @@ def radius_problem(radius_m: float, limits: PlausibilityLimits = PlausibilityLim
         return None
     hint = ""
     if radius_m > limits.max_radius_m:
-        for unit, scale in (("millimetres", 1e-3), ("centimetres", 1e-2)):
-            if limits.min_radius_m <= radius_m * scale <= limits.max_radius_m:
-                hint = f"; the unit is metres: {radius_m:g} {unit} is {radius_m * scale:g}"
-                break
+        units = [f"{radius_m:g} {unit} is {radius_m * scale:g}" for unit, scale in (("millimetres", 1e-3), ("centimetres", 1e-2)) if limits.min_radius_m <= radius_m * scale <= limits.max_radius_m]
+        hint = f"; the unit is metres: {', '.join(units)}" if units else ""
     return (
         f"radius {radius_m:g} m is outside {limits.min_radius_m * 1e3:g} mm to {limits.max_radius_m:g} m, "
         f"the range of any ball{hint}"
