@@ -68,6 +68,7 @@ def simulate(
     extra_ball: list[str] = typer.Option([], "--add-ball", help="Another ball: 'R;X,Y,Z;VX,VY,VZ;T_C' (repeatable)."),
     stream: Optional[Path] = typer.Option(None, "--stream", help="Render a raw line stream instead: writes STREAM, STREAM.camera.toml, STREAM.truth.jsonl (needs --lines and --balls)."),
     balls: int = typer.Option(10, "--balls", help="With --stream: number of balls at random times and positions."),
+    force: bool = typer.Option(False, "--force", help="Write through an output that is a symbolic link (refused otherwise)."),
 ) -> None:
     """Render a synthetic line-scan image (or, with --stream, a raw line stream) with its camera file and ground truth."""
     from ..lab.simulate import SimulationRequest, run_simulation
@@ -87,7 +88,7 @@ def simulate(
         r_m = radius if radius is not None else (chosen.motion.radius_m if chosen is not None else None)
         if r_m is None:
             raise ValueError("simulate --stream: give --radius R (or a --preset)")
-        simulate_stream(stream, cam, lines, balls, seed, radius_m=r_m)
+        simulate_stream(stream, cam, lines, balls, seed, radius_m=r_m, force=force)
         for p in (stream, Path(f"{stream}.camera.toml"), Path(f"{stream}.truth.jsonl")):
             typer.echo(str(p))
         return
@@ -110,6 +111,7 @@ def simulate(
         background_level=background,
         shading=not flat,
         extra_balls=tuple(extra_ball),
+        force=force,
     )
     written = run_simulation(req)
     for p in written:
@@ -141,6 +143,7 @@ def estimate(
     flat_field: bool = typer.Option(
         True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
     ),
+    force: bool = typer.Option(False, "--force", help="Write --plot through a symbolic link (refused otherwise)."),
 ) -> None:
     """Measure every ball in a line-scan image.
 
@@ -164,6 +167,10 @@ def estimate(
     if not max_pixels > 0:
         raise typer.BadParameter(f"must be positive, got {max_pixels}", param_hint="--max-pixels")
     cam = load_camera(camera)
+    if plot is not None:
+        from ..outputs import check_not_symlink
+
+        check_not_symlink(plot, force)  # before the work, not after it
     stored = read_stored(image, lines_as_columns=lines_as_columns, max_pixels=max_pixels)
     ts = load_timestamps(timestamps, stored.n_lines) if timestamps else None
     recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
@@ -175,7 +182,7 @@ def estimate(
     else:
         typer.echo(format_table(report, cam, units))
     if plot is not None:
-        _plot(plot, stored, cam, report, ts)
+        _plot(plot, stored, cam, report, ts, force)
 
 
 def _warn_radius(radius_m: float) -> None:
@@ -187,7 +194,7 @@ def _warn_radius(radius_m: float) -> None:
         print(f"ballscan: warning: --radius: {problem}", file=sys.stderr)
 
 
-def _plot(path: Path, stored, camera, report, timestamps_s) -> None:
+def _plot(path: Path, stored, camera, report, timestamps_s, force: bool = False) -> None:
     """The overlay of the whole image, or of a long recording's lines around its first ball (in its own line numbers)."""
     import numpy as np
 
@@ -205,7 +212,7 @@ def _plot(path: Path, stored, camera, report, timestamps_s) -> None:
     data = np.asarray(stored.data[lo:hi], dtype=float)
     if data.ndim == 3:
         data = data[:, :, :3] @ np.array([0.299, 0.587, 0.114])
-    save_overlay(path, data, camera, report, t[lo:hi], first_line=lo)
+    save_overlay(path, data, camera, report, t[lo:hi], first_line=lo, force=force)
 
 
 def _print_csv(report, camera) -> None:

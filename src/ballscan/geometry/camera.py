@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CameraFileError, GeometryError
+from ..outputs import atomic_write_text
 from .lens import distorted, distortion_slope, project, undistorted
 
 __all__ = [
@@ -547,14 +548,14 @@ def load_camera(path: str | Path) -> LineScanCamera:
     return camera_from_dict(d, source=str(path))
 
 
-def save_camera(camera: LineScanCamera, path: str | Path, comment: str | None = None) -> None:
-    """Write a camera as geometry.md TOML."""
+def save_camera(camera: LineScanCamera, path: str | Path, comment: str | None = None, *, force: bool = False) -> None:
+    """Write a camera as geometry.md TOML, whole or not at all, not through a symbolic link unless ``force`` (:func:`ballscan.outputs.atomic_write_text`)."""
     import tomli_w
 
     text = tomli_w.dumps(camera.to_dict())
     if comment:
         text = "".join(f"# {line}\n" for line in comment.splitlines()) + text
-    Path(path).write_text(text)
+    atomic_write_text(path, text, force=force)
 
 
 def crop_camera(camera: LineScanCamera, col_start: int, col_stop: int, *, exposure_s: float | None = None) -> LineScanCamera:

@@ -53,6 +53,7 @@ from typing import Any
 
 import numpy as np
 
+from ..outputs import atomic_write_bytes
 from ..geometry.camera import LineScanCamera, line_times
 from ..errors import GeometryError
 from ..geometry.motion import BallMotion
@@ -65,6 +66,7 @@ __all__ = [
     "render",
     "apply_sensor",
     "write_image",
+    "encode_image",
     "truth_dict",
 ]
 
@@ -886,31 +888,43 @@ def truth_dict(balls: Sequence[BallMotion]) -> dict[str, Any]:
     return {"balls": [b.to_dict() for b in sorted(balls, key=lambda b: b.t_c_s)]}
 
 
-def write_image(path: str | Path, image: np.ndarray) -> None:
+def write_image(path: str | Path, image: np.ndarray, *, force: bool = False) -> None:
     """Write a stored image as greyscale PNG (``uint8`` or 16-bit ``uint16``), or TIFF.
 
     The format follows the file's extension: ``.png`` (8- or 16-bit grey,
     written with Pillow) or ``.tif`` / ``.tiff`` (written with tifffile).
     12-bit data stay ``0 .. 4095`` in the 16-bit file (geometry.md "Images").
+    The file is written whole or not at all, and not through a symbolic
+    link unless ``force`` (:func:`ballscan.outputs.atomic_write_bytes`).
 
     Raises
     ------
     ValueError
         If ``image`` is not a 2-D ``uint8`` or ``uint16`` array, or the
         extension is none of those.
+    ballscan.outputs.OutputFileError
+        ``path`` is a symbolic link (without ``force``) or cannot be written.
     """
     path = Path(path)
+    atomic_write_bytes(path, encode_image(image, path.suffix), force=force)
+
+
+def encode_image(image: np.ndarray, suffix: str = ".png") -> bytes:
+    """The bytes of :func:`write_image`'s file for a file name ending in ``suffix`` (``.png``, ``.tif``, ``.tiff``)."""
+    import io
+
     arr = np.asarray(image)
     if arr.ndim != 2 or arr.dtype not in (np.uint8, np.uint16):
         raise ValueError(f"image: expected a 2-D uint8 or uint16 array, got {arr.dtype} of shape {arr.shape}")
-    ext = path.suffix.lower()
+    ext = suffix.lower()
+    buf = io.BytesIO()
     if ext in (".tif", ".tiff"):
         import tifffile
 
-        tifffile.imwrite(path, arr, photometric="minisblack")
-        return
+        tifffile.imwrite(buf, arr, photometric="minisblack")
+        return buf.getvalue()
     if ext != ".png":
-        raise ValueError(f"image path: expected a .png, .tif or .tiff file name, got {path.name!r}")
+        raise ValueError(f"image path: expected a .png, .tif or .tiff file name, got {suffix!r}")
     from PIL import Image
 
     height, width = arr.shape
@@ -919,4 +933,5 @@ def write_image(path: str | Path, image: np.ndarray) -> None:
     else:
         # Pillow's 16-bit grey mode is little-endian "I;16", saved as a 16-bit grey PNG
         im = Image.frombytes("I;16", (width, height), arr.astype("<u2").tobytes())
-    im.save(path, format="PNG")
+    im.save(buf, format="PNG")
+    return buf.getvalue()

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..outputs import atomic_write_bytes
 from ..geometry.camera import LineScanCamera
 from ..model.silhouette import silhouette
 from .report import UNITS
@@ -132,8 +133,17 @@ def plot_estimates(
     return fig
 
 
-def save_overlay(path, image: np.ndarray, camera: LineScanCamera, report: EstimateReport, t_lines_s: np.ndarray, **options) -> None:
-    """Write :func:`plot_estimates` (``options`` are its keywords) to an image file (PNG by its suffix)."""
+def save_overlay(path, image: np.ndarray, camera: LineScanCamera, report: EstimateReport, t_lines_s: np.ndarray, *, force: bool = False, **options) -> None:
+    """Write :func:`plot_estimates` (``options`` are its keywords) to an image file (its format by its suffix, PNG without one).
+
+    The file is written whole or not at all, not through a symbolic link
+    unless ``force`` (:func:`ballscan.outputs.atomic_write_bytes`).
+    """
+    import io
+    from pathlib import Path
+
     fig = plot_estimates(image, camera, report, t_lines_s, **options)
     fig.tight_layout()
-    fig.savefig(path)
+    buf = io.BytesIO()
+    fig.savefig(buf, format=Path(path).suffix.lstrip(".").lower() or "png")
+    atomic_write_bytes(path, buf.getvalue(), force=force)

@@ -34,6 +34,7 @@ from typing import Any, BinaryIO
 import numpy as np
 
 from ..geometry.camera import LineScanCamera, save_camera
+from ..outputs import atomic_write_text, check_not_symlink
 from ..geometry.motion import BallMotion
 from .engine import Chunk, StreamError
 
@@ -920,6 +921,10 @@ def stream_balls(
     return out
 
 
+#: The longest stream ``simulate_stream`` renders: its line times take 8 bytes a line in memory.
+MAX_SIMULATED_LINES = 2**26
+
+
 def simulate_stream(
     out_raw: str | os.PathLike[str],
     camera: LineScanCamera,
@@ -938,6 +943,7 @@ def simulate_stream(
     block_lines: int = 4096,
     speed_mps: tuple[float, float] = (25.0, 45.0),
     depth_m: tuple[float, float] = (3.0, 5.0),
+    force: bool = False,
 ) -> SimulatedStream:
     """Render a long line stream with balls to a raw file, with its truth beside it.
 
@@ -974,6 +980,15 @@ def simulate_stream(
     block_lines : int
     speed_mps, depth_m : (float, float)
         Ranges of the balls' speed (m/s) and depth (m).
+    force : bool
+        Write through outputs that are symbolic links (refused otherwise).
+
+    Raises
+    ------
+    ValueError
+        ``n_lines`` outside 1000 .. :data:`MAX_SIMULATED_LINES`, ``n_balls``
+        outside 1 .. one per 100 lines, a radius that is not a number in
+        (0, 1] m, or balls that do not fit.
 
     Returns
     -------
@@ -984,10 +999,16 @@ def simulate_stream(
     from ..model.render import Appearance, SensorNoise, apply_sensor, render
     from ..model.silhouette import silhouette
 
-    if isinstance(n_lines, bool) or not isinstance(n_lines, (int, np.integer)) or n_lines < 1000:
-        raise ValueError(f"n_lines: must be an integer >= 1000, got {n_lines!r}")
+    if isinstance(n_lines, bool) or not isinstance(n_lines, (int, np.integer)) or not 1000 <= n_lines <= MAX_SIMULATED_LINES:
+        raise ValueError(f"n_lines: must be an integer from 1000 to {MAX_SIMULATED_LINES}, got {n_lines!r}")
+    if isinstance(n_balls, bool) or not isinstance(n_balls, (int, np.integer)) or not 1 <= n_balls <= n_lines // 100:
+        raise ValueError(f"n_balls: must be an integer from 1 to {n_lines // 100} (a ball per 100 lines) for {n_lines} lines, got {n_balls!r}")
+    if not (isinstance(radius_m, (int, float)) and math.isfinite(radius_m) and 0 < radius_m <= 1.0):
+        raise ValueError(f"radius: must be a number of metres in (0, 1], got {radius_m!r}")
     noise = SensorNoise() if noise is None else noise
     out = Path(out_raw)
+    for p in (out, out.with_name(out.name + ".camera.toml"), out.with_name(out.name + ".truth.jsonl"), out.with_name(out.name + ".timestamps.npy")):
+        check_not_symlink(p, force)
     out.parent.mkdir(parents=True, exist_ok=True)
     idx = np.arange(n_lines, dtype=np.float64)
     if dropped is not None:
@@ -1019,7 +1040,8 @@ def simulate_stream(
         d["last_line"] = last
         truths.append(d)
     dtype = noise.dtype
-    with open(out, "wb") as fh:
+    part = out.with_name(f".{out.name}.part")  # renamed over OUT when whole
+    with open(part, "wb") as fh:
         for a in range(0, n_lines, block_lines):
             b = min(a + block_lines, n_lines)
             inside = [(m, app) for m, (lo, hi) in zip(balls, spans) if lo < b and hi > a]
@@ -1030,9 +1052,10 @@ def simulate_stream(
                 clean = clean * (1.0 + ramp * (np.arange(a, b) / n_lines))[:, None]
             img, _ = apply_sensor(clean * gain[None, :], noise_blocks, rng)
             fh.write(np.ascontiguousarray(img.astype(np.dtype(dtype).newbyteorder("<"))).tobytes())
-    save_camera(camera, out.with_name(out.name + ".camera.toml"), comment=f"written by ballscan simulate --stream for {out.name}")
+    os.replace(part, check_not_symlink(out, force))
+    save_camera(camera, out.with_name(out.name + ".camera.toml"), comment=f"written by ballscan simulate --stream for {out.name}", force=force)
     truth_path = out.with_name(out.name + ".truth.jsonl")
-    truth_path.write_text("".join(json.dumps(d) + "\n" for d in truths))
+    atomic_write_text(truth_path, "".join(json.dumps(d, allow_nan=False) + "\n" for d in truths), force=force)
     ts_path = None
     if dropped is not None:
         ts_path = out.with_name(out.name + ".timestamps.npy")
