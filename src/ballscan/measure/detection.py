@@ -632,22 +632,19 @@ def _group_components(
 
     if len(ids) > 1:
         l0, l1, c0, c1 = (box[:, q] for q in range(4))
-        near = (
-            (l0[:, None] - gap < l1[None, :])
-            & (l0[None, :] - gap < l1[:, None])
-            & (c0[:, None] - gap < c1[None, :])
-            & (c0[None, :] - gap < c1[:, None])
-        )
-        ii, jj = np.nonzero(np.triu(near, 1))
         from scipy.ndimage import binary_dilation  # pieces near each other only
 
         st = np.ones((2 * gap + 1, 2 * gap + 1), dtype=bool)
-        for i, j in zip(ii.tolist(), jj.tolist()):
+        for i, j in _near_pairs(box, gap):
             if find(i) == find(j):
                 continue
-            # Pixel-level check in the joint box.
-            ls = slice(min(l0[i], l0[j]), max(l1[i], l1[j]))
-            cs = slice(min(c0[i], c0[j]), max(c1[i], c1[j]))
+            # Pixel-level check where a pixel of one can lie within gap of the
+            # other: both boxes widened by gap, intersected (a small piece beside
+            # a large one costs its own box, not the large one's)
+            ls = slice(max(l0[i], l0[j]) - gap, min(l1[i], l1[j]) + gap)
+            cs = slice(max(c0[i], c0[j]) - gap, min(c1[i], c1[j]) + gap)
+            ls = slice(max(ls.start, 0), ls.stop)
+            cs = slice(max(cs.start, 0), cs.stop)
             sub = lab[ls, cs]
             mi = binary_dilation(sub == ids[i] + 1, st)
             if np.any(mi & (sub == ids[j] + 1)):
@@ -656,6 +653,27 @@ def _group_components(
     for i in range(len(ids)):
         groups.setdefault(find(i), []).append(ids[i])
     return list(groups.values())
+
+
+def _near_pairs(box: np.ndarray, gap: int, block: int = 1024):
+    """Index pairs ``(i, j)``, ``i < j``, of boxes ``(line_start, line_stop, col_start, col_stop)`` closer than ``gap``, in row order.
+
+    Compared a block of rows at a time: memory grows with the number of
+    boxes, not with its square.
+    """
+    l0, l1, c0, c1 = (box[:, q] for q in range(4))
+    n = len(box)
+    for a in range(0, n, block):
+        b = min(a + block, n)
+        near = (
+            (l0[a:b, None] - gap < l1[None, :])
+            & (l0[None, :] - gap < l1[a:b, None])
+            & (c0[a:b, None] - gap < c1[None, :])
+            & (c0[None, :] - gap < c1[a:b, None])
+        )
+        ii, jj = np.nonzero(near)
+        keep = jj > ii + a
+        yield from zip((ii[keep] + a).tolist(), jj[keep].tolist())
 
 
 @dataclass(frozen=True)
