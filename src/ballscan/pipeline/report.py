@@ -112,7 +112,7 @@ def format_ball(k: int, b: BallEstimate, camera: LineScanCamera | None = None, u
         lines.append(f"  undetermined {', '.join(b.undetermined)}")
     for key in ("chi2_red", "residual_rms_px", "energy", "evaluations"):
         if key in b.extra and b.extra[key] is not None:
-            lines.append(f"  {key:12s} {b.extra[key]:.4g}")
+            lines.append(f"  {key:12s} {b.extra[key]:.4g}" if _finite(b.extra[key]) else f"  {key:12s} undetermined")
     return "\n".join(lines)
 
 
