@@ -28,6 +28,8 @@ from ballscan.errors import BallscanError, CameraFileError, ImageFileError
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.measure.images import line_image, read_stored
 
+from .conftest import DATA
+
 def fuzz(n: int) -> settings:
     """Seeded settings of ``n`` cases (the same cases every run)."""
     return settings(max_examples=n, derandomize=True, deadline=None, database=None, suppress_health_check=list(HealthCheck))
@@ -271,3 +273,38 @@ def test_fuzzed_simulate_values(tmp_path_factory, capsys, what, value, triple, n
         return
     truth = json.loads((folder / "s.truth.json").read_text(), parse_constant=lambda c: pytest.fail(f"non-finite {c} in the truth"))
     assert math.isfinite(truth["speed_mps"])
+
+
+# ------------------------------------------------------------------ cameras at the ends of their ranges
+SCENE = DATA / "scenes" / "pub_pingpong"
+
+
+@pytest.mark.parametrize(
+    "change",
+    [
+        {"line_rate_hz": 1e8},
+        {"line_rate_hz": 1e-3},
+        {"focal_px": 1e7},
+        {"focal_px": 1.0},
+        {"principal_px": -100 * 1024.0},
+        {"principal_px": 101 * 1024.0},
+        {"k1": 1e6},
+        {"k2": 1e6},
+        {"exposure_s": 1e-10},
+    ],
+    ids=lambda c: ",".join(f"{k}={v:g}" for k, v in c.items()),
+)
+def test_estimate_on_cameras_at_the_ends_of_their_ranges_is_bounded_and_finite(tmp_path, capsys, change):
+    import tomllib
+
+    import tomli_w
+
+    d = tomllib.loads((SCENE.parent / f"{SCENE.name}.camera.toml").read_text())
+    d.pop("exposure_s", None)
+    d.update(change)
+    cam = tmp_path / "edge.camera.toml"
+    cam.write_text(tomli_w.dumps(d))
+    code, out, err = _run(capsys, ["estimate", f"{SCENE}.png", "--camera", cam, "--radius", "0.02", "--json"])
+    _check_output(code, out, err)
+    if code == 0:
+        json.loads(out, parse_constant=lambda c: pytest.fail(f"non-finite {c} in the JSON"))

@@ -111,3 +111,37 @@ def test_a_region_whose_numbers_fail_is_undetermined_with_its_reason(monkeypatch
 def test_limits_are_checked(field, value):
     with pytest.raises(ValueError, match=field):
         PlausibilityLimits(**{field: value})
+
+
+def _run(capsys, *args):
+    from ballscan.cli.app import main
+
+    code = main([str(a) for a in args])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_watch_with_dtype_uint16_on_8_bit_lines_flags_every_ball(tmp_path, capsys):
+    import json
+
+    raw = tmp_path / "s.raw"
+    code, _, err = _run(capsys, "simulate", "--stream", raw, "--preset", "tennis-serve", "--lines", "8000", "--balls", "3", "--seed", "2")
+    assert code == 0, err
+    code, out, err = _run(capsys, "watch", raw, "--camera", f"{raw}.camera.toml", "--radius", "0.0335")
+    assert code == 0, err
+    assert all("wrong_bit_depth" not in json.loads(line)["flags"] for line in out.splitlines())
+    code, out, err = _run(capsys, "watch", raw, "--camera", f"{raw}.camera.toml", "--radius", "0.0335", "--dtype", "uint16")
+    found = [json.loads(line) for line in out.splitlines()]
+    assert found
+    for ball in found:
+        assert "wrong_bit_depth" in ball["flags"], ball["flags"]
+
+
+def test_estimate_radius_37_warns_of_the_unit_and_marks_the_table(capsys):
+    from .conftest import DATA
+
+    scene = DATA / "scenes" / "pub_tennis_serve"
+    code, out, err = _run(capsys, "estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", "37")
+    assert code == 0
+    assert err.strip() == "ballscan: warning: --radius: radius 37 m is outside 1 mm to 0.5 m, the range of any ball; the unit is metres: 37 millimetres is 0.037, 37 centimetres is 0.37"
+    assert "UNRELIABLE (implausible_radius, implausible_speed, implausible_range)" in out
