@@ -410,3 +410,14 @@ def test_running_out_of_memory_is_a_refusal_naming_the_file(tmp_path, monkeypatc
     monkeypatch.setattr(np, "array", no_memory)
     monkeypatch.setattr(tf.TiffPage, "asarray", lambda *a, **k: (_ for _ in ()).throw(MemoryError()))
     assert "not enough memory" in str(_assert_error(p))
+
+
+def test_timestamps_files_far_too_large_are_refused_unread(tmp_path):
+    p = tmp_path / "t.txt"
+    p.write_text("0.0\n" * 400_000)
+    with pytest.raises(ImageFileError, match="more than 10 timestamps can take"):
+        load_timestamps(p, 10)
+    n = tmp_path / "t.npy"
+    np.save(n, np.arange(1000.0))
+    with pytest.raises(ImageFileError, match="1000 timestamps for an image of 10 lines"):
+        load_timestamps(n, 10)

@@ -626,9 +626,11 @@ def load_timestamps(path: str | os.PathLike[str], n_lines: int) -> np.ndarray:
         raise ImageFileError(src, "no such timestamps file")
     if p.suffix.lower() == ".npy":
         try:
-            arr = np.load(p, allow_pickle=False)
+            arr = np.load(p, allow_pickle=False, mmap_mode="r")  # its shape is checked before its values are read
         except Exception as exc:
             raise ImageFileError(src, f"cannot read .npy timestamps ({_one_line(exc)})") from None
+        if arr.size != n_lines:
+            raise ImageFileError(src, f"{arr.size} timestamps for an image of {n_lines} lines")
         arr = np.asarray(arr)
         if arr.ndim == 2 and 1 in arr.shape:
             arr = arr.reshape(-1)
@@ -638,6 +640,9 @@ def load_timestamps(path: str | os.PathLike[str], n_lines: int) -> np.ndarray:
             raise ImageFileError(src, f"timestamps must be numbers, got dtype {arr.dtype}")
         t = arr.astype(np.float64)
     else:
+        limit = 64 * n_lines + (1 << 20)  # a number a line, with room for comments
+        if p.stat().st_size > limit:
+            raise ImageFileError(src, f"{p.stat().st_size} bytes is more than {n_lines} timestamps can take ({limit})")
         try:
             text = p.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
