@@ -435,7 +435,7 @@ def _validate(cam: LineScanCamera) -> None:
         raise bad("k1", "distortion (k1, k2) is not monotonic across the sensor")
     if cam.rotation is not None:
         R = _as_matrix(cam.rotation, (3, 3), src, "pose.rotation")
-        if abs(np.linalg.det(R) - 1.0) > _ORTHO_TOL or not np.allclose(R @ R.T, np.eye(3), atol=_ORTHO_TOL):
+        if np.abs(R).max() > 1.0 + _ORTHO_TOL or abs(np.linalg.det(R) - 1.0) > _ORTHO_TOL or not np.allclose(R @ R.T, np.eye(3), atol=_ORTHO_TOL):
             raise bad("pose.rotation", "is not a proper rotation (orthonormal with determinant +1)")
         if cam.translation_m is None:
             raise bad("pose.translation", "missing (a pose needs rotation and translation)")
