@@ -145,3 +145,13 @@ def test_estimate_radius_37_warns_of_the_unit_and_marks_the_table(capsys):
     assert code == 0
     assert err.strip() == "ballscan: warning: --radius: radius 37 m is outside 1 mm to 0.5 m, the range of any ball; the unit is metres: 37 millimetres is 0.037, 37 centimetres is 0.37"
     assert "UNRELIABLE (implausible_radius, implausible_speed, implausible_range)" in out
+
+
+@pytest.mark.parametrize("radius", ["1e308", "1e6", "5e-324", "1e-9"])
+def test_a_radius_the_arithmetic_cannot_take_is_refused_in_one_line(capsys, radius):
+    from .conftest import DATA
+
+    scene = DATA / "scenes" / "pub_pingpong"
+    code, out, err = _run(capsys, "estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", radius)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "cannot be measured" in err and "the unit is metres" in err

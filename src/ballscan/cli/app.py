@@ -159,6 +159,9 @@ def estimate(
 
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    from ..pipeline.plausibility import check_radius
+
+    check_radius(radius)
     _warn_radius(radius)
     if as_json and as_csv:
         raise typer.BadParameter("give one of --json and --csv", param_hint="--csv")

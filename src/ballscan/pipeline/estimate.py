@@ -34,7 +34,7 @@ from ..measure.images import LineImage, as_line_image
 from ..solve.uncertainty import propagate
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
-from .plausibility import assess
+from .plausibility import assess, check_radius
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
 from .warmup import ensure_warm
@@ -330,8 +330,7 @@ def estimate_image(
         camera = load_camera(camera)
     if not isinstance(recipe, Recipe):
         raise ValueError(f"recipe: expected a Recipe, got {recipe!r}")
-    if not (np.isfinite(radius_m) and radius_m > 0):
-        raise ValueError(f"radius: must be positive, got {radius_m!r}")
+    radius_m = check_radius(radius_m)
     ensure_warm()  # the kernels' loading (or first compilation) is no ball's run time
     n_lines, width = image.data.shape
     if width != camera.width:

@@ -52,7 +52,13 @@ from ..measure.detection import BallRegion
 from ..measure.images import LineImage
 from .results import BallEstimate
 
-__all__ = ["PlausibilityLimits", "assess", "radius_problem"]
+__all__ = ["PlausibilityLimits", "assess", "check_radius", "radius_problem", "RADIUS_RANGE_M"]
+
+#: Radii (m) the estimator computes with at all: beyond them its arithmetic
+#: overflows (a ball placed 1e300 m away) long before a result could mean
+#: anything; between these and :class:`PlausibilityLimits`' range the
+#: results are flagged ``implausible_radius``.
+RADIUS_RANGE_M = (1e-6, 1e4)
 
 
 @dataclass(frozen=True)
@@ -110,6 +116,21 @@ def radius_problem(radius_m: float, limits: PlausibilityLimits = PlausibilityLim
         f"radius {radius_m:g} m is outside {limits.min_radius_m * 1e3:g} mm to {limits.max_radius_m:g} m, "
         f"the range of any ball{hint}"
     )
+
+
+def check_radius(radius_m: float) -> float:
+    """``radius_m`` as a float when the estimator can compute with it (see :data:`RADIUS_RANGE_M`).
+
+    Raises
+    ------
+    ValueError
+        Not a number, or outside :data:`RADIUS_RANGE_M`; the message says
+        the unit is metres.
+    """
+    lo, hi = RADIUS_RANGE_M
+    if isinstance(radius_m, bool) or not isinstance(radius_m, (int, float, np.integer, np.floating)) or not lo <= radius_m <= hi:
+        raise ValueError(f"radius: {radius_m!r} m cannot be measured (need {lo:g} to {hi:g} m; the unit is metres, a ball's is 1 mm to 0.5 m)")
+    return float(radius_m)
 
 
 def assess(ball: BallEstimate, region: BallRegion, image: LineImage, limits: PlausibilityLimits = PlausibilityLimits()) -> BallEstimate:

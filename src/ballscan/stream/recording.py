@@ -25,6 +25,7 @@ from ..errors import BallscanError
 from ..geometry.camera import LineScanCamera
 from ..measure.images import DEFAULT_MAX_PIXELS, StoredImage, line_image, read_stored
 from ..pipeline.estimate import estimate_image
+from ..pipeline.plausibility import check_radius
 from ..pipeline.recipe import Recipe
 from ..pipeline.results import EstimateReport
 from .engine import Chunk, StreamConfig, process_stream
@@ -117,6 +118,7 @@ def measure_stored(
     and bounded memory.  ``stream`` defaults to ``StreamConfig(recipe=recipe)``.
     """
     cfg = StreamConfig(recipe=recipe) if stream is None else stream
+    radius_m = check_radius(radius_m)
     if saturation_dn is not None and not (np.isfinite(saturation_dn) and saturation_dn > 0):
         raise BallscanError(f"{stored.source}: saturation level must be a positive number, got {saturation_dn}")
     try:
