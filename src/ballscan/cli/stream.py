@@ -342,19 +342,27 @@ def batch(
     dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar on stderr (default: when it is a terminal).")] = None,
     background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
+    force: Annotated[bool, typer.Option("--force", help="Write through an --out that is a symbolic link (refused otherwise).")] = False,
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
-    Inputs already in the CSV are skipped. Each input that fails is printed
-    as one line on stderr and the command exits with status 1; the others
-    are in the CSV.
+    Inputs already in the CSV are skipped; a partial last row (a run killed
+    while writing) is dropped and its input measured again. One run at a
+    time writes a CSV (OUT.lock). Each input that fails is printed as one
+    line on stderr and the command exits with status 1; the others are in
+    the CSV. SIGINT, SIGTERM or SIGHUP stop it with status 128 + the
+    signal's number (the rows written stay; a rerun does the rest).
     """
     from ..stream.batch import run_batch
+    from .signals import ExitStatus, stop_signals
 
-    summary = run_batch(
-        inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
-        progress=sys.stderr.isatty() if progress is None else progress, background=background,
-    )
+    with stop_signals(graceful=False):
+        summary = run_batch(
+            inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
+            progress=sys.stderr.isatty() if progress is None else progress, background=background, force=force,
+        )
+    for note in summary.repairs:
+        print(f"ballscan batch: {note}", file=sys.stderr)
     for src, msg in summary.errors:
         print(f"ballscan: error: {msg}", file=sys.stderr)
     print(
@@ -362,5 +370,5 @@ def batch(
         file=sys.stderr,
     )
     if summary.errors:
-        raise typer.Exit(code=1)
+        raise ExitStatus(1)
     return summary.n_balls
