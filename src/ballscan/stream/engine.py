@@ -50,6 +50,13 @@ Pipeline per chunk
    the band of a line depends only on the blocks before it, the results do
    not depend on how the stream is cut into chunks.
 
+6. **Width check.** Each tested piece's clean lines (no hit within two
+   lines) feed :class:`ballscan.stream.width.WidthCheck`: the background's
+   column pattern must repeat at the camera's width. Lines sheared by a
+   wrong width (a 2,047-px stream read as 2,048 px) stop the stream with a
+   :class:`StreamError` before any ball is measured on them
+   (``width_check``).
+
 The model is initialised by :func:`ballscan.measure.detection.detect` on the first
 block (robust per-column mode and noise; balls in it do not bias it).
 Slow illumination drift is followed by the per-block EMA (the mean of the
