@@ -310,10 +310,11 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     if not args:
         args = ["--help"]  # bare `ballscan`: the overview, and success
-    from .signals import ExitStatus, Stopped
+    from .signals import ExitStatus, Stopped, stop_signals
 
     try:
-        app(args=args, prog_name="ballscan", standalone_mode=False)
+        with stop_signals(graceful=False):  # watch asks for a graceful stop within
+            app(args=args, prog_name="ballscan", standalone_mode=False)
     except ExitStatus as exc:
         if exc.message:
             print(f"ballscan: {exc.message}", file=sys.stderr)
@@ -329,12 +330,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except typer.Exit as exc:
         return exc.exit_code
-    except typer.Abort as exc:
-        # click turns a KeyboardInterrupt into Abort: a signal's stop keeps its status
-        cause = exc.__cause__ or exc.__context__
-        if isinstance(cause, Stopped):
-            print(f"ballscan: stopped by {cause}", file=sys.stderr)
-            return cause.exit_code
+    except typer.Abort:
         print("ballscan: aborted", file=sys.stderr)
         return 1
     except Exception as exc:

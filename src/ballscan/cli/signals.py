@@ -8,8 +8,9 @@ SIGHUP, Ctrl-C SIGINT; each ends a command the same way:
   ball that has passed is measured and printed, the ball in view is measured
   flagged as cut, a one-line summary goes to stderr and the exit status is
   ``128 + signum`` (130, 143, 129). A second signal stops at once.
-- ``batch`` and ``experiment`` (``graceful=False``): the signal raises
-  :class:`Stopped` (a ``KeyboardInterrupt``) in the main thread; the workers
+- ``batch``, ``experiment`` and every other command (``graceful=False``,
+  :func:`ballscan.cli.app.main` installs it around each command): the
+  signal raises :class:`Stopped` in the main thread; the workers
   are killed, the rows already written stay (a rerun does the rest), and the
   exit status is ``128 + signum``.
 
@@ -40,8 +41,14 @@ class ExitStatus(Exception):
         self.message = message
 
 
-class Stopped(KeyboardInterrupt):
-    """The command was stopped by signal ``signum`` (exit status ``128 + signum``)."""
+class Stopped(BaseException):
+    """The command was stopped by signal ``signum`` (exit status ``128 + signum``).
+
+    A ``BaseException`` as ``KeyboardInterrupt`` is, but not one: the CLI
+    framework turns a ``KeyboardInterrupt`` into its own exit status (130,
+    whatever the signal), and this one must reach
+    :func:`ballscan.cli.app.main` with its signal.
+    """
 
     def __init__(self, signum: int) -> None:
         super().__init__(signal.Signals(signum).name)
