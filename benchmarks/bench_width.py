@@ -64,6 +64,7 @@ def streams(seeds: int, n_lines: int, folder: Path) -> list[dict]:
             first_ball = min(b["first_line"] for b in sim.balls)
             state, line, balls = _run(data, 2048)
             rows.append({"seed": seed, "stream_px": w_true, "verdict": state, "at_line": line, "balls": balls, "first_ball_line": first_ball})
+            print("  " + json.dumps(rows[-1]), flush=True)
             sim.raw.unlink()
     return rows
 
@@ -75,6 +76,7 @@ def flat_streams(seeds: int, n_lines: int, folder: Path) -> list[dict]:
             sim = simulate_stream(folder / f"f{seed}.raw", CAM, n_lines, 3, seed, noise=noise)
             state, line, balls = _run(np.fromfile(sim.raw, dtype=np.uint8), 2048)
             rows.append({"seed": seed, "kind": name, "verdict": state, "at_line": line, "balls": balls})
+            print("  " + json.dumps(rows[-1]), flush=True)
             sim.raw.unlink()
     return rows
 

@@ -86,3 +86,10 @@ def test_sampling_after_the_start_and_a_later_shear():
     for a in range(0, 4096, 64):
         wc.add(bad[a : a + 64], 2048 + a, np.ones(64, bool))
     assert wc.sheared and wc.verdict.period_px == 257
+
+
+def test_lines_of_twice_the_width_read_as_two():
+    for seed in range(5):
+        assert _judge(_stream(1024, 600, seed), 1024).verdict.state == "confirmed"  # 2 W scores less than W
+        wc = _judge(_stream(2048, 300, seed), 1024)
+        assert wc.sheared and wc.verdict.period_px == 2048

@@ -760,11 +760,12 @@ class StreamEngine:
         if wc is None or not wc.sheared:
             return
         v = wc.verdict
+        how = "half a line per line read" if v.period_px == 2 * self.width else f"each line sheared by {v.period_px - self.width:+d} px against the last"
         raise StreamError(
             f"{self.source}: the lines are not {self.width} px wide: the background's column pattern repeats every "
-            f"{v.period_px} samples (score {v.z:.0f}, {self.width} px: {v.z_camera:.0f}), each line sheared by "
-            f"{v.period_px - self.width:+d} px against the last; a {v.period_px}-px stream read as {self.width} px? "
-            f"(check the camera file's width and --width); stopped after {self._n} lines"
+            f"{v.period_px} samples (score {v.z:.0f}, {self.width} px: {v.z_camera:.0f}), {how}; "
+            f"a {v.period_px}-px stream read as {self.width} px? (check the camera file's width and --width); "
+            f"stopped after {self._n} lines"
         )
 
     def _line_test(self, start: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

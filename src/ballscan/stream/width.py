@@ -27,7 +27,9 @@ scores ``z >= Z_DECIDE`` and at least half of the best other candidate's
 ``"sheared"`` when another period scores ``z >= Z_DECIDE`` and the camera's
 width less than a quarter of it; ``"unknown"`` otherwise (a background
 without a pattern: flat, noise-free renders; nothing is claimed). The
-candidates are ``W + delta`` for ``delta`` in :data:`START_OFFSETS` over the
+candidates are ``W + delta`` for ``delta`` in :data:`START_OFFSETS` and
+``2 W`` (lines of twice the width read as two: ``"sheared"`` when ``2 W``
+scores over :data:`DOUBLE_RATIO` times ``W``) over the
 first ``start_lines`` clean lines (every one), then ``W`` and ``W +- 1,2``
 over one block in ``every_blocks`` (a continuous check for about a tenth of
 the engine's time), judged per window of ``window_lines`` sampled lines.
@@ -40,12 +42,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["START_OFFSETS", "RUN_OFFSETS", "Z_DECIDE", "CLIP_SIGMA", "WidthVerdict", "WidthCheck"]
+__all__ = ["START_OFFSETS", "RUN_OFFSETS", "DOUBLE_RATIO", "Z_DECIDE", "CLIP_SIGMA", "WidthVerdict", "WidthCheck"]
 
 #: Width errors looked for at the start (pixels per line).
 START_OFFSETS = tuple(sorted({d * s for d in (1, 2, 3, 4, 5, 6, 7, 8, 16, 32, 64) for s in (-1, 1)}))
 #: Width errors looked for continuously afterwards.
 RUN_OFFSETS = (-2, -1, 1, 2)
+#: A pattern of period W scores 1/sqrt(2) of its W score at 2 W (half the rows, twice the
+#: columns); half lines (a 2 W-px stream read as W px) score 1.4-1.5 times their W score there
+#: (tests/test_width.py's streams).
+DOUBLE_RATIO = 1.1
 #: Score a period needs for a verdict (standard deviations of the no-pattern statistic).
 Z_DECIDE = 12.0
 #: Differences beyond this many robust sigmas are clipped.
@@ -80,8 +86,8 @@ class WidthVerdict:
 class _Accumulator:
     """Per-candidate sums of the differences by column (``i mod P``) and their rows."""
 
-    def __init__(self, width: int, offsets: tuple[int, ...]) -> None:
-        self.periods = tuple(p for p in (width, *(width + d for d in offsets)) if p >= 2)
+    def __init__(self, width: int, offsets: tuple[int, ...], double: bool = False) -> None:
+        self.periods = tuple(p for p in (width, *(width + d for d in offsets), *((2 * width,) if double else ())) if p >= 2)
         self.sums = {p: np.zeros(p) for p in self.periods}
         self.rows = dict.fromkeys(self.periods, 0)
         self.sum_sq = 0.0
@@ -141,7 +147,7 @@ class WidthCheck:
         self.block_lines = max(int(block_lines), 1)
         self.window_lines = int(window_lines)
         self.min_lines = int(min_lines)
-        self._start = _Accumulator(self.width, START_OFFSETS)
+        self._start = _Accumulator(self.width, START_OFFSETS, double=True)
         self._window: _Accumulator | None = None
         self.verdict = WidthVerdict("unknown", None, 0.0, 0.0, 0)
 
@@ -186,6 +192,10 @@ class WidthCheck:
             return
         z = acc.scores()
         zw = z[self.width]
+        z2 = z.pop(2 * self.width, None)
+        if z2 is not None and z2 >= Z_DECIDE and z2 > DOUBLE_RATIO * max(zw, 0.0):
+            self.verdict = WidthVerdict("sheared", 2 * self.width, z2, zw, acc.lines)
+            return
         p_best = max((p for p in z if p != self.width), key=lambda p: z[p], default=self.width)
         zb = z[p_best]
         if zb >= Z_DECIDE and zw < zb / 4:
