@@ -87,12 +87,12 @@ def test_batch_one_camera_for_all_and_missing_camera(recordings, tmp_path):
 
 
 def test_batch_command_function(recordings, tmp_path, capsys):
-    import typer
+    from ballscan.cli.signals import ExitStatus
 
     assert batch([recordings / "one.png"], tmp_path / "c.csv", RADIUS, progress=True) == 1
-    with pytest.raises(typer.Exit) as ei:
+    with pytest.raises(ExitStatus) as ei:
         batch([recordings / "bad.png"], tmp_path / "c.csv", RADIUS, progress=False)
-    assert ei.value.exit_code == 1
+    assert ei.value.code == 1
     err = capsys.readouterr().err
     assert "ballscan: error:" in err and "bad.png" in err
     assert "1 inputs measured (1 balls), 0 skipped" in err

@@ -368,10 +368,18 @@ def test_truncated_raw_stream_keeps_results(tmp_path, capsys):
         assert {"t_c_s", "position_m", "velocity_mps", "speed_mps", "flags", "first_line", "last_line"} <= set(d)
 
 
-def test_wrong_raw_width_is_a_truncated_line(tmp_path):
+def test_wrong_raw_width_is_refused_or_a_truncated_line(tmp_path):
     raw = write_raw(tmp_path / "w.raw", small_stream(3000))
+    cam511 = LineScanCamera(width=511, focal_px=1100.0, principal_px=255.0, line_rate_hz=20000.0)
+    # the background's column pattern shows the 512-px lines before the first ball
+    got = []
+    with pytest.raises(StreamError, match="not 511 px wide: the background's column pattern repeats every 512 samples"):
+        for r in process_stream(RawLineSource(raw, 511), cam511, RADIUS):
+            got.append(r)
+    assert got == []
+    # without that check, the end of the file shows it
     with pytest.raises(TruncatedStream, match="--width 511"):
-        list(process_stream(RawLineSource(raw, 511), LineScanCamera(width=511, focal_px=1100.0, principal_px=255.0, line_rate_hz=20000.0), RADIUS))
+        list(process_stream(RawLineSource(raw, 511), cam511, RADIUS, StreamConfig(width_check=False)))
     cam_path = tmp_path / "cam.toml"
     save_camera(CAM, cam_path)
     with pytest.raises(Exception, match="--width 511 differs from the camera's width = 512"):

@@ -26,8 +26,12 @@ Where the tasks run:
 
 The worker processes start with the first :meth:`~TaskExecutor.map` of a
 ``with TaskExecutor(...)`` block and serve every map of it; leaving the block
-(normally, on an error or on an interrupt) shuts them down, so no worker
-outlives the block. The ``warm_up`` callable runs once in each worker before
+normally lets them finish and shuts them down, leaving it on an error or an
+interrupt (Ctrl-C, or SIGTERM/SIGHUP turned into one) kills them at once, so
+no worker outlives the block. A local worker also watches its parent
+(:func:`worker_start`): when the parent dies without shutting them down
+(``kill -9``), the workers end within :data:`PARENT_POLL_S` seconds instead of
+finishing their queue. The ``warm_up`` callable runs once in each worker before
 its first task (e.g. loading compiled kernels), in this process for
 ``jobs == 1`` and on every worker connected at the first map for Dask; it
 only saves time, a task must not depend on it for its result.
@@ -38,7 +42,11 @@ base layer of the package).
 
 from __future__ import annotations
 
+import contextlib
 import os
+import signal
+import threading
+import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, wait
 from dataclasses import dataclass
@@ -46,13 +54,16 @@ from typing import Any, Generic, TypeVar
 
 from .errors import BallscanError
 
-__all__ = ["DASK_CONNECT_TIMEOUT_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores"]
+__all__ = ["DASK_CONNECT_TIMEOUT_S", "PARENT_POLL_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "worker_start"]
 
 T = TypeVar("T")
 R = TypeVar("R")
 
 #: Seconds to wait for a Dask scheduler to answer before giving up.
 DASK_CONNECT_TIMEOUT_S = 20.0
+
+#: Seconds between a local worker's checks that its parent process is alive.
+PARENT_POLL_S = 0.2
 
 #: Thread-count variables of the numerical libraries, set to 1 in local workers
 #: (several processes on one machine: one thread each, no oversubscription).
@@ -99,6 +110,30 @@ def available_cores() -> int:
     if hasattr(os, "sched_getaffinity"):
         return max(1, len(os.sched_getaffinity(0)))
     return max(1, os.cpu_count() or 1)
+
+
+def _watch_parent(parent_pid: int) -> None:
+    """End this process (status 1) as soon as its parent is no longer ``parent_pid``."""
+    while os.getppid() == parent_pid:
+        time.sleep(PARENT_POLL_S)
+    os._exit(1)
+
+
+def worker_start(warm_up: Callable[[], Any] | None = None) -> None:
+    """The initializer of a local worker process: watch the parent, then run ``warm_up``.
+
+    A daemon thread polls the parent's pid every :data:`PARENT_POLL_S`
+    seconds; when the parent has died (the worker was re-parented) the worker
+    exits at once, whatever task it is running (Linux's ``PR_SET_PDEATHSIG``
+    is not used: it fires when the *thread* that started the worker ends,
+    which for a pool's own threads is not the parent's death).
+    """
+    parent = os.getppid()
+    if parent == 1:
+        os._exit(1)  # the parent died before this worker started
+    threading.Thread(target=_watch_parent, args=(parent,), name="ballscan-parent-watch", daemon=True).start()
+    if warm_up is not None:
+        warm_up()
 
 
 def _one_line(exc: BaseException) -> str:
@@ -182,12 +217,27 @@ class TaskExecutor:
         return self
 
     def __exit__(self, exc_type, exc, tb) -> None:
-        self.close()
+        self.close(kill=exc_type is not None)
 
-    def close(self) -> None:
-        """Stop the workers (after the tasks they are running) and disconnect from Dask."""
+    def close(self, kill: bool = False) -> None:
+        """Stop the workers and disconnect from Dask.
+
+        Parameters
+        ----------
+        kill : bool
+            Kill local workers at once (their running tasks are lost); else
+            they finish the tasks they are running first.
+        """
         pool, self._pool = self._pool, None
         if pool is not None:
+            if kill:
+                # SIGKILL each worker; the pool then fails its pending futures
+                # and its shutdown returns at once (loky's own kill_workers
+                # breaks on futures already cancelled)
+                for proc in list(getattr(pool, "_processes", {}).values()):
+                    if proc.pid is not None and proc.is_alive():
+                        with contextlib.suppress(OSError):
+                            os.kill(proc.pid, signal.SIGKILL)
             pool.shutdown(wait=True)
         client, self._client = self._client, None
         if client is not None:
@@ -219,8 +269,10 @@ class TaskExecutor:
         except BaseException:
             # an interrupt or an error in the caller's loop: drop the pending
             # items now and stop the workers
+            # (the workers first: the generator's close cancels the pending
+            # futures, which a pool that loses its workers fails itself)
+            self.close(kill=True)
             results.close()
-            self.close()
             raise
         finally:
             bar.stop()
@@ -237,7 +289,9 @@ class TaskExecutor:
         if self._pool is None:
             from joblib.externals.loky.process_executor import ProcessPoolExecutor
 
-            self._pool = ProcessPoolExecutor(min(self.jobs, len(todo)), initializer=self.warm_up, env=dict(_ONE_THREAD_ENV))
+            self._pool = ProcessPoolExecutor(
+                min(self.jobs, len(todo)), initializer=worker_start, initargs=(self.warm_up,), env=dict(_ONE_THREAD_ENV)
+            )
         pending = {self._pool.submit(_call, func, item): item for item in todo}
         try:
             while pending:
@@ -246,11 +300,13 @@ class TaskExecutor:
                     item = pending.pop(fut)
                     value, error = fut.result()
                     yield TaskResult(item, value, error)
-        finally:
-            # items not started yet are dropped; the ones running finish before
-            # close() returns (a Ctrl-C in a terminal interrupts them too)
+        except GeneratorExit:
+            # the caller stopped early: items not started yet are dropped
+            # (after an error or an interrupt the caller kills the workers,
+            # which fails the pending futures itself)
             for fut in pending:
                 fut.cancel()
+            raise
 
     def _map_dask(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
         client = self._connect()

@@ -330,8 +330,18 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     if not args:
         args = ["--help"]  # bare `ballscan`: the overview, and success
+    from .signals import ExitStatus, Stopped, stop_signals
+
     try:
-        app(args=args, prog_name="ballscan", standalone_mode=False)
+        with stop_signals(graceful=False):  # watch asks for a graceful stop within
+            app(args=args, prog_name="ballscan", standalone_mode=False)
+    except ExitStatus as exc:
+        if exc.message:
+            print(f"ballscan: {exc.message}", file=sys.stderr)
+        return exc.code
+    except Stopped as exc:
+        print(f"ballscan: stopped by {exc}", file=sys.stderr)
+        return exc.exit_code
     except BallscanError as exc:
         print(f"ballscan: error: {exc}", file=sys.stderr)
         return 2

@@ -1,7 +1,9 @@
 """``ballscan experiment``: the paper's experiments (Fig. 5, Fig. 8) and custom sweeps.
 
 A thin layer over :mod:`ballscan.lab.experiments`; register with
-``app.add_typer(experiment_app, name="experiment")``.  Library errors
+``app.add_typer(experiment_app, name="experiment")``. SIGINT, SIGTERM and
+SIGHUP stop a run with status 128 + the signal's number; its workers are
+killed, the trials written stay and a rerun resumes.  Library errors
 (:class:`~ballscan.errors.BallscanError`, ``ValueError``) propagate to the
 main CLI, which prints them on one line.
 """
@@ -13,6 +15,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Optional
 
 import typer
+
+from .signals import stop_signals
 
 if TYPE_CHECKING:  # the experiments (numba, scipy, matplotlib) load only when one runs
     from ..lab import experiments as ex
@@ -87,7 +91,8 @@ def fig5(
     cmd = _command("fig5", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []),
                    *(["--textures", textures] if textures else []), *(["--methods", methods] if methods else []),
                    *(["--points", str(points)] if points != 5 else []), *(["--seed", str(seed)] if seed else []))
-    res = ex.run_experiment(cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, quick=quick)
+    with stop_signals(graceful=False):
+        res = ex.run_experiment(cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, quick=quick)
     _report(res, quick)
 
 
@@ -116,9 +121,10 @@ def fig8(
     if trials is not None:
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("fig8", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []))
-    res = ex.run_experiment(
-        cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
-    )
+    with stop_signals(graceful=False):
+        res = ex.run_experiment(
+            cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
+        )
     _report(res, quick)
 
 
@@ -143,7 +149,8 @@ def custom(
     if trials is not None:
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("custom", "--config", str(config), "--out", str(out), "--quick" if quick else "")
-    res = ex.run_experiment(
-        cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
-    )
+    with stop_signals(graceful=False):
+        res = ex.run_experiment(
+            cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
+        )
     _report(res, quick)

@@ -40,6 +40,7 @@ def open_source(
     pfs: Path | None = None,
     pixel_format: str | None = None,
     pylon_timestamps: str = "none",
+    stop=None,
 ):
     """The line source named by ``source``.
 
@@ -47,6 +48,8 @@ def open_source(
     chunks, ``pylon`` or ``pylon:SERIAL`` a Basler camera (line times at the
     camera file's ``line_rate_hz``), anything else a raw file or named pipe.
     ``pfs``, ``pixel_format`` and ``pylon_timestamps`` are for a camera only.
+    ``stop`` (an object with ``is_set()``) ends a raw source after its
+    complete lines, also while it waits for data.
     """
     from ..stream.sources import ImageFolderSource, PylonSource, RawLineSource
 
@@ -63,67 +66,21 @@ def open_source(
     w = int(width) if width is not None else camera.width
     if source != "-" and Path(source).is_dir():
         return ImageFolderSource(source, w, timestamps=timestamps)
-    return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps)
+    return RawLineSource(source, w, dtype, chunk_lines=chunk_lines, timeout_s=timeout_s, timestamps=timestamps, stop=stop)
 
 
 def save_event(folder: Path, result: StreamResult, camera: LineScanCamera, ball_in_event: int) -> list[Path]:
-    """Write an event's crop (PNG, and the engine's background of its columns and the lines' times, NPZ: once per event) and a ball's overlay (PNG) and JSON.
-
-    Parameters
-    ----------
-    folder : Path
-    result : StreamResult
-        Made with ``keep_crops=True``.
-    camera : LineScanCamera
-        The full camera (the crop's is derived from it).
-    ball_in_event : int
-        Index of the ball within its event (names the overlay).
+    """Write an event's files into ``folder`` (:meth:`ballscan.stream.events.EventFolder.save`, without the folder's lock and check).
 
     Returns
     -------
     list of Path
         Files written.
     """
-    import numpy as np
+    from ..stream.events import EventFolder
 
-    from ..geometry.camera import crop_camera
-    from ..model.render import write_image
-    from ..pipeline.plot import save_overlay
-    from ..pipeline.results import EstimateReport
-
-    folder.mkdir(parents=True, exist_ok=True)
-    stem = f"event_{result.event_index:05d}_lines_{result.crop_lines[0]}-{result.crop_lines[1]}"
-    written = []
-    if result.crop is not None:
-        png = folder / f"{stem}.png"
-        if not png.exists():
-            write_image(png, result.crop)
-            written.append(png)
-        cols = folder / f"{stem}.columns.npz"
-        if result.crop_columns is not None and not cols.exists():
-            # the engine's background the estimate used: with it the saved
-            # crop gives the same estimate again (estimate_crop(..., columns=))
-            np.savez(
-                cols,
-                background_dn=result.crop_columns.background_dn,
-                noise_dn=result.crop_columns.noise_dn,
-                times_s=result.crop_times_s,
-                crop_lines=np.asarray(result.crop_lines),
-                crop_cols=np.asarray(result.crop_cols),
-            )
-            written.append(cols)
-        cam = crop_camera(camera, *result.crop_cols)
-        overlay = folder / f"{stem}_ball{ball_in_event}.overlay.png"
-        est = result.estimate
-        save_overlay(
-            overlay, result.crop.astype(float), cam, EstimateReport(png.name, (est,)), result.crop_times_s,
-            first_column=int(result.crop_cols[0]), first_line=int(result.crop_lines[0]),
-        )  # fmt: skip
-        written.append(overlay)
-    js = folder / f"{stem}_ball{ball_in_event}.json"
-    js.write_text(json.dumps(result.to_dict(camera), indent=2, allow_nan=False))
-    written.append(js)
-    return written
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    return EventFolder(folder).save(result, camera, ball_in_event)
 
 
 class _Status:
@@ -169,8 +126,9 @@ class _Status:
 class _Watched:
     """Chunk iterator that feeds the status line."""
 
-    def __init__(self, src, status: _Status, line_rate_hz: float) -> None:
+    def __init__(self, src, status: _Status, line_rate_hz: float, stop=None) -> None:
         self._it = iter(src)
+        self.stop = stop
         self.status = status
         self.rate = line_rate_hz
         self.lines = 0
@@ -182,6 +140,10 @@ class _Watched:
         return self
 
     def __next__(self):
+        if self.stop is not None and self.stop.is_set():
+            # a stop signal: end the stream here, so the ball in view is measured
+            self.interrupted = True
+            raise StopIteration
         try:
             ch = next(self._it)
         except KeyboardInterrupt:
@@ -219,24 +181,27 @@ def watch(
     k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
     margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
     buffer_lines: Annotated[int, typer.Option("--buffer-lines", help="Lines in the ring buffer (longest event).")] = 8192,
-    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs (and the engine's background of the crop's columns and its lines' times, .columns.npz, with which the crop's estimate is reproduced).")] = None,
+    save_events: Annotated[Optional[Path], typer.Option("--save-events", help="Folder for each event's crop and overlay PNGs (and the engine's background of the crop's columns and its lines' times, .columns.npz, with which the crop's estimate is reproduced); whole files only, one watch per folder, damaged files of an earlier run rewritten.")] = None,
     output_format: Annotated[str, typer.Option("--format", help="'json' (one JSON line per ball, default) or 'table' (one readable line per ball).")] = "json",
     units: Annotated[str, typer.Option("--units", help="Speed unit of --format table: m/s, km/h or mph.")] = "m/s",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", "--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
     jobs: Annotated[int, typer.Option("--jobs", "-j", "--workers", help="Processes that run the estimates (0: in the reading process, default).")] = 0,
+    force: Annotated[bool, typer.Option("--force", help="Write --save-events files through symbolic links (refused otherwise).")] = False,
 ) -> int:
     """Measure balls in a continuous line stream, one line per ball as it is measured.
 
     With --format json each line holds geometry.md's estimate keys plus
     source, first_line and last_line (stream line numbers); with --format
     table a readable line. Results go to stdout, the status line to stderr.
-    The end of the stream or Ctrl-C measures the ball in view and stops; a
-    reader that goes away (| head) ends the watch quietly.
+    The end of the stream, or Ctrl-C, SIGTERM or SIGHUP, measures the balls
+    that have passed and the ball in view (flagged as cut) and stops; after
+    a signal the exit status is 128 + its number (130, 143, 129). A reader
+    that goes away (| head) ends the watch quietly.
     """
     from ..geometry.camera import load_camera
     from ..pipeline.report import UNITS
     from ..pipeline.recipe import Recipe
-    from ..stream.engine import StreamConfig, process_stream
+    from ..stream.engine import StreamConfig
 
     cam = load_camera(camera)
     if not radius > 0:
@@ -249,62 +214,90 @@ def watch(
         raise typer.BadParameter(f"must be >= 0, got {jobs}", param_hint="--jobs")
     # the settings first: a bad one is reported before a pipe or a camera is opened
     cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
-    src = open_source(
-        source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout,
-        pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps,
-    )
-    if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
-        raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
-    if getattr(src, "max_dn", None) is not None and cfg.saturation_dn is None:
-        # a camera's 12-bit lines saturate at 4095, not at their type's 65535
-        cfg = replace(cfg, saturation_dn=float(src.max_dn))
-    stream = sys.stdout
-    show = sys.stderr.isatty() if progress is None else progress
-    st = _Status(bool(show))
-    name = getattr(src, "name", source)
-    n = 0
-    per_event: dict[int, int] = {}
-    gen = _Watched(src, st, cam.line_rate_hz)
-    executor = None
-    if not jobs:
-        from ..stream.engine import preload_estimator
+    from .signals import ExitStatus, stop_signals
 
-        preload_estimator()  # the kernels' loading is no ball's latency
+    with stop_signals(graceful=True) as stop, _event_folder(save_events, force) as events:
+        src = open_source(
+            source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout,
+            pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps, stop=stop,
+        )
+        if src.__class__.__name__ != "PylonSource" and getattr(src, "width", cam.width) != cam.width:
+            raise BallscanError(f"--width {src.width} differs from the camera's width = {cam.width} ({camera})")
+        if getattr(src, "max_dn", None) is not None and cfg.saturation_dn is None:
+            # a camera's 12-bit lines saturate at 4095, not at their type's 65535
+            cfg = replace(cfg, saturation_dn=float(src.max_dn))
+        show = sys.stderr.isatty() if progress is None else progress
+        gen = _Watched(src, _Status(bool(show)), cam.line_rate_hz, stop)
+        n = _watch_loop(gen, cam, radius, cfg, getattr(src, "name", source), output_format, units, events, jobs)
+    lost = getattr(src, "dropped_lines", 0)
+    if lost:
+        print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
+    if stop.signum is not None:
+        print(f"ballscan watch: stopped by {stop.name} after {gen.lines} lines, {n} balls (the ball in view measured, flagged if cut)", file=sys.stderr)
+        raise ExitStatus(stop.exit_code)
+    if gen.interrupted:
+        print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
+    return n
+
+
+def _event_folder(folder: Path | None, force: bool):
+    """The locked, checked event folder of ``--save-events`` (a context manager), or a null context without one."""
+    import contextlib
+
+    if folder is None:
+        return contextlib.nullcontext(None)
+    from ..stream.events import EventFolder
+
+    @contextlib.contextmanager
+    def opened():
+        with EventFolder(folder, force=force) as events:
+            if events.removed:
+                print(f"ballscan watch: {folder}: removed {len(events.removed)} partial or damaged files (their events are written again)", file=sys.stderr)
+            yield events
+
+    return opened()
+
+
+def _watch_loop(gen: _Watched, cam: LineScanCamera, radius: float, cfg, name: str, output_format: str, units: str, events, jobs: int) -> int:
+    """Run the engine over ``gen``, print each ball (and save its event); return the balls printed."""
+    from ..stream.engine import preload_estimator, process_stream
+
+    executor = None
     if jobs:
         # Estimates (tens of ms each) in other processes: reading and the
-        # per-line test keep up with the camera while balls are measured.
+        # per-line test keep up with the camera while balls are measured;
+        # the workers end with this process, however it ends.
         from concurrent.futures import ProcessPoolExecutor
 
-        from ..stream.engine import preload_estimator
+        from ..parallel import worker_start
 
-        executor = ProcessPoolExecutor(jobs, initializer=preload_estimator)
+        executor = ProcessPoolExecutor(jobs, initializer=worker_start, initargs=(preload_estimator,))
+    else:
+        preload_estimator()  # the kernels' loading is no ball's latency
+    n = 0
+    per_event: dict[int, int] = {}
     try:
         for res in process_stream(gen, cam, radius, cfg, source=name, dtype=None, executor=executor):
             text = json.dumps(res.to_dict(cam), allow_nan=False) if output_format == "json" else format_stream_line(res, cam, units)
             try:
-                st.clear()
-                stream.write(text + "\n")
-                stream.flush()
+                gen.status.clear()
+                sys.stdout.write(text + "\n")
+                sys.stdout.flush()
             except BrokenPipeError:
                 # The reader went away (e.g. `| head`): stop quietly.
                 return n
             n += 1
-            if save_events is not None:
+            if events is not None:
                 k = per_event.get(res.event_index, 0)
                 per_event[res.event_index] = k + 1
-                save_event(save_events, res, cam, k)
+                events.save(res, cam, k)
             gen.balls = n
     except KeyboardInterrupt:
         gen.interrupted = True
     finally:
-        st.close(n)
+        gen.status.close(n)
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
-    lost = getattr(src, "dropped_lines", 0)
-    if lost:
-        print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
-    if gen.interrupted:
-        print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
     return n
 
 
@@ -342,19 +335,27 @@ def batch(
     dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar on stderr (default: when it is a terminal).")] = None,
     background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
+    force: Annotated[bool, typer.Option("--force", help="Write through an --out that is a symbolic link (refused otherwise).")] = False,
 ) -> int:
     """Measure every ball of many recorded images or raw streams into one CSV (restartable).
 
-    Inputs already in the CSV are skipped. Each input that fails is printed
-    as one line on stderr and the command exits with status 1; the others
-    are in the CSV.
+    Inputs already in the CSV are skipped; a partial last row (a run killed
+    while writing) is dropped and its input measured again. One run at a
+    time writes a CSV (OUT.lock). Each input that fails is printed as one
+    line on stderr and the command exits with status 1; the others are in
+    the CSV. SIGINT, SIGTERM or SIGHUP stop it with status 128 + the
+    signal's number (the rows written stay; a rerun does the rest).
     """
     from ..stream.batch import run_batch
+    from .signals import ExitStatus, stop_signals
 
-    summary = run_batch(
-        inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
-        progress=sys.stderr.isatty() if progress is None else progress, background=background,
-    )
+    with stop_signals(graceful=False):
+        summary = run_batch(
+            inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
+            progress=sys.stderr.isatty() if progress is None else progress, background=background, force=force,
+        )
+    for note in summary.repairs:
+        print(f"ballscan batch: {note}", file=sys.stderr)
     for src, msg in summary.errors:
         print(f"ballscan: error: {msg}", file=sys.stderr)
     print(
@@ -362,5 +363,5 @@ def batch(
         file=sys.stderr,
     )
     if summary.errors:
-        raise typer.Exit(code=1)
+        raise ExitStatus(1)
     return summary.n_balls

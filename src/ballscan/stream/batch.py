@@ -7,10 +7,17 @@ it (``NAME`` with or without the input's suffix, e.g. ``shot1.camera.toml``
 or ``stream.raw.camera.toml``). Per-line timestamps are picked up from
 ``NAME.timestamps.npy`` / ``NAME.timestamps.txt`` beside the input.
 
-The CSV holds one row per ball (:data:`COLUMNS`). Rows are appended as each
-input finishes, so a crash loses at most the inputs in progress; a rerun
-skips every input already in the CSV or listed in the sidecar
-``OUT.done`` (which also records inputs without any ball).
+The CSV holds one row per ball (:data:`COLUMNS`). Each input's rows are
+appended in one write as the input finishes, so a crash loses at most the
+inputs in progress. The CSV itself is the restart state: a rerun skips every
+input with a row in it. A rerun first checks it: a partial or malformed last
+row (a write cut by a crash) is dropped with the rows of its input, which is
+measured again, so every ball is in the CSV exactly once. Inputs without any
+ball are listed in ``OUT.done``, which is tied to the CSV (it names the CSV's
+inode): it counts only while that very CSV exists, and a deleted CSV means
+every input is measured again. ``OUT.lock`` (``fcntl.flock``) keeps a second
+run from writing the same CSV; an ``OUT`` that is a symbolic link is refused
+unless forced.
 
 Work is spread over local processes or a Dask distributed cluster
 (``scheduler="tcp://host:port"``) by :class:`ballscan.parallel.TaskExecutor`;
@@ -29,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BallscanError
+from ..outputs import OutputLock, check_not_symlink
 from ..parallel import TaskExecutor
 from ..pipeline.report import CSV_COLUMNS, csv_row
 
@@ -66,6 +74,9 @@ class BatchSummary:
         ``(source, one-line message)`` of each input that failed. An input
         that failed without any ball is not marked done (a rerun tries it
         again); a raw stream with a fault after some balls keeps them.
+    repairs : tuple of str
+        What was mended in the CSV before the run (a partial last row
+        dropped, its input measured again), one line each.
     """
 
     n_inputs: int
@@ -73,6 +84,7 @@ class BatchSummary:
     n_done: int
     n_balls: int
     errors: tuple[tuple[str, str], ...]
+    repairs: tuple[str, ...] = ()
 
 
 def find_inputs(inputs: Sequence[str | os.PathLike[str]]) -> list[Path]:
@@ -163,21 +175,76 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         return InputResult(src, (), msg if src in msg else f"{src}: {msg}")
 
 
-def _done_sources(out_csv: Path) -> set[str]:
-    done: set[str] = set()
-    if out_csv.is_file() and out_csv.stat().st_size > 0:
-        with open(out_csv, newline="") as fh:
-            header = next(csv.reader(fh), [])
-        if tuple(header) != COLUMNS:
-            raise BallscanError(f"{out_csv}: its columns are not this version's ({len(header)} against {len(COLUMNS)}): give a new --out")
-        with open(out_csv, newline="") as fh:
-            for row in csv.DictReader(fh):
-                if row.get("source"):
-                    done.add(row["source"])
-    side = out_csv.with_name(out_csv.name + ".done")
-    if side.is_file():
-        done.update(s for s in side.read_text().splitlines() if s)
-    return done
+@dataclass(frozen=True)
+class _CsvState:
+    """What a CSV on disk holds: its valid length (bytes), the sources with rows, and what was dropped."""
+
+    size: int
+    sources: frozenset[str]
+    dropped: tuple[str, ...]
+
+
+def _check_csv(out_csv: Path) -> _CsvState:
+    """Read ``out_csv``; find the prefix of whole, well-formed rows and the inputs of a damaged end.
+
+    A damaged end (a last row without its newline or with the wrong number of
+    fields) is dropped with every row of the last input before it (that
+    input's rows may be incomplete): both inputs are measured again.
+    """
+    if not out_csv.is_file() or out_csv.stat().st_size == 0:
+        return _CsvState(0, frozenset(), ())
+    data = out_csv.read_bytes()
+    if (",".join(COLUMNS) + "\r\n").encode().startswith(data):
+        return _CsvState(0, frozenset(), ())  # a header cut short: nothing in it yet
+    lines = data.splitlines(keepends=True)
+    header = next(csv.reader([lines[0].decode("utf-8", "replace")]), [])
+    if tuple(header) != COLUMNS or not lines[0].endswith(b"\n"):
+        raise BallscanError(f"{out_csv}: its columns are not this version's ({len(header)} against {len(COLUMNS)}): give a new --out")
+    size = len(lines[0])
+    starts: list[tuple[int, str]] = []  # (offset, source) of each whole row
+    bad = None
+    for raw in lines[1:]:
+        fields = next(csv.reader([raw.decode("utf-8", "replace")]), [])
+        if not raw.endswith(b"\n") or len(fields) != len(COLUMNS) or not fields[0]:
+            bad = fields[0] if fields else ""
+            break
+        starts.append((size, fields[0]))
+        size += len(raw)
+    if bad is None:
+        return _CsvState(size, frozenset(src for _, src in starts), ())
+    dropped = [bad] if bad else []
+    if starts:
+        last = starts[-1][1]
+        while starts and starts[-1][1] == last:
+            size = starts.pop()[0]
+        dropped.append(last)
+    return _CsvState(size, frozenset(src for _, src in starts), tuple(dict.fromkeys(dropped)))
+
+
+def _sidecar_sources(side: Path, out_csv: Path) -> set[str]:
+    """Inputs without balls listed in ``side``, if it belongs to this very CSV (its inode)."""
+    if not side.is_file() or not out_csv.is_file():
+        return set()
+    lines = side.read_text(errors="replace").splitlines()
+    if not lines or lines[0] != f"# csv inode {out_csv.stat().st_ino}":
+        return set()
+    return {s for s in lines[1:] if s}
+
+
+def _append(fd: int, data: bytes) -> None:
+    """Write all of ``data`` at the end of ``fd`` and sync it."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view) :]
+    os.fsync(fd)
+
+
+def _csv_bytes(rows: Sequence[dict]) -> bytes:
+    import io
+
+    buf = io.StringIO()
+    csv.DictWriter(buf, fieldnames=COLUMNS).writerows(rows)
+    return buf.getvalue().encode("utf-8")
 
 
 def run_batch(
@@ -192,6 +259,7 @@ def run_batch(
     dtype: str = "uint8",
     progress: bool = False,
     background: str = "engine",
+    force: bool = False,
 ) -> BatchSummary:
     """Measure all inputs into ``out_csv`` (see the module docstring).
 
@@ -215,10 +283,18 @@ def run_batch(
         Show a rich progress bar on stderr (when it is a terminal).
     background : {"engine", "crop"}
         As for :func:`measure_input` (raw streams only).
+    force : bool
+        Write through an ``out_csv`` that is a symbolic link (to its target).
 
     Returns
     -------
     BatchSummary
+
+    Raises
+    ------
+    BallscanError
+        If another run holds the CSV's lock, the CSV is a symbolic link
+        (without ``force``) or has other columns.
     """
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
@@ -229,33 +305,61 @@ def run_batch(
     if background not in BACKGROUNDS:
         raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
     out = Path(out_csv)
+    check_not_symlink(out, force)
+    if force and out.is_symlink():
+        out = out.resolve()
     files = find_inputs(inputs)
-    done = _done_sources(out)
-    todo = [str(p) for p in files if str(p) not in done]
     cam = None if camera is None else str(camera)
     out.parent.mkdir(parents=True, exist_ok=True)
-    new_file = not out.is_file() or out.stat().st_size == 0
+    side = out.with_name(out.name + ".done")
+    check_not_symlink(side)
+    with OutputLock(out.with_name(out.name + ".lock"), str(out)):
+        state = _check_csv(out)
+        repairs = []
+        if state.size and state.size < out.stat().st_size:
+            with open(out, "r+b") as fh:
+                fh.truncate(state.size)
+                os.fsync(fh.fileno())
+            repairs.append(f"{out}: dropped a partial last row; measuring again: {', '.join(state.dropped) or 'its input'}")
+        done = set(state.sources) | _sidecar_sources(side, out)
+        todo = [str(p) for p in files if str(p) not in done]
+        fd = os.open(out, os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0), 0o644)
+        try:
+            if state.size == 0:
+                os.ftruncate(fd, 0)
+                _append(fd, ",".join(COLUMNS).encode() + b"\r\n")
+            no_balls = sorted(done - set(state.sources))
+            # the sidecar names this CSV's inode: it counts only with this very file
+            from ..outputs import atomic_write_text
+
+            atomic_write_text(side, "".join(f"{x}\n" for x in [f"# csv inode {os.fstat(fd).st_ino}", *no_balls]))
+            n_done, n_balls, errors = _run(todo, fd, side, camera=cam, radius_m=radius_m, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype, progress=progress, background=background)
+        finally:
+            os.close(fd)
+    return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors), tuple(repairs))
+
+
+def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
+    """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write."""
+    from .engine import preload_estimator
+
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
-    with open(out, "a", newline="") as fh, open(out.with_name(out.name + ".done"), "a") as side:
-        writer = csv.DictWriter(fh, fieldnames=COLUMNS)
-        if new_file:
-            writer.writeheader()
-            fh.flush()
-        task = partial(measure_input, camera_path=cam, radius_m=radius_m, method=method, dtype=dtype, background=background)
-        with TaskExecutor(jobs, scheduler, warm_up=preload_estimator, progress=progress) as executor:
-            for outcome in executor.map(task, todo, label="batch"):
-                # measure_input reports the input's own faults; anything else it raised is the item's error
-                res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
-                if res.error is not None:
-                    errors.append((res.source, res.error))
-                if res.error is None or res.rows:
-                    # Rows measured before a fault are kept; the input then
-                    # counts as done (rerunning a damaged file changes nothing).
-                    writer.writerows(res.rows)
-                    fh.flush()
-                    side.write(res.source + "\n")
-                    side.flush()
-                    n_done += 1
-                    n_balls += len(res.rows)
-    return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors))
+    task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
+    with open(side, "a") as side_fh, TaskExecutor(jobs, scheduler, warm_up=preload_estimator, progress=progress) as executor:
+        for outcome in executor.map(task, todo, label="batch"):
+            # measure_input reports the input's own faults; anything else it raised is the item's error
+            res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
+            if res.error is not None:
+                errors.append((res.source, res.error))
+            if res.error is None or res.rows:
+                # Rows measured before a fault are kept; the input then
+                # counts as done (rerunning a damaged file changes nothing).
+                if res.rows:
+                    _append(fd, _csv_bytes(res.rows))
+                else:
+                    side_fh.write(res.source + "\n")
+                    side_fh.flush()
+                n_done += 1
+                n_balls += len(res.rows)
+    return n_done, n_balls, errors

@@ -50,6 +50,13 @@ Pipeline per chunk
    the band of a line depends only on the blocks before it, the results do
    not depend on how the stream is cut into chunks.
 
+6. **Width check.** Each tested piece's clean lines (no hit within two
+   lines) feed :class:`ballscan.stream.width.WidthCheck`: the background's
+   column pattern must repeat at the camera's width. Lines sheared by a
+   wrong width (a 2,047-px stream read as 2,048 px) stop the stream with a
+   :class:`StreamError` before any ball is measured on them
+   (``width_check``).
+
 The model is initialised by :func:`ballscan.measure.detection.detect` on the first
 block (robust per-column mode and noise; balls in it do not bias it).
 Slow illumination drift is followed by the per-block EMA (the mean of the
@@ -70,6 +77,7 @@ from typing import Any
 import numpy as np
 
 from . import _line_kernels
+from .width import WidthCheck
 from ..geometry.camera import LineScanCamera, crop_camera
 from ..measure.detection import ColumnModel, detect
 from ..measure.robust import median
@@ -194,6 +202,11 @@ class StreamConfig:
         running model of its columns (level and noise; the per-line drift is
         still measured on the crop), or the one :func:`detect` learns on the
         crop alone, as ``ballscan estimate`` would on the crop's image.
+    width_check : bool
+        Check that the lines are the camera's width from the background's
+        column pattern (:mod:`ballscan.stream.width`), at the start and
+        continuously; lines found sheared stop the stream with a
+        :class:`StreamError` before any ball measured on them.
     """
 
     k_sigma: float = 4.0
@@ -215,6 +228,7 @@ class StreamConfig:
     offset_columns: int = 64
     max_line_offset_sigma: float = 3.0
     background: str = "engine"
+    width_check: bool = True
 
     def __post_init__(self) -> None:
         def need(ok: bool, name: str, why: str) -> None:
@@ -243,7 +257,7 @@ class StreamConfig:
         need(real("noise_floor_dn") and self.noise_floor_dn > 0, "noise_floor_dn", "must be positive")
         need(isinstance(self.recipe, Recipe), "recipe", "must be a Recipe")
         need(self.saturation_dn is None or (real("saturation_dn") and self.saturation_dn > 0), "saturation_dn", "must be None or positive")
-        for name in ("keep_crops", "line_offset"):
+        for name in ("keep_crops", "line_offset", "width_check"):
             need(isinstance(getattr(self, name), bool), name, "must be True or False")
         need(integer("offset_columns") and self.offset_columns >= 8, "offset_columns", "must be an integer >= 8")
         need(real("max_line_offset_sigma") and self.max_line_offset_sigma >= 0, "max_line_offset_sigma", "must be >= 0")
@@ -422,6 +436,7 @@ class StreamEngine:
         self._chunk_arrival = 0.0
         self._executor = executor
         self._pending: deque[_Job] = deque()
+        self._width_check = WidthCheck(self.width, block_lines=self.config.block_lines) if self.config.width_check else None
         if executor is None:
             # Import the estimator now, not when the first ball leaves.
             preload_estimator()
@@ -555,6 +570,10 @@ class StreamEngine:
     def finish(self) -> list[StreamResult]:
         """End of stream: measure the event still open (flagged ``cut_last_line`` if the ball is)."""
         if self._finished:
+            return []
+        if self._width_check is not None and self._width_check.sheared:
+            self._finished = True  # nothing is measured on sheared lines
+            self._collect([], wait=True)
             return []
         t0 = time.perf_counter()
         self._chunk_arrival = t0
@@ -718,7 +737,36 @@ class StreamEngine:
     def _test(self, lo: int, hi: int, out: list[StreamResult]) -> None:
         """Test stored lines ``[lo, hi)`` with the current band, in place in the ring, and record their hits."""
         hit_lines, counts, cmin, cmax = self._line_test(lo, hi - lo)
+        self._check_width(lo, hi)
         self._record(lo, hi - lo, hit_lines, counts, cmin, cmax, out)
+
+    def _check_width(self, lo: int, hi: int) -> None:
+        """Feed the tested lines ``[lo, hi)`` with their clean flags (no hit within 2 lines) to the width check."""
+        wc = self._width_check
+        if wc is None or hi - lo < 2 or not wc.wants(lo):
+            return
+        a = max(lo - 2, 0)
+        hit = self._hit[np.arange(a, hi) % self._cap]
+        near = hit.copy()
+        for s in (1, 2):
+            near[s:] |= hit[:-s]
+            near[:-s] |= hit[s:]
+        # (the last two lines' successors are not tested yet: counted clean)
+        wc.add(self._read(lo, hi), lo, ~near[lo - a :])
+
+    def _require_width(self) -> None:
+        """Raise the width check's refusal (before a ball is measured on sheared lines)."""
+        wc = self._width_check
+        if wc is None or not wc.sheared:
+            return
+        v = wc.verdict
+        how = "half a line per line read" if v.period_px == 2 * self.width else f"each line sheared by {v.period_px - self.width:+d} px against the last"
+        raise StreamError(
+            f"{self.source}: the lines are not {self.width} px wide: the background's column pattern repeats every "
+            f"{v.period_px} samples (score {v.z:.0f}, {self.width} px: {v.z_camera:.0f}), {how}; "
+            f"a {v.period_px}-px stream read as {self.width} px? (check the camera file's width and --width); "
+            f"stopped after {self._n} lines"
+        )
 
     def _line_test(self, start: int, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Stream lines ``[start, start + n)`` (in the ring) holding ball pixels: indices (from ``start``), counts, first and last column.
@@ -760,6 +808,7 @@ class StreamEngine:
             self._close(ev, out)
 
     def _emit_cut(self, ev: _Event, out: list[StreamResult], why: str) -> None:
+        self._require_width()
         est = BallEstimate(
             method=self.config.recipe.method,
             radius_m=self.radius_m,
@@ -778,6 +827,7 @@ class StreamEngine:
         self._collect(out, wait=False)
 
     def _close(self, ev: _Event, out: list[StreamResult]) -> None:
+        self._require_width()
         cfg = self.config
         if ev.overflowed:
             return

@@ -14,7 +14,11 @@ A raw stream is ``W`` samples per line, no header, ``uint8`` or little-endian
 whose length is not a whole number of lines ends with a partial line: the
 complete lines are delivered, then a :class:`TruncatedStream` error says so
 (a wrong ``--width`` usually shows up this way). On a pipe, a ``timeout_s``
-turns a silent source into a :class:`SourceStalled` error.
+turns a silent source into a :class:`SourceStalled` error, counted from the
+start too: a named pipe is opened without waiting for its writer. A ``stop``
+request (an object with ``is_set()``, e.g. a ``threading.Event`` set by a
+signal handler) ends a raw source after its complete lines, within
+:data:`STOP_POLL_S` seconds even while it waits for data.
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ import re
 import select
 import stat
 import sys
+import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,6 +44,7 @@ from ..geometry.motion import BallMotion
 from .engine import Chunk, StreamError
 
 __all__ = [
+    "STOP_POLL_S",
     "SourceError",
     "TruncatedStream",
     "SourceStalled",
@@ -56,6 +62,10 @@ __all__ = [
     "simulate_stream",
     "stream_balls",
 ]
+
+
+#: Longest wait (s) for data before a raw source looks at its stop request again.
+STOP_POLL_S = 0.1
 
 
 class SourceError(StreamError):
@@ -162,6 +172,9 @@ class RawLineSource:
         Per-line timestamps file (text or ``.npy``), read along.
     name : str, optional
         Name in messages and results (default: the path).
+    stop : object with ``is_set()``, optional
+        When it is set, the source ends after the complete lines it has read
+        (no error; a partial line is dropped).
     """
 
     def __init__(
@@ -174,6 +187,7 @@ class RawLineSource:
         timeout_s: float | None = None,
         timestamps: str | os.PathLike[str] | None = None,
         name: str | None = None,
+        stop: Any = None,
     ) -> None:
         if isinstance(width, bool) or not isinstance(width, (int, np.integer)) or width < 2:
             raise ValueError(f"--width: must be an integer >= 2, got {width!r}")
@@ -194,6 +208,8 @@ class RawLineSource:
             name = "<stdin>" if path == "-" else (os.fspath(path) if isinstance(path, (str, os.PathLike)) else getattr(path, "name", "<stream>"))
         self.name = str(name)
         self.lines_read = 0
+        self.stop = stop
+        self._wait_since: float | None = None
 
     def _open(self) -> tuple[Any, bool]:
         """A raw (unbuffered) binary reader and whether we opened it."""
@@ -205,6 +221,9 @@ class RawLineSource:
                 raise SourceError(f"{self.name}: no such file")
             if os.path.isdir(p):
                 raise SourceError(f"{self.name}: is a directory (use an image folder source for chunk files)")
+            if stat.S_ISFIFO(os.stat(p).st_mode):
+                # not blocked until a writer opens it: the timeout counts from now
+                return open(os.open(p, os.O_RDONLY | os.O_NONBLOCK), "rb", buffering=0), True
             return open(p, "rb", buffering=0), True
         return self.path, False
 
@@ -233,10 +252,16 @@ class RawLineSource:
             is_stream = False
         filled = 0
         eof = False
+        stopped = False
         while not eof:
             while filled < total:
+                if self.stop is not None and self.stop.is_set():
+                    eof = stopped = True
+                    break
                 if is_stream and fd is not None:
                     ready = self._wait(fd, filled >= line_bytes)
+                    if ready is None:
+                        continue  # the stop request is looked at again
                     if not ready:
                         if filled >= line_bytes:
                             break  # deliver the complete lines we have: latency matters
@@ -262,22 +287,36 @@ class RawLineSource:
                 if rest:
                     mv[:rest] = mv[n * line_bytes : filled]
                 filled = rest
-            if eof and filled:
+            if eof and filled and not stopped:
                 raise TruncatedStream(
                     f"{self.name}: ends with a partial line of {filled} bytes (a line is {line_bytes} bytes: "
                     f"--width {self.width}, --dtype {self.dtype.name}); the {self.lines_read} complete lines before it were processed"
                 )
 
-    def _wait(self, fd: int, have_lines: bool) -> bool:
-        """Wait until ``fd`` is readable; False means "nothing now" when lines are pending."""
+    def _wait(self, fd: int, have_lines: bool) -> bool | None:
+        """Wait until ``fd`` is readable; False means "nothing now" when lines are pending, None "look at the stop request".
+
+        Without pending lines the wait is cut into slices of at most
+        :data:`STOP_POLL_S` when there is a stop request; the timeout counts
+        over the slices.
+        """
         if have_lines:
             r, _, _ = select.select([fd], [], [], 0.0)
             return bool(r)
-        r, _, _ = select.select([fd], [], [], self.timeout_s)
-        if not r:
+        now = time.monotonic()
+        if self._wait_since is None:
+            self._wait_since = now
+        waited = now - self._wait_since
+        left = None if self.timeout_s is None else self.timeout_s - waited
+        if left is not None and left <= 0:
             raise SourceStalled(
                 f"{self.name}: no data for {self.timeout_s:g} s after line {self.lines_read} (source stalled; --timeout)"
             )
+        step = left if self.stop is None else (STOP_POLL_S if left is None else min(left, STOP_POLL_S))
+        r, _, _ = select.select([fd], [], [], step)
+        if not r:
+            return None
+        self._wait_since = None
         return True
 
 
