@@ -224,6 +224,7 @@ def watch(
     units: Annotated[str, typer.Option("--units", help="Speed unit of --format table: m/s, km/h or mph.")] = "m/s",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", "--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
     jobs: Annotated[int, typer.Option("--jobs", "-j", "--workers", help="Processes that run the estimates (0: in the reading process, default).")] = 0,
+    serve: Annotated[Optional[str], typer.Option("--serve", metavar="[HOST:]PORT", help="Show the balls live on a web page at http://HOST:PORT/ (host default 127.0.0.1: this machine only; the 'live' extra). After the stream ends the page stays until Ctrl-C.")] = None,
 ) -> int:
     """Measure balls in a continuous line stream, one line per ball as it is measured.
 
@@ -248,7 +249,7 @@ def watch(
     if jobs < 0:
         raise typer.BadParameter(f"must be >= 0, got {jobs}", param_hint="--jobs")
     # the settings first: a bad one is reported before a pipe or a camera is opened
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None or serve is not None)
     src = open_source(
         source, cam, width=width, dtype=dtype, chunk_lines=chunk_lines, timestamps=timestamps, timeout_s=timeout,
         pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps,
@@ -264,7 +265,8 @@ def watch(
     name = getattr(src, "name", source)
     n = 0
     per_event: dict[int, int] = {}
-    gen = _Watched(src, st, cam.line_rate_hz)
+    live = _start_live(serve, cam, src, name) if serve is not None else None
+    gen = _Watched(live.hub.chunks(src) if live is not None else src, st, cam.line_rate_hz)
     executor = None
     if not jobs:
         from ..stream.engine import preload_estimator
@@ -294,9 +296,13 @@ def watch(
                 per_event[res.event_index] = k + 1
                 save_event(save_events, res, cam, k)
             gen.balls = n
+            if live is not None:
+                live.hub.ball(res)
     except KeyboardInterrupt:
         gen.interrupted = True
     finally:
+        if live is not None:
+            live.end(sys.exc_info()[1] or (KeyboardInterrupt() if gen.interrupted else None))
         st.close(n)
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
@@ -305,7 +311,25 @@ def watch(
         print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
     if gen.interrupted:
         print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
+    if live is not None and not gen.interrupted:
+        print(f"ballscan watch: the stream ended; the live view stays at {live.server.url} until Ctrl-C", file=sys.stderr)
+        live.linger()
+    elif live is not None:
+        live.server.stop()
     return n
+
+
+def _start_live(address: str, camera: LineScanCamera, src, name: str):
+    """The live view of a watch (``--serve``), serving before the first line is read."""
+    from ..live.server import LiveWatch
+
+    try:
+        live = LiveWatch(camera, address, dropped_lines=lambda: getattr(src, "dropped_lines", 0), title=f"ballscan watch {name}")
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc).removeprefix("--serve: "), param_hint="--serve") from None
+    url = live.start()
+    print(f"ballscan watch: live view at {url}", file=sys.stderr, flush=True)
+    return live
 
 
 def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str = "m/s") -> str:
