@@ -291,13 +291,13 @@ def watch(
                 # The reader went away (e.g. `| head`): stop quietly.
                 return n
             n += 1
+            if live is not None:
+                live.hub.ball(res)
             if save_events is not None:
                 k = per_event.get(res.event_index, 0)
                 per_event[res.event_index] = k + 1
                 save_event(save_events, res, cam, k)
             gen.balls = n
-            if live is not None:
-                live.hub.ball(res)
     except KeyboardInterrupt:
         gen.interrupted = True
     finally:

@@ -307,7 +307,8 @@ class LiveHub:
             rate = (lines - n_rate) / (now - t_rate) if t_rate else 0.0
             self._rate = (now, lines, rate)
         since = None if self._last_read is None else now - self._last_read
-        behind = 0.0 if self._t0 is None else max((now - self._t0) - self._span_s, 0.0)
+        # at the last read: a recording read faster than real time is not behind, a camera's delay shows
+        behind = 0.0 if self._t0 is None or self._last_read is None else max((self._last_read - self._t0) - self._span_s, 0.0)
         if self._end is not None:
             state, message = self._end
         elif self._t0 is None:
