@@ -157,7 +157,7 @@ function renderHealth(h) {
   const strip = h.strip_dn, canvas = $("strip");
   if (!strip.length) return;
   const lo = Math.min(...strip), hi = Math.max(...strip);
-  canvas.width = strip.length;
+  canvas.width = strip.length; canvas.height = 1;  // one pixel per bin, stretched by the page's style
   const ctx = canvas.getContext("2d"), img = ctx.createImageData(strip.length, 1);
   strip.forEach((v, k) => {
     const g = hi > lo ? Math.round(255 * (v - lo) / (hi - lo)) : 128;
@@ -222,6 +222,7 @@ async function main() {
       const o = document.createElement("option"); o.value = word; o.textContent = word; o.title = text; $("f-flag").appendChild(o);
     }
     $("filters").classList.remove("hidden");
+    $("health").classList.add("hidden");  // a saved run has no stream to watch
     $("filters").addEventListener("change", refreshReview);
     $("filters").addEventListener("submit", (e) => { e.preventDefault(); refreshReview(); });
     renderHealth(await (await fetch("/api/health")).json());
