@@ -14,7 +14,9 @@ that), the engine's latency of each ball (``latency_s`` of its JSON line:
 from the arrival of the chunk that completed the ball's event to its result),
 and with ``--serve`` the push delay (from the ball's JSON line reaching this
 script to its event reaching each client) and the lag the page shows (from
-the ball's last line read to its publication). Target: ``serve`` within 10 %
+the ball's last line read to its publication); and the CPU seconds of the
+watch process (its start-up included: the web server's imports are part
+of ``--serve``'s cost). Target: ``serve`` within 10 %
 of ``plain`` in rate and latency.
 """
 
@@ -24,6 +26,7 @@ import argparse
 import json
 import os
 import re
+import resource
 import signal
 import subprocess
 import sys
@@ -88,6 +91,7 @@ def run_once(raw: Path, camera: Path, serve: bool, clients: int) -> dict:
     cmd = [sys.executable, "-m", "ballscan", "watch", str(fifo), "--camera", str(camera), "--radius", str(RADIUS), "--no-progress"]
     if serve:
         cmd += ["--serve", "127.0.0.1:0"]
+    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     printed: list[tuple[float, dict]] = []
     errors: list[str] = []
@@ -128,6 +132,7 @@ def run_once(raw: Path, camera: Path, serve: bool, clients: int) -> dict:
             time.sleep(0.01)
         proc.send_signal(signal.SIGINT)
     proc.wait(60)
+    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     for t in readers:
         t.join(5)
     for v in viewers:
@@ -137,6 +142,7 @@ def run_once(raw: Path, camera: Path, serve: bool, clients: int) -> dict:
     push = [v.arrived[k] - t for v in viewers for k, (t, _) in enumerate(printed) if k in v.arrived]
     return {
         "rate": n_lines / (t1 - t0),
+        "cpu": (ru1.ru_utime + ru1.ru_stime) - (ru0.ru_utime + ru0.ru_stime),
         "latency": [r["latency_s"] for _, r in printed],
         "balls": len(printed),
         "push": push,
@@ -173,6 +179,8 @@ def main(argv: list[str] | None = None) -> int:
     print(f"\nload average {os.getloadavg()[0]:.1f} (2 cores); {args.repeats} runs of each, interleaved; {args.clients} clients with --serve")
     print(f"{'quantity':44s} {'plain':>12s} {'--serve':>12s} {'serve/plain':>12s}")
     print(f"{'lines/s (median of runs)':44s} {rate['plain']:>12,.0f} {rate['serve']:>12,.0f} {rate['serve'] / rate['plain']:>12.3f}")
+    cpu = {w: float(np.median([r["cpu"] for r in rs])) for w, rs in results.items()}
+    print(f"{'CPU s of the watch process (start-up included)':44s} {cpu['plain']:>12.2f} {cpu['serve']:>12.2f} {cpu['serve'] / cpu['plain']:>12.3f}")
     for name, q in (("median", 50), ("95th percentile", 95)):
         a, b = np.percentile(lat["plain"], q) * 1e3, np.percentile(lat["serve"], q) * 1e3
         print(f"{'latency ' + name + ' (ms)':44s} {a:>12.2f} {b:>12.2f} {b / a:>12.3f}")

@@ -349,6 +349,19 @@ def test_view_serves_a_saved_run(server_factory, saved_events):
     assert detail["crop"]["outline"]
 
 
+def test_an_address_in_use_is_a_one_line_error(server_factory):
+    import socket
+
+    from ballscan.live.server import LiveServer
+
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        with pytest.raises(BallscanError, match=f"--serve 127.0.0.1:{port}: cannot listen there"):
+            LiveServer(LiveHub(CAM), "127.0.0.1", port).start()
+
+
 def test_parse_address():
     from ballscan.live.server import parse_address
 

@@ -97,6 +97,26 @@ class _Pump:
                 await asyncio.sleep(0)
 
 
+async def _event_stream(store: Any, pump: _Pump, cursor: int):
+    """One viewer's server-sent events: each ball newer than ``cursor`` (from the ring, at the viewer's pace) and the health every half second."""
+    last_health = 0.0
+    while not pump.closing:
+        if hasattr(store, "balls_after"):
+            new, skipped = store.balls_after(cursor)
+            if skipped:
+                yield _sse("skipped", {"balls": skipped})
+            for b in new:
+                cursor = b.index
+                yield _sse("ball", b.to_dict())
+        now = time.monotonic()
+        if now - last_health >= HEALTH_EVERY_S:
+            last_health = now
+            yield _sse("health", store.health().to_dict())
+        async with pump.changed:
+            with contextlib.suppress(asyncio.TimeoutError):
+                await asyncio.wait_for(pump.changed.wait(), HEALTH_EVERY_S)
+
+
 def build_app(store: Any, *, title: str = "ballscan"):
     """The starlette application over ``store`` (a live hub or a saved run)."""
     _import_web()
@@ -150,27 +170,8 @@ def build_app(store: Any, *, title: str = "ballscan"):
         except ValueError:
             return PlainTextResponse("after: expected a ball index", status_code=400)
 
-        async def stream():
-            nonlocal cursor
-            last_health = 0.0
-            while not pump.closing:
-                if hasattr(store, "balls_after"):
-                    new, skipped = store.balls_after(cursor)
-                    if skipped:
-                        yield _sse("skipped", {"balls": skipped})
-                    for b in new:
-                        cursor = b.index
-                        yield _sse("ball", b.to_dict())
-                now = time.monotonic()
-                if now - last_health >= HEALTH_EVERY_S:
-                    last_health = now
-                    yield _sse("health", store.health().to_dict())
-                async with pump.changed:
-                    with contextlib.suppress(asyncio.TimeoutError):
-                        await asyncio.wait_for(pump.changed.wait(), HEALTH_EVERY_S)
-
         head = {"X-Accel-Buffering": "no", **nocache}
-        return StreamingResponse(stream(), media_type="text/event-stream", headers=head)
+        return StreamingResponse(_event_stream(store, pump, cursor), media_type="text/event-stream", headers=head)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):
