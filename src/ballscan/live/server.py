@@ -315,10 +315,10 @@ class LiveWatch:
         else:
             self.hub.end(f"stopped after {lines:,d} lines: {error}", failed=True)
 
-    def linger(self) -> None:
-        """Keep serving the ended run until Ctrl-C (or the process is terminated), then stop."""
+    def linger(self, stop: Any = None) -> None:
+        """Keep serving the ended run until Ctrl-C (or ``stop.is_set()``, for a caller that turns signals into a flag), then stop."""
         try:
-            while self.server.serving:
+            while self.server.serving and not (stop is not None and stop.is_set()):
                 time.sleep(0.2)
         except KeyboardInterrupt:
             pass
