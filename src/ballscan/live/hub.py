@@ -60,8 +60,8 @@ class LiveConfig:
     crop_capacity: int = 32
     pending: int = 256
     stall_after_s: float = 1.0
-    sample_every_s: float = 0.2
-    sample_lines: int = 64
+    sample_every_s: float = 0.5
+    sample_lines: int = 32
 
     def __post_init__(self) -> None:
         for name in ("capacity", "crop_capacity", "pending", "sample_lines"):
@@ -160,6 +160,8 @@ class LiveHub:
         self._reads: deque[tuple[int, float]] = deque(maxlen=512)  # (lines after the chunk, wall time read)
         self._samples: deque[np.ndarray] = deque(maxlen=self.config.sample_lines)
         self._last_sample = -np.inf
+        self._sampled = 0  # times lines were sampled (the strip is recomputed only after a new sample)
+        self._strip_cache: tuple[int, tuple[float, ...]] = (0, ())
         self._rate = (0.0, 0, 0.0)  # (time, lines, rate) of the last rate update
         self._last_lag: float | None = None
         self._end: tuple[str, str] | None = None
@@ -201,6 +203,7 @@ class LiveHub:
             pick = np.linspace(0, n - 1, min(n, 4)).round().astype(int)
             for k in pick:
                 self._samples.append(np.array(lines[k]))
+            self._sampled += 1
 
     def ball(self, result: Any) -> None:
         """Hand over a measured ball (a :class:`ballscan.stream.engine.StreamResult`); never waits."""
@@ -327,6 +330,10 @@ class LiveHub:
 
     def _strip(self) -> tuple[float, ...]:
         """The background per bin of columns: the median over the sampled lines of each column, averaged per bin."""
+        sampled, strip = self._strip_cache
+        if sampled == self._sampled:
+            return strip
+        sampled = self._sampled
         try:
             samples = list(self._samples)
         except RuntimeError:  # appended to while copied: the next health has it
@@ -336,4 +343,6 @@ class LiveHub:
         med = np.median(np.stack(samples).astype(np.float64), axis=0)
         bins = min(STRIP_BINS, med.size)
         edges = np.linspace(0, med.size, bins + 1).round().astype(int)
-        return tuple(float(v) for v in np.add.reduceat(med, edges[:-1]) / np.diff(edges))
+        strip = tuple(float(v) for v in np.add.reduceat(med, edges[:-1]) / np.diff(edges))
+        self._strip_cache = (sampled, strip)
+        return strip

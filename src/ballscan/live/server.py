@@ -81,6 +81,26 @@ class _Pump:
         self.changed = asyncio.Condition()
         self.wake = asyncio.Event()
         self.closing = False
+        self._encoded: dict[int, str] = {}  # a ball's event, encoded once for every viewer
+        self._health: tuple[float, str] = (-1.0, "")
+
+    def ball_event(self, ball: Any) -> str:
+        """The ball's server-sent event (encoded once; the last few kept)."""
+        text = self._encoded.get(ball.index)
+        if text is None:
+            text = self._encoded[ball.index] = _sse("ball", ball.to_dict())
+            for k in sorted(self._encoded)[:-64]:
+                del self._encoded[k]
+        return text
+
+    def health_event(self) -> str:
+        """The health's server-sent event (made at most every half second, for every viewer)."""
+        t, text = self._health
+        now = time.monotonic()
+        if now - t >= HEALTH_EVERY_S * 0.9:
+            text = _sse("health", self.store.health().to_dict())
+            self._health = (now, text)
+        return text
 
     async def run(self) -> None:
         loop = asyncio.get_running_loop()
@@ -91,6 +111,8 @@ class _Pump:
                 await asyncio.wait_for(self.wake.wait(), HEALTH_EVERY_S)
             self.wake.clear()
             made = self.store.drain() if hasattr(self.store, "drain") else 0
+            if made:
+                self._health = (-1.0, "")  # the ball count changed: a fresh health for the next viewer
             async with self.changed:
                 self.changed.notify_all()
             if made:
@@ -107,11 +129,11 @@ async def _event_stream(store: Any, pump: _Pump, cursor: int):
                 yield _sse("skipped", {"balls": skipped})
             for b in new:
                 cursor = b.index
-                yield _sse("ball", b.to_dict())
+                yield pump.ball_event(b)
         now = time.monotonic()
         if now - last_health >= HEALTH_EVERY_S:
             last_health = now
-            yield _sse("health", store.health().to_dict())
+            yield pump.health_event()
         async with pump.changed:
             with contextlib.suppress(asyncio.TimeoutError):
                 await asyncio.wait_for(pump.changed.wait(), HEALTH_EVERY_S)
