@@ -19,7 +19,11 @@ watch process over the stream (from the pipe's opening until the watch,
 its pipe still open but silent, has measured everything it read: the
 server's thread included), and over its whole life (the web server's
 imports are part of ``--serve``'s cost). On a shared machine the CPU
-seconds are the steadier figure; the rates move with the other jobs. Target: ``serve`` within 10 %
+seconds are the steadier figure; the rates move with the other jobs.
+Last, in this process (no start-up), the same stream through
+``process_stream`` with and without the live view's hooks, server and
+three clients: the measuring thread's CPU seconds (what the live view may
+not slow) and the whole process's. Target: ``serve`` within 10 %
 of ``plain`` in rate and latency.
 """
 
@@ -167,6 +171,38 @@ def run_once(raw: Path, camera: Path, serve: bool, clients: int) -> dict:
     }
 
 
+def thread_split(raw: Path, camera_path: Path, serve: bool, clients: int) -> tuple[float, float]:
+    """In this process: the measuring thread's CPU seconds over the stream, and the whole process's (server and clients included)."""
+    from ballscan.geometry.camera import load_camera
+    from ballscan.live.server import LiveWatch
+    from ballscan.stream.engine import StreamConfig, process_stream
+    from ballscan.stream.sources import RawLineSource
+
+    camera = load_camera(camera_path)
+    src = RawLineSource(raw, camera.width, chunk_lines=32)  # a pipe read as fast as it is written gives 64 KiB reads
+    live, viewers = None, []
+    if serve:
+        live = LiveWatch(camera, "127.0.0.1:0")
+        live.start()
+        viewers = [Client(live.server.url) for _ in range(clients)]
+        for v in viewers:
+            v.connected.wait(10)
+    chunks = live.hub.chunks(src) if live is not None else src
+    p0, t0 = time.process_time(), time.thread_time()
+    for res in process_stream(chunks, camera, RADIUS, StreamConfig(keep_crops=serve), source=raw.name):
+        json.dumps(res.to_dict(camera), allow_nan=False)  # as watch prints it
+        if live is not None:
+            live.hub.ball(res)
+    t1 = time.thread_time()
+    time.sleep(0.3)  # the server sends the last balls
+    p1 = time.process_time()
+    if live is not None:
+        live.server.stop()
+        for v in viewers:
+            v.close()
+    return t1 - t0, p1 - p0
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--lines", type=int, default=100_000, help="lines of the stream (default 100 000: 10 balls)")
@@ -188,6 +224,10 @@ def main(argv: list[str] | None = None) -> int:
                 results[way].append(r)
                 print(f"run {k} {way:5s}: {r['rate']:>10,.0f} lines/s, {r['stream_cpu']:.3f} CPU s, {r['balls']} balls, latency median {1e3 * np.median(r['latency']):.1f} ms"
                       + (f", received {r['received']}" if way == "serve" else ""), flush=True)  # fmt: skip
+        split = {"plain": [], "serve": []}
+        for k in range(args.repeats):
+            for way in (("plain", "serve") if k % 2 == 0 else ("serve", "plain")):
+                split[way].append(thread_split(raw, camera, way == "serve", args.clients))
     rate = {w: float(np.median([r["rate"] for r in rs])) for w, rs in results.items()}
     lat = {w: np.concatenate([r["latency"] for r in rs]) for w, rs in results.items()}
     push = np.concatenate([r["push"] for r in results["serve"]])
@@ -199,6 +239,10 @@ def main(argv: list[str] | None = None) -> int:
     scpu = {w: float(np.median([r["stream_cpu"] for r in rs])) for w, rs in results.items()}
     print(f"{'CPU s of the watch over the stream':44s} {scpu['plain']:>12.3f} {scpu['serve']:>12.3f} {scpu['serve'] / scpu['plain']:>12.3f}")
     print(f"{'CPU s of the watch process (start-up included)':44s} {cpu['plain']:>12.2f} {cpu['serve']:>12.2f} {cpu['serve'] / cpu['plain']:>12.3f}")
+    th = {w: float(np.median([a for a, _ in v])) for w, v in split.items()}
+    pr = {w: float(np.median([b for _, b in v])) for w, v in split.items()}
+    print(f"{'in one process: the measuring thread, CPU s':44s} {th['plain']:>12.3f} {th['serve']:>12.3f} {th['serve'] / th['plain']:>12.3f}")
+    print(f"{'  the process (server, clients), CPU s':44s} {pr['plain']:>12.3f} {pr['serve']:>12.3f} {pr['serve'] / pr['plain']:>12.3f}")
     for name, q in (("median", 50), ("95th percentile", 95)):
         a, b = np.percentile(lat["plain"], q) * 1e3, np.percentile(lat["serve"], q) * 1e3
         print(f"{'latency ' + name + ' (ms)':44s} {a:>12.2f} {b:>12.2f} {b / a:>12.3f}")
