@@ -337,6 +337,28 @@ def test_event_stream_pushes_each_new_ball_to_every_viewer(server_factory, resul
     assert health[0][1]["balls"] == len(results) and health[0][1]["state"] == "waiting"
 
 
+def test_a_stuck_or_closed_viewer_holds_nobody_up(server_factory, results):
+    import socket
+
+    hub = LiveHub(CAM, LiveConfig(capacity=50, pending=200))
+    server, client = server_factory(hub)
+    host, port = server.host, server.port
+    stuck = socket.create_connection((host, port))  # asks for the events and never reads them
+    stuck.sendall(b"GET /events HTTP/1.1\r\nHost: x\r\n\r\n")
+    closed = socket.create_connection((host, port))  # a browser closed at once
+    closed.sendall(b"GET /events HTTP/1.1\r\nHost: x\r\n\r\n")
+    closed.close()
+    try:
+        # 150 balls with their crops: far more than the stuck socket's buffers hold
+        for k in range(150):
+            hub.ball(results[k % len(results)])
+        got = _read_events(client, "/events?after=139", 10)
+        assert [d["index"] for _, d in got] == list(range(140, 150))
+        assert hub.health().skipped == 0 and len(hub.balls()) == 50
+    finally:
+        stuck.close()
+
+
 def test_view_serves_a_saved_run(server_factory, saved_events):
     folder, out, cam = saved_events
     from ballscan.geometry.camera import load_camera
