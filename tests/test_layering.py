@@ -2,7 +2,7 @@
 
 The pipeline's order (``docs/architecture.md``): the base modules, then
 ``geometry`` < ``model`` < ``measure`` < ``solve`` < ``pipeline`` <
-``stream`` < ``lab`` < ``cli``.  Every import of the package's own modules,
+``stream`` < ``live`` < ``lab`` < ``cli``.  Every import of the package's own modules,
 at module level or inside a function, is checked against it; module-level
 imports form no cycle; no private name (``_x``) and no private module is
 imported from another sub-package.
@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "ballscan"
-LAYERS = ("geometry", "model", "measure", "solve", "pipeline", "stream", "lab", "cli")
+LAYERS = ("geometry", "model", "measure", "solve", "pipeline", "stream", "live", "lab", "cli")
 TOP = {"__main__": len(LAYERS)}  # ``python -m ballscan`` is the command itself
 FRONT_DOOR = "ballscan"  # the package's __init__ re-exports the public API of every stage (lazily)
 

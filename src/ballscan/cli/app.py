@@ -8,6 +8,7 @@ stderr with exit status 2; nothing prints a traceback.
 from __future__ import annotations
 
 import sys
+import time
 from dataclasses import replace
 from pathlib import Path
 from typing import Optional
@@ -310,6 +311,34 @@ def warm_up_command() -> None:
 
     done = warm_up((*KERNEL_MODULES, "ballscan.stream._line_kernels"), show=None)
     typer.echo(f"{done.kernels} kernels ready ({done.compiled} compiled now) in {done.time_s:.1f} s; cache: {done.cache_dir or 'none (memory only)'}")
+
+
+@app.command()
+def view(
+    results: Path = typer.Argument(..., help="A saved run: a 'watch --save-events' folder, a 'batch' CSV or JSON lines ('watch' output)."),
+    serve: str = typer.Option("8000", "--serve", metavar="[HOST:]PORT", help="Where to serve the page (host default 127.0.0.1: this machine only)."),
+    camera: Optional[Path] = typer.Option(None, "--camera", help="The run's camera TOML: a saved event's crop then shows its fitted outline."),
+) -> None:
+    """Serve the live page over a saved run: every ball, filters by flag and speed range, the table as CSV (until Ctrl-C)."""
+    from ..geometry.camera import load_camera
+    from ..live.review import load_run
+    from ..live.server import LiveServer, parse_address
+
+    try:
+        host, port = parse_address(serve)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc).removeprefix("--serve: "), param_hint="--serve") from None
+    run = load_run(results, load_camera(camera) if camera is not None else None)
+    server = LiveServer(run, host, port, title=f"ballscan view {results}")
+    url = server.start()
+    print(f"ballscan view: {len(run.all_balls)} balls of {results} at {url} (Ctrl-C stops)", file=sys.stderr, flush=True)
+    try:
+        while server.serving:
+            time.sleep(0.2)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        server.stop()
 
 
 def _register_subcommands() -> None:

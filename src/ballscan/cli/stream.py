@@ -187,6 +187,7 @@ def watch(
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", "--status/--no-status", help="Live status line on stderr (default: when stderr is a terminal).")] = None,
     jobs: Annotated[int, typer.Option("--jobs", "-j", "--workers", help="Processes that run the estimates (0: in the reading process, default).")] = 0,
     force: Annotated[bool, typer.Option("--force", help="Write --save-events files through symbolic links (refused otherwise).")] = False,
+    serve: Annotated[Optional[str], typer.Option("--serve", metavar="[HOST:]PORT", help="Show the balls live on a web page at http://HOST:PORT/ (host default 127.0.0.1: this machine only; the 'live' extra). After the stream ends the page stays until Ctrl-C.")] = None,
 ) -> int:
     """Measure balls in a continuous line stream, one line per ball as it is measured.
 
@@ -213,7 +214,7 @@ def watch(
     if jobs < 0:
         raise typer.BadParameter(f"must be >= 0, got {jobs}", param_hint="--jobs")
     # the settings first: a bad one is reported before a pipe or a camera is opened
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None)
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None or serve is not None)
     from .signals import ExitStatus, stop_signals
 
     with stop_signals(graceful=True) as stop, _event_folder(save_events, force) as events:
@@ -227,16 +228,25 @@ def watch(
             # a camera's 12-bit lines saturate at 4095, not at their type's 65535
             cfg = replace(cfg, saturation_dn=float(src.max_dn))
         show = sys.stderr.isatty() if progress is None else progress
-        gen = _Watched(src, _Status(bool(show)), cam.line_rate_hz, stop)
-        n = _watch_loop(gen, cam, radius, cfg, getattr(src, "name", source), output_format, units, events, jobs)
-    lost = getattr(src, "dropped_lines", 0)
-    if lost:
-        print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
-    if stop.signum is not None:
-        print(f"ballscan watch: stopped by {stop.name} after {gen.lines} lines, {n} balls (the ball in view measured, flagged if cut)", file=sys.stderr)
-        raise ExitStatus(stop.exit_code)
-    if gen.interrupted:
-        print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
+        name = getattr(src, "name", source)
+        live = _start_live(serve, cam, src, name) if serve is not None else None
+        gen = _Watched(live.hub.chunks(src) if live is not None else src, _Status(bool(show)), cam.line_rate_hz, stop)
+        n = _watch_loop(gen, cam, radius, cfg, name, output_format, units, events, jobs, live)
+        signum, exit_code = stop.signum, stop.exit_code  # before lingering: a Ctrl-C that ends the page is no stop of the stream
+        lost = getattr(src, "dropped_lines", 0)
+        if lost:
+            print(f"ballscan watch: {lost} lines lost by the camera ({getattr(src, 'gaps', '?')} gaps); balls across them are flagged dropped_lines", file=sys.stderr)
+        if signum is not None:
+            print(f"ballscan watch: stopped by {stop.name} after {gen.lines} lines, {n} balls (the ball in view measured, flagged if cut)", file=sys.stderr)
+        elif gen.interrupted:
+            print(f"ballscan watch: interrupted after {gen.lines} lines, {n} balls", file=sys.stderr)
+        if live is not None and signum is None and not gen.interrupted:
+            print(f"ballscan watch: the stream ended; the live view stays at {live.server.url} until Ctrl-C", file=sys.stderr)
+            live.linger(stop)
+        elif live is not None:
+            live.server.stop()
+    if signum is not None:
+        raise ExitStatus(exit_code)
     return n
 
 
@@ -258,8 +268,8 @@ def _event_folder(folder: Path | None, force: bool):
     return opened()
 
 
-def _watch_loop(gen: _Watched, cam: LineScanCamera, radius: float, cfg, name: str, output_format: str, units: str, events, jobs: int) -> int:
-    """Run the engine over ``gen``, print each ball (and save its event); return the balls printed."""
+def _watch_loop(gen: _Watched, cam: LineScanCamera, radius: float, cfg, name: str, output_format: str, units: str, events, jobs: int, live=None) -> int:
+    """Run the engine over ``gen``, print each ball (save its event, show it on the live page); return the balls printed."""
     from ..stream.engine import preload_estimator, process_stream
 
     executor = None
@@ -287,6 +297,8 @@ def _watch_loop(gen: _Watched, cam: LineScanCamera, radius: float, cfg, name: st
                 # The reader went away (e.g. `| head`): stop quietly.
                 return n
             n += 1
+            if live is not None:
+                live.hub.ball(res)
             if events is not None:
                 k = per_event.get(res.event_index, 0)
                 per_event[res.event_index] = k + 1
@@ -295,10 +307,25 @@ def _watch_loop(gen: _Watched, cam: LineScanCamera, radius: float, cfg, name: st
     except KeyboardInterrupt:
         gen.interrupted = True
     finally:
+        if live is not None:
+            live.end(sys.exc_info()[1] or (KeyboardInterrupt() if gen.interrupted else None))
         gen.status.close(n)
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
     return n
+
+
+def _start_live(address: str, camera: LineScanCamera, src, name: str):
+    """The live view of a watch (``--serve``), serving before the first line is read."""
+    from ..live.server import LiveWatch
+
+    try:
+        live = LiveWatch(camera, address, dropped_lines=lambda: getattr(src, "dropped_lines", 0), title=f"ballscan watch {name}")
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc).removeprefix("--serve: "), param_hint="--serve") from None
+    url = live.start()
+    print(f"ballscan watch: live view at {url}", file=sys.stderr, flush=True)
+    return live
 
 
 def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str = "m/s") -> str:
