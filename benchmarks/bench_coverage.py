@@ -88,9 +88,9 @@ def run_one(k: int, seed: int) -> dict:
     V = np.asarray(truth.velocity_mps)
     out = dict(k=k, texture=texture, shading=scene.shading, lines=float(visible_line_count(scene.camera, truth)), vz_share=abs(V[2]) / np.linalg.norm(V),
                z=np.full(3, np.nan), flags="no_detection" if ball is None else ";".join(ball.flags))
-    if ball is None or ball.speed_mps is None or ball.speed_sigma_mps is None:
+    der = ball.derived(scene.camera) if ball is not None else None
+    if der is None or ball.speed_mps is None or ball.speed_sigma_mps is None:
         return out
-    der = ball.derived(scene.camera)
     true_dir = np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])])
     est = np.r_[ball.speed_mps, der.direction_deg]
     sig = np.r_[ball.speed_sigma_mps, der.direction_sigma_deg]
