@@ -156,15 +156,15 @@ class PrecisionBound:
         v = np.asarray(m.velocity_mps)
         rows.append(("psi_y", "deg", math.degrees(math.atan2(v[1], v[0])), self.direction_sigma_deg[0]))
         rows.append(("psi_z", "deg", math.degrees(math.atan2(v[2], v[0])), self.direction_sigma_deg[1]))
+        q = self.speed_abs_error_quartiles_mps
         lines = [
-            f"Cramér–Rao bound ({self.method}; {self.noise}; {self.n_measurements} measurements)",
+            f"Cramér–Rao bound ({self.method}; {self.noise}; {self.n_measurements} measurements; "
+            f"an efficient estimate's |speed error|: median {q[1]:.3e} m/s, quartiles {q[0]:.3e}-{q[2]:.3e} m/s)",
             f"{'quantity':<9} {'unit':<5} {'value':>14} {'1-sigma':>12} {'relative':>10}",
         ]
         for name, unit, val, sig in rows:
             rel = f"{abs(sig / val):10.2e}" if val != 0 and np.isfinite(sig) else f"{'-':>10}"
             lines.append(f"{name:<9} {unit:<5} {val:14.6g} {sig:12.3e} {rel}")
-        q = self.speed_abs_error_quartiles_mps
-        lines.append(f"|speed error| of an efficient estimate: median {q[1]:.3e} m/s, quartiles {q[0]:.3e}-{q[2]:.3e} m/s")
         return "\n".join(lines)
 
 
