@@ -99,134 +99,76 @@ def test_quick_fit_beats_initial_guess_everywhere(quick):
         pytest.fail("fit not better than the initial guess at: " + "; ".join(worse))
 
 
-# Known shortfall of the fit (reported, not hidden).  With the two-pass fit
-# of commit d88b6a6 (runs/fig5-quick-s2) the fit's median |error| was 2.2x-3.8x
-# the bound at six of the eight points.  Since the end lines' areas are
-# levelled by the shading model (session 3) it is 1.8x-5.0x at six points
-# (1.80x at R = 0.11 m, 1.87x at 5 800 lines/s, 2.04x at 60 m/s, 2.74x at
-# 4.7 m/s, 2.84x at 60 deg, 4.96x at 140 000 lines/s; 8 trials per point,
-# so the medians scatter by tens of per cent) and within it at two (0.85x at
-# the base direction, 0.30x at R = 0.02 m).  Since the renderer samples the
-# balls' first and last lines finely (session 4: their coverage was up to
-# 0.066 px off the continuous exposure) and the limb texture test has a
-# tolerance, 1.6x-4.1x at six points.  Since the shading pass measures the
-# windows with whole pixels' exact coverage (session 4: on noise-free
-# renders V.x had been 2e-5 low, the size of the bound at 140 000 lines/s)
-# 1.8x-5.6x at four points (1.78x at 60 deg, 3.62x at 140 000 lines/s,
-# 4.38x at 4.7 m/s, 5.56x at R = 0.11 m, where every trial moved by
-# +0.002 %: the removed bias had offset part of the noisy images' error) and
-# within the bound's 1.5x at the other four (1.48x at 5 800 lines/s, 1.44x
-# at 60 m/s, 0.67x at 0 deg, 0.30x at R = 0.02 m).  Since the lines of the
-# ball's partial exposure are levelled when they agree with the rest
-# (session 5, FitSettings.area_partial_check): 1.5x-4.1x at four points
-# (1.52x at 60 deg, 2.43x at 4.7 m/s, 2.48x at 140 000 lines/s, 4.05x at
-# R = 0.11 m) and 0.15x-0.98x at the others (0.69x at 5 800 lines/s, 0.41x
-# at 60 m/s, 0.98x at 0 deg, 0.15x at R = 0.02 m).  Since the bound is that
-# of the scene's sensor model (session 6, precision.sensor_crlb: each
-# pixel's own shot noise, and the columns' gains, PRNU 0.8 %, unknown; the
-# bound moves by -4 % to +3.5 %), 2.4x-4.1x at three points (2.44x at
-# 4.7 m/s, 2.49x at 140 000 lines/s, 4.07x at R = 0.11 m) and 0.15x-1.48x at
-# the others (1.48x at 60 deg, where the bound widened by 3.5 %).  PRNU
-# costs the bound under 4 % but the fit about 2x at 4.7 m/s (with the
-# columns' true gains divided out of the image: 2.4x -> 1.8x over 24
-# trials): the estimator's loss, not the bound's.  The matched edges of
-# session 6 (edges.matched_edges) took 140 000 lines/s to 1.18x and 4.7 m/s
-# to 2.04x here, but they are used only on a flat-fielded sensor (this
-# scene's PRNU 0.8 % left their position sigmas 2x too small), so these
-# numbers are the window edges' again.  Session 7, measured on the three
-# points (8 trials each): at R = 0.11 m the bound's relative sigma is 6e-6
-# and the renderer's default sampling (4 x 8 per edge pixel) is half of the
-# fit's error: rendered with 16 x 64, 4.07x -> 1.86x; at 4.7 m/s and
-# 140 000 lines/s 16 x 64 and 32 x 256 change nothing (2.4x-3.1x), and at
-# R = 0.11 m neither PRNU 0 (1.4e-5 median error against 1.7e-5) nor a
-# 16-bit sensor does: the loss there is the window edges' on ~500 lines.
-# Session 8: the matched edges (and the spread lines' pixels) on PRNU
-# sensors too, measured on the crop with the ball's measured column gains
-# divided out (pipeline.estimate: balls of >= 64 measured
-# columns), the background of its columns measured away from it (the
-# detector's level there was 0.1 noise sigma high at R = 0.11 m, in
-# proportion to the noise: +1.1e-5 on the speed, 1.8 sigma of the bound)
-# and each matched edge's sigma carrying the gain error that remains
-# (flatfield's gain_sigma, the smooth trend's share included); and the
-# shading fit no longer keeps a light that does not lower the interior's
-# robust scale by 1 % (flat balls had 19-117 DN of light "behind" the
-# ball and were refused as not uniform, falling back to the windows) nor
-# takes lines the ball only partly crossed for plateau lines on long balls
-# (shading._level_margin).  Then 1.56x at 140 000 lines/s, 1.70x at
-# R = 0.11 m, within 1.5x at the other six (0.12x R = 0.02 m, 0.70x
-# 4.7 m/s, 0.26x 60 m/s, 0.47x 0 deg, 1.31x 60 deg, 0.48x 5 800 lines/s).
-# Merged with the flat-fielded path only on balls of >= 250 lines with both
-# edges (Recipe.long_ball_min_lines: on the stream bench's 109-line
-# balls its speed sigma was 1.45x small) and the fit's exact Jacobians:
-# 1.7x at both (0.000705 % vs 0.00041 %, 0.00272 % vs 0.00157 %).
-# Session 9, measured on 32 seeds of each point (the test's 8 first):
-# each pixel's shot-noise sigma had followed its own noisy value, which
-# gave the pixels reading high less weight (_edge_kernels.shot_noise):
-# mean speed error +0.36 -> +0.13 sigma of the bound at R = 0.11 m,
-# +0.57 -> +0.48 at 140 000 lines/s (paired shifts -0.23 +- 0.015 and
-# -0.08 +- 0.006).  Ratios here 1.72x -> 1.54x at R = 0.11 m, 1.73x ->
-# 1.74x at 140 000 lines/s; the others 0.12x (R = 0.02 m), 0.69x
-# (4.7 m/s), 0.44x (60 m/s), 1.01x (0 deg), 1.37x (60 deg), 0.40x
-# (5 800 lines/s) (were 0.12, 0.68, 0.40, 1.08, 1.32, 0.38).  Not the
-# cause: the speed-norm correction (R = 0.11 m: 0.02 sigma; at 140 000
-# lines/s its positive part leaves +0.26 sigma at vz = 0, but that is the
-# lowest-RMSE and lowest-median choice of raw / positive part / unbiased
-# and the bound's sigma is that estimator's RMS), the bound (its V.x sigma
-# within 1-3 % of a brute-force Fisher information from finely sampled
-# renders), the gains (the true ones: RMSE 1.27x -> 1.18x at R = 0.11 m,
-# none at 140 000 lines/s), the background (the true one: no change),
-# the shading level's 800 pixels, one brightness for both ends.
-# What remains: V.x scatters 1.28x (R = 0.11 m) and 1.34x (140 000
-# lines/s) its bound (speed RMSE 1.27x and 1.16x, 32 seeds; medians over
-# 32 seeds 1.53x and 1.35x), with no significant bias left beyond the
-# norm correction's (+0.13 +- 0.23, +0.48 +- 0.19), and these 8 seeds
-# fall high (the 32 seeds' medians of the other 24 are lower).
-# Session 10 (benchmarks/bench_efficiency.py, benchmarks/efficiency/):
-# the spread-pixel fit's model took 8 Gauss-Legendre nodes per piece of the
-# exposure, a staircase in the parameters (a pixel's coverage kinks where a
-# node's chord end crosses a pixel border): from 8 to 32 nodes V.x moved
-# by 0.53 / 0.31 / 0.33 sigma of the bound RMS at R = 0.11 m / 4.7 m/s /
-# 140 000 lines/s (32 seeds), from 32 to 64 by 0.07-0.10.  Now 32.  Against
-# the linearised efficient estimator on each trial's own noise draw (128
-# seeds) the fit's excess variance went 0.47 -> 0.27 / 0.65 -> 0.58 /
-# 0.55 -> 0.44 sigma^2, what is left being its information (its own V.x
-# sigma 1.10x / 1.15x the bound at R = 0.11 m / 140 000 lines/s: a free
-# brightness per end fitted on the windows' pixels costs 4-7 %) and the
-# renderer's 4 x 8 sampling (V.x +0.28 / +0.38 sigma against 16 x 64 on
-# the same noise).  The detector split the 140 000 lines/s ball at a ragged
-# widest column in 2 of 128 renders (V.x 6 and 43 sigma off; fixed, none
-# of the test's 8).  Here, same trials: 1.62x at R = 0.11 m (1.54x),
-# 1.98x at 140 000 lines/s (1.74x), 0.92x at 4.7 m/s (0.69x), the others
-# unchanged (0.12x, 0.44x, 1.01x, 1.37x, 0.40x); over 32 seeds R = 0.11 m's
-# V.x RMSE 1.27x -> 1.14x, its median 1.53x -> 1.26x, 140 000 lines/s
-# 1.35x -> 1.31x, 4.7 m/s 1.07x -> 1.28x (128 seeds: 1.32x -> 1.19x,
-# 1.10x -> 1.17x, 0.99x -> 1.14x).  An 8-trial median is a coarse
-# statistic: an efficient estimator's exceeds 1.5x with probability 0.12,
-# one at 1.15x / 1.3x the bound with 0.23 / 0.35.
-# Then the spread lines' pixel windows reach 20 px beyond half the edge
-# spread, not 3 (Recipe.spread_fit: each end's free brightness is
-# measured on the ball's interior, not on the ramps' inner pixels; fit
-# minus the efficient estimator, 128 seeds: mean +0.19 / +0.51 / +0.51 ->
-# +0.14 / +0.19 / +0.21 sigma, RMS 0.55 / 0.91 / 0.83 -> 0.46 / 0.62 /
-# 0.67; V.x RMSE 1.27x / 1.45x / 1.31x -> 1.18x / 1.27x / 1.20x the bound
-# at R = 0.11 m / 4.7 m/s / 140 000 lines/s, speed medians 1.19x / 1.14x /
-# 1.17x -> 1.21x / 1.07x / 0.88x).  Passes: here 1.21x at R = 0.11 m,
-# 1.25x at 140 000 lines/s, 0.78x at 4.7 m/s, the others unchanged (0.12x
-# R = 0.02 m, 0.44x 60 m/s, 1.01x 0 deg, 1.37x 60 deg, 0.40x 5 800
-# lines/s); the 32 seeds' medians 1.33x, 1.16x, 0.89x (1.53x, 1.35x, 1.07x
-# before session 10).
+# The bound's curve is the median |relative speed error| of an efficient
+# estimate's bias-corrected speed (BoundRow.median_abs_rel), the statistic
+# plotted for the methods.  Where the depth velocity is the weak axis that
+# median is far below 0.6745 x the speed's RMS bound (0.14x at R = 0.02 m),
+# which is what the curve had shown, and the fit had looked 8x better than
+# any unbiased estimator can be.  Measured on these 8 trials per point
+# (untextured fit over the bound's median): 0.89x at R = 0.02 m, 1.21x at
+# R = 0.11 m, 0.94x at 4.7 m/s, 1.36x at 60 m/s, 1.69x at 0 deg, 1.37x at
+# 60 deg, 1.69x at 5 800 lines/s, 1.52x at 140 000 lines/s; 27 of the 64
+# trials under the bound's median.  An 8-trial median scatters by about
+# 40 % (1 sigma) about its expectation.
 @pytest.mark.slow
-def test_quick_fit_within_1p5_of_cramer_rao(quick):
-    # Margin 1.5x the median |error| of an efficient unbiased estimator
-    # (0.6745 sigma_CRLB), untextured flat ball.
+def test_quick_fit_is_not_below_the_cramer_rao_bound(quick):
+    # An efficient unbiased estimate puts each trial under the bound's median
+    # with probability 1/2: over the 64 untextured trials 0.5 +- 0.0625
+    # (1 sigma).  Margin: at most 0.69 (3 sigma) may fall under it.
+    below = n = 0
+    for f, v in _points(quick):
+        med = quick.bound(f, v).median_abs_rel
+        errs = [r.abs_rel_error for r in quick.rows if (r.factor, r.value, r.texture, r.method) == (f, float(v), "none", "fit")]
+        below += sum(e < med for e in errs)
+        n += len(errs)
+    assert n == 64 and below / n <= 0.69, f"{below} of {n} trials under the bound's median"
+
+
+@pytest.mark.slow
+def test_quick_fit_within_2x_of_cramer_rao(quick):
+    # Margin: the fit's median |error| within 2x the bound's median at every
+    # point (measured 0.89x-1.69x, see above).
     far = []
     for f, v in _points(quick):
         fit = _median(quick, f, v, "fit")
         bound = quick.bound(f, v).median_abs_rel
-        if not fit <= 1.5 * bound:
+        if not fit <= 2.0 * bound:
             far.append(f"{f}={v:g}: fit {100 * fit:.3g} % vs CRLB {100 * bound:.3g} % ({fit / bound:.1f}x)")
     if far:
-        pytest.fail("fit above 1.5x the Cramér–Rao bound at: " + "; ".join(far))
+        pytest.fail("fit above 2x the Cramér–Rao bound at: " + "; ".join(far))
+
+
+
+def test_bound_row_is_the_efficient_estimates_median():
+    # At the quick sweep's R = 0.02 m the speed's error is one-sided and
+    # heavy-tailed (V.z the weak axis): the median an efficient estimate
+    # reaches is 0.14x of 0.6745 x its RMS, and the bound's row states that median.
+    from ballscan.solve.precision import sensor_crlb
+
+    sc = ex.fig5_quick_config().scene.with_factor("radius_m", 0.02)
+    row = ex.run_bound(ex.BoundSpec("radius_m", 0.02, sc))
+    m = ex.scene_geometry(sc, 0.0).motion
+    b = sensor_crlb(sc.camera, m, sc.noise, sc.ball_level, sc.background_level)
+    assert row.median_abs_rel == pytest.approx(b.speed_median_abs_error_mps / m.speed_mps, rel=1e-12)
+    assert row.rel_sigma == pytest.approx(b.speed_sigma_mps / m.speed_mps, rel=1e-12)
+    assert row.q25_abs_rel < row.median_abs_rel < row.q75_abs_rel
+    assert row.median_abs_rel < 0.3 * ex.MEDIAN_ABS_NORMAL * row.rel_sigma
+    # where every velocity component is well determined (R = 0.11 m) the two agree
+    big = ex.run_bound(ex.BoundSpec("radius_m", 0.11, sc.with_factor("radius_m", 0.11)))
+    assert big.median_abs_rel == pytest.approx(ex.MEDIAN_ABS_NORMAL * big.rel_sigma, rel=0.05)
+
+
+def test_plot_draws_the_bound_at_its_median(tmp_path):
+    cfg = ex.replace_trials(_tiny(trials=1), 1)
+    from dataclasses import replace
+
+    res = _run(replace(cfg, bound=True), tmp_path, jobs=1)
+    fig = ex.plot_sweeps(res)
+    ax = fig.axes[0]
+    (line,) = [ln for ln in ax.get_lines() if ln.get_label().startswith("Cramér–Rao")]
+    assert np.allclose(line.get_ydata(), [res.bound("speed_mps", v).median_abs_rel for v in (12.0, 23.0)])
+    md = (tmp_path / "summary.md").read_text()
+    assert "median |error| of an efficient estimate" in md
 
 
 # --------------------------------------------------------------------------- determinism and scaling

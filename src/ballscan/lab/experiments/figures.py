@@ -142,7 +142,9 @@ def plot_sweeps(res: ExperimentResult, path: str | Path | None = None, axes=None
 
     One column per sweep, one row per texture; one line per method (median
     ``|relative error|`` over the trials, error bars the inter-quartile
-    range) and the Cramér–Rao curve (dashed).
+    range) and the Cramér–Rao curve (dashed): the median ``|relative
+    error|`` of an efficient estimate's bias-corrected speed, its
+    inter-quartile range shaded (:class:`~ballscan.lab.experiments.trials.BoundRow`).
 
     Parameters
     ----------
@@ -192,8 +194,11 @@ def plot_sweeps(res: ExperimentResult, path: str | Path | None = None, axes=None
                         ax.annotate(f"{m}: {s.n_failed}/{s.n} failed", (x, y), xycoords=("data", "axes fraction"), fontsize=6,
                                     color=_COLOURS[m], ha="left", va="top")
             if cfg.bound:
-                yb = np.array([bmap[(sw.factor, float(x))].median_abs_rel if (sw.factor, float(x)) in bmap else np.nan for x in xs])
-                ax.plot(xs, yb, "k--", lw=1.0, label="Cramér–Rao (0.67 sigma)")
+                bs = [bmap.get((sw.factor, float(x))) for x in xs]
+                yb, b25, b75 = (np.array([getattr(b, k) if b is not None else np.nan for b in bs]) for k in ("median_abs_rel", "q25_abs_rel", "q75_abs_rel"))
+                # the same statistics as the methods': an efficient estimate's median and quartiles
+                ax.fill_between(xs, b25, b75, color="0.5", alpha=0.15, lw=0)
+                ax.plot(xs, yb, "k--", lw=1.0, label="Cramér–Rao: efficient fit's median (band: quartiles)")
             ax.set_yscale("log")
             if FACTORS[sw.factor].log_axis:
                 ax.set_xscale("log")

@@ -78,8 +78,9 @@ def summary_markdown(res: ExperimentResult, command: str | None = None, quick: b
         "## Median |relative speed error| (%)",
         "",
         "Median over the trials; in brackets the inter-quartile range; `fail` = more than half the trials gave no speed. "
-        "CRLB = 0.6745 x the pixel Cramér–Rao 1-sigma bound (what an efficient unbiased estimator's median |error| would be, "
-        "for the untextured flat ball, under the sensor's read, shot and quantisation noise and its columns' unknown gains).",
+        "CRLB = the median |error| of an efficient estimate of the untextured flat ball's speed (bias-corrected as the fit's) "
+        "with the pixel Cramér–Rao covariance, under the sensor's read, shot and quantisation noise and its columns' unknown gains; "
+        "in brackets its RMS (the 1-sigma bound), which a weak depth velocity makes far larger than the median.",
         "",
     ]
     head = ["factor", "value", "texture"] + list(cfg.methods) + (["CRLB"] if cfg.bound else []) + ["failed"]
@@ -98,7 +99,7 @@ def summary_markdown(res: ExperimentResult, command: str | None = None, quick: b
                         failed.append(f"{m} {s.n_failed}/{s.n}")
                 if cfg.bound:
                     b = bmap.get((sw.factor, float(val)))
-                    cells.append(_pct(b.median_abs_rel) if b else "-")
+                    cells.append(f"{_pct(b.median_abs_rel)} [{_pct(b.rel_sigma)}]" if b else "-")
                 cells.append(", ".join(failed) or "0")
                 lines.append("| " + " | ".join(cells) + " |")
     lines += ["", "## The paper's trends, checked", ""]
