@@ -30,7 +30,10 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 
-__all__ = ["KeyPoints", "InitialGuess", "find_keypoints", "initial_guess", "half_contrast_edges"]
+__all__ = ["KeyPoints", "InitialGuess", "SilhouetteEllipse", "find_keypoints", "fit_silhouette_ellipse", "initial_guess", "half_contrast_edges"]
+
+#: an edge within this many pixels of the sensor's first or last pixel centre is the cut, not the ball's limb
+_SENSOR_END_PX = 1.5
 
 
 @dataclass(frozen=True)
@@ -55,7 +58,10 @@ class KeyPoints:
     cut : str or None
         ``"first"`` / ``"last"`` when line ``a`` / ``b`` is not seen (the
         ball is cut by the image start/end); the missing key point is then
-        mirrored about the line of widest segment.
+        mirrored about the line of widest segment.  ``"sensor"`` when the
+        ball is cut by an end of the sensor (pixel 0 or W-1): every key
+        point is then taken from the ellipse fitted to the edges it shows
+        (:func:`fit_silhouette_ellipse`), ``c`` or ``d`` beyond the sensor.
     """
 
     line_a: float
@@ -152,6 +158,162 @@ def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
     return c, math.sqrt(var)
 
 
+@dataclass(frozen=True)
+class SilhouetteEllipse:
+    """A ball's image in (line, pixel) as the sheared ellipse of its limb.
+
+    The limb's pixel on line ``t`` is ``u = u0 + a (t - t0) +- r sqrt(1 -
+    ((t - t0) / h)^2)`` (``+`` the larger-``u`` edge): a sphere crossing
+    the viewing plane at ``t0`` with its centre's image moving by ``a``
+    pixels per line and an image radius ``r`` that changes little while it
+    crosses (``vz`` small against the depth) draws this ellipse.
+
+    Attributes
+    ----------
+    line_o : float
+        ``t0``, the centre line (image lines, may be fractional).
+    half_lines : float
+        ``h``, half the lines the ball spans.
+    u_centre_px : float
+        ``u0``, the centre's pixel on line ``t0``.
+    slope_px_per_line : float
+        ``a``.
+    radius_px : float
+        ``r``.
+    rms_px : float
+        RMS of the edges about the ellipse.
+    n_points : int
+        Edges fitted.
+    """
+
+    line_o: float
+    half_lines: float
+    u_centre_px: float
+    slope_px_per_line: float
+    radius_px: float
+    rms_px: float
+    n_points: int
+
+
+def _ellipse_given(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, t0: float, h: float) -> tuple[np.ndarray, float]:
+    """``(u0, a, r)`` by linear least squares at fixed ``t0, h``, and the sum of squared residuals."""
+    tau = lines - t0
+    q = np.sqrt(np.clip(1.0 - (tau / h) ** 2, 0.0, None))
+    A = np.column_stack([np.ones_like(tau), tau, side * q])
+    coef, *_ = np.linalg.lstsq(A, u_px, rcond=None)
+    res = u_px - A @ coef
+    return coef, float(res @ res)
+
+
+def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, line_o: float, half_lines: float) -> SilhouetteEllipse:
+    """Fit :class:`SilhouetteEllipse` to limb points, e.g. the edges of a ball cut by the sensor's end.
+
+    The ellipse is linear in ``u0, a, r`` at fixed ``t0, h``: those are
+    solved by least squares inside a search over ``t0, h`` (a grid around
+    the start, then Nelder-Mead), and the points beyond 4 robust sigmas
+    dropped once (a seam or a neighbour's pixels).
+
+    Parameters
+    ----------
+    lines : ndarray (n,)
+        Image line of each point (may be fractional).
+    u_px : ndarray (n,)
+        Its pixel along the sensor.
+    side : ndarray (n,)
+        +1 for a larger-``u`` (right) edge, -1 for a left edge.
+    line_o, half_lines : float
+        Start of ``t0`` and ``h`` (lines), e.g. the middle and half the span
+        of the lines the ball is seen on.
+
+    Raises
+    ------
+    ValueError
+        Fewer than 6 points, or no ellipse with a positive radius fits them.
+    """
+    from scipy.optimize import minimize  # scipy.optimize loads with the first cut ball
+
+    t = np.asarray(lines, dtype=float)
+    u = np.asarray(u_px, dtype=float)
+    sd = np.asarray(side, dtype=float)
+    if t.size < 6:
+        raise ValueError(f"fit_silhouette_ellipse: {t.size} limb points, at least 6 needed")
+    h0 = max(float(half_lines), 1.0)
+    best = None
+    for keep in range(2):
+        grid = [(line_o + dt * h0, hh * h0) for dt in np.linspace(-0.4, 0.4, 9) for hh in np.linspace(0.8, 2.0, 13)]
+        costs = [_ellipse_given(t, u, sd, a, b)[1] for a, b in grid]
+        x0 = np.array(grid[int(np.argmin(costs))])
+
+        def cost(x: np.ndarray) -> float:
+            return _ellipse_given(t, u, sd, float(x[0]), max(float(x[1]), 0.5))[1]
+
+        found = minimize(cost, x0, method="Nelder-Mead", options={"xatol": 1e-3, "fatol": 1e-9, "maxiter": 400})
+        t0, h = float(found.x[0]), max(float(found.x[1]), 0.5)
+        coef, _ = _ellipse_given(t, u, sd, t0, h)
+        tau = t - t0
+        res = u - (coef[0] + coef[1] * tau + sd * coef[2] * np.sqrt(np.clip(1.0 - (tau / h) ** 2, 0.0, None)))
+        best = (t0, h, coef, res)
+        mad = 1.4826 * float(np.median(np.abs(res - np.median(res))))
+        ok = np.abs(res) <= 4.0 * max(mad, 0.05)
+        if keep or ok.all() or ok.sum() < 6:
+            break
+        t, u, sd = t[ok], u[ok], sd[ok]
+    t0, h, coef, res = best
+    if not coef[2] > 0:
+        raise ValueError("fit_silhouette_ellipse: the limb points fit no ellipse of positive radius")
+    return SilhouetteEllipse(t0, h, float(coef[0]), float(coef[1]), float(coef[2]), float(np.sqrt(np.mean(res**2))), int(t.size))
+
+
+def _line_time(t: np.ndarray, line: float) -> float:
+    """Time of a (fractional) image line: per-line timestamps interpolated, or extrapolated with the mean line period."""
+    if 0 <= line <= t.size - 1:
+        return float(np.interp(line, np.arange(t.size), t))
+    period = (t[-1] - t[0]) / max(t.size - 1, 1)
+    return float(t[0] + line * period) if line < 0 else float(t[-1] + (line - t.size + 1) * period)
+
+
+def _sensor_cut_keypoints(
+    box: np.ndarray, rows: np.ndarray, line_offset: int, col_offset: int, t: np.ndarray, sensor_width_px: int
+) -> KeyPoints:
+    """Key points of a ball cut by an end of the sensor, from the ellipse through the edges it shows.
+
+    Each line's half-contrast edges (:func:`half_contrast_edges`) that lie
+    more than ``_SENSOR_END_PX`` inside the sensor's first and last pixels
+    are limb points; :func:`fit_silhouette_ellipse` draws the ball through
+    them, and the key points are the ellipse's: ``a``, ``b`` its first and
+    last lines (``t0 -+ h``) at the centre's pixel there, ``o`` its centre
+    line, ``c``, ``d`` its tips ``u0 +- r`` (one of them beyond the sensor).
+    """
+    pts_t, pts_u, pts_s = [], [], []
+    lo, hi = _SENSOR_END_PX, sensor_width_px - 1 - _SENSOR_END_PX
+    for r in range(int(rows[0]), int(rows[-1]) + 1):
+        for u, side in zip(half_contrast_edges(box[r]), (-1.0, 1.0)):
+            u_abs = u + col_offset
+            if math.isfinite(u_abs) and lo < u_abs < hi:
+                pts_t.append(r + line_offset)
+                pts_u.append(u_abs)
+                pts_s.append(side)
+    mid = 0.5 * (rows[0] + rows[-1]) + line_offset
+    half = 0.5 * (rows[-1] - rows[0]) + 0.5
+    e = fit_silhouette_ellipse(np.array(pts_t), np.array(pts_u), np.array(pts_s), mid, half)
+    line_a, line_b = e.line_o - e.half_lines, e.line_o + e.half_lines
+    sigma = math.hypot(e.rms_px, 0.05)
+    return KeyPoints(
+        line_a=line_a,
+        line_b=line_b,
+        u_a=e.u_centre_px - e.slope_px_per_line * e.half_lines,
+        u_b=e.u_centre_px + e.slope_px_per_line * e.half_lines,
+        u_a_sigma_px=sigma,
+        u_b_sigma_px=sigma,
+        line_o=e.line_o,
+        u_c=e.u_centre_px + e.radius_px,
+        u_d=e.u_centre_px - e.radius_px,
+        t_a_s=_line_time(t, line_a),
+        t_b_s=_line_time(t, line_b),
+        cut="sensor",
+    )
+
+
 def find_keypoints(
     box: np.ndarray,
     box_sigma: np.ndarray,
@@ -161,6 +323,7 @@ def find_keypoints(
     t_lines_s: np.ndarray,
     cut_first: bool = False,
     cut_last: bool = False,
+    sensor_width_px: int | None = None,
 ) -> KeyPoints:
     """Pick the paper's key points a, b, o, c, d from one ball's image.
 
@@ -179,10 +342,18 @@ def find_keypoints(
         Time of every line of the whole image, seconds.
     cut_first, cut_last : bool
         The ball is already / still present at the image's first / last line.
+    sensor_width_px : int, optional
+        The sensor's width W, given when the ball touches its pixel 0 or
+        W-1 (flag ``cut_sensor_end``): the key points are then those of the
+        ellipse through the edges away from the sensor's ends
+        (:func:`fit_silhouette_ellipse`), which also spans lines cut by the
+        image's first or last line.
     """
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
+    if sensor_width_px is not None:
+        return _sensor_cut_keypoints(box, rows, line_offset, col_offset, np.asarray(t_lines_s, dtype=float), int(sensor_width_px))
     # one row of sigmas serves every line as it is (np.broadcast_to costs more than a line's centroid)
     box_sigma = np.asarray(box_sigma)
     sig = box_sigma if box_sigma.shape in (box.shape, box.shape[1:]) else np.broadcast_to(box_sigma, box.shape)
@@ -238,12 +409,7 @@ def find_keypoints(
     t = np.asarray(t_lines_s, dtype=float)
 
     def time_of(line: float) -> float:
-        # per-line timestamps are interpolated (or extrapolated with the line period)
-        x = line + line_offset
-        if 0 <= x <= t.size - 1:
-            return float(np.interp(x, np.arange(t.size), t))
-        period = (t[-1] - t[0]) / max(t.size - 1, 1)
-        return float(t[0] + x * period) if x < 0 else float(t[-1] + (x - t.size + 1) * period)
+        return _line_time(t, line + line_offset)
 
     if cut == "first":
         u_a = u_b  # unseen: assumes no sensor-direction motion (flagged by the caller)
@@ -368,7 +534,9 @@ def initial_guess(
     # of z2 - z1 is checked too, with the tip error floored at
     # ``tip_sigma_px`` (shaded limbs and seams bias half-contrast tips by
     # tenths of a pixel).
-    degenerate = kp.cut is not None or abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
+    # (a ball cut by the first or last line has only one of a and b; the
+    # sensor-cut ball's are its fitted ellipse's)
+    degenerate = kp.cut in ("first", "last") or abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
     dz_sigma = _depth_motion_sigma(kp, camera, radius_m, tip_sigma_px)
     depth_fallback = not degenerate and not dz_sigma < max_depth_ratio * 2.0 * radius_m
     if degenerate:

@@ -102,6 +102,8 @@ class Selection:
         Free brightnesses of the pixels, nuisance parameters (derived).
     n_edge_lines : int
         Lines with both edges, as edges or as the pixels of their windows (derived).
+    n_single_edge_lines : int
+        Lines with one edge only (a ball cut by the sensor's end), derived.
     """
 
     use_left: np.ndarray
@@ -121,6 +123,12 @@ class Selection:
     n_residuals: int = field(init=False)
     n_groups: int = field(init=False)
     n_edge_lines: int = field(init=False)
+    n_single_edge_lines: int = field(init=False)
+
+    @property
+    def n_line_pairs(self) -> int:
+        """Lines with both edges plus half those with one: the edge count in lines' worth."""
+        return self.n_edge_lines + self.n_single_edge_lines // 2
 
     def __post_init__(self) -> None:
         # the counts, once (the fit reads them several times per round)
@@ -135,6 +143,7 @@ class Selection:
         put(self, "n_residuals", n_l + n_r + n_a + n_p)
         put(self, "n_groups", 0 if px is None else px.n_groups)
         put(self, "n_edge_lines", int((self.use_left & self.use_right).sum()) + (0 if px is None else px.n_spread))
+        put(self, "n_single_edge_lines", int((self.use_left ^ self.use_right).sum()))
 
 
 @dataclass(frozen=True)
