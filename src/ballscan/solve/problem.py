@@ -55,6 +55,7 @@ __all__ = [
     "ResidualBlock",
     "Selection",
     "WeightTables",
+    "beyond_sensor",
     "pixel_windows",
     "select_lines_of",
     "weight_tables",
@@ -301,6 +302,18 @@ def select_lines_of(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettin
     )
 
 
+def beyond_sensor(me: ModelEdges, width_px: int, margin_px: float = 1.0) -> np.ndarray:
+    """Lines whose modelled segment reaches past the sensor's first or last pixel (arrays (N,) of ``me``).
+
+    Such a line's summed coverage shows only the part on the sensor (a ball
+    cut by the sensor's end), so its area cannot enter the fit; ``margin_px``
+    beyond half the edges' spread keeps the partly covered end pixel out too.
+    """
+    half = 0.5 * _nan_to_zero(me.spread_px) + margin_px
+    with np.errstate(invalid="ignore"):
+        return (me.presence > 0) & ((me.left_px - half < 0.0) | (me.right_px + half > width_px - 1.0))
+
+
 def _weighted(T: WeightTables, use_l, use_r, use_a, wide_l, wide_r, loose_a, pixels) -> Selection:
     """The selection of the masks with its measurements and 1-sigma from the tables.
 
@@ -505,6 +518,7 @@ class BlockState:
         me = ModelEdges(me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0])
         ul, ur, ua, wl, wr = select_lines_of(edges, me, s)
         ul, ur = ul & ~self.rejected_left, ur & ~self.rejected_right
+        ua = ua & ~beyond_sensor(me, self.block.camera.width)
         pix = None
         if s.pixels and edges.profile is not None:
             # the ends seen during the whole exposure: their pixels instead of
@@ -721,6 +735,7 @@ def whitened_jacobian(
     scale = param_scale(camera, motion)
     me, dl, dr, da = model_jacobian(camera, theta, motion.radius_m, edges.t_s, scale, motion.acceleration_mps2, n_nodes=settings.n_nodes)
     use_l, use_r, use_a, wide_l, wide_r = select_lines_of(edges, me, settings)
+    use_a = use_a & ~beyond_sensor(me, camera.width)
     sel = _weighted(weight_tables(edges, settings), use_l, use_r, use_a, wide_l, wide_r, None, None)
     sl, sr, sa = sel.sigma_left, sel.sigma_right, sel.sigma_area
     J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])
