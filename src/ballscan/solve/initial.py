@@ -56,12 +56,12 @@ class KeyPoints:
     t_a_s, t_b_s : float
         Times of lines ``a`` and ``b``.
     cut : str or None
-        ``"first"`` / ``"last"`` when line ``a`` / ``b`` is not seen (the
-        ball is cut by the image start/end); the missing key point is then
-        mirrored about the line of widest segment.  ``"sensor"`` when the
-        ball is cut by an end of the sensor (pixel 0 or W-1): every key
-        point is then taken from the ellipse fitted to the edges it shows
-        (:func:`fit_silhouette_ellipse`), ``c`` or ``d`` beyond the sensor.
+        What cut the ball, where it is cut: ``"first"`` / ``"last"`` (the
+        image's first / last line: line ``a`` / ``b`` is not seen) or
+        ``"sensor"`` (an end of the sensor, pixel 0 or W-1, maybe an image
+        end too: ``c`` or ``d`` is not seen).  Every key point is then the
+        ellipse's fitted to the edges the ball shows
+        (:func:`fit_silhouette_ellipse`, :func:`_ellipse_keypoints`).
     """
 
     line_a: float
@@ -87,7 +87,7 @@ class InitialGuess:
     duration_s: float  #: T of Eq. (7)
     gamma_rad: float
     phi_rad: float
-    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty (or a or b unseen)
+    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty
     depth_fallback: bool = False  #: Eq. (5)-(6) ill-conditioned for the depth motion: V.z held at 0
     depth_motion_sigma_m: float = math.nan  #: propagated 1-sigma of z2 - z1 from Eq. (5)-(6)
 
@@ -205,12 +205,33 @@ def _ellipse_given(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, t0: fl
     return coef, float(res @ res)
 
 
-def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, line_o: float, half_lines: float) -> SilhouetteEllipse:
-    """Fit :class:`SilhouetteEllipse` to limb points, e.g. the edges of a ball cut by the sensor's end.
+def ellipse_starts(first_line: float, last_line: float, cut_first: bool = False, cut_last: bool = False) -> np.ndarray:
+    """Candidate ``(t0, h)`` of :class:`SilhouetteEllipse` for a ball seen from ``first_line`` to ``last_line`` (image lines).
+
+    Both ends seen: ``t0`` within 40 % of the half span of the middle, ``h``
+    0.8-2 half spans (the ends may lie beyond the sensor).  One end cut by
+    the image's first (last) line: the other end is seen, half a line past
+    the last (before the first) line seen, and the ball may be up to five
+    times longer than what the image shows of it.
+    """
+    span = max(last_line - first_line, 1.0)
+    if cut_first and cut_last:
+        raise ValueError("ellipse_starts: the ball is cut at both the first and the last line")
+    if cut_first or cut_last:
+        h = np.linspace(0.5, 5.0, 46) * span
+        t0 = last_line + 0.5 - h if cut_first else first_line - 0.5 + h
+        return np.column_stack([t0, h])
+    half = 0.5 * span + 0.5
+    mid = 0.5 * (first_line + last_line)
+    return np.array([(mid + dt * half, hh * half) for dt in np.linspace(-0.4, 0.4, 9) for hh in np.linspace(0.8, 2.0, 13)])
+
+
+def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, starts: np.ndarray) -> SilhouetteEllipse:
+    """Fit :class:`SilhouetteEllipse` to limb points, e.g. the edges of a ball cut by the sensor's end or an image end.
 
     The ellipse is linear in ``u0, a, r`` at fixed ``t0, h``: those are
-    solved by least squares inside a search over ``t0, h`` (a grid around
-    the start, then Nelder-Mead), and the points beyond 4 robust sigmas
+    solved by least squares inside a search over ``t0, h`` (the best of
+    ``starts``, then Nelder-Mead), and the points beyond 4 robust sigmas
     dropped once (a seam or a neighbour's pixels).
 
     Parameters
@@ -221,9 +242,8 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
         Its pixel along the sensor.
     side : ndarray (n,)
         +1 for a larger-``u`` (right) edge, -1 for a left edge.
-    line_o, half_lines : float
-        Start of ``t0`` and ``h`` (lines), e.g. the middle and half the span
-        of the lines the ball is seen on.
+    starts : ndarray (k, 2)
+        Candidate ``(t0, h)``, lines (:func:`ellipse_starts`).
 
     Raises
     ------
@@ -237,12 +257,10 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
     sd = np.asarray(side, dtype=float)
     if t.size < 6:
         raise ValueError(f"fit_silhouette_ellipse: {t.size} limb points, at least 6 needed")
-    h0 = max(float(half_lines), 1.0)
     best = None
     for keep in range(2):
-        grid = [(line_o + dt * h0, hh * h0) for dt in np.linspace(-0.4, 0.4, 9) for hh in np.linspace(0.8, 2.0, 13)]
-        costs = [_ellipse_given(t, u, sd, a, b)[1] for a, b in grid]
-        x0 = np.array(grid[int(np.argmin(costs))])
+        costs = [_ellipse_given(t, u, sd, float(a), max(float(b), 0.5))[1] for a, b in starts]
+        x0 = np.asarray(starts[int(np.argmin(costs))], dtype=float)
 
         def cost(x: np.ndarray) -> float:
             return _ellipse_given(t, u, sd, float(x[0]), max(float(x[1]), 0.5))[1]
@@ -272,20 +290,23 @@ def _line_time(t: np.ndarray, line: float) -> float:
     return float(t[0] + line * period) if line < 0 else float(t[-1] + (line - t.size + 1) * period)
 
 
-def _sensor_cut_keypoints(
-    box: np.ndarray, rows: np.ndarray, line_offset: int, col_offset: int, t: np.ndarray, sensor_width_px: int
+def _ellipse_keypoints(
+    box: np.ndarray, rows: np.ndarray, line_offset: int, col_offset: int, t: np.ndarray, sensor_width_px: int | None,
+    cut_first: bool, cut_last: bool,
 ) -> KeyPoints:
-    """Key points of a ball cut by an end of the sensor, from the ellipse through the edges it shows.
+    """Key points of a cut ball, from the ellipse through the edges it shows.
 
-    Each line's half-contrast edges (:func:`half_contrast_edges`) that lie
-    more than ``_SENSOR_END_PX`` inside the sensor's first and last pixels
-    are limb points; :func:`fit_silhouette_ellipse` draws the ball through
-    them, and the key points are the ellipse's: ``a``, ``b`` its first and
-    last lines (``t0 -+ h``) at the centre's pixel there, ``o`` its centre
-    line, ``c``, ``d`` its tips ``u0 +- r`` (one of them beyond the sensor).
+    Each line's half-contrast edges (:func:`half_contrast_edges`), less
+    those within ``_SENSOR_END_PX`` of the sensor's first or last pixel
+    (given ``sensor_width_px``), are limb points;
+    :func:`fit_silhouette_ellipse` draws the ball through them, and the key
+    points are the ellipse's: ``a``, ``b`` its first and last lines (``t0
+    -+ h``, one beyond the image where it is cut by an image end) at the
+    centre's pixel there, ``o`` its centre line, ``c``, ``d`` its tips ``u0
+    +- r`` (one beyond the sensor where it is cut by a sensor end).
     """
     pts_t, pts_u, pts_s = [], [], []
-    lo, hi = _SENSOR_END_PX, sensor_width_px - 1 - _SENSOR_END_PX
+    lo, hi = (_SENSOR_END_PX, sensor_width_px - 1 - _SENSOR_END_PX) if sensor_width_px is not None else (-math.inf, math.inf)
     for r in range(int(rows[0]), int(rows[-1]) + 1):
         for u, side in zip(half_contrast_edges(box[r]), (-1.0, 1.0)):
             u_abs = u + col_offset
@@ -293,11 +314,11 @@ def _sensor_cut_keypoints(
                 pts_t.append(r + line_offset)
                 pts_u.append(u_abs)
                 pts_s.append(side)
-    mid = 0.5 * (rows[0] + rows[-1]) + line_offset
-    half = 0.5 * (rows[-1] - rows[0]) + 0.5
-    e = fit_silhouette_ellipse(np.array(pts_t), np.array(pts_u), np.array(pts_s), mid, half)
+    starts = ellipse_starts(float(rows[0] + line_offset), float(rows[-1] + line_offset), cut_first, cut_last)
+    e = fit_silhouette_ellipse(np.array(pts_t), np.array(pts_u), np.array(pts_s), starts)
     line_a, line_b = e.line_o - e.half_lines, e.line_o + e.half_lines
     sigma = math.hypot(e.rms_px, 0.05)
+    cut = "sensor" if sensor_width_px is not None else ("first" if cut_first else "last")
     return KeyPoints(
         line_a=line_a,
         line_b=line_b,
@@ -310,7 +331,7 @@ def _sensor_cut_keypoints(
         u_d=e.u_centre_px - e.radius_px,
         t_a_s=_line_time(t, line_a),
         t_b_s=_line_time(t, line_b),
-        cut="sensor",
+        cut=cut,
     )
 
 
@@ -352,8 +373,11 @@ def find_keypoints(
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
-    if sensor_width_px is not None:
-        return _sensor_cut_keypoints(box, rows, line_offset, col_offset, np.asarray(t_lines_s, dtype=float), int(sensor_width_px))
+    if cut_first and cut_last:
+        raise ValueError("find_keypoints: the ball is cut at both the first and the last line")
+    if cut_first or cut_last or sensor_width_px is not None:
+        t = np.asarray(t_lines_s, dtype=float)
+        return _ellipse_keypoints(box, rows, line_offset, col_offset, t, sensor_width_px, cut_first, cut_last)
     # one row of sigmas serves every line as it is (np.broadcast_to costs more than a line's centroid)
     box_sigma = np.asarray(box_sigma)
     sig = box_sigma if box_sigma.shape in (box.shape, box.shape[1:]) else np.broadcast_to(box_sigma, box.shape)
@@ -370,34 +394,8 @@ def find_keypoints(
 
     u_a, s_a = line_centroid(r_a)
     u_b, s_b = line_centroid(r_b)
-    cut = None
-    if cut_first and cut_last:
-        raise ValueError("find_keypoints: the ball is cut at both the first and the last line")
-    if cut_first or cut_last:
-        # The centre line is where the segment is widest: fit a parabola to the
-        # widths around the maximum (the width of a sphere's section is
-        # sqrt(R^2 - x^2), locally quadratic at its peak).
-        widths = np.array([np.subtract(*line_edges(r)[::-1]) for r in range(r_a, r_b + 1)])
-        widths = np.nan_to_num(widths, nan=0.0)
-        k = int(np.argmax(widths))
-        lo, hi = max(k - 3, 0), min(k + 4, widths.size)
-        if hi - lo >= 3:
-            cf = np.polyfit(np.arange(lo, hi) - k, widths[lo:hi], 2)
-            peak = -cf[1] / (2 * cf[0]) if cf[0] < 0 else 0.0
-            peak = float(np.clip(peak, -3, 3))
-        else:
-            peak = 0.0
-        r_o = float(np.clip(r_a + k + peak, r_a, r_b))
-        if cut_first:
-            cut = "first"
-            r_a_virtual = 2 * r_o - r_b
-            line_a, line_b = r_a_virtual, float(r_b)
-        else:
-            cut = "last"
-            line_a, line_b = float(r_a), 2 * r_o - r_a
-    else:
-        line_a, line_b = float(r_a), float(r_b)
-        r_o = 0.5 * (r_a + r_b)
+    line_a, line_b = float(r_a), float(r_b)
+    r_o = 0.5 * (r_a + r_b)
 
     # tips c, d on the centre line, interpolated between the neighbouring lines
     r0 = int(math.floor(r_o))
@@ -411,10 +409,6 @@ def find_keypoints(
     def time_of(line: float) -> float:
         return _line_time(t, line + line_offset)
 
-    if cut == "first":
-        u_a = u_b  # unseen: assumes no sensor-direction motion (flagged by the caller)
-    elif cut == "last":
-        u_b = u_a
     return KeyPoints(
         line_a=line_a + line_offset,
         line_b=line_b + line_offset,
@@ -427,7 +421,6 @@ def find_keypoints(
         u_d=float(left) + col_offset,
         t_a_s=time_of(line_a),
         t_b_s=time_of(line_b),
-        cut=cut,
     )
 
 
@@ -534,9 +527,8 @@ def initial_guess(
     # of z2 - z1 is checked too, with the tip error floored at
     # ``tip_sigma_px`` (shaded limbs and seams bias half-contrast tips by
     # tenths of a pixel).
-    # (a ball cut by the first or last line has only one of a and b; the
-    # sensor-cut ball's are its fitted ellipse's)
-    degenerate = kp.cut in ("first", "last") or abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
+    # (a cut ball's a and b are its fitted ellipse's)
+    degenerate = abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
     dz_sigma = _depth_motion_sigma(kp, camera, radius_m, tip_sigma_px)
     depth_fallback = not degenerate and not dz_sigma < max_depth_ratio * 2.0 * radius_m
     if degenerate:
