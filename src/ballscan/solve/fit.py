@@ -38,7 +38,7 @@ from ..model.averaged import ModelEdges
 from .problem import BlockState, FitProblem, ResidualBlock, Selection
 from .settings import FitSettings
 from .solver import SolveResult, levenberg_marquardt, scipy_least_squares
-from .uncertainty import covariance_from_jacobian, residual_scale, unfixed_parameters
+from .uncertainty import covariance_from_jacobian, residual_scale
 
 __all__ = ["FitResult", "fit_blocks", "fit_motion"]
 
@@ -317,9 +317,6 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     total_scale, inflation = residual_scale(chi2_red, tuple(a for pair in sides for a in pair), settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
     cov = cov_full[:6, :6].copy()
-    # full rank, yet not fixed: a sigma beyond the parameter's own scale (a cut ball's small visible part)
-    unfixed = set(undetermined) | set(unfixed_parameters(th, cov, initial.radius_m))
-    undetermined = tuple(n for n in PARAM_NAMES if n in unfixed)
     for name in undetermined:
         k = PARAM_NAMES.index(name)
         cov[k, :] = np.nan
