@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import importlib.util
 import json
+
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,6 +22,7 @@ from ballscan.model.render import Appearance, SensorNoise, render
 from .conftest import DATA
 
 SCENES = DATA / "scenes"
+ROOT = Path(__file__).resolve().parents[1]
 CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
 
 
@@ -420,39 +424,22 @@ def test_a_recipe_other_than_the_default_reaches_the_estimator(tmp_path, capsys)
 
 
 # ---------------------------------------------------------------- cut balls
-#: a 256-pixel sensor at 20 kHz; a tennis ball 2 m away is 67 px wide and spans 134 lines at 10 m/s
-CUT_CAM = LineScanCamera(256, 2000.0, 127.5, 20000.0)
-CUT_R = 0.0335
-CUT_Z0 = 2.0
+def _bench_cut():
+    spec = importlib.util.spec_from_file_location("bench_cut", ROOT / "benchmarks" / "bench_cut.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
 
 
-def _cut_scene(case: str, visible: float, seed: int, vy: float = 0.6, vz: float = -0.8, n_lines: int = 200):
-    """A ball cut by pixel 0 ("col0"), pixel W-1 ("colW"), the first or the last line, ``visible`` of its diameter seen."""
-    cam, vx = CUT_CAM, 10.0
-    r_px = cam.focal_px * CUT_R / CUT_Z0
-    transit = 2 * CUT_R / vx
-    y0, t_c = 0.0, 0.5 * (n_lines - 1) / cam.line_rate_hz
-    if case == "col0":
-        y0 = ((2 * visible - 1) * r_px - 0.5 - cam.principal_px) * CUT_Z0 / cam.focal_px
-    elif case == "colW":
-        y0 = ((cam.width - 0.5) - (2 * visible - 1) * r_px - cam.principal_px) * CUT_Z0 / cam.focal_px
-    elif case == "first":
-        t_c = (visible - 0.5) * transit
-    else:
-        t_c = (n_lines - 1) / cam.line_rate_hz - (visible - 0.5) * transit
-    m = BallMotion(CUT_R, t_c, (0.0, y0, CUT_Z0), (vx, vy, vz))
-    shot = render(cam, [(m, Appearance(ball_level=0.7))], n_lines, seed=seed)
-    return m, shot.image
-
-
-_CUT_FLAG = {"col0": "cut_sensor_end", "colW": "cut_sensor_end", "first": "cut_first_line", "last": "cut_last_line"}
+BENCH_CUT = _bench_cut()
+CUT_CAM, CUT_R, _CUT_FLAG = BENCH_CUT.CAMERA, BENCH_CUT.RADIUS_M, BENCH_CUT.CUT_FLAG
 
 
 @pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
 @pytest.mark.parametrize("visible", [0.45, 0.65])
 def test_cut_ball_is_measured_from_what_the_image_shows(case, visible):
     """A ball cut by a sensor end or an image end: every key fitted, flagged with its cut, the truth within 3 sigma."""
-    m, image = _cut_scene(case, visible, seed=4)
+    m, image = BENCH_CUT.cut_scene(case, visible, seed=4)
     (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
     assert _CUT_FLAG[case] in ball.flags and "degenerate" not in ball.flags and ball.undetermined == ()
     assert abs(ball.speed_mps - m.speed_mps) < 3 * ball.speed_sigma_mps
@@ -464,32 +451,25 @@ def test_cut_ball_is_measured_from_what_the_image_shows(case, visible):
 @pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
 def test_a_small_visible_part_leaves_the_depth_motion_undetermined(case):
     """21 % of the diameter seen: the fit's Fisher sigma of V.z exceeds 3x the speed across the plane, so velocity and speed are null."""
-    _, image = _cut_scene(case, 0.21, seed=2)
+    _, image = BENCH_CUT.cut_scene(case, 0.21, seed=2)
     (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
     assert {"velocity_mps", "speed_mps"} <= set(ball.undetermined)
     assert ball.velocity_mps is None and ball.speed_mps is None and "degenerate" in ball.flags
     assert _CUT_FLAG[case] in ball.flags
     doc = json.loads(EstimateReport("cut.png", (ball,)).to_json(CUT_CAM))["balls"][0]
     assert doc["speed_mps"] is None and "velocity_mps" in doc["undetermined"]
+    assert doc["covariance"]["matrix"][5] == [None] * 6
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
 def test_cut_balls_sigmas_are_honest(case):
-    """20 seeded renders, 40-70 % of the diameter seen, random V.y and V.z: every ball measured, the speed within
-    3 sigma, and the six parameters' 1-sigma coverage (pooled) between 50 % and 85 %."""
-    z_speed, z_params = [], []
-    for seed in range(20):
-        rng = np.random.default_rng(1000 + seed)
-        visible, vy, vz = rng.uniform(0.4, 0.7), rng.uniform(-1, 1), rng.uniform(-1.5, 1.5)
-        m, image = _cut_scene(case, visible, seed, vy, vz)
-        (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
-        assert ball.undetermined == () and _CUT_FLAG[case] in ball.flags
-        z_speed.append((ball.speed_mps - m.speed_mps) / ball.speed_sigma_mps)
-        est = np.array([ball.t_c_s, *ball.position_m[1:], *ball.velocity_mps])
-        sig = np.array([ball.t_c_sigma_s, *ball.position_sigma_m[1:], *ball.velocity_sigma_mps])
-        z_params.append((est - m.to_params()) / sig)
-    z_speed, z_params = np.abs(z_speed), np.abs(z_params)
+    """20 seeded renders, 40-70 % of the diameter seen, random V.y and V.z (benchmarks/bench_cut.py): every ball
+    measured and flagged, the speed within 3 sigma, and the six parameters' 1-sigma coverage (pooled) 50-85 %."""
+    recs = [BENCH_CUT.measure(case, seed, (0.4, 0.7)) for seed in range(20)]
+    assert all(r["undetermined"] == () and _CUT_FLAG[case] in r["flags"] for r in recs)
+    z_speed = np.abs([r["z_speed"] for r in recs])
+    z_params = np.abs([r["z_params"] for r in recs])
     assert z_speed.max() < 3.0
     assert np.mean(z_speed < 1.0) >= 0.5
     assert 0.5 <= np.mean(z_params < 1.0) <= 0.85
