@@ -22,7 +22,9 @@ a :class:`Selection` names which residuals enter and with which weights
   and the ball's end lines, where the chord grows like the square root of
   time: their summed coverage, divided by the shading model's brightness
   of the covered part when the edges carry it, else with a large relative
-  sigma (the lit or shaded cap's brightness is unknown);
+  sigma (the lit or shaded cap's brightness is unknown); not where the
+  modelled segment reaches past the sensor's end (:func:`beyond_sensor`:
+  a ball cut by it, whose lines then give their one edge);
 * optionally (``pixels``) the pixels of the spread edges' windows and of
   the end lines instead of their edges and areas (:func:`pixel_windows`).
 
