@@ -159,11 +159,20 @@ def test_ellipse_of_a_ball_cut_by_an_image_end(cut_first):
     assert e.radius_px == pytest.approx(30.0, abs=0.3)
 
 
-def test_ellipse_fit_refuses_too_few_points_and_a_double_cut():
+def test_ellipse_of_a_ball_cut_by_both_image_ends():
+    """The middle 70 % of the ball's lines seen: its ends placed by the limbs' curvature alone."""
+    lines, u, side = _ellipse_points(noise=0.02)
+    ok = np.abs(lines - 100.0) <= 0.7 * 60.0
+    seen = lines[ok]
+    e = fit_silhouette_ellipse(lines[ok], u[ok], side[ok], ellipse_starts(seen.min(), seen.max(), True, True))
+    assert e.line_o == pytest.approx(100.0, abs=1.0)
+    assert e.half_lines == pytest.approx(60.0, abs=2.0)
+    assert e.radius_px == pytest.approx(30.0, abs=0.3)
+
+
+def test_ellipse_fit_refuses_too_few_points():
     with pytest.raises(ValueError, match="at least 6"):
         fit_silhouette_ellipse(np.arange(5.0), np.zeros(5), np.ones(5), ellipse_starts(0.0, 4.0))
-    with pytest.raises(ValueError, match="both"):
-        ellipse_starts(0.0, 10.0, cut_first=True, cut_last=True)
 
 
 def test_keypoints_of_a_ball_cut_by_pixel_zero():

@@ -56,8 +56,9 @@ class KeyPoints:
     t_a_s, t_b_s : float
         Times of lines ``a`` and ``b``.
     cut : str or None
-        What cut the ball, where it is cut: ``"first"`` / ``"last"`` (the
-        image's first / last line: line ``a`` / ``b`` is not seen) or
+        What cut the ball, where it is cut: ``"first"`` / ``"last"`` /
+        ``"both"`` (the image's first / last line: line ``a`` / ``b`` is
+        not seen) or
         ``"sensor"`` (an end of the sensor, pixel 0 or W-1, maybe an image
         end too: ``c`` or ``d`` is not seen).  Every key point is then the
         ellipse's fitted to the edges the ball shows
@@ -212,11 +213,14 @@ def ellipse_starts(first_line: float, last_line: float, cut_first: bool = False,
     0.8-2 half spans (the ends may lie beyond the sensor).  One end cut by
     the image's first (last) line: the other end is seen, half a line past
     the last (before the first) line seen, and the ball may be up to five
-    times longer than what the image shows of it.
+    times longer than what the image shows of it.  Both ends cut: ``t0``
+    anywhere on the lines seen, the ellipse reaching past both.
     """
     span = max(last_line - first_line, 1.0)
     if cut_first and cut_last:
-        raise ValueError("ellipse_starts: the ball is cut at both the first and the last line")
+        # both ends beyond the image: the limbs' curvature alone places them
+        grid = [(t0, h) for t0 in np.linspace(first_line, last_line, 9) for h in np.linspace(0.5, 5.0, 19) * span]
+        return np.array([(t0, h) for t0, h in grid if t0 - h <= first_line and t0 + h >= last_line])
     if cut_first or cut_last:
         h = np.linspace(0.5, 5.0, 46) * span
         t0 = last_line + 0.5 - h if cut_first else first_line - 0.5 + h
@@ -318,7 +322,7 @@ def _ellipse_keypoints(
     e = fit_silhouette_ellipse(np.array(pts_t), np.array(pts_u), np.array(pts_s), starts)
     line_a, line_b = e.line_o - e.half_lines, e.line_o + e.half_lines
     sigma = math.hypot(e.rms_px, 0.05)
-    cut = "sensor" if sensor_width_px is not None else ("first" if cut_first else "last")
+    cut = "sensor" if sensor_width_px is not None else ("both" if cut_first and cut_last else ("first" if cut_first else "last"))
     return KeyPoints(
         line_a=line_a,
         line_b=line_b,
@@ -373,8 +377,6 @@ def find_keypoints(
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
-    if cut_first and cut_last:
-        raise ValueError("find_keypoints: the ball is cut at both the first and the last line")
     if cut_first or cut_last or sensor_width_px is not None:
         t = np.asarray(t_lines_s, dtype=float)
         return _ellipse_keypoints(box, rows, line_offset, col_offset, t, sensor_width_px, cut_first, cut_last)
