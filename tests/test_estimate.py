@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import importlib.util
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -10,6 +12,7 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
+from ballscan.pipeline.results import EstimateReport
 from ballscan.solve.settings import FitSettings
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
@@ -18,6 +21,7 @@ from ballscan.model.render import Appearance, SensorNoise, render
 from .conftest import DATA
 
 SCENES = DATA / "scenes"
+ROOT = Path(__file__).resolve().parents[1]
 CAM = LineScanCamera(2048, 3000.0, 1023.5, 50000.0)
 
 
@@ -416,3 +420,55 @@ def test_a_recipe_other_than_the_default_reaches_the_estimator(tmp_path, capsys)
     cam_f, img_f = _flat_ball()
     window = estimate_image(img_f, cam_f, 0.0335, recipe=Recipe(matched=False)).balls[0]
     assert window.record.second_measurement == "window" and window.extra["edges"] == "window"
+
+
+# ---------------------------------------------------------------- cut balls
+def _bench_cut():
+    spec = importlib.util.spec_from_file_location("bench_cut", ROOT / "benchmarks" / "bench_cut.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+BENCH_CUT = _bench_cut()
+CUT_CAM, CUT_R, _CUT_FLAG = BENCH_CUT.CAMERA, BENCH_CUT.RADIUS_M, BENCH_CUT.CUT_FLAG
+
+
+@pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
+@pytest.mark.parametrize("visible", [0.45, 0.65])
+def test_cut_ball_is_measured_from_what_the_image_shows(case, visible):
+    """A ball cut by a sensor end or an image end: every key fitted, flagged with its cut, the truth within 3 sigma."""
+    m, image = BENCH_CUT.cut_scene(case, visible, seed=4)
+    (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
+    assert _CUT_FLAG[case] in ball.flags and "degenerate" not in ball.flags and ball.undetermined == ()
+    assert abs(ball.speed_mps - m.speed_mps) < 3 * ball.speed_sigma_mps
+    assert abs(ball.t_c_s - m.t_c_s) < 3 * ball.t_c_sigma_s
+    np.testing.assert_array_less(np.abs(np.subtract(ball.velocity_mps, m.velocity_mps)), 3 * np.asarray(ball.velocity_sigma_mps))
+    np.testing.assert_array_less(np.abs(np.subtract(ball.position_m, m.position_m))[1:], 3 * np.asarray(ball.position_sigma_m)[1:])
+
+
+@pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
+def test_a_small_visible_part_leaves_the_depth_motion_undetermined(case):
+    """21 % of the diameter seen: the fit's Fisher sigma of V.z exceeds 3x the speed across the plane, so velocity and speed are null."""
+    _, image = BENCH_CUT.cut_scene(case, 0.21, seed=2)
+    (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
+    assert {"velocity_mps", "speed_mps"} <= set(ball.undetermined)
+    assert ball.velocity_mps is None and ball.speed_mps is None and "degenerate" in ball.flags
+    assert _CUT_FLAG[case] in ball.flags
+    doc = json.loads(EstimateReport("cut.png", (ball,)).to_json(CUT_CAM))["balls"][0]
+    assert doc["speed_mps"] is None and "velocity_mps" in doc["undetermined"]
+    assert doc["covariance"]["matrix"][5] == [None] * 6
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
+def test_cut_balls_sigmas_are_honest(case):
+    """20 seeded renders, 40-70 % of the diameter seen, random V.y and V.z (benchmarks/bench_cut.py): every ball
+    measured and flagged, the speed within 3 sigma, and the six parameters' 1-sigma coverage (pooled) 50-85 %."""
+    recs = [BENCH_CUT.measure(case, seed, (0.4, 0.7)) for seed in range(20)]
+    assert all(r["undetermined"] == () and _CUT_FLAG[case] in r["flags"] for r in recs)
+    z_speed = np.abs([r["z_speed"] for r in recs])
+    z_params = np.abs([r["z_params"] for r in recs])
+    assert z_speed.max() < 3.0
+    assert np.mean(z_speed < 1.0) >= 0.5
+    assert 0.5 <= np.mean(z_params < 1.0) <= 0.85

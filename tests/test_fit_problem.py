@@ -67,3 +67,48 @@ def test_solver_reports_non_convergence_as_a_status():
     out = levenberg_marquardt(FitProblem((state,), (state.select(x, False),), False), x, st, loss="linear")
     assert isinstance(out, SolveResult) and not out.converged and out.status == 0 and "evaluations" in out.message
     assert out.residuals.shape[0] == out.jacobian.shape[0]
+
+
+def _one_sided(e, side: str):
+    """The edges with one side's edges unusable on every line (a ball cut by that sensor end)."""
+    from dataclasses import replace
+
+    n = e.lines.size
+    return replace(e, **{f"{side}_ok": np.zeros(n, dtype=bool), f"{side}_px": np.full(n, np.nan), f"{side}_sigma_px": np.full(n, np.nan)})
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_lines_with_one_edge_fit_the_motion(side):
+    """A ball seen by one limb only (cut by a sensor end) is fitted from it: the truth within 3 sigma, full rank."""
+    cam, m, init = _scene()
+    e = _one_sided(synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=1), side)
+    fit = fit_motion(cam, e, init)
+    assert fit.converged and not fit.undetermined
+    z = (fit.motion.to_params() - m.to_params()) / fit.sigmas
+    assert np.all(np.abs(z) < 3.0), z
+    # one limb carries less information than two
+    both = fit_motion(cam, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=1), init)
+    assert np.all(fit.sigmas > both.sigmas)
+
+
+def test_too_few_one_sided_lines_count_as_pairs():
+    """min_edge_lines counts two one-edge lines as one pair."""
+    cam, m, init = _scene()
+    e = _one_sided(synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=1), "left")
+    n_right = int(e.right_ok.sum())
+    assert not fit_motion(cam, e, init, FitSettings(min_edge_lines=n_right // 2)).degenerate
+    bad = fit_motion(cam, e, init, FitSettings(min_edge_lines=n_right // 2 + 1))
+    assert bad.degenerate and "too few" in bad.message
+
+
+def test_beyond_sensor_marks_lines_reaching_past_either_end():
+    from ballscan.model.averaged import ModelEdges
+    from ballscan.solve.problem import beyond_sensor
+
+    left = np.array([0.5, 5.0, 5.0, 3.0, 3.0])
+    right = np.array([20.0, 20.0, 99.5, 3.0, 30.0])
+    presence = np.array([1.0, 1.0, 1.0, 0.0, 0.5])
+    spread = np.array([0.0, 0.0, 0.0, np.nan, 6.0])
+    me = ModelEdges(left, right, presence, right - left, spread, np.ones(5, dtype=bool))
+    # width 100: pixel 0 and 99 are the ends; the absent line (presence 0) is never past them
+    assert beyond_sensor(me, 100).tolist() == [True, False, True, False, True]

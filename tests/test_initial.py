@@ -8,7 +8,14 @@ import numpy as np
 import pytest
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.initial import KeyPoints, find_keypoints, half_contrast_edges, initial_guess
+from ballscan.solve.initial import (
+    KeyPoints,
+    ellipse_starts,
+    find_keypoints,
+    fit_silhouette_ellipse,
+    half_contrast_edges,
+    initial_guess,
+)
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.silhouette import silhouette
 
@@ -111,3 +118,76 @@ def test_keypoints_the_same_with_a_row_or_a_box_of_sigmas():
     b = find_keypoints(box, np.tile(sig, (9, 1)), box > 0.3, 10, 20, np.arange(40) * 1e-5)
     c = find_keypoints(box, sig[None, :], box > 0.3, 10, 20, np.arange(40) * 1e-5)
     assert a == b == c
+
+
+# ------------------------------------------------------- cut balls' ellipse
+def _ellipse_points(t0=100.0, h=60.0, u0=20.0, a=0.08, r=30.0, noise=0.05, seed=3):
+    """Both limbs of a sheared ellipse on lines t0 - h .. t0 + h, with Gaussian noise (pixels)."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(math.ceil(t0 - h) + 1, math.floor(t0 + h))
+    q = np.sqrt(1.0 - ((t - t0) / h) ** 2)
+    lines = np.concatenate([t, t]).astype(float)
+    side = np.concatenate([-np.ones(t.size), np.ones(t.size)])
+    u = u0 + a * (lines - t0) + side * r * np.concatenate([q, q]) + noise * rng.standard_normal(lines.size)
+    return lines, u, side
+
+
+@pytest.mark.parametrize("keep", ["right_of_zero", "left_of_40"])
+def test_ellipse_from_one_limb_beyond_a_sensor_end(keep):
+    """A ball cut by the sensor's end: one limb seen (and the other where it is on the sensor); the ellipse comes back."""
+    lines, u, side = _ellipse_points()
+    ok = u > 1.5 if keep == "right_of_zero" else u < 38.5
+    seen = lines[ok]
+    e = fit_silhouette_ellipse(lines[ok], u[ok], side[ok], ellipse_starts(seen.min(), seen.max()))
+    assert e.line_o == pytest.approx(100.0, abs=0.3)
+    assert e.half_lines == pytest.approx(60.0, abs=0.5)
+    assert e.u_centre_px == pytest.approx(20.0, abs=0.3)
+    assert e.radius_px == pytest.approx(30.0, abs=0.3)
+    assert e.slope_px_per_line == pytest.approx(0.08, abs=0.005)
+    assert e.rms_px < 0.08
+
+
+@pytest.mark.parametrize("cut_first", [True, False])
+def test_ellipse_of_a_ball_cut_by_an_image_end(cut_first):
+    """40 % of the ball's lines seen, from its seen end: t0 beyond the image, found from the limbs' curvature."""
+    lines, u, side = _ellipse_points(noise=0.02)
+    ok = lines >= 100.0 - 60.0 + 0.6 * 120.0 if cut_first else lines <= 40.0 + 0.4 * 120.0
+    seen = lines[ok]
+    e = fit_silhouette_ellipse(lines[ok], u[ok], side[ok], ellipse_starts(seen.min(), seen.max(), cut_first, not cut_first))
+    assert e.line_o == pytest.approx(100.0, abs=1.5)
+    assert e.half_lines == pytest.approx(60.0, abs=1.5)
+    assert e.radius_px == pytest.approx(30.0, abs=0.3)
+
+
+def test_ellipse_of_a_ball_cut_by_both_image_ends():
+    """The middle 70 % of the ball's lines seen: its ends placed by the limbs' curvature alone."""
+    lines, u, side = _ellipse_points(noise=0.02)
+    ok = np.abs(lines - 100.0) <= 0.7 * 60.0
+    seen = lines[ok]
+    e = fit_silhouette_ellipse(lines[ok], u[ok], side[ok], ellipse_starts(seen.min(), seen.max(), True, True))
+    assert e.line_o == pytest.approx(100.0, abs=1.0)
+    assert e.half_lines == pytest.approx(60.0, abs=2.0)
+    assert e.radius_px == pytest.approx(30.0, abs=0.3)
+
+
+def test_ellipse_fit_refuses_too_few_points():
+    with pytest.raises(ValueError, match="at least 6"):
+        fit_silhouette_ellipse(np.arange(5.0), np.zeros(5), np.ones(5), ellipse_starts(0.0, 4.0))
+
+
+def test_keypoints_of_a_ball_cut_by_pixel_zero():
+    """A drawn disc whose centre lies 5 px before pixel 0: the tips c, d straddle the sensor's start."""
+    t0, h, u0, r = 40.0, 30.0, -5.0, 20.0
+    n_lines, width = 81, 60
+    rows = np.arange(n_lines)[:, None]
+    cols = np.arange(width)[None, :]
+    # coverage of each pixel by the ellipse, 8x supersampled along the sensor
+    sub = (np.arange(8) + 0.5) / 8 - 0.5
+    half = r * np.sqrt(np.clip(1.0 - ((rows - t0) / h) ** 2, 0.0, None))
+    box = np.mean([(np.abs(cols + s - u0) <= half) for s in sub], axis=0)
+    kp = find_keypoints(box, np.full(width, 0.01), box > 0.25, 0, 0, np.arange(n_lines) * 1e-4, sensor_width_px=width)
+    assert kp.cut == "sensor"
+    assert kp.line_o == pytest.approx(t0, abs=0.5)
+    assert kp.u_c == pytest.approx(u0 + r, abs=0.3) and kp.u_d == pytest.approx(u0 - r, abs=0.5)
+    assert kp.line_b - kp.line_a == pytest.approx(2 * h, abs=2.0)
+    assert kp.t_a_s == pytest.approx(kp.line_a * 1e-4)

@@ -651,6 +651,8 @@ def ball_limb(
     # at a rough motion), and not saturated or another ball's (NaN in the
     # edges' profile)
     inner = (np.fmax(me.left_px[0], edges.left_px), np.fmin(me.right_px[0], edges.right_px))
+    if "cut_sensor_end" in edges.flags:
+        both, inner = _cut_interior(edges, me.left_px[0], me.right_px[0], me.presence[0], data_dn.shape[1])
     left, right = inner[0][both], inner[1][both]
     # the edges' lines are consecutive: their profile is a box of the image
     usable = None if edges.profile is None else np.isfinite(edges.profile)
@@ -682,6 +684,24 @@ def ball_limb(
         full = kept
     scatter, length = _line_level_scatter(limb, edges, full, me.spread_px[0], *inner)
     return replace(limb, level_rel_sigma=scatter, level_ref_px=length)
+
+
+def _cut_interior(
+    edges: EdgeMeasurements, left_px: np.ndarray, right_px: np.ndarray, presence: np.ndarray, width_px: int
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """The lines and interior of a ball cut by the sensor's end: one usable edge a line is enough.
+
+    On each line the interior lies inside the model's edges, inside each
+    usable measured edge, and on the sensor (pixels 0 .. W-1, the cut side
+    ending at the sensor's last pixel).  Returns the lines to use and the
+    interior's (left, right) on every line, pixels.
+    """
+    left = np.fmax(left_px, np.where(edges.left_ok, edges.left_px, np.nan))
+    right = np.fmin(right_px, np.where(edges.right_ok, edges.right_px, np.nan))
+    left = np.maximum(left, -0.5)
+    right = np.minimum(right, width_px - 0.5)
+    lines = (edges.left_ok | edges.right_ok) & (presence > 0) & (right > left)
+    return lines, (left, right)
 
 
 def _level_margin(n_full: int) -> int:

@@ -31,7 +31,8 @@ from ..geometry.motion import BallMotion
 from ..measure.detection import BallRegion, ColumnModel, Detection, detect
 from ..measure.robust import median
 from ..measure.images import LineImage, as_line_image
-from ..solve.uncertainty import propagate
+from ..geometry.motion import PARAM_NAMES
+from ..solve.uncertainty import propagate, unfixed_parameters
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
 from .plausibility import assess, check_radius
@@ -122,7 +123,7 @@ def estimate_region(
     final = final_fit_stage(ball, guess, first, shading, pixel, second)
     record = stage_record(recipe, shading, pixel, second, final)
     t_shading = _shading_time(recipe, first, shading, pixel, second, final)
-    return _fit_estimate(ball, _guess_flags(detected, guess), initial, final, record, t0, t_init, first.time_edges_s, t_shading)
+    return _fit_estimate(ball, _guess_flags(detected, guess), initial, guess.motion, final, record, t0, t_init, first.time_edges_s, t_shading)
 
 
 def _initial_estimate(guess: InitialGuess) -> BallEstimate:
@@ -177,6 +178,7 @@ def _fit_estimate(
     ball: BallInput,
     flags: list[str],
     initial: BallEstimate,
+    guess_motion: BallMotion,
     final: FinalFit,
     record: StageRecord,
     t0: float,
@@ -186,21 +188,32 @@ def _fit_estimate(
 ) -> BallEstimate:
     """The fit's estimate: the reported fit's motion with its propagated uncertainties (:func:`ballscan.solve.uncertainty.propagate`).
 
-    ``t0`` is the ball's start time (``time.perf_counter``); ``t_init``,
+    ``guess_motion`` (the key-point guess) sets the scales beyond which a
+    parameter's sigma leaves it undetermined
+    (:func:`ballscan.solve.uncertainty.unfixed_parameters`).  ``t0`` is the
+    ball's start time (``time.perf_counter``); ``t_init``,
     ``t_edges`` and ``t_shading`` the seconds of the key points, the first
     edge measurement and the shading pass.
     """
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
-    unc = propagate(ball.camera, fit.motion, fit.covariance)
-    undetermined = sorted({k for p in fit.undetermined for k in _PARAM_KEYS.get(p, (p,))})
-    if undetermined:
+    cov = fit.covariance
+    # full rank, yet not fixed: a sigma beyond the parameter's scale in the
+    # image (a cut ball's small visible part); its rows are then unknown too
+    unfixed = [p for p in unfixed_parameters(cov, guess_motion) if p not in fit.undetermined]
+    if unfixed:
+        cov = cov.copy()
+        for p in unfixed:
+            k = PARAM_NAMES.index(p)
+            cov[k, :] = cov[:, k] = np.nan
+    unc = propagate(ball.camera, fit.motion, cov)
+    undetermined = sorted({k for p in (*fit.undetermined, *unfixed) for k in _PARAM_KEYS.get(p, (p,))})
+    if undetermined and not (unfixed and "degenerate" in flags):
         flags.append("degenerate")
 
     def keep(key: str, value):
         return None if key in undetermined else value
 
-    cov = fit.covariance
     law = final.shading
     return BallEstimate(
         method="fit",

@@ -169,8 +169,13 @@ def _dropped_lines(t: np.ndarray, first: int, last: int) -> bool:
 
 # -------------------------------------------------------------- 2. key points
 def key_points_stage(ball: BallInput, detected: Detected) -> InitialGuess:
-    """The key points of the normalised box and the closed-form guess of Eq. (3)-(7); ValueError where there is none."""
+    """The key points of the normalised box and the closed-form guess of Eq. (3)-(7); ValueError where there is none.
+
+    A ball the detector found cut by an end of the sensor (``cut_sensor_end``)
+    gets the key points of the ellipse through the edges it shows.
+    """
     box = detected.box
+    width = ball.image.data.shape[1]
     kp = find_keypoints(
         box.data,
         box.sigma,
@@ -180,6 +185,7 @@ def key_points_stage(ball: BallInput, detected: Detected) -> InitialGuess:
         ball.t_lines_s,
         cut_first="cut_first_line" in ball.region.flags,
         cut_last="cut_last_line" in ball.region.flags,
+        sensor_width_px=width if "cut_sensor_end" in ball.region.flags else None,
     )
     return initial_guess(kp, ball.camera, ball.radius_m)
 

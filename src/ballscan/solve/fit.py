@@ -184,10 +184,13 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
         # not at both ends (a ball cut by the image's first or last line): loose
         level_partial, verdict = False, "one_end"
         sels = _select_all(states, theta0, level_partial)
+    # the symmetric edge bias needs both edges of a line; the motion takes
+    # one-sided lines too (a ball cut by the sensor's end), two for a pair
     n_edge_lines = sum(s.n_edge_lines for s in sels)
     fit_b = settings.fit_edge_bias and n_edge_lines >= settings.min_edge_lines
-    if n_edge_lines < settings.min_edge_lines or sum(s.n_residuals for s in sels) <= 6 + int(fit_b):
-        return _degenerate_result(initial, n_edge_lines, settings, sels, t0)
+    n_pairs = sum(s.n_line_pairs for s in sels)
+    if n_pairs < settings.min_edge_lines or sum(s.n_residuals for s in sels) <= 6 + int(fit_b):
+        return _degenerate_result(initial, n_pairs, settings, sels, t0)
     x0 = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
     rounds = _solve_rounds(states, sels, x0, level_partial, settings)
     sol = rounds.solution
@@ -202,7 +205,7 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
             n_iter = loose.n_iterations + rounds.n_evaluations
             return replace(loose, n_iterations=n_iter, run_time_s=time.perf_counter() - t0, partial_verdict=verdict)
     if sol is None:
-        return _degenerate_result(initial, sum(s.n_edge_lines for s in rounds.last), settings, rounds.last, t0)
+        return _degenerate_result(initial, sum(s.n_line_pairs for s in rounds.last), settings, rounds.last, t0)
     return _result(states, initial, rounds, level_partial, verdict, settings, t0)
 
 
@@ -257,7 +260,7 @@ def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: Fi
     for rnd in range(max(settings.max_reject_rounds, 0) + 1):
         if rnd > 0:
             sels = _select_all(states, x[:6], level_partial)
-        if sum(s.n_edge_lines for s in sels) < settings.min_edge_lines:
+        if sum(s.n_line_pairs for s in sels) < settings.min_edge_lines:
             break
         sol, solved = _solve(states, sels, x, "linear", settings), sels
         x, n_total = sol.x, n_total + sol.n_evaluations

@@ -30,7 +30,10 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 
-__all__ = ["KeyPoints", "InitialGuess", "find_keypoints", "initial_guess", "half_contrast_edges"]
+__all__ = ["KeyPoints", "InitialGuess", "SilhouetteEllipse", "find_keypoints", "fit_silhouette_ellipse", "initial_guess", "half_contrast_edges"]
+
+#: an edge within this many pixels of the sensor's first or last pixel centre is the cut, not the ball's limb
+_SENSOR_END_PX = 1.5
 
 
 @dataclass(frozen=True)
@@ -53,9 +56,13 @@ class KeyPoints:
     t_a_s, t_b_s : float
         Times of lines ``a`` and ``b``.
     cut : str or None
-        ``"first"`` / ``"last"`` when line ``a`` / ``b`` is not seen (the
-        ball is cut by the image start/end); the missing key point is then
-        mirrored about the line of widest segment.
+        What cut the ball, where it is cut: ``"first"`` / ``"last"`` /
+        ``"both"`` (the image's first / last line: line ``a`` / ``b`` is
+        not seen) or
+        ``"sensor"`` (an end of the sensor, pixel 0 or W-1, maybe an image
+        end too: ``c`` or ``d`` is not seen).  Every key point is then the
+        ellipse's fitted to the edges the ball shows
+        (:func:`fit_silhouette_ellipse`, :func:`_ellipse_keypoints`).
     """
 
     line_a: float
@@ -81,7 +88,7 @@ class InitialGuess:
     duration_s: float  #: T of Eq. (7)
     gamma_rad: float
     phi_rad: float
-    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty (or a or b unseen)
+    degenerate: bool  #: Eq. (5)-(6) singular: u_a and u_b agree within their uncertainty
     depth_fallback: bool = False  #: Eq. (5)-(6) ill-conditioned for the depth motion: V.z held at 0
     depth_motion_sigma_m: float = math.nan  #: propagated 1-sigma of z2 - z1 from Eq. (5)-(6)
 
@@ -152,6 +159,186 @@ def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
     return c, math.sqrt(var)
 
 
+@dataclass(frozen=True)
+class SilhouetteEllipse:
+    """A ball's image in (line, pixel) as the sheared ellipse of its limb.
+
+    The limb's pixel on line ``t`` is ``u = u0 + a (t - t0) +- r sqrt(1 -
+    ((t - t0) / h)^2)`` (``+`` the larger-``u`` edge): a sphere crossing
+    the viewing plane at ``t0`` with its centre's image moving by ``a``
+    pixels per line and an image radius ``r`` that changes little while it
+    crosses (``vz`` small against the depth) draws this ellipse.
+
+    Attributes
+    ----------
+    line_o : float
+        ``t0``, the centre line (image lines, may be fractional).
+    half_lines : float
+        ``h``, half the lines the ball spans.
+    u_centre_px : float
+        ``u0``, the centre's pixel on line ``t0``.
+    slope_px_per_line : float
+        ``a``.
+    radius_px : float
+        ``r``.
+    rms_px : float
+        RMS of the edges about the ellipse.
+    n_points : int
+        Edges fitted.
+    """
+
+    line_o: float
+    half_lines: float
+    u_centre_px: float
+    slope_px_per_line: float
+    radius_px: float
+    rms_px: float
+    n_points: int
+
+
+def _ellipse_given(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, t0: float, h: float) -> tuple[np.ndarray, float]:
+    """``(u0, a, r)`` by linear least squares at fixed ``t0, h``, and the sum of squared residuals."""
+    tau = lines - t0
+    q = np.sqrt(np.clip(1.0 - (tau / h) ** 2, 0.0, None))
+    A = np.column_stack([np.ones_like(tau), tau, side * q])
+    coef, *_ = np.linalg.lstsq(A, u_px, rcond=None)
+    res = u_px - A @ coef
+    return coef, float(res @ res)
+
+
+def ellipse_starts(first_line: float, last_line: float, cut_first: bool = False, cut_last: bool = False) -> np.ndarray:
+    """Candidate ``(t0, h)`` of :class:`SilhouetteEllipse` for a ball seen from ``first_line`` to ``last_line`` (image lines).
+
+    Both ends seen: ``t0`` within 40 % of the half span of the middle, ``h``
+    0.8-2 half spans (the ends may lie beyond the sensor).  One end cut by
+    the image's first (last) line: the other end is seen, half a line past
+    the last (before the first) line seen, and the ball may be up to five
+    times longer than what the image shows of it.  Both ends cut: ``t0``
+    anywhere on the lines seen, the ellipse reaching past both.
+    """
+    span = max(last_line - first_line, 1.0)
+    if cut_first and cut_last:
+        # both ends beyond the image: the limbs' curvature alone places them
+        grid = [(t0, h) for t0 in np.linspace(first_line, last_line, 9) for h in np.linspace(0.5, 5.0, 19) * span]
+        return np.array([(t0, h) for t0, h in grid if t0 - h <= first_line and t0 + h >= last_line])
+    if cut_first or cut_last:
+        h = np.linspace(0.5, 5.0, 46) * span
+        t0 = last_line + 0.5 - h if cut_first else first_line - 0.5 + h
+        return np.column_stack([t0, h])
+    half = 0.5 * span + 0.5
+    mid = 0.5 * (first_line + last_line)
+    return np.array([(mid + dt * half, hh * half) for dt in np.linspace(-0.4, 0.4, 9) for hh in np.linspace(0.8, 2.0, 13)])
+
+
+def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray, starts: np.ndarray) -> SilhouetteEllipse:
+    """Fit :class:`SilhouetteEllipse` to limb points, e.g. the edges of a ball cut by the sensor's end or an image end.
+
+    The ellipse is linear in ``u0, a, r`` at fixed ``t0, h``: those are
+    solved by least squares inside a search over ``t0, h`` (the best of
+    ``starts``, then Nelder-Mead), and the points beyond 4 robust sigmas
+    dropped once (a seam or a neighbour's pixels).
+
+    Parameters
+    ----------
+    lines : ndarray (n,)
+        Image line of each point (may be fractional).
+    u_px : ndarray (n,)
+        Its pixel along the sensor.
+    side : ndarray (n,)
+        +1 for a larger-``u`` (right) edge, -1 for a left edge.
+    starts : ndarray (k, 2)
+        Candidate ``(t0, h)``, lines (:func:`ellipse_starts`).
+
+    Raises
+    ------
+    ValueError
+        Fewer than 6 points, or no ellipse with a positive radius fits them.
+    """
+    from scipy.optimize import minimize  # scipy.optimize loads with the first cut ball
+
+    t = np.asarray(lines, dtype=float)
+    u = np.asarray(u_px, dtype=float)
+    sd = np.asarray(side, dtype=float)
+    if t.size < 6:
+        raise ValueError(f"fit_silhouette_ellipse: {t.size} limb points, at least 6 needed")
+    best = None
+    for keep in range(2):
+        costs = [_ellipse_given(t, u, sd, float(a), max(float(b), 0.5))[1] for a, b in starts]
+        x0 = np.asarray(starts[int(np.argmin(costs))], dtype=float)
+
+        def cost(x: np.ndarray) -> float:
+            return _ellipse_given(t, u, sd, float(x[0]), max(float(x[1]), 0.5))[1]
+
+        found = minimize(cost, x0, method="Nelder-Mead", options={"xatol": 1e-3, "fatol": 1e-9, "maxiter": 400})
+        t0, h = float(found.x[0]), max(float(found.x[1]), 0.5)
+        coef, _ = _ellipse_given(t, u, sd, t0, h)
+        tau = t - t0
+        res = u - (coef[0] + coef[1] * tau + sd * coef[2] * np.sqrt(np.clip(1.0 - (tau / h) ** 2, 0.0, None)))
+        best = (t0, h, coef, res)
+        mad = 1.4826 * float(np.median(np.abs(res - np.median(res))))
+        ok = np.abs(res) <= 4.0 * max(mad, 0.05)
+        if keep or ok.all() or ok.sum() < 6:
+            break
+        t, u, sd = t[ok], u[ok], sd[ok]
+    t0, h, coef, res = best
+    if not coef[2] > 0:
+        raise ValueError("fit_silhouette_ellipse: the limb points fit no ellipse of positive radius")
+    return SilhouetteEllipse(t0, h, float(coef[0]), float(coef[1]), float(coef[2]), float(np.sqrt(np.mean(res**2))), int(t.size))
+
+
+def _line_time(t: np.ndarray, line: float) -> float:
+    """Time of a (fractional) image line: per-line timestamps interpolated, or extrapolated with the mean line period."""
+    if 0 <= line <= t.size - 1:
+        return float(np.interp(line, np.arange(t.size), t))
+    period = (t[-1] - t[0]) / max(t.size - 1, 1)
+    return float(t[0] + line * period) if line < 0 else float(t[-1] + (line - t.size + 1) * period)
+
+
+def _ellipse_keypoints(
+    box: np.ndarray, rows: np.ndarray, line_offset: int, col_offset: int, t: np.ndarray, sensor_width_px: int | None,
+    cut_first: bool, cut_last: bool,
+) -> KeyPoints:
+    """Key points of a cut ball, from the ellipse through the edges it shows.
+
+    Each line's half-contrast edges (:func:`half_contrast_edges`), less
+    those within ``_SENSOR_END_PX`` of the sensor's first or last pixel
+    (given ``sensor_width_px``), are limb points;
+    :func:`fit_silhouette_ellipse` draws the ball through them, and the key
+    points are the ellipse's: ``a``, ``b`` its first and last lines (``t0
+    -+ h``, one beyond the image where it is cut by an image end) at the
+    centre's pixel there, ``o`` its centre line, ``c``, ``d`` its tips ``u0
+    +- r`` (one beyond the sensor where it is cut by a sensor end).
+    """
+    pts_t, pts_u, pts_s = [], [], []
+    lo, hi = (_SENSOR_END_PX, sensor_width_px - 1 - _SENSOR_END_PX) if sensor_width_px is not None else (-math.inf, math.inf)
+    for r in range(int(rows[0]), int(rows[-1]) + 1):
+        for u, side in zip(half_contrast_edges(box[r]), (-1.0, 1.0)):
+            u_abs = u + col_offset
+            if math.isfinite(u_abs) and lo < u_abs < hi:
+                pts_t.append(r + line_offset)
+                pts_u.append(u_abs)
+                pts_s.append(side)
+    starts = ellipse_starts(float(rows[0] + line_offset), float(rows[-1] + line_offset), cut_first, cut_last)
+    e = fit_silhouette_ellipse(np.array(pts_t), np.array(pts_u), np.array(pts_s), starts)
+    line_a, line_b = e.line_o - e.half_lines, e.line_o + e.half_lines
+    sigma = math.hypot(e.rms_px, 0.05)
+    cut = "sensor" if sensor_width_px is not None else ("both" if cut_first and cut_last else ("first" if cut_first else "last"))
+    return KeyPoints(
+        line_a=line_a,
+        line_b=line_b,
+        u_a=e.u_centre_px - e.slope_px_per_line * e.half_lines,
+        u_b=e.u_centre_px + e.slope_px_per_line * e.half_lines,
+        u_a_sigma_px=sigma,
+        u_b_sigma_px=sigma,
+        line_o=e.line_o,
+        u_c=e.u_centre_px + e.radius_px,
+        u_d=e.u_centre_px - e.radius_px,
+        t_a_s=_line_time(t, line_a),
+        t_b_s=_line_time(t, line_b),
+        cut=cut,
+    )
+
+
 def find_keypoints(
     box: np.ndarray,
     box_sigma: np.ndarray,
@@ -161,6 +348,7 @@ def find_keypoints(
     t_lines_s: np.ndarray,
     cut_first: bool = False,
     cut_last: bool = False,
+    sensor_width_px: int | None = None,
 ) -> KeyPoints:
     """Pick the paper's key points a, b, o, c, d from one ball's image.
 
@@ -179,10 +367,19 @@ def find_keypoints(
         Time of every line of the whole image, seconds.
     cut_first, cut_last : bool
         The ball is already / still present at the image's first / last line.
+    sensor_width_px : int, optional
+        The sensor's width W, given when the ball touches its pixel 0 or
+        W-1 (flag ``cut_sensor_end``): the key points are then those of the
+        ellipse through the edges away from the sensor's ends
+        (:func:`fit_silhouette_ellipse`), which also spans lines cut by the
+        image's first or last line.
     """
     rows = np.flatnonzero(ball_mask.any(axis=1))
     if rows.size == 0:
         raise ValueError("find_keypoints: the mask holds no ball pixel")
+    if cut_first or cut_last or sensor_width_px is not None:
+        t = np.asarray(t_lines_s, dtype=float)
+        return _ellipse_keypoints(box, rows, line_offset, col_offset, t, sensor_width_px, cut_first, cut_last)
     # one row of sigmas serves every line as it is (np.broadcast_to costs more than a line's centroid)
     box_sigma = np.asarray(box_sigma)
     sig = box_sigma if box_sigma.shape in (box.shape, box.shape[1:]) else np.broadcast_to(box_sigma, box.shape)
@@ -199,34 +396,8 @@ def find_keypoints(
 
     u_a, s_a = line_centroid(r_a)
     u_b, s_b = line_centroid(r_b)
-    cut = None
-    if cut_first and cut_last:
-        raise ValueError("find_keypoints: the ball is cut at both the first and the last line")
-    if cut_first or cut_last:
-        # The centre line is where the segment is widest: fit a parabola to the
-        # widths around the maximum (the width of a sphere's section is
-        # sqrt(R^2 - x^2), locally quadratic at its peak).
-        widths = np.array([np.subtract(*line_edges(r)[::-1]) for r in range(r_a, r_b + 1)])
-        widths = np.nan_to_num(widths, nan=0.0)
-        k = int(np.argmax(widths))
-        lo, hi = max(k - 3, 0), min(k + 4, widths.size)
-        if hi - lo >= 3:
-            cf = np.polyfit(np.arange(lo, hi) - k, widths[lo:hi], 2)
-            peak = -cf[1] / (2 * cf[0]) if cf[0] < 0 else 0.0
-            peak = float(np.clip(peak, -3, 3))
-        else:
-            peak = 0.0
-        r_o = float(np.clip(r_a + k + peak, r_a, r_b))
-        if cut_first:
-            cut = "first"
-            r_a_virtual = 2 * r_o - r_b
-            line_a, line_b = r_a_virtual, float(r_b)
-        else:
-            cut = "last"
-            line_a, line_b = float(r_a), 2 * r_o - r_a
-    else:
-        line_a, line_b = float(r_a), float(r_b)
-        r_o = 0.5 * (r_a + r_b)
+    line_a, line_b = float(r_a), float(r_b)
+    r_o = 0.5 * (r_a + r_b)
 
     # tips c, d on the centre line, interpolated between the neighbouring lines
     r0 = int(math.floor(r_o))
@@ -238,17 +409,8 @@ def find_keypoints(
     t = np.asarray(t_lines_s, dtype=float)
 
     def time_of(line: float) -> float:
-        # per-line timestamps are interpolated (or extrapolated with the line period)
-        x = line + line_offset
-        if 0 <= x <= t.size - 1:
-            return float(np.interp(x, np.arange(t.size), t))
-        period = (t[-1] - t[0]) / max(t.size - 1, 1)
-        return float(t[0] + x * period) if x < 0 else float(t[-1] + (x - t.size + 1) * period)
+        return _line_time(t, line + line_offset)
 
-    if cut == "first":
-        u_a = u_b  # unseen: assumes no sensor-direction motion (flagged by the caller)
-    elif cut == "last":
-        u_b = u_a
     return KeyPoints(
         line_a=line_a + line_offset,
         line_b=line_b + line_offset,
@@ -261,7 +423,6 @@ def find_keypoints(
         u_d=float(left) + col_offset,
         t_a_s=time_of(line_a),
         t_b_s=time_of(line_b),
-        cut=cut,
     )
 
 
@@ -368,7 +529,8 @@ def initial_guess(
     # of z2 - z1 is checked too, with the tip error floored at
     # ``tip_sigma_px`` (shaded limbs and seams bias half-contrast tips by
     # tenths of a pixel).
-    degenerate = kp.cut is not None or abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
+    # (a cut ball's a and b are its fitted ellipse's)
+    degenerate = abs(kp.u_a - kp.u_b) <= n_sigma * sigma_ab
     dz_sigma = _depth_motion_sigma(kp, camera, radius_m, tip_sigma_px)
     depth_fallback = not degenerate and not dz_sigma < max_depth_ratio * 2.0 * radius_m
     if degenerate:

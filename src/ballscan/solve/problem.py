@@ -22,7 +22,9 @@ a :class:`Selection` names which residuals enter and with which weights
   and the ball's end lines, where the chord grows like the square root of
   time: their summed coverage, divided by the shading model's brightness
   of the covered part when the edges carry it, else with a large relative
-  sigma (the lit or shaded cap's brightness is unknown);
+  sigma (the lit or shaded cap's brightness is unknown); not where the
+  modelled segment reaches past the sensor's end (:func:`beyond_sensor`:
+  a ball cut by it, whose lines then give their one edge);
 * optionally (``pixels``) the pixels of the spread edges' windows and of
   the end lines instead of their edges and areas (:func:`pixel_windows`).
 
@@ -55,6 +57,7 @@ __all__ = [
     "ResidualBlock",
     "Selection",
     "WeightTables",
+    "beyond_sensor",
     "pixel_windows",
     "select_lines_of",
     "weight_tables",
@@ -102,6 +105,8 @@ class Selection:
         Free brightnesses of the pixels, nuisance parameters (derived).
     n_edge_lines : int
         Lines with both edges, as edges or as the pixels of their windows (derived).
+    n_single_edge_lines : int
+        Lines with one edge only (a ball cut by the sensor's end), derived.
     """
 
     use_left: np.ndarray
@@ -121,6 +126,12 @@ class Selection:
     n_residuals: int = field(init=False)
     n_groups: int = field(init=False)
     n_edge_lines: int = field(init=False)
+    n_single_edge_lines: int = field(init=False)
+
+    @property
+    def n_line_pairs(self) -> int:
+        """Lines with both edges plus half those with one: the edge count in lines' worth."""
+        return self.n_edge_lines + self.n_single_edge_lines // 2
 
     def __post_init__(self) -> None:
         # the counts, once (the fit reads them several times per round)
@@ -135,6 +146,7 @@ class Selection:
         put(self, "n_residuals", n_l + n_r + n_a + n_p)
         put(self, "n_groups", 0 if px is None else px.n_groups)
         put(self, "n_edge_lines", int((self.use_left & self.use_right).sum()) + (0 if px is None else px.n_spread))
+        put(self, "n_single_edge_lines", int((self.use_left ^ self.use_right).sum()))
 
 
 @dataclass(frozen=True)
@@ -290,6 +302,18 @@ def select_lines_of(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettin
         wide, as_arg(wl_ok, np.bool_), as_arg(wr_ok, np.bool_), as_arg(wl), as_arg(wr),
         float(settings.max_spread_px), float(settings.max_spread_wide_px), bool(settings.end_line_areas),
     )
+
+
+def beyond_sensor(me: ModelEdges, width_px: int, margin_px: float = 1.0) -> np.ndarray:
+    """Lines whose modelled segment reaches past the sensor's first or last pixel (arrays (N,) of ``me``).
+
+    Such a line's summed coverage shows only the part on the sensor (a ball
+    cut by the sensor's end), so its area cannot enter the fit; ``margin_px``
+    beyond half the edges' spread keeps the partly covered end pixel out too.
+    """
+    half = 0.5 * _nan_to_zero(me.spread_px) + margin_px
+    with np.errstate(invalid="ignore"):
+        return (me.presence > 0) & ((me.left_px - half < 0.0) | (me.right_px + half > width_px - 1.0))
 
 
 def _weighted(T: WeightTables, use_l, use_r, use_a, wide_l, wide_r, loose_a, pixels) -> Selection:
@@ -496,6 +520,7 @@ class BlockState:
         me = ModelEdges(me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0])
         ul, ur, ua, wl, wr = select_lines_of(edges, me, s)
         ul, ur = ul & ~self.rejected_left, ur & ~self.rejected_right
+        ua = ua & ~beyond_sensor(me, self.block.camera.width)
         pix = None
         if s.pixels and edges.profile is not None:
             # the ends seen during the whole exposure: their pixels instead of
@@ -712,6 +737,7 @@ def whitened_jacobian(
     scale = param_scale(camera, motion)
     me, dl, dr, da = model_jacobian(camera, theta, motion.radius_m, edges.t_s, scale, motion.acceleration_mps2, n_nodes=settings.n_nodes)
     use_l, use_r, use_a, wide_l, wide_r = select_lines_of(edges, me, settings)
+    use_a = use_a & ~beyond_sensor(me, camera.width)
     sel = _weighted(weight_tables(edges, settings), use_l, use_r, use_a, wide_l, wide_r, None, None)
     sl, sr, sa = sel.sigma_left, sel.sigma_right, sel.sigma_area
     J = np.vstack([dl[use_l] / sl[:, None], dr[use_r] / sr[:, None], da[use_a] / sa[:, None]])

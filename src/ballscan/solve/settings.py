@@ -138,7 +138,8 @@ class FitSettings:
     f_scale : float
         Scale of the robust loss, sigmas.
     min_edge_lines : int
-        Fewer lines with both edges usable make the fit degenerate.
+        Fewer lines with both edges usable (two lines with one edge count
+        as one) make the fit degenerate.
     n_nodes : int
         Gauss-Legendre nodes per piece of the averaged model in the residuals.
     max_nfev : int

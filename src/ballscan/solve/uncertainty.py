@@ -28,7 +28,12 @@ from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from .derived import direction_jacobian
 
-__all__ = ["MotionUncertainty", "covariance_from_jacobian", "param_scale", "propagate", "residual_scale"]
+__all__ = ["MotionUncertainty", "covariance_from_jacobian", "param_scale", "propagate", "residual_scale", "unfixed_parameters"]
+
+#: a velocity component whose 1-sigma exceeds this many times the speed
+#: across the viewing plane leaves the flight's direction open by more than
+#: +-70 degrees in that component: the image does not fix it
+MAX_VELOCITY_SIGMA_RATIO = 3.0
 
 
 def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
@@ -69,6 +74,39 @@ def covariance_from_jacobian(J: np.ndarray, scale: float) -> tuple[np.ndarray, t
     inv_evals = np.where(tiny, 0.0, 1.0 / np.where(tiny, 1.0, evals))
     cov_s = (evecs * inv_evals) @ evecs.T
     return cov_s / np.outer(cn, cn) * scale, tuple(undetermined)
+
+
+def unfixed_parameters(cov: np.ndarray, scale_motion: BallMotion) -> tuple[str, ...]:
+    """Parameters of :data:`PARAM_NAMES` that a full-rank fit still does not fix: 1-sigma beyond the scale the ball sets.
+
+    The rank test of :func:`covariance_from_jacobian` finds the directions
+    the residuals do not see at all; a ball of which the image shows a
+    small part (cut by the sensor's or the image's end) has directions they
+    see so weakly that the linearised 1-sigma exceeds the parameter's own
+    scale, and the fit then finds no minimum along them either (it may
+    stop anywhere along them).  The scales come from ``scale_motion``, a
+    motion taken from the image without the fit (the key-point guess of
+    Eq. (3)-(7), whose ``V.x`` is ``2 R / T``), so that a fit that wandered
+    along a weak direction does not widen them: ``t_c``, the time the ball
+    takes to cross the viewing plane (``2 R / |vx|``); ``y0`` and ``z0``,
+    the distance ``z0``; each velocity component,
+    :data:`MAX_VELOCITY_SIGMA_RATIO` times the speed across the plane
+    ``|(vx, vy)|``.  NaN sigmas (undetermined by rank) count too.
+
+    Parameters
+    ----------
+    cov : ndarray (6, 6)
+        Covariance of ``(t_c, y0, z0, vx, vy, vz)`` (s, m, m, m/s).
+    scale_motion : BallMotion
+        The motion the scales are taken from.
+    """
+    sig = np.sqrt(np.abs(np.diag(np.asarray(cov, dtype=float))[:6]))
+    vx, vy, _ = scale_motion.velocity_mps
+    vt = math.hypot(vx, vy)
+    z0 = abs(scale_motion.position_m[2])
+    t_cross = 2.0 * scale_motion.radius_m / abs(vx) if vx != 0 else math.inf
+    scale = np.array([t_cross, z0, z0] + [MAX_VELOCITY_SIGMA_RATIO * vt] * 3)
+    return tuple(PARAM_NAMES[k] for k in range(6) if not sig[k] <= scale[k])
 
 
 def residual_scale(chi2_red: float, sides: tuple[np.ndarray, ...], correlated: bool) -> tuple[float, float]:
