@@ -26,7 +26,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from pov import film_range, frame_count, ini_source, pov_source, SAMPLES_ACROSS, SAMPLES_ALONG  # noqa: E402
+from pov import film_range, frame_count, ini_source, pov_source, samples_along, SAMPLES_ACROSS  # noqa: E402
 from scene import Scene, draw_scene, rig_views  # noqa: E402
 
 DEFAULT_OUT = HERE / "scenes"
@@ -69,7 +69,7 @@ def scene_truth(scene: Scene) -> dict:
                            "prnu_sigma*N(0,1) per column; a dead column reads black_dn + N(0, read_dn^2), a hot "
                            "column hot_dn + N(0, read_dn^2)"},
         "render": {"renderer": "POV-Ray 3.7 (povray), one frame per (line, sub-frame)",
-                   "samples_along_line_per_px": SAMPLES_ALONG, "samples_across_line_per_px": SAMPLES_ACROSS,
+                   "samples_along_line_per_px": samples_along(scene), "samples_across_line_per_px": SAMPLES_ACROSS,
                    "subframes_per_line": scene.subframes, "subframe_times": "t_i + tau*((k+0.5)/NS - 0.5)",
                    "frames": frame_count(scene), "lines_traced": [scene.traced_lines[0], scene.traced_lines[-1]],
                    "film_undistorted_n": [lo, hi], "pov_source": f"src/{scene.name}.pov"},
@@ -95,7 +95,12 @@ def camera_toml(scene: Scene) -> str:
 def write_scene(scene: Scene, out: Path) -> None:
     """Write the scene's source, camera file and truth under ``out``."""
     (out / "src").mkdir(parents=True, exist_ok=True)
-    (out / "src" / f"{scene.name}.pov").write_text(pov_source(scene))
+    src = out / "src" / f"{scene.name}.pov"
+    text = pov_source(scene)
+    if (out / f"{scene.name}.png").exists() and src.exists() and src.read_text() == text:
+        return  # rendered from this very source: keep its image and completed truth
+    (out / f"{scene.name}.png").unlink(missing_ok=True)
+    src.write_text(text)
     (out / "src" / f"{scene.name}.ini").write_text(ini_source(scene))
     (out / f"{scene.name}.camera.toml").write_text(camera_toml(scene))
     (out / f"{scene.name}.truth.json").write_text(json.dumps(scene_truth(scene), indent=1) + "\n")

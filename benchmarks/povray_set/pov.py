@@ -18,11 +18,23 @@ import numpy as np
 
 from scene import Scene, Ball
 
-__all__ = ["film_range", "pov_source", "ini_source", "frame_count", "SAMPLES_ALONG", "SAMPLES_ACROSS", "BLUR_SAMPLES"]
+__all__ = ["film_range", "pov_source", "ini_source", "frame_count", "samples_along", "SAMPLES_ALONG", "SAMPLES_ACROSS", "BLUR_SAMPLES"]
 
 SAMPLES_ALONG = 16
 SAMPLES_ACROSS = 4
-BLUR_SAMPLES = 24
+#: With focal blur POV-Ray jitters each ray inside its film sample, so fewer samples along the line do.
+SAMPLES_ALONG_BLUR = 4
+#: 19 rays a film sample: POV-Ray's 19-point hexagonal aperture grid (radius 0.385 plus jitter 0.096 of
+#: its unit disc of radius 0.5), which covers the aperture disc.
+BLUR_SAMPLES = 19
+#: POV-Ray places the aperture rays at ``aperture / 2`` times its grid, whose disc has radius 0.5: the
+#: lens's diameter is half the keyword's value.
+POV_APERTURE_PER_DIAMETER = 2.0
+
+
+def samples_along(scene: Scene) -> int:
+    """Film samples per pixel along the sensor."""
+    return SAMPLES_ALONG_BLUR if scene.optics.aperture_m > 0 else SAMPLES_ALONG
 
 _SEAM = """#declare SeamK = 1.6;
 #declare fRad = function(x, y, z) { sqrt(x*x + y*y + z*z) }
@@ -132,12 +144,14 @@ def pov_source(scene: Scene) -> str:
     if light.second_dir is not None:
         lamps += (f"light_source {{ {center} + {lamp_dist:.6g} * {_vec(light.second_dir)}"
                   f" color rgb FL * {light.second_intensity:.4g} }}\n")
+    n_mid, n_half = 0.5 * (lo + hi), 0.5 * (hi - lo)
     blur = ""
     if scene.optics.aperture_m > 0:
-        blur = (f"\n  aperture {1000.0 * scene.optics.aperture_m:.8g} blur_samples {BLUR_SAMPLES}"
-                f" focal_point <0, 0, {1000.0 * scene.optics.focus_m:.8g}> confidence 0.999 variance 0")
+        blur = (f"\n  aperture {POV_APERTURE_PER_DIAMETER * 1000.0 * scene.optics.aperture_m:.8g}"
+                f" blur_samples {BLUR_SAMPLES}"
+                f" focal_point <0, {1000.0 * scene.optics.focus_m * n_mid:.10g}, {1000.0 * scene.optics.focus_m:.8g}>"
+                f" confidence 0.999 variance 0")
     zb = 1000.0 * light.background_distance_m
-    n_mid, n_half = 0.5 * (lo + hi), 0.5 * (hi - lo)
     bg = (f"{light.background_level:.6g} * (1 + {light.background_ramp:.6g} * ((y / {zb:.8g}) - {n_mid:.10g}) / {n_half:.10g}"
           f" + {light.background_wave:.6g} * sin({2 * math.pi * light.background_wave_periods:.8g}"
           f" * ((y / {zb:.8g}) - {n_mid:.10g}) / {n_half:.10g} + {light.background_wave_phase_rad:.6g}))")
@@ -165,7 +179,7 @@ def pov_source(scene: Scene) -> str:
 global_settings {{ assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }}
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: {SAMPLES_ALONG * cam.width} x {SAMPLES_ACROSS} samples spanning y/z in [{lo:.10g}, {hi:.10g}] and one pixel in x
+// film: {samples_along(scene) * cam.width} x {SAMPLES_ACROSS} samples spanning y/z in [{lo:.10g}, {hi:.10g}] and one pixel in x
 camera {{ perspective location <0, 0, 0>
   direction <0, {f * n_mid:.10g}, {f:.10g}>
   right <0, {f * (hi - lo):.10g}, 0>
@@ -185,7 +199,7 @@ def ini_source(scene: Scene) -> str:
     return f"""; validation scene {scene.name}
 Input_File_Name={scene.name}.pov
 Output_File_Name=frames/{scene.name}_
-Width={SAMPLES_ALONG * scene.camera.width}
+Width={samples_along(scene) * scene.camera.width}
 Height={SAMPLES_ACROSS}
 Initial_Frame=0
 Final_Frame={frame_count(scene) - 1}

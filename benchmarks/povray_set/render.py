@@ -33,7 +33,7 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from pov import SAMPLES_ACROSS, SAMPLES_ALONG, frame_count, undistort  # noqa: E402
+from pov import undistort  # noqa: E402
 from scene import draw_scene, rig_views  # noqa: E402
 
 LUMA = np.array([0.299, 0.587, 0.114])
