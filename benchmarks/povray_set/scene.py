@@ -308,14 +308,20 @@ def _lines(balls: tuple[Ball, ...], cam: Camera, cut: str, cut_frac: float) -> t
     offset = math.floor(first)
     shift = offset / lr
     balls = tuple(replace(b, t_c_s=b.t_c_s - shift) for b in balls)
-    n_lines = int(math.ceil(last)) - offset + 1
+    cam = replace(cam, n_lines=int(math.ceil(last)) - offset + 1)
+    return cam, balls, _traced_lines(balls, cam)
+
+
+def _traced_lines(balls: tuple[Ball, ...], cam: Camera) -> list[int]:
+    """Lines whose exposure may meet a ball's footprint (one line of margin each side)."""
+    lr = cam.line_rate_hz
     traced = set()
     for b in balls:
         a, z = visible_interval_s(b, cam)
         i0 = int(math.floor((a - cam.exposure_s / 2) * lr)) - 1
         i1 = int(math.ceil((z + cam.exposure_s / 2) * lr)) + 1
-        traced.update(i for i in range(i0, i1 + 1) if 0 <= i < n_lines)
-    return replace(cam, n_lines=n_lines), balls, sorted(traced)
+        traced.update(i for i in range(i0, i1 + 1) if 0 <= i < cam.n_lines)
+    return sorted(traced)
 
 
 def _subframes(balls: tuple[Ball, ...], cam: Camera, n_traced: int) -> int:
@@ -449,5 +455,10 @@ def rig_views(scene: Scene, angles_deg: tuple[float, ...]) -> list[Scene]:
                         else _unit(rot @ np.asarray(scene.light.second_dir)))
         views.append(replace(scene, name=f"{scene.name}_a{int(round(a)):03d}", balls=balls, light=light,
                              pose_rotation=tuple(tuple(float(v) for v in row) for row in rot),
-                             pose_translation_m=tuple(float(v) for v in trans)))
-    return views
+                             pose_translation_m=tuple(float(v) for v in trans),
+                             conditions=_conditions(balls, scene.camera, light, scene.sensor, scene.optics,
+                                                    scene.cut, "dark_ball" in scene.conditions)))
+    # one line timing for the rig: every view traces the lines any view needs
+    traced = sorted(set().union(*(_traced_lines(v.balls, v.camera) for v in views)))
+    ns = max(_subframes(v.balls, v.camera, len(traced)) for v in views)
+    return [replace(v, traced_lines=tuple(traced), subframes=ns) for v in views]

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2992 x 4 samples spanning y/z in [0.04381028285, 0.07198656774] and one pixel in x
+// film: 748 x 4 samples spanning y/z in [0.04381028285, 0.07198656774] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 384.2595138, 6636.786956>
   right <0, 187, 0>
   up <1, 0, 0>
-  aperture 9.2191775 blur_samples 24 focal_point <0, 0, 11021.248> confidence 0.999 variance 0 }
+  aperture 18.438355 blur_samples 19 focal_point <0, 638.1129143, 11021.248> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 49026.956

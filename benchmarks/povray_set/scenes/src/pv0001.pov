@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1968 x 4 samples spanning y/z in [-0.01228227672, 0.009568588971] and one pixel in x
+// film: 492 x 4 samples spanning y/z in [-0.01228227672, 0.009568588971] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -7.637765881, 5629.067597>
   right <0, 123, 0>
   up <1, 0, 0>
-  aperture 8.4314617 blur_samples 24 focal_point <0, 0, 9541.4602> confidence 0.999 variance 0 }
+  aperture 16.862923 blur_samples 19 focal_point <0, -12.94627183, 9541.4602> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 31540.759

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2272 x 4 samples spanning y/z in [-0.02320804711, 0.0157165264] and one pixel in x
+// film: 568 x 4 samples spanning y/z in [-0.02320804711, 0.0157165264] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -13.66483746, 3648.081076>
   right <0, 142, 0>
   up <1, 0, 0>
-  aperture 8.6815969 blur_samples 24 focal_point <0, 0, 2647.1397> confidence 0.999 variance 0 }
+  aperture 17.363194 blur_samples 19 focal_point <0, -9.915550808, 2647.1397> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 11069.931

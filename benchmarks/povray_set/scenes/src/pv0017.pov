@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1328 x 4 samples spanning y/z in [-0.2588341606, -0.2333452071] and one pixel in x
+// film: 332 x 4 samples spanning y/z in [-0.2588341606, -0.2333452071] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -801.3449326, 3256.312577>
   right <0, 83, 0>
   up <1, 0, 0>
-  aperture 23.877891 blur_samples 24 focal_point <0, 0, 7673.7083> confidence 0.999 variance 0 }
+  aperture 47.755782 blur_samples 19 focal_point <0, -1888.420457, 7673.7083> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 71209.91

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2512 x 4 samples spanning y/z in [-0.2834694379, -0.2614196291] and one pixel in x
+// film: 628 x 4 samples spanning y/z in [-0.2834694379, -0.2614196291] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -1939.871322, 7120.243145>
   right <0, 157, 0>
   up <1, 0, 0>
-  aperture 9.0819619 blur_samples 24 focal_point <0, 0, 9312.6329> confidence 0.999 variance 0 }
+  aperture 18.163924 blur_samples 19 focal_point <0, -2537.175938, 9312.6329> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 72097.845

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1344 x 4 samples spanning y/z in [0.09998100741, 0.1357195687] and one pixel in x
+// film: 336 x 4 samples spanning y/z in [0.09998100741, 0.1357195687] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 280.1104981, 2376.833377>
   right <0, 84.94460521, 0>
   up <1, 0, 0>
-  aperture 12.834757 blur_samples 24 focal_point <0, 0, 2144.2095> confidence 0.999 variance 0 }
+  aperture 25.669513 blur_samples 19 focal_point <0, 252.6957124, 2144.2095> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 7246.1066

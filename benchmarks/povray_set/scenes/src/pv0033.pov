@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1520 x 4 samples spanning y/z in [-0.007205001741, 0.05219190481] and one pixel in x
+// film: 380 x 4 samples spanning y/z in [-0.007205001741, 0.05219190481] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 35.97216888, 1599.228506>
   right <0, 94.9892261, 0>
   up <1, 0, 0>
-  aperture 19.255457 blur_samples 24 focal_point <0, 0, 5579.6495> confidence 0.999 variance 0 }
+  aperture 38.510915 blur_samples 19 focal_point <0, 125.5055752, 5579.6495> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 13164.876

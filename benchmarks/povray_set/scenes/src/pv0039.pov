@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1664 x 4 samples spanning y/z in [-0.007586837838, 0.008288624921] and one pixel in x
+// film: 416 x 4 samples spanning y/z in [-0.007586837838, 0.008288624921] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2.29870013, 6550.99014>
   right <0, 104, 0>
   up <1, 0, 0>
-  aperture 10.30421 blur_samples 24 focal_point <0, 0, 5833.823> confidence 0.999 variance 0 }
+  aperture 20.60842 blur_samples 19 focal_point <0, 2.047050822, 5833.823> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 37035.876

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2048 x 4 samples spanning y/z in [-0.01654858419, 0.01198183531] and one pixel in x
+// film: 512 x 4 samples spanning y/z in [-0.01654858419, 0.01198183531] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -10.24442047, 4486.526732>
   right <0, 128.0024898, 0>
   up <1, 0, 0>
-  aperture 2.2555373 blur_samples 24 focal_point <0, 0, 2802.2249> confidence 0.999 variance 0 }
+  aperture 4.5110747 blur_samples 19 focal_point <0, -6.398528773, 2802.2249> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 9471.5738

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1904 x 4 samples spanning y/z in [-0.08361743225, 0.02325954552] and one pixel in x
+// film: 476 x 4 samples spanning y/z in [-0.08361743225, 0.02325954552] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -33.6021315, 1113.429688>
   right <0, 119, 0>
   up <1, 0, 0>
-  aperture 4.9911967 blur_samples 24 focal_point <0, 0, 2084.6848> confidence 0.999 variance 0 }
+  aperture 9.9823933 blur_samples 19 focal_point <0, -62.91358405, 2084.6848> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 6820.326

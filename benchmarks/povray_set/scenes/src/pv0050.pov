@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1632 x 4 samples spanning y/z in [-0.05698217598, 0.05940136166] and one pixel in x
+// film: 408 x 4 samples spanning y/z in [-0.05698217598, 0.05940136166] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 1.05921818, 875.6815861>
   right <0, 101.9149208, 0>
   up <1, 0, 0>
-  aperture 7.9786653 blur_samples 24 focal_point <0, 0, 1144.5901> confidence 0.999 variance 0 }
+  aperture 15.957331 blur_samples 19 focal_point <0, 1.384488021, 1144.5901> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 3925.3735

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1328 x 4 samples spanning y/z in [-0.01455274727, 0.01721086939] and one pixel in x
+// film: 332 x 4 samples spanning y/z in [-0.01455274727, 0.01721086939] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 3.472906414, 2613.052566>
   right <0, 83, 0>
   up <1, 0, 0>
-  aperture 36.715885 blur_samples 24 focal_point <0, 0, 15124.988> confidence 0.999 variance 0 }
+  aperture 73.431769 blur_samples 19 focal_point <0, 20.10203281, 15124.988> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 23827.399

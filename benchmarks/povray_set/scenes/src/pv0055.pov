@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2320 x 4 samples spanning y/z in [0.3015662437, 0.3212674053] and one pixel in x
+// film: 580 x 4 samples spanning y/z in [0.3015662437, 0.3212674053] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2292.019144, 7359.972114>
   right <0, 145, 0>
   up <1, 0, 0>
-  aperture 6.3660901 blur_samples 24 focal_point <0, 0, 17339.62> confidence 0.999 variance 0 }
+  aperture 12.73218 blur_samples 19 focal_point <0, 5399.849462, 17339.62> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 48079.007

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2560 x 4 samples spanning y/z in [-0.06766243246, 0.05223486325] and one pixel in x
+// film: 640 x 4 samples spanning y/z in [-0.06766243246, 0.05223486325] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -10.29385633, 1334.47547>
   right <0, 160, 0>
   up <1, 0, 0>
-  aperture 19.939153 blur_samples 24 focal_point <0, 0, 2054.2131> confidence 0.999 variance 0 }
+  aperture 39.878306 blur_samples 19 focal_point <0, -15.84575762, 2054.2131> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 11291.273

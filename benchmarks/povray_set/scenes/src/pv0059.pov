@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1744 x 4 samples spanning y/z in [-0.210619919, -0.1169535372] and one pixel in x
+// film: 436 x 4 samples spanning y/z in [-0.210619919, -0.1169535372] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -190.5993702, 1163.704608>
   right <0, 109, 0>
   up <1, 0, 0>
-  aperture 7.0609505 blur_samples 24 focal_point <0, 0, 4040.6782> confidence 0.999 variance 0 }
+  aperture 14.121901 blur_samples 19 focal_point <0, -661.8094559, 4040.6782> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 13527.592

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1696 x 4 samples spanning y/z in [-0.04984638801, 0.06322653459] and one pixel in x
+// film: 424 x 4 samples spanning y/z in [-0.04984638801, 0.06322653459] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 6.271596705, 937.4481314>
   right <0, 106, 0>
   up <1, 0, 0>
-  aperture 19.283436 blur_samples 24 focal_point <0, 0, 4088.0003> confidence 0.999 variance 0 }
+  aperture 38.566871 blur_samples 19 focal_point <0, 27.34902136, 4088.0003> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 27954.206

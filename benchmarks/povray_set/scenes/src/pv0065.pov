@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2720 x 4 samples spanning y/z in [-0.01365927076, 0.01401849284] and one pixel in x
+// film: 680 x 4 samples spanning y/z in [-0.01365927076, 0.01401849284] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 1.103191627, 6142.114749>
   right <0, 170, 0>
   up <1, 0, 0>
-  aperture 5.3265452 blur_samples 24 focal_point <0, 0, 19971.702> confidence 0.999 variance 0 }
+  aperture 10.65309 blur_samples 19 focal_point <0, 3.587138254, 19971.702> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 71543.228

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1920 x 4 samples spanning y/z in [-0.07466542725, 0.0604909947] and one pixel in x
+// film: 480 x 4 samples spanning y/z in [-0.07466542725, 0.0604909947] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -6.292456847, 887.8601421>
   right <0, 120, 0>
   up <1, 0, 0>
-  aperture 50.770804 blur_samples 24 focal_point <0, 0, 3957.6199> confidence 0.999 variance 0 }
+  aperture 101.54161 blur_samples 19 focal_point <0, -28.04850792, 3957.6199> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 18510.14

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2096 x 4 samples spanning y/z in [0.199783148, 0.2436228059] and one pixel in x
+// film: 524 x 4 samples spanning y/z in [0.199783148, 0.2436228059] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 662.4844113, 2988.162001>
   right <0, 131, 0>
   up <1, 0, 0>
-  aperture 8.4311732 blur_samples 24 focal_point <0, 0, 2270.5992> confidence 0.999 variance 0 }
+  aperture 16.862346 blur_samples 19 focal_point <0, 503.3986078, 2270.5992> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 7838.4749

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1088 x 4 samples spanning y/z in [0.3680807956, 0.4142066438] and one pixel in x
+// film: 272 x 4 samples spanning y/z in [0.3680807956, 0.4142066438] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 640.5746366, 1637.696336>
   right <0, 75.54013264, 0>
   up <1, 0, 0>
-  aperture 34.122177 blur_samples 24 focal_point <0, 0, 9311.8474> confidence 0.999 variance 0 }
+  aperture 68.244354 blur_samples 19 focal_point <0, 3642.270627, 9311.8474> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 48327.555

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3024 x 4 samples spanning y/z in [-0.1513000515, -0.1288893968] and one pixel in x
+// film: 756 x 4 samples spanning y/z in [-0.1513000515, -0.1288893968] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -1162.768186, 8299.871344>
   right <0, 186.0055511, 0>
   up <1, 0, 0>
-  aperture 12.923594 blur_samples 24 focal_point <0, 0, 7762.611> confidence 0.999 variance 0 }
+  aperture 25.847189 blur_samples 19 focal_point <0, -1087.500853, 7762.611> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 38954.977

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1712 x 4 samples spanning y/z in [0.06262473489, 0.1226554949] and one pixel in x
+// film: 428 x 4 samples spanning y/z in [0.06262473489, 0.1226554949] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 165.1235514, 1782.419545>
   right <0, 107, 0>
   up <1, 0, 0>
-  aperture 33.960518 blur_samples 24 focal_point <0, 0, 11094.687> confidence 0.999 variance 0 }
+  aperture 67.921036 blur_samples 19 focal_point <0, 1027.813122, 11094.687> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 64956.76

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2688 x 4 samples spanning y/z in [-0.03837331997, 0.02943240021] and one pixel in x
+// film: 672 x 4 samples spanning y/z in [-0.03837331997, 0.02943240021] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -11.07422283, 2477.199915>
   right <0, 167.9683242, 0>
   up <1, 0, 0>
-  aperture 12.576438 blur_samples 24 focal_point <0, 0, 4624.3137> confidence 0.999 variance 0 }
+  aperture 25.152875 blur_samples 19 focal_point <0, -20.67280891, 4624.3137> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 12018.457

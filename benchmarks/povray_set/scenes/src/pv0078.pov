@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2112 x 4 samples spanning y/z in [-0.05514453518, 0.05298331537] and one pixel in x
+// film: 528 x 4 samples spanning y/z in [-0.05514453518, 0.05298331537] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -1.31918379, 1220.777065>
   right <0, 132, 0>
   up <1, 0, 0>
-  aperture 41.995123 blur_samples 24 focal_point <0, 0, 7779.4043> confidence 0.999 variance 0 }
+  aperture 83.990245 blur_samples 19 focal_point <0, -8.406501406, 7779.4043> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 22966.391

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1216 x 4 samples spanning y/z in [0.2771375429, 0.3031348182] and one pixel in x
+// film: 304 x 4 samples spanning y/z in [0.2771375429, 0.3031348182] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 848.1792594, 2923.383281>
   right <0, 76, 0>
   up <1, 0, 0>
-  aperture 19.032936 blur_samples 24 focal_point <0, 0, 4672.6245> confidence 0.999 variance 0 }
+  aperture 38.065872 blur_samples 19 focal_point <0, 1355.697425, 4672.6245> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 22353.777

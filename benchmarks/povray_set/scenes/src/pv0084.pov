@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2032 x 4 samples spanning y/z in [-0.01038552027, 0.01214821755] and one pixel in x
+// film: 508 x 4 samples spanning y/z in [-0.01038552027, 0.01214821755] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 4.967275198, 5635.993505>
   right <0, 127, 0>
   up <1, 0, 0>
-  aperture 6.5052126 blur_samples 24 focal_point <0, 0, 7989.0158> confidence 0.999 variance 0 }
+  aperture 13.010425 blur_samples 19 focal_point <0, 7.041108189, 7989.0158> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 11526.485

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2208 x 4 samples spanning y/z in [-0.009740134153, 0.007485317256] and one pixel in x
+// film: 552 x 4 samples spanning y/z in [-0.009740134153, 0.007485317256] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -9.032036116, 8011.325558>
   right <0, 137.9986991, 0>
   up <1, 0, 0>
-  aperture 9.7037755 blur_samples 24 focal_point <0, 0, 7124.055> confidence 0.999 variance 0 }
+  aperture 19.407551 blur_samples 19 focal_point <0, -8.031719829, 7124.055> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 53108.63

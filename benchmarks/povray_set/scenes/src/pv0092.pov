@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1872 x 4 samples spanning y/z in [-0.01097788883, 0.01985054641] and one pixel in x
+// film: 468 x 4 samples spanning y/z in [-0.01097788883, 0.01985054641] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 16.83608585, 3795.04916>
   right <0, 116.9954273, 0>
   up <1, 0, 0>
-  aperture 7.3131428 blur_samples 24 focal_point <0, 0, 5119.6527> confidence 0.999 variance 0 }
+  aperture 14.626286 blur_samples 19 focal_point <0, 22.71246285, 5119.6527> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 11262.166

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2544 x 4 samples spanning y/z in [-0.07052729371, 0.05049436336] and one pixel in x
+// film: 636 x 4 samples spanning y/z in [-0.07052729371, 0.05049436336] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -13.15977653, 1313.814435>
   right <0, 159, 0>
   up <1, 0, 0>
-  aperture 7.1973244 blur_samples 24 focal_point <0, 0, 7519.255> confidence 0.999 variance 0 }
+  aperture 14.394649 blur_samples 19 focal_point <0, -75.31635575, 7519.255> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 10334.485

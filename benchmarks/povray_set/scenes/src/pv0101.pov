@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1392 x 4 samples spanning y/z in [-0.04559897044, 0.05363918596] and one pixel in x
+// film: 348 x 4 samples spanning y/z in [-0.04559897044, 0.05363918596] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 3.526604316, 877.2412402>
   right <0, 87.0558034, 0>
   up <1, 0, 0>
-  aperture 43.695463 blur_samples 24 focal_point <0, 0, 14514.315> confidence 0.999 variance 0 }
+  aperture 87.390926 blur_samples 19 focal_point <0, 58.34910896, 14514.315> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 36005.308

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2144 x 4 samples spanning y/z in [0.2147191772, 0.2974207577] and one pixel in x
+// film: 536 x 4 samples spanning y/z in [0.2147191772, 0.2974207577] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 393.685222, 1537.412708>
   right <0, 127.1464608, 0>
   up <1, 0, 0>
-  aperture 5.4856593 blur_samples 24 focal_point <0, 0, 1364.7262> confidence 0.999 variance 0 }
+  aperture 10.971319 blur_samples 19 focal_point <0, 349.4653944, 1364.7262> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 5753.2575

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2960 x 4 samples spanning y/z in [-0.06240826663, 0.06611174768] and one pixel in x
+// film: 740 x 4 samples spanning y/z in [-0.06240826663, 0.06611174768] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2.665514776, 1439.464514>
   right <0, 185, 0>
   up <1, 0, 0>
-  aperture 6.1745737 blur_samples 24 focal_point <0, 0, 1599.6062> confidence 0.999 variance 0 }
+  aperture 12.349147 blur_samples 19 focal_point <0, 2.962055579, 1599.6062> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 7868.7712

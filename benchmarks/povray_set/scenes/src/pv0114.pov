@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2112 x 4 samples spanning y/z in [-0.4000744023, -0.3820016084] and one pixel in x
+// film: 528 x 4 samples spanning y/z in [-0.4000744023, -0.3820016084] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -2856.061819, 7303.795999>
   right <0, 132, 0>
   up <1, 0, 0>
-  aperture 23.015457 blur_samples 24 focal_point <0, 0, 8359.9947> confidence 0.999 variance 0 }
+  aperture 46.030915 blur_samples 19 focal_point <0, -3269.07564, 8359.9947> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 21370.752

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2576 x 4 samples spanning y/z in [-0.399554149, -0.346039216] and one pixel in x
+// film: 644 x 4 samples spanning y/z in [-0.399554149, -0.346039216] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -1121.561076, 3008.506054>
   right <0, 161, 0>
   up <1, 0, 0>
-  aperture 16.580307 blur_samples 24 focal_point <0, 0, 12919.749> confidence 0.999 variance 0 }
+  aperture 33.160615 blur_samples 19 focal_point <0, -4816.439592, 12919.749> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 19651.243

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1392 x 4 samples spanning y/z in [-0.2566920092, -0.1730905663] and one pixel in x
+// film: 348 x 4 samples spanning y/z in [-0.2566920092, -0.1730905663] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -218.6361136, 1017.426606>
   right <0, 85.05833232, 0>
   up <1, 0, 0>
-  aperture 24.315165 blur_samples 24 focal_point <0, 0, 8835.7046> confidence 0.999 variance 0 }
+  aperture 48.630329 blur_samples 19 focal_point <0, -1898.715935, 8835.7046> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 26974.539

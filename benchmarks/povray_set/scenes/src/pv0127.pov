@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2752 x 4 samples spanning y/z in [-0.3032638185, -0.2435249554] and one pixel in x
+// film: 688 x 4 samples spanning y/z in [-0.3032638185, -0.2435249554] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -787.1565023, 2879.197745>
   right <0, 172, 0>
   up <1, 0, 0>
-  aperture 18.239865 blur_samples 24 focal_point <0, 0, 12562.945> confidence 0.999 variance 0 }
+  aperture 36.47973 blur_samples 19 focal_point <0, -3434.638668, 12562.945> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 27768.176

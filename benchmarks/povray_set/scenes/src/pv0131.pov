@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1664 x 4 samples spanning y/z in [-0.02194229339, 0.02247532464] and one pixel in x
+// film: 416 x 4 samples spanning y/z in [-0.02194229339, 0.02247532464] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 0.6240232165, 2341.413263>
   right <0, 104, 0>
   up <1, 0, 0>
-  aperture 2.9858527 blur_samples 24 focal_point <0, 0, 2907.6655> confidence 0.999 variance 0 }
+  aperture 5.9717055 blur_samples 19 focal_point <0, 0.7749382964, 2907.6655> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 9625.9763

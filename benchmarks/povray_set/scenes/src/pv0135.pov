@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2384 x 4 samples spanning y/z in [-0.0422647998, 0.1368194736] and one pixel in x
+// film: 596 x 4 samples spanning y/z in [-0.0422647998, 0.1368194736] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 39.33524181, 832.0105233>
   right <0, 149, 0>
   up <1, 0, 0>
-  aperture 26.452971 blur_samples 24 focal_point <0, 0, 1218.4114> confidence 0.999 variance 0 }
+  aperture 52.905941 blur_samples 19 focal_point <0, 57.60324466, 1218.4114> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 7909.0006

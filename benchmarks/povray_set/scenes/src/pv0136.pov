@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3200 x 4 samples spanning y/z in [-0.01542457093, 0.01968260488] and one pixel in x
+// film: 800 x 4 samples spanning y/z in [-0.01542457093, 0.01968260488] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 12.12867127, 5696.841041>
   right <0, 200, 0>
   up <1, 0, 0>
-  aperture 5.4410006 blur_samples 24 focal_point <0, 0, 10825.447> confidence 0.999 variance 0 }
+  aperture 10.882001 blur_samples 19 focal_point <0, 23.0475607, 10825.447> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 43763.067

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1792 x 4 samples spanning y/z in [-0.0326034935, 0.0264871862] and one pixel in x
+// film: 448 x 4 samples spanning y/z in [-0.0326034935, 0.0264871862] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -5.796399873, 1895.391973>
   right <0, 112, 0>
   up <1, 0, 0>
-  aperture 10.212633 blur_samples 24 focal_point <0, 0, 2017.5943> confidence 0.999 variance 0 }
+  aperture 20.425267 blur_samples 19 focal_point <0, -6.170113428, 2017.5943> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 13465.789

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2496 x 4 samples spanning y/z in [-0.009714750167, 0.008480192726] and one pixel in x
+// film: 624 x 4 samples spanning y/z in [-0.009714750167, 0.008480192726] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -5.292431033, 8573.810916>
   right <0, 156, 0>
   up <1, 0, 0>
-  aperture 2.511796 blur_samples 24 focal_point <0, 0, 4042.1104> confidence 0.999 variance 0 }
+  aperture 5.0235919 blur_samples 19 focal_point <0, -2.495108737, 4042.1104> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 23634.5

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3024 x 4 samples spanning y/z in [-0.01287156116, 0.009840613602] and one pixel in x
+// film: 756 x 4 samples spanning y/z in [-0.01287156116, 0.009840613602] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -12.61126823, 8321.667071>
   right <0, 189.0031568, 0>
   up <1, 0, 0>
-  aperture 2.4911742 blur_samples 24 focal_point <0, 0, 12237.568> confidence 0.999 variance 0 }
+  aperture 4.9823484 blur_samples 19 focal_point <0, -18.54571324, 12237.568> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 37291.162

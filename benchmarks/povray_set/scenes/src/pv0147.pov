@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1600 x 4 samples spanning y/z in [-0.0399618559, 0.05217840912] and one pixel in x
+// film: 400 x 4 samples spanning y/z in [-0.0399618559, 0.05217840912] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 6.629323898, 1085.301849>
   right <0, 100, 0>
   up <1, 0, 0>
-  aperture 4.5838982 blur_samples 24 focal_point <0, 0, 567.71238> confidence 0.999 variance 0 }
+  aperture 9.1677964 blur_samples 19 focal_point <0, 3.467744277, 567.71238> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 1770.7339

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2192 x 4 samples spanning y/z in [-0.1179814676, -0.04436104699] and one pixel in x
+// film: 548 x 4 samples spanning y/z in [-0.1179814676, -0.04436104699] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -150.637372, 1855.796954>
   right <0, 136.6245523, 0>
   up <1, 0, 0>
-  aperture 3.3150653 blur_samples 24 focal_point <0, 0, 833.21833> confidence 0.999 variance 0 }
+  aperture 6.6301305 blur_samples 19 focal_point <0, -67.63337981, 833.21833> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 3089.4677

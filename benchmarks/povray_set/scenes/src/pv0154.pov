@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1824 x 4 samples spanning y/z in [-0.01358817833, 0.01509286231] and one pixel in x
+// film: 456 x 4 samples spanning y/z in [-0.01358817833, 0.01509286231] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2.990372204, 3974.751176>
   right <0, 114, 0>
   up <1, 0, 0>
-  aperture 10.719593 blur_samples 24 focal_point <0, 0, 9078.7759> confidence 0.999 variance 0 }
+  aperture 21.439186 blur_samples 19 focal_point <0, 6.830344317, 9078.7759> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 71486.503

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2352 x 4 samples spanning y/z in [-0.02940042143, 0.03498282168] and one pixel in x
+// film: 588 x 4 samples spanning y/z in [-0.02940042143, 0.03498282168] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 6.373197905, 2283.318149>
   right <0, 147.0074275, 0>
   up <1, 0, 0>
-  aperture 5.1676255 blur_samples 24 focal_point <0, 0, 4647.7643> confidence 0.999 variance 0 }
+  aperture 10.335251 blur_samples 19 focal_point <0, 12.97284027, 4647.7643> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 29648.188

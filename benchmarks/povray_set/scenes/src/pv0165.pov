@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1632 x 4 samples spanning y/z in [-0.01110845442, 0.007981515874] and one pixel in x
+// film: 408 x 4 samples spanning y/z in [-0.01110845442, 0.007981515874] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -8.353784015, 5343.107261>
   right <0, 101.9997589, 0>
   up <1, 0, 0>
-  aperture 5.7676993 blur_samples 24 focal_point <0, 0, 14387.781> confidence 0.999 variance 0 }
+  aperture 11.535399 blur_samples 19 focal_point <0, -22.49485411, 14387.781> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 41088.387

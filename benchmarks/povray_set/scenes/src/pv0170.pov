@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2192 x 4 samples spanning y/z in [-0.016159569, 0.01646881852] and one pixel in x
+// film: 548 x 4 samples spanning y/z in [-0.016159569, 0.01646881852] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 0.6492674437, 4198.987627>
   right <0, 137.0061955, 0>
   up <1, 0, 0>
-  aperture 31.407588 blur_samples 24 focal_point <0, 0, 9322.4296> confidence 0.999 variance 0 }
+  aperture 62.815176 blur_samples 19 focal_point <0, 1.441478417, 9322.4296> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 56871.805

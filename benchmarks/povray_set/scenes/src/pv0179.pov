@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1296 x 4 samples spanning y/z in [0.09630331633, 0.1119911454] and one pixel in x
+// film: 324 x 4 samples spanning y/z in [0.09630331633, 0.1119911454] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 541.7920481, 5202.174303>
   right <0, 81.6108213, 0>
   up <1, 0, 0>
-  aperture 40.026717 blur_samples 24 focal_point <0, 0, 10934.354> confidence 0.999 variance 0 }
+  aperture 80.053435 blur_samples 19 focal_point <0, 1138.782699, 10934.354> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 40278.213

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2672 x 4 samples spanning y/z in [-0.08257494041, 0.06227358713] and one pixel in x
+// film: 668 x 4 samples spanning y/z in [-0.08257494041, 0.06227358713] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -11.71861213, 1154.466106>
   right <0, 167.2227155, 0>
   up <1, 0, 0>
-  aperture 60.500038 blur_samples 24 focal_point <0, 0, 9699.294> confidence 0.999 variance 0 }
+  aperture 121.00008 blur_samples 19 focal_point <0, -98.45439704, 9699.294> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 14785.971

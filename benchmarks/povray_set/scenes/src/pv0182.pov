@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3024 x 4 samples spanning y/z in [-0.1344975035, 0.09584990751] and one pixel in x
+// film: 756 x 4 samples spanning y/z in [-0.1344975035, 0.09584990751] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -15.85517201, 820.4997796>
   right <0, 189, 0>
   up <1, 0, 0>
-  aperture 31.181954 blur_samples 24 focal_point <0, 0, 4716.8599> confidence 0.999 variance 0 }
+  aperture 62.363908 blur_samples 19 focal_point <0, -91.14764732, 4716.8599> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 15128.344

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2192 x 4 samples spanning y/z in [-0.05415350378, 0.04761894291] and one pixel in x
+// film: 548 x 4 samples spanning y/z in [-0.05415350378, 0.04761894291] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -4.397141613, 1345.810897>
   right <0, 136.9664677, 0>
   up <1, 0, 0>
-  aperture 47.098275 blur_samples 24 focal_point <0, 0, 6350.6719> confidence 0.999 variance 0 }
+  aperture 94.196551 blur_samples 19 focal_point <0, -20.74942595, 6350.6719> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 40557.596

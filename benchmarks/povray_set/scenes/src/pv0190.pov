@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2032 x 4 samples spanning y/z in [-0.06055972409, 0.0846709663] and one pixel in x
+// film: 508 x 4 samples spanning y/z in [-0.06055972409, 0.0846709663] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 10.5422888, 874.4708137>
   right <0, 127, 0>
   up <1, 0, 0>
-  aperture 25.54578 blur_samples 24 focal_point <0, 0, 5018.0142> confidence 0.999 variance 0 }
+  aperture 51.091561 blur_samples 19 focal_point <0, 60.49527778, 5018.0142> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 21593.585

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1152 x 4 samples spanning y/z in [0.2063206088, 0.222533155] and one pixel in x
+// film: 288 x 4 samples spanning y/z in [0.2063206088, 0.222533155] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 960.8757814, 4481.134888>
   right <0, 72.65060665, 0>
   up <1, 0, 0>
-  aperture 13.690429 blur_samples 24 focal_point <0, 0, 5248.8425> confidence 0.999 variance 0 }
+  aperture 27.380858 blur_samples 19 focal_point <0, 1125.492921, 5248.8425> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 26152.577

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1856 x 4 samples spanning y/z in [-0.04035245768, 0.04998412924] and one pixel in x
+// film: 464 x 4 samples spanning y/z in [-0.04035245768, 0.04998412924] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 6.181692264, 1283.617745>
   right <0, 115.957646, 0>
   up <1, 0, 0>
-  aperture 71.047753 blur_samples 24 focal_point <0, 0, 6687.1711> confidence 0.999 variance 0 }
+  aperture 142.09551 blur_samples 19 focal_point <0, 32.20431764, 6687.1711> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 12013.557

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2672 x 4 samples spanning y/z in [-0.09787124065, -0.03436327338] and one pixel in x
+// film: 668 x 4 samples spanning y/z in [-0.09787124065, -0.03436327338] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -174.4918496, 2639.127173>
   right <0, 167.6056021, 0>
   up <1, 0, 0>
-  aperture 44.82768 blur_samples 24 focal_point <0, 0, 9434.636> confidence 0.999 variance 0 }
+  aperture 89.65536 blur_samples 19 focal_point <0, -623.792254, 9434.636> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 29220.528

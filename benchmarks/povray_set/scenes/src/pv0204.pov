@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3184 x 4 samples spanning y/z in [-0.09527371735, 0.08315263814] and one pixel in x
+// film: 796 x 4 samples spanning y/z in [-0.09527371735, 0.08315263814] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -6.759356701, 1115.306085>
   right <0, 199, 0>
   up <1, 0, 0>
-  aperture 39.057448 blur_samples 24 focal_point <0, 0, 8010.7581> confidence 0.999 variance 0 }
+  aperture 78.114895 blur_samples 19 focal_point <0, -48.54951653, 8010.7581> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 52321.481

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1712 x 4 samples spanning y/z in [-0.04298137925, 0.03743377334] and one pixel in x
+// film: 428 x 4 samples spanning y/z in [-0.04298137925, 0.03743377334] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -3.69017342, 1330.366099>
   right <0, 106.9815928, 0>
   up <1, 0, 0>
-  aperture 44.158997 blur_samples 24 focal_point <0, 0, 6849.6773> confidence 0.999 variance 0 }
+  aperture 88.317993 blur_samples 19 focal_point <0, -18.99965507, 6849.6773> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 30516.038

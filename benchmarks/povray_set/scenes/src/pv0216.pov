@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3152 x 4 samples spanning y/z in [-0.4149044828, -0.1716600305] and one pixel in x
+// film: 788 x 4 samples spanning y/z in [-0.4149044828, -0.1716600305] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -237.5248603, 809.8848631>
   right <0, 197, 0>
   up <1, 0, 0>
-  aperture 14.176498 blur_samples 24 focal_point <0, 0, 2437.831> confidence 0.999 variance 0 }
+  aperture 28.352996 blur_samples 19 focal_point <0, -714.9725758, 2437.831> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 4897.3511

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2944 x 4 samples spanning y/z in [0.0295937588, 0.2369495355] and one pixel in x
+// film: 736 x 4 samples spanning y/z in [0.0295937588, 0.2369495355] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 118.3280023, 887.8707876>
   right <0, 184.1051368, 0>
   up <1, 0, 0>
-  aperture 3.9127608 blur_samples 24 focal_point <0, 0, 822.50415> confidence 0.999 variance 0 }
+  aperture 7.8255217 blur_samples 19 focal_point <0, 109.6164834, 822.50415> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 5015.8374

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2800 x 4 samples spanning y/z in [-0.05128438581, 0.04621636437] and one pixel in x
+// film: 700 x 4 samples spanning y/z in [-0.05128438581, 0.04621636437] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -4.548189373, 1794.857985>
   right <0, 175, 0>
   up <1, 0, 0>
-  aperture 21.793266 blur_samples 24 focal_point <0, 0, 3693.7085> confidence 0.999 variance 0 }
+  aperture 43.586532 blur_samples 19 focal_point <0, -9.359896853, 3693.7085> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 32099.403

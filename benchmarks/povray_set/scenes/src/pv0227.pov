@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3088 x 4 samples spanning y/z in [-0.02813218327, 0.0353254135] and one pixel in x
+// film: 772 x 4 samples spanning y/z in [-0.02813218327, 0.0353254135] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 10.93726707, 3040.989017>
   right <0, 192.9738548, 0>
   up <1, 0, 0>
-  aperture 9.4288848 blur_samples 24 focal_point <0, 0, 3062.5591> confidence 0.999 variance 0 }
+  aperture 18.85777 blur_samples 19 focal_point <0, 11.0148462, 3062.5591> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 14515.795

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2304 x 4 samples spanning y/z in [-0.06354128229, 0.0440698366] and one pixel in x
+// film: 576 x 4 samples spanning y/z in [-0.06354128229, 0.0440698366] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -13.02692582, 1338.0543>
   right <0, 143.9895203, 0>
   up <1, 0, 0>
-  aperture 18.453521 blur_samples 24 focal_point <0, 0, 5020.3312> confidence 0.999 variance 0 }
+  aperture 36.907041 blur_samples 19 focal_point <0, -48.87655342, 5020.3312> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 18066.755

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2512 x 4 samples spanning y/z in [-0.1284160776, 0.0008597646] and one pixel in x
+// film: 628 x 4 samples spanning y/z in [-0.1284160776, 0.0008597646] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -77.45585254, 1214.457375>
   right <0, 157, 0>
   up <1, 0, 0>
-  aperture 1.1667168 blur_samples 24 focal_point <0, 0, 597.0546> confidence 0.999 variance 0 }
+  aperture 2.3334337 blur_samples 19 focal_point <0, -38.07904163, 597.0546> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 4677.1579

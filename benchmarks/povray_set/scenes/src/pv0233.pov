@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2784 x 4 samples spanning y/z in [0.1142926572, 0.3049130269] and one pixel in x
+// film: 696 x 4 samples spanning y/z in [0.1142926572, 0.3049130269] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 191.3273727, 912.8090575>
   right <0, 174, 0>
   up <1, 0, 0>
-  aperture 13.820076 blur_samples 24 focal_point <0, 0, 1786.4372> confidence 0.999 variance 0 }
+  aperture 27.640152 blur_samples 19 focal_point <0, 374.4423136, 1786.4372> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 13501.078

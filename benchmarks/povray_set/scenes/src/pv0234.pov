@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2272 x 4 samples spanning y/z in [-0.1963479189, -0.09262601726] and one pixel in x
+// film: 568 x 4 samples spanning y/z in [-0.1963479189, -0.09262601726] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -197.8092297, 1369.045474>
   right <0, 142, 0>
   up <1, 0, 0>
-  aperture 42.410852 blur_samples 24 focal_point <0, 0, 8835.5781> confidence 0.999 variance 0 }
+  aperture 84.821705 blur_samples 19 focal_point <0, -1276.625892, 8835.5781> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 22290.581

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2656 x 4 samples spanning y/z in [-0.01408980769, 0.01576882083] and one pixel in x
+// film: 664 x 4 samples spanning y/z in [-0.01408980769, 0.01576882083] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 4.667265689, 5559.534457>
   right <0, 166.0000741, 0>
   up <1, 0, 0>
-  aperture 3.357726 blur_samples 24 focal_point <0, 0, 4325.038> confidence 0.999 variance 0 }
+  aperture 6.7154519 blur_samples 19 focal_point <0, 3.630897835, 4325.038> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 12509.211

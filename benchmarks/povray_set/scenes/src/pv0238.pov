@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1312 x 4 samples spanning y/z in [-0.06106220715, -0.00898154611] and one pixel in x
+// film: 328 x 4 samples spanning y/z in [-0.06106220715, -0.00898154611] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -55.14127176, 1574.480784>
   right <0, 82, 0>
   up <1, 0, 0>
-  aperture 6.4738342 blur_samples 24 focal_point <0, 0, 3542.2947> confidence 0.999 variance 0 }
+  aperture 12.947668 blur_samples 19 focal_point <0, -124.0578071, 3542.2947> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 12686.914

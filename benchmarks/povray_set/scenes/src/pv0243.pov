@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1920 x 4 samples spanning y/z in [-0.09008452964, -0.07239638722] and one pixel in x
+// film: 480 x 4 samples spanning y/z in [-0.09008452964, -0.07239638722] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -551.1519966, 6784.205891>
   right <0, 120, 0>
   up <1, 0, 0>
-  aperture 22.040455 blur_samples 24 focal_point <0, 0, 11567.751> confidence 0.999 variance 0 }
+  aperture 44.080909 blur_samples 19 focal_point <0, -939.769425, 11567.751> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 20524.915

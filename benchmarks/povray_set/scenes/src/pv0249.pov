@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2048 x 4 samples spanning y/z in [0.1353055596, 0.2879901659] and one pixel in x
+// film: 512 x 4 samples spanning y/z in [0.1353055596, 0.2879901659] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 177.4306336, 838.3294366>
   right <0, 128, 0>
   up <1, 0, 0>
-  aperture 43.331844 blur_samples 24 focal_point <0, 0, 3131.2627> confidence 0.999 variance 0 }
+  aperture 86.663687 blur_samples 19 focal_point <0, 662.7250669, 3131.2627> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 20448.989

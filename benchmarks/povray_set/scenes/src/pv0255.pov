@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1264 x 4 samples spanning y/z in [-0.003586616195, 0.004021417322] and one pixel in x
+// film: 316 x 4 samples spanning y/z in [-0.003586616195, 0.004021417322] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2.257435441, 10383.76077>
   right <0, 79, 0>
   up <1, 0, 0>
-  aperture 1.4693174 blur_samples 24 focal_point <0, 0, 5110.9611> confidence 0.999 variance 0 }
+  aperture 2.9386348 blur_samples 19 focal_point <0, 1.111125818, 5110.9611> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 31710.135

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2208 x 4 samples spanning y/z in [-0.02809872463, 0.03045371156] and one pixel in x
+// film: 552 x 4 samples spanning y/z in [-0.02809872463, 0.03045371156] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 2.775189363, 2356.861798>
   right <0, 138, 0>
   up <1, 0, 0>
-  aperture 45.348818 blur_samples 24 focal_point <0, 0, 15534.538> confidence 0.999 variance 0 }
+  aperture 90.697637 blur_samples 19 focal_point <0, 18.29181734, 15534.538> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 45302.243

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 2192 x 4 samples spanning y/z in [-0.05378972654, 0.05468227827] and one pixel in x
+// film: 548 x 4 samples spanning y/z in [-0.05378972654, 0.05468227827] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 0.5632308316, 1262.068771>
   right <0, 136.8991298, 0>
   up <1, 0, 0>
-  aperture 4.9825977 blur_samples 24 focal_point <0, 0, 1011.823> confidence 0.999 variance 0 }
+  aperture 9.9651954 blur_samples 19 focal_point <0, 0.451552167, 1011.823> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 7219.4796

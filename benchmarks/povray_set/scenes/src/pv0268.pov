@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1776 x 4 samples spanning y/z in [0.2752316827, 0.4111171215] and one pixel in x
+// film: 444 x 4 samples spanning y/z in [0.2752316827, 0.4111171215] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 281.8393142, 821.2713784>
   right <0, 111.5988217, 0>
   up <1, 0, 0>
-  aperture 62.175038 blur_samples 24 focal_point <0, 0, 4437.6249> confidence 0.999 variance 0 }
+  aperture 124.35008 blur_samples 19 focal_point <0, 1522.87926, 4437.6249> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 21818.898

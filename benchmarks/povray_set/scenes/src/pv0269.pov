@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1616 x 4 samples spanning y/z in [0.05185996392, 0.07034116012] and one pixel in x
+// film: 404 x 4 samples spanning y/z in [0.05185996392, 0.07034116012] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 333.9154402, 5465.014218>
   right <0, 101, 0>
   up <1, 0, 0>
-  aperture 28.381597 blur_samples 24 focal_point <0, 0, 10558.617> confidence 0.999 variance 0 }
+  aperture 56.763194 blur_samples 19 focal_point <0, 645.1374133, 10558.617> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 64027.615

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 3200 x 4 samples spanning y/z in [-0.09787472804, -0.009934150571] and one pixel in x
+// film: 800 x 4 samples spanning y/z in [-0.09787472804, -0.009934150571] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, -122.5928709, 2274.262983>
   right <0, 200, 0>
   up <1, 0, 0>
-  aperture 13.728487 blur_samples 24 focal_point <0, 0, 4568.5669> confidence 0.999 variance 0 }
+  aperture 27.456974 blur_samples 19 focal_point <0, -246.2660398, 4568.5669> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 29291.359

@@ -18,12 +18,12 @@
 global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
 #include "transforms.inc"
 // camera frame = POV frame: x across the line, y along the sensor, z forward
-// film: 1664 x 4 samples spanning y/z in [0.1598284529, 0.2071469024] and one pixel in x
+// film: 416 x 4 samples spanning y/z in [0.1598284529, 0.2071469024] and one pixel in x
 camera { perspective location <0, 0, 0>
   direction <0, 413.8946765, 2255.708295>
   right <0, 106.7366191, 0>
   up <1, 0, 0>
-  aperture 8.9945859 blur_samples 24 focal_point <0, 0, 6131.5227> confidence 0.999 variance 0 }
+  aperture 17.989172 blur_samples 19 focal_point <0, 1125.058856, 6131.5227> confidence 0.999 variance 0 }
 background { rgb 0 }
 // backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
 plane { z, 32928.421
