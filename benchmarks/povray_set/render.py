@@ -211,7 +211,7 @@ def main(argv: list[str] | None = None) -> int:
     if shutil.which("povray") is None:
         print("render.py: povray is not installed (Debian package povray)", file=sys.stderr)
         return 2
-    out = a.scenes
+    out = a.scenes.resolve()
     names = sorted(p.name[: -len(".truth.json")] for p in out.glob("*.truth.json"))
     names = [n for n in names if fnmatch.fnmatch(n, a.only) and (a.force or not (out / f"{n}.png").exists())]
     frames_dir = out / "frames"

@@ -207,8 +207,13 @@ def main(argv: list[str] | None = None) -> int:
             t = json.loads(p.read_text())
             if (a.split == "all" or t["split"] == a.split) and (a.scenes / t["image"]).exists():
                 names.append(t["scene"])
+        def one(name: str) -> list[dict]:
+            rows = score_scene(a.ballscan, a.scenes, name)
+            print(f"{name} scored", file=sys.stderr, flush=True)
+            return rows
+
         with ThreadPoolExecutor(max_workers=a.jobs) as pool:
-            rows = [r for rs in pool.map(lambda n: score_scene(a.ballscan, a.scenes, n), names) for r in rs]
+            rows = [r for rs in pool.map(one, names) for r in rs]
         if a.save:
             a.save.write_text(json.dumps(rows, indent=1) + "\n")
     print(f"{len({r['scene'] for r in rows})} scenes, {len(rows)} balls ({a.split} half)")
