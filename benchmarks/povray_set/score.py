@@ -15,7 +15,9 @@ median and worst relative speed error, the median direction error (degrees
 between the velocities with V.x >= 0), the share of errors within 1 and 3
 reported sigmas for the speed and for each direction angle (``direction_deg``
 against ``direction_sigma_deg``), and the fit's median speed error over the
-Cramér-Rao sigma.  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
+Cramér-Rao sigma; the ratio of the fit's median speed error to the paper
+method's on the balls both measured, and the number of the fit's speed errors
+beyond 4 reported sigmas (the paper method reports no sigma).  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
 100 lines and not cut, each ball kind, each condition tag of the truth files.
 """
 
@@ -167,6 +169,12 @@ def summarise(rows: list[dict]) -> list[str]:
     cells += [f"{per['fit']['n']} / {per['paper']['n']}", pair("med", ".3f"), pair("worst", ".2f"), pair("dir", ".2f")]
     for key in ("speed", "psi_y", "psi_z"):
         cells += [pair(f"c1_{key}", ".0f"), pair(f"c3_{key}", ".0f")]
+    both = [r for r in rows if r["fit"].get("measured") and r["paper"].get("measured")]
+    med_fit = _med([abs(r["fit"]["speed_err"]) for r in both])
+    med_paper = _med([abs(r["paper"]["speed_err"]) for r in both])
+    cells.append(_fmt(med_fit / med_paper if both and med_paper else None, ".2f"))
+    beyond = [r["fit"]["z_speed"] > 4 for r in rows if r["fit"].get("z_speed") is not None]
+    cells.append(f"{sum(beyond)}" if beyond else "-")
     cells.append(_fmt(_med([r["fit"]["z_cr"] for r in rows if r["fit"].get("z_cr") is not None]), ".2f"))
     return cells
 
@@ -181,7 +189,7 @@ def table(rows: list[dict]) -> list[str]:
     for c in sorted({c for r in rows for c in r["conditions"]}):
         groups.append((c, [r for r in rows if c in r["conditions"]]))
     head = ["group", "balls", "measured", "speed err median %", "worst %", "direction err median deg",
-            "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %", "err / CR σ median (fit)"]
+            "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for name, g in groups:
         if g:
