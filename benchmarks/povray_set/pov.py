@@ -73,7 +73,7 @@ def _vec(v, scale: float = 1.0) -> str:
     return "<" + ", ".join(f"{scale * float(a):.10g}" for a in v) + ">"
 
 
-def _pigment(ball: Ball, index: int) -> str:
+def _pigment(ball: Ball) -> str:
     a = ball.albedo_scale
     rgb = _vec(ball.rgb, a)
     if ball.kind == "tennis":
@@ -120,7 +120,7 @@ def _ball_block(ball: Ball, i: int, ambient: float) -> str:
 #if (BGONLY = 0)
 sphere {{ <0, 0, 0>, 1
   texture {{
-  {_pigment(ball, i)}
+  {_pigment(ball)}
   finish {{ ambient {ambient:.4g} diffuse {1 - ambient:.4g}{phong} }} }}
   no_shadow
   rotate {_vec(ball.orientation_deg)}

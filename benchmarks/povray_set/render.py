@@ -71,7 +71,6 @@ def scene_of(truth: dict):
 
 def povray_jobs(name: str, src: Path, frames_dir: Path, n_frames: int, chunk: int) -> list[list[str]]:
     """Command lines rendering the missing frames of one scene, ``chunk`` frames each."""
-    digits = len(str(n_frames - 1))
     have = {int(m.group(1)) for p in frames_dir.glob(f"{name}_*.ppm") if (m := re.search(r"_(\d+)\.ppm$", p.name))}
     jobs = []
     for a in range(0, n_frames, chunk):
@@ -80,7 +79,6 @@ def povray_jobs(name: str, src: Path, frames_dir: Path, n_frames: int, chunk: in
             continue
         jobs.append(["nice", "-n", "19", "povray", str(src / f"{name}.ini"), f"+I{src / name}.pov",
                      f"+O{frames_dir / name}_", f"+SF{a}", f"+EF{b}", "+WT1", "-D", "-GA"])
-    del digits
     return jobs
 
 
