@@ -1,0 +1,57 @@
+// validation scene pv0035 (seed 35)
+#version 3.7;
+#declare NS = 1;
+#declare NLT = 167;
+#declare LINES = array[167] { 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159, 160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214 };
+#declare LR = 51657.58588198937;  // line rate, Hz
+#declare TAU = 5.059587093889087e-06;  // exposure, s
+#declare BGONLY = (frame_number >= NLT * NS);
+#if (BGONLY)
+  #declare T = 0;
+#else
+  #declare LINE = LINES[div(frame_number, NS)];
+  #declare KS = mod(frame_number, NS);
+  // mid-point of sub-interval KS of [t_i - tau/2, t_i + tau/2]
+  #declare T = LINE / LR + TAU * ((KS + 0.5) / NS - 0.5);
+#end
+#declare FL = 1;
+global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
+#include "transforms.inc"
+// camera frame = POV frame: x across the line, y along the sensor, z forward
+// film: 2704 x 4 samples spanning y/z in [-0.0468602367, 0.06651960727] and one pixel in x
+camera { perspective location <0, 0, 0>
+  direction <0, 14.65178249, 1490.564761>
+  right <0, 169, 0>
+  up <1, 0, 0> }
+background { rgb 0 }
+// backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
+plane { z, 11437.656
+  pigment { function { max(0.002, min(0.98, 0.0831523 * (1 + -0.156035 * ((y / 11437.656) - 0.009829685283) / 0.05668992199 + 0.0507455 * sin(3.8433372 * ((y / 11437.656) - 0.009829685283) / 0.05668992199 + 4.74149)))) } }
+  finish { ambient 1 diffuse 0 } }
+light_source { <0, 116.9756763, 3355.820116> + 100675 * <-0.3682257001, -0.4047824655, -0.8369952147> color rgb FL }
+
+#declare SeamK = 1.6;
+#declare fRad = function(x, y, z) { sqrt(x*x + y*y + z*z) }
+#declare fG = function(X, Y, Z) { Z - SeamK*(X*X - Y*Y) }
+#declare fGs = function(X, Y, Z) {
+  sqrt(max(4*SeamK*SeamK*(X*X + Y*Y) + 1 - pow(-2*SeamK*X*X + 2*SeamK*Y*Y + Z, 2), 1e-12)) }
+#declare fSeamDist = function(x, y, z) {
+  abs(fG(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z))) / fGs(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z)) }
+
+// ball 0: baseball
+#declare C0_0 = <0, 116.9756763, 3355.820116>;  // mm
+#declare V_0 = <23982.50996, 81.74555274, 4863.253659>;  // mm/s
+#declare TC_0 = 0.0025359295786540753;  // s
+#declare P_0 = C0_0 + V_0 * (T - TC_0);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { function { (fSeamDist(x, y, z) < 0.018) + (fSeamDist(x, y, z) > 0.05) * (fSeamDist(x, y, z) < 0.12) * (sin(54 * atan2(y, x)) > 0.2) }
+    color_map { [0.0 rgb <0.6391050134, 0.6249026797, 0.5822956789>] [0.5 rgb <0.6391050134, 0.6249026797, 0.5822956789>] [0.5 rgb <0.5325875111, 0.05680933452, 0.04260700089>] [1.0 rgb <0.5325875111, 0.05680933452, 0.04260700089>] } }
+  finish { ambient 0.3004 diffuse 0.6996 phong 0.1 phong_size 40 } }
+  no_shadow
+  rotate <121.91767, 191.5838571, 90.32562861>
+  transform { Axis_Rotate_Trans(<-0.5177047876, -0.7274652772, 0.4503065882>, 12858.295 * (T - TC_0)) }
+  scale 36.6
+  translate P_0 }
+#end

@@ -1,0 +1,74 @@
+// validation scene pv0230 (seed 230)
+#version 3.7;
+#declare NS = 1;
+#declare NLT = 282;
+#declare LINES = array[282] { 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159, 160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214, 215, 216, 217, 218, 219, 220, 221, 240, 241, 242, 243, 244, 245, 246, 247, 248, 249, 250, 251, 252, 253, 254, 255, 256, 257, 258, 259, 260, 261, 262, 263, 264, 265, 266, 267, 268, 269, 270, 271, 272, 273, 274, 275, 276, 277, 278, 279, 280, 281, 282, 283, 284, 285, 286, 287, 288, 289, 290, 291, 292, 293, 294, 295, 296, 297, 298, 299, 300, 301, 302, 303, 304, 305, 306, 307, 308, 309, 310, 311, 312, 313, 314, 315, 316, 317, 318, 319, 320, 321, 322, 323, 324, 325, 326, 327, 328, 329, 330, 331, 332, 333, 334, 335, 336, 337, 338, 339, 340, 341, 342, 343, 344, 345, 346, 347, 348, 349, 350, 351, 352, 353, 354, 355, 356, 357, 358, 359, 360, 361, 362, 363, 364, 365, 366, 367, 368, 369, 370, 371, 372, 373, 374, 375, 376, 377, 378, 379, 380, 381, 382, 383, 384, 385, 386 };
+#declare LR = 621.6904903736405;  // line rate, Hz
+#declare TAU = 0.00013232305585015962;  // exposure, s
+#declare BGONLY = (frame_number >= NLT * NS);
+#if (BGONLY)
+  #declare T = 0;
+#else
+  #declare LINE = LINES[div(frame_number, NS)];
+  #declare KS = mod(frame_number, NS);
+  // mid-point of sub-interval KS of [t_i - tau/2, t_i + tau/2]
+  #declare T = LINE / LR + TAU * ((KS + 0.5) / NS - 0.5);
+#end
+#declare FL = (BGONLY ? 1 : 1 + 0.131474 * sin(753.9822369 * T + 0.220745));
+global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
+#include "transforms.inc"
+// camera frame = POV frame: x across the line, y along the sensor, z forward
+// film: 1392 x 4 samples spanning y/z in [-0.0544057422, 0.03684839109] and one pixel in x
+camera { perspective location <0, 0, 0>
+  direction <0, -8.365304583, 952.9119201>
+  right <0, 86.95715137, 0>
+  up <1, 0, 0> }
+background { rgb 0 }
+// backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
+plane { z, 24888.822
+  pigment { function { max(0.002, min(0.98, 0.056922 * (1 + 0.143521 * ((y / 24888.822) - -0.008778675559) / 0.04562706664 + 0.212771 * sin(5.6306576 * ((y / 24888.822) - -0.008778675559) / 0.04562706664 + 3.20805)))) } }
+  finish { ambient 1 diffuse 0 } }
+light_source { <0, -201.7341625, 5924.507344> + 177735 * <0.2282014894, -0.2704216127, -0.9353054216> color rgb FL }
+
+#declare SeamK = 1.6;
+#declare fRad = function(x, y, z) { sqrt(x*x + y*y + z*z) }
+#declare fG = function(X, Y, Z) { Z - SeamK*(X*X - Y*Y) }
+#declare fGs = function(X, Y, Z) {
+  sqrt(max(4*SeamK*SeamK*(X*X + Y*Y) + 1 - pow(-2*SeamK*X*X + 2*SeamK*Y*Y + Z, 2), 1e-12)) }
+#declare fSeamDist = function(x, y, z) {
+  abs(fG(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z))) / fGs(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z)) }
+
+// ball 0: baseball
+#declare C0_0 = <0, -201.7341625, 5924.507344>;  // mm
+#declare V_0 = <-378.7490689, 56.60523806, -4.011733289>;  // mm/s
+#declare TC_0 = 0.24771168673891872;  // s
+#declare P_0 = C0_0 + V_0 * (T - TC_0);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { function { (fSeamDist(x, y, z) < 0.018) + (fSeamDist(x, y, z) > 0.05) * (fSeamDist(x, y, z) < 0.12) * (sin(54 * atan2(y, x)) > 0.2) }
+    color_map { [0.0 rgb <0.7263377582, 0.7101969191, 0.6617744019>] [0.5 rgb <0.7263377582, 0.7101969191, 0.6617744019>] [0.5 rgb <0.6052814651, 0.06456335628, 0.04842251721>] [1.0 rgb <0.6052814651, 0.06456335628, 0.04842251721>] } }
+  finish { ambient 0.2218 diffuse 0.7782 phong 0.593 phong_size 40 } }
+  no_shadow
+  rotate <218.9237283, 245.3089401, 351.93758>
+  transform { Axis_Rotate_Trans(<0.4308847514, 0.8249519081, -0.3657768177>, 0 * (T - TC_0)) }
+  scale 36.6
+  translate P_0 }
+#end
+// ball 1: baseball
+#declare C0_1 = <0, 100.6193835, 5308.096444>;  // mm
+#declare V_1 = <-341.7675958, 75.20042644, -36.4175153>;  // mm/s
+#declare TC_1 = 0.5031594700399062;  // s
+#declare P_1 = C0_1 + V_1 * (T - TC_1);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { function { (fSeamDist(x, y, z) < 0.018) + (fSeamDist(x, y, z) > 0.05) * (fSeamDist(x, y, z) < 0.12) * (sin(54 * atan2(y, x)) > 0.2) }
+    color_map { [0.0 rgb <0.7263377582, 0.7101969191, 0.6617744019>] [0.5 rgb <0.7263377582, 0.7101969191, 0.6617744019>] [0.5 rgb <0.6052814651, 0.06456335628, 0.04842251721>] [1.0 rgb <0.6052814651, 0.06456335628, 0.04842251721>] } }
+  finish { ambient 0.2218 diffuse 0.7782 phong 0.593 phong_size 40 } }
+  no_shadow
+  rotate <1.092693259, 1.497446056, 239.2586685>
+  transform { Axis_Rotate_Trans(<0.4308847514, 0.8249519081, -0.3657768177>, 0 * (T - TC_1)) }
+  scale 36.6
+  translate P_1 }
+#end

@@ -1,0 +1,239 @@
+"""Score ``ballscan estimate`` on the POV-Ray validation set: one table per ball kind and condition.
+
+    python benchmarks/povray_set/score.py [--split report|tune|all] [--scenes DIR] [--jobs 2]
+                                          [--save RESULTS.json] [--load RESULTS.json] [--markdown]
+
+Each rendered scene is measured with ``ballscan estimate --json`` by both
+methods (``--method fit`` and ``--method paper``), and each true ball's
+Cramér-Rao speed sigma is taken from ``ballscan precision`` with the scene's
+noise (the pixel noise and the ball/background contrast measured on the
+clean render, the column gains' PRNU).  Estimated balls are matched to true
+ones by the nearest ``t_c_s``, as ``shared/tools/score_scenes.py`` does.
+
+Columns (fit/paper where two values): balls measured (a speed reported), the
+median and worst relative speed error, the median direction error (degrees
+between the velocities with V.x >= 0), the share of errors within 1 and 3
+reported sigmas for the speed and for each direction angle (``direction_deg``
+against ``direction_sigma_deg``), and the fit's median speed error over the
+Cramér-Rao sigma; the ratio of the fit's median speed error to the paper
+method's on the balls both measured, and the number of the fit's speed errors
+beyond 4 reported sigmas (the paper method reports no sigma).  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
+100 lines and not cut, each ball kind, each condition tag of the truth files.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+METHODS = ("fit", "paper")
+
+
+def truth_balls(t: dict) -> list[dict]:
+    return t["balls"] if "balls" in t else [t]
+
+
+def run_json(cmd: list[str], timeout: float = 300) -> tuple[dict | None, str]:
+    """Run a ballscan command printing JSON; the parsed output or the reason it failed."""
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, "timeout"
+    if p.returncode != 0:
+        return None, f"exit {p.returncode}: {(p.stderr.strip().splitlines() or [''])[-1][:160]}"
+    try:
+        return json.loads(p.stdout), ""
+    except json.JSONDecodeError as e:
+        return None, f"unreadable JSON ({e})"
+
+
+def cramer_rao(ballscan: str, cam: Path, ball: dict, prnu: float) -> float | None:
+    """Cramér-Rao 1-sigma of the speed (m/s) of one true ball with its scene's noise."""
+    pi = ball.get("precision_inputs") or {}
+    if not pi or pi["contrast_dn"] <= 0:
+        return None
+    v = ball["velocity_mps"]
+    cmd = [ballscan, "precision", "--camera", str(cam), "--radius", repr(ball["radius_m"]),
+           f"--velocity={abs(v[0])!r},{v[1]!r},{v[2]!r}", "--position=" + ",".join(repr(x) for x in ball["position_m"]),
+           "--pixel-noise", repr(pi["pixel_sigma_dn"]), "--contrast", repr(pi["contrast_dn"]),
+           "--prnu", repr(prnu), "--json"]
+    out, _ = run_json(cmd)
+    if not out:
+        return None
+    return out["bounds"][0].get("speed_sigma_mps")
+
+
+def angle_deg(a: list[float], b: list[float]) -> float:
+    a = [abs(a[0])] + list(a[1:])
+    b = [abs(b[0])] + list(b[1:])
+    na, nb = math.dist((0, 0, 0), a), math.dist((0, 0, 0), b)
+    c = sum(x * y for x, y in zip(a, b)) / (na * nb + 1e-300)
+    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+
+def compare(est: dict | None, tb: dict) -> dict:
+    """Errors of one estimate against one true ball (``None`` fields where nothing was measured)."""
+    row = {"measured": False}
+    if not est or est.get("speed_mps") is None:
+        row["flags"] = est.get("flags", []) if est else ["not_found"]
+        return row
+    s_true = tb["speed_mps"]
+    err = (est["speed_mps"] - s_true) / s_true
+    row.update(measured=True, speed_err=err, flags=est.get("flags", []))
+    sig = est.get("speed_sigma_mps")
+    row["z_speed"] = abs(est["speed_mps"] - s_true) / sig if sig else None
+    try:
+        row["dir_err_deg"] = angle_deg(est["velocity_mps"], tb["velocity_mps"])
+    except (TypeError, KeyError, IndexError):
+        row["dir_err_deg"] = None
+    d, ds = est.get("direction_deg"), est.get("direction_sigma_deg")
+    true_d = (tb["direction_deg"]["psi_y"], tb["direction_deg"]["psi_z"])
+    for k, name in enumerate(("psi_y", "psi_z")):
+        ok = d is not None and ds is not None and d[k] is not None and ds[k]
+        row[f"z_{name}"] = abs(d[k] - true_d[k]) / ds[k] if ok else None
+    return row
+
+
+def score_scene(ballscan: str, scenes: Path, name: str) -> list[dict]:
+    """Rows (one per true ball) of one scene, both methods and the bound."""
+    truth = json.loads((scenes / f"{name}.truth.json").read_text())
+    cam = scenes / f"{name}.camera.toml"
+    balls = truth_balls(truth)
+    lr = float(_camera_value(cam, "line_rate_hz"))
+    f = float(_camera_value(cam, "focal_px"))
+    ests = {}
+    for m in METHODS:
+        cmd = [ballscan, "estimate", str(scenes / f"{name}.png"), "--camera", str(cam),
+               "--radius", repr(balls[0]["radius_m"]), "--method", m, "--json"]
+        out, why = run_json(cmd)
+        ests[m] = (out or {}).get("balls", []), why, len((out or {}).get("balls", []))
+    rows = []
+    for tb in balls:
+        v = tb["velocity_mps"]
+        lines = lr * (2 * tb["radius_m"] + tb["position_m"][2] / f) / abs(v[0])
+        row = {"scene": name, "kind": truth["kind"], "conditions": truth["conditions"], "cut": truth["cut"],
+               "split": truth["split"], "lines": lines, "vz_share": abs(v[2]) / tb["speed_mps"],
+               "n_true": len(balls), "cr_speed_sigma": cramer_rao(ballscan, cam, tb, truth["noise"]["prnu_sigma"])}
+        for m in METHODS:
+            found, why, n_found = ests[m]
+            est = min(found, key=lambda e: abs((e.get("t_c_s") or 0) - tb["t_c_s"])) if found else None
+            r = compare(est, tb)
+            r["error"], r["n_found"] = why, n_found
+            row[m] = r
+        if row["fit"].get("measured") and row["cr_speed_sigma"]:
+            row["fit"]["z_cr"] = abs(row["fit"]["speed_err"]) * tb["speed_mps"] / row["cr_speed_sigma"]
+        rows.append(row)
+    return rows
+
+
+def _camera_value(path: Path, key: str) -> str:
+    for line in path.read_text().splitlines():
+        if line.split("=")[0].strip() == key:
+            return line.split("=", 1)[1].split("#")[0].strip()
+    raise KeyError(f"{path}: no {key}")
+
+
+def _med(xs: list[float]) -> float | None:
+    return statistics.median(xs) if xs else None
+
+
+def _fmt(v: float | None, spec: str) -> str:
+    return "-" if v is None else format(v, spec)
+
+
+def summarise(rows: list[dict]) -> list[str]:
+    """The table's cells for one group of balls."""
+    cells = [str(len(rows))]
+    per = {}
+    for m in METHODS:
+        ok = [r[m] for r in rows if r[m].get("measured")]
+        errs = [abs(r["speed_err"]) * 100 for r in ok]
+        dirs = [r["dir_err_deg"] for r in ok if r.get("dir_err_deg") is not None]
+
+        def cover(key: str, k: float) -> float | None:
+            zs = [r[key] for r in ok if r.get(key) is not None]
+            return 100 * sum(z <= k for z in zs) / len(zs) if zs else None
+
+        per[m] = dict(n=len(ok), med=_med(errs), worst=max(errs) if errs else None, dir=_med(dirs),
+                      **{f"c{k}_{key}": cover(f"z_{key}", k) for k in (1, 3) for key in ("speed", "psi_y", "psi_z")})
+    pair = lambda key, spec: f"{_fmt(per['fit'][key], spec)} / {_fmt(per['paper'][key], spec)}"  # noqa: E731
+    cells += [f"{per['fit']['n']} / {per['paper']['n']}", pair("med", ".3f"), pair("worst", ".2f"), pair("dir", ".2f")]
+    for key in ("speed", "psi_y", "psi_z"):
+        cells += [pair(f"c1_{key}", ".0f"), pair(f"c3_{key}", ".0f")]
+    both = [r for r in rows if r["fit"].get("measured") and r["paper"].get("measured")]
+    med_fit = _med([abs(r["fit"]["speed_err"]) for r in both])
+    med_paper = _med([abs(r["paper"]["speed_err"]) for r in both])
+    cells.append(_fmt(med_fit / med_paper if both and med_paper else None, ".2f"))
+    beyond = [r["fit"]["z_speed"] > 4 for r in rows if r["fit"].get("z_speed") is not None]
+    cells.append(f"{sum(beyond)}" if beyond else "-")
+    cells.append(_fmt(_med([r["fit"]["z_cr"] for r in rows if r["fit"].get("z_cr") is not None]), ".2f"))
+    return cells
+
+
+def table(rows: list[dict]) -> list[str]:
+    """The Markdown table: all balls, the clean subset, each kind, each condition."""
+    groups = [("all balls", rows),
+              ("|V.z| <= 0.1|V|, >= 100 lines, not cut",
+               [r for r in rows if r["vz_share"] <= 0.1 and r["lines"] >= 100 and r["cut"] == "none"])]
+    for k in sorted({r["kind"] for r in rows}):
+        groups.append((f"kind {k}", [r for r in rows if r["kind"] == k]))
+    for c in sorted({c for r in rows for c in r["conditions"]}):
+        groups.append((c, [r for r in rows if c in r["conditions"]]))
+    head = ["group", "balls", "measured", "speed err median %", "worst %", "direction err median deg",
+            "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
+    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for name, g in groups:
+        if g:
+            out.append("| " + " | ".join([name] + summarise(g)) + " |")
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
+    ap.add_argument("--split", choices=("report", "tune", "all"), default="report")
+    ap.add_argument("--only", default="*", help="glob on scene names")
+    ap.add_argument("--ballscan", default=shutil.which("ballscan") or "ballscan")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--save", type=Path, help="write the per-ball rows (JSON) here")
+    ap.add_argument("--load", type=Path, help="tabulate saved rows instead of measuring")
+    a = ap.parse_args(argv)
+    if a.load:
+        rows = json.loads(a.load.read_text())
+    else:
+        names = []
+        for p in sorted(a.scenes.glob(f"{a.only}.truth.json")):
+            t = json.loads(p.read_text())
+            if (a.split == "all" or t["split"] == a.split) and (a.scenes / t["image"]).exists():
+                names.append(t["scene"])
+        def one(name: str) -> list[dict]:
+            rows = score_scene(a.ballscan, a.scenes, name)
+            print(f"{name} scored", file=sys.stderr, flush=True)
+            return rows
+
+        with ThreadPoolExecutor(max_workers=a.jobs) as pool:
+            rows = [r for rs in pool.map(one, names) for r in rs]
+        if a.save:
+            a.save.write_text(json.dumps(rows, indent=1) + "\n")
+    print(f"{len({r['scene'] for r in rows})} scenes, {len(rows)} balls ({a.split} half)")
+    print("\n".join(table(rows)))
+    failed = [f"{r['scene']} {m}: {r[m]['error'] or 'not measured'} flags {','.join(r[m].get('flags', []))}"
+              for r in rows for m in METHODS if not r[m].get("measured")]
+    if failed:
+        print(f"\nnot measured ({len(failed)}):")
+        print("\n".join("  " + f for f in failed))
+    return 0
+
+
+if __name__ == "__main__":
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    sys.exit(main())

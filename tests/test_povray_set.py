@@ -1,0 +1,215 @@
+"""The POV-Ray validation set's generator (benchmarks/povray_set): scene files consistent with their truth.
+
+No POV-Ray needed: the scene draw, the POV-Ray source, the camera and truth
+files, and the assembly steps (PPM reading, the lens warp, the sensor noise)
+are checked on their own.  The committed renders in ``tests/data/povray``
+are checked against their truth files' shape and against a re-draw of their
+seed.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscan.geometry.camera import load_camera
+from ballscan.measure.images import load_image
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "benchmarks" / "povray_set"))
+
+import generate  # noqa: E402
+import pov  # noqa: E402
+import render  # noqa: E402
+import scene  # noqa: E402
+
+DATA = Path(__file__).parent / "data" / "povray"
+SEEDS = range(0, 60)
+
+
+@pytest.fixture(scope="module")
+def scenes() -> list[scene.Scene]:
+    return [scene.draw_scene(s) for s in SEEDS]
+
+
+def test_same_seed_same_scene():
+    a, b = scene.draw_scene(17), scene.draw_scene(17)
+    assert a == b
+    assert pov.pov_source(a) == pov.pov_source(b)
+    assert generate.scene_truth(a) == generate.scene_truth(b)
+    assert scene.draw_scene(18) != a
+
+
+def test_split_by_seed_parity(scenes):
+    assert {s.split for s in scenes} == {"tune", "report"}
+    assert all(s.split == ("tune" if s.seed % 2 == 0 else "report") for s in scenes)
+
+
+def test_ranges_and_frame_budget(scenes):
+    for s in scenes:
+        cam = s.camera
+        assert 64 <= cam.width <= 200, s.name
+        assert 0 < cam.exposure_s <= 1 / cam.line_rate_hz * (1 + 1e-12), s.name
+        assert pov.frame_count(s) <= scene.MAX_FRAMES, s.name
+        for b in s.balls:
+            speed = math.dist((0, 0, 0), b.velocity_mps)
+            assert 0.05 * 0.79 <= speed <= 70.0 * 1.21, s.name
+            assert abs(b.velocity_mps[2]) <= 0.5 * speed + 1e-12, s.name
+            assert abs(math.degrees(math.atan2(b.velocity_mps[1], abs(b.velocity_mps[0])))) <= 60.0 + 1e-9, s.name
+            assert b.position_m[0] == 0.0 and b.position_m[2] > 0
+
+
+def test_the_traced_lines_cover_every_ball(scenes):
+    """Every line the ball's footprint reaches (within the exposure) is traced; the rest is background."""
+    for s in scenes:
+        cam = s.camera
+        traced = set(s.traced_lines)
+        for b in s.balls:
+            t0, t1 = scene.visible_interval_s(b, cam)
+            first = max(0, math.ceil((t0 - cam.exposure_s / 2) * cam.line_rate_hz))
+            last = min(cam.n_lines - 1, math.floor((t1 + cam.exposure_s / 2) * cam.line_rate_hz))
+            assert set(range(first, last + 1)) <= traced, s.name
+
+
+def test_balls_inside_the_image_unless_cut(scenes):
+    """Uncut balls lie inside the sensor and the lines; cut ones keep at least 40 % of the diameter visible."""
+    for s in scenes:
+        cam = s.camera
+        b = s.balls[0]
+        t0, t1 = scene.visible_interval_s(b, cam)
+        lo, hi = scene.image_extent_px(b, cam, np.linspace(t0, t1, 201))
+        diam = 2 * cam.focal_px * b.radius_m / b.position_m[2]
+        lines = (t0 * cam.line_rate_hz, t1 * cam.line_rate_hz)
+        if s.cut == "sensor_start":
+            assert lo.min() < 0 and hi.max() - (-0.5) >= 0.4 * diam * 0.8, s.name
+        elif s.cut == "sensor_end":
+            assert hi.max() > cam.width - 1 and (cam.width - 0.5) - lo.min() >= 0.4 * diam * 0.8, s.name
+        else:
+            assert -0.5 <= lo.min() and hi.max() <= cam.width - 0.5, s.name
+        if s.cut == "first_line":
+            assert lines[0] < 0 < lines[1] and lines[1] >= 0.4 * (lines[1] - lines[0]), s.name
+        elif s.cut == "last_line":
+            assert lines[0] < cam.n_lines - 1 < lines[1], s.name
+            assert cam.n_lines - 1 - lines[0] >= 0.4 * (lines[1] - lines[0]) - 1, s.name
+        else:
+            assert lines[0] > 0 and lines[1] < cam.n_lines - 1, s.name
+
+
+def test_every_kind_and_hard_case_is_drawn():
+    drawn = [scene.draw_scene(s) for s in range(200)]
+    assert {s.balls[0].kind for s in drawn} == set(scene.KINDS)
+    assert {s.cut for s in drawn} == {"none", "sensor_start", "sensor_end", "first_line", "last_line"}
+    tags = {t for s in drawn for t in s.conditions}
+    for tag in ("two_balls", "defocus", "distortion", "flicker", "dead_column", "hot_column", "dark_ball",
+                "second_lamp", "long_exposure", "8bit", "12bit", "16bit"):
+        assert tag in tags
+
+
+def test_truth_and_camera_files_agree_with_the_scene(tmp_path, scenes):
+    for s in scenes[:12]:
+        generate.write_scene(s, tmp_path)
+        cam = load_camera(tmp_path / f"{s.name}.camera.toml")
+        assert cam.width == s.camera.width and cam.focal_px == s.camera.focal_px
+        assert cam.line_rate_hz == s.camera.line_rate_hz and cam.exposure_s == s.camera.exposure_s
+        truth = json.loads((tmp_path / f"{s.name}.truth.json").read_text())
+        balls = truth["balls"] if "balls" in truth else [truth]
+        assert len(balls) == len(s.balls)
+        for tb, b in zip(balls, sorted(s.balls, key=lambda b: b.t_c_s)):
+            assert tb["position_m"] == list(b.position_m) and tb["velocity_mps"] == list(b.velocity_mps)
+            assert tb["speed_mps"] == pytest.approx(math.dist((0, 0, 0), b.velocity_mps), rel=1e-12)
+            psi_z = math.degrees(math.atan2(b.velocity_mps[2], abs(b.velocity_mps[0])))
+            assert tb["direction_deg"]["psi_z"] == pytest.approx(psi_z)
+        assert truth["image_shape"] == [s.camera.n_lines, s.camera.width]
+        assert truth["split"] == s.split and truth["seed"] == s.seed
+
+
+def test_pov_source_places_the_ball_and_the_film(scenes):
+    """The source moves each ball as C0 + V (T - t_c) in millimetres and spans the sensor's undistorted range."""
+    s = next(x for x in scenes if x.camera.k1 and x.optics.aperture_m > 0) if any(
+        x.camera.k1 and x.optics.aperture_m > 0 for x in scenes) else scenes[0]
+    text = pov.pov_source(s)
+    b = s.balls[0]
+    c0 = [float(v) for v in re.search(r"#declare C0_0 = <([^>]*)>", text).group(1).split(",")]
+    v0 = [float(v) for v in re.search(r"#declare V_0 = <([^>]*)>", text).group(1).split(",")]
+    assert np.allclose(c0, np.asarray(b.position_m) * 1000, rtol=1e-9)
+    assert np.allclose(v0, np.asarray(b.velocity_mps) * 1000, rtol=1e-9)
+    lo, hi = pov.film_range(s)
+    for u, n in ((-0.5, lo), (s.camera.width - 0.5, hi)):
+        nd = n * (1 + s.camera.k1 * n**2 + s.camera.k2 * n**4)
+        assert s.camera.principal_px + s.camera.focal_px * nd == pytest.approx(u, abs=1e-6)
+    assert f"array[{len(s.traced_lines)}]" in text
+    ini = pov.ini_source(s)
+    assert f"Final_Frame={pov.frame_count(s) - 1}" in ini and "File_Gamma=1.0" in ini
+
+
+def test_rig_views_share_the_crossing():
+    """Cameras turned about the lane's axis see the same crossing point and time; poses map world to camera."""
+    base = scene.draw_scene(11)
+    views = scene.rig_views(base, (0.0, 90.0, 30.0))
+    assert [v.name for v in views] == ["pv0011_a000", "pv0011_a090", "pv0011_a030"]
+    for v in views:
+        rot, t = np.asarray(v.pose_rotation), np.asarray(v.pose_translation_m)
+        for bw, bc in zip(base.balls, v.balls):
+            assert np.allclose(rot @ np.asarray(bw.position_m) + t, bc.position_m)
+            assert np.allclose(rot @ np.asarray(bw.velocity_mps), bc.velocity_mps)
+            assert bc.t_c_s == bw.t_c_s and bc.position_m[0] == pytest.approx(0.0, abs=1e-12)
+    assert np.allclose(views[0].pose_rotation, np.eye(3))
+
+
+def test_ppm_reader_round_trip(tmp_path):
+    rgb = np.random.default_rng(0).integers(0, 65536, size=(4, 7, 3)).astype(">u2")
+    p = tmp_path / "f.ppm"
+    p.write_bytes(b"P6\n# Software: test\n7 4\n65535\n" + rgb.tobytes())
+    assert np.allclose(render.read_ppm16(p), rgb.astype(float) / 65535)
+
+
+def test_warp_without_distortion_is_the_block_mean():
+    cam = {"width": 5, "focal_px": 1000.0, "principal_px": 2.0, "k1": 0.0, "k2": 0.0}
+    lo, hi = (-0.5 - 2.0) / 1000.0, (4.5 - 2.0) / 1000.0
+    fine = np.random.default_rng(1).random((3, 5 * 16))
+    s_lo, s_hi = render.pixel_weights(cam, (lo, hi), fine.shape[1])
+    out = render.warp(fine, s_lo, s_hi)
+    assert np.allclose(out, fine.reshape(3, 5, 16).mean(axis=2))
+
+
+def test_warp_with_distortion_keeps_a_step_at_the_distorted_position():
+    """A step at undistorted n0 appears at u = c + f n0 (1 + k1 n0^2): the pixel there is partly covered."""
+    cam = {"width": 40, "focal_px": 500.0, "principal_px": -300.0, "k1": 0.2, "k2": 0.0}
+    lo = pov.undistort((-0.5 + 300.0) / 500.0, 0.2, 0.0)
+    hi = pov.undistort((39.5 + 300.0) / 500.0, 0.2, 0.0)
+    n = lo + (np.arange(40 * 64) + 0.5) / (40 * 64) * (hi - lo)
+    n0 = 0.5 * (lo + hi)
+    fine = (n > n0).astype(float)[None, :]
+    out = render.warp(fine, *render.pixel_weights(cam, (lo, hi), fine.shape[1]))[0]
+    u0 = -300.0 + 500.0 * n0 * (1 + 0.2 * n0**2)
+    covered = np.sum(out)  # a unit step's pixels add up to the distance from the step to the last pixel edge
+    assert (cam["width"] - 0.5) - covered == pytest.approx(u0, abs=0.02)
+
+
+def test_noise_is_seeded_and_follows_the_bit_depth():
+    y = np.full((20, 30), 0.4)
+    noise = {"bits": 12, "white_dn": 3500.0, "black_dn": 60.0, "read_dn": 5.0, "full_well_e": 10000.0,
+             "prnu_sigma": 0.01, "defect": "dead", "defect_column": 3, "hot_dn": 3000.0}
+    a, b = render.add_noise(y, noise, 5), render.add_noise(y, noise, 5)
+    assert a.dtype == np.uint16 and np.array_equal(a, b) and a.max() <= 4095
+    assert abs(np.mean(a[:, 3]) - 60.0) < 5
+    assert abs(np.mean(np.delete(a, 3, axis=1)) - (60 + 0.4 * 3500)) < 10
+
+
+@pytest.mark.skipif(not DATA.is_dir(), reason="no committed renders")
+@pytest.mark.parametrize("truth_path", sorted(DATA.glob("*.truth.json")), ids=lambda p: p.name.split(".")[0])
+def test_committed_renders_match_their_seed(truth_path):
+    truth = json.loads(truth_path.read_text())
+    name = truth["scene"]
+    s = render.scene_of(truth)
+    img = load_image(DATA / truth["image"])
+    assert img.data.shape == tuple(truth["image_shape"]) == (s.camera.n_lines, s.camera.width)
+    assert generate.camera_toml(s) == (DATA / f"{name}.camera.toml").read_text()
+    balls = truth["balls"] if "balls" in truth else [truth]
+    assert all(b["precision_inputs"]["contrast_dn"] > 0 for b in balls)
