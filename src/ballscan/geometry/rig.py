@@ -48,6 +48,7 @@ __all__ = [
     "plane_crossing",
     "rig_from_dict",
     "save_rig",
+    "turned_camera",
     "viewing_plane",
     "world_crossing",
 ]
@@ -361,6 +362,23 @@ def camera_params(
     J[1:3] = (R @ Jw[1:4])[1:3]
     J[3:6] = R @ Jw[4:7]
     return theta, J, ok
+
+
+def turned_camera(camera: LineScanCamera, point_m: np.ndarray, angle_deg: float) -> LineScanCamera:
+    """The camera turned ``angle_deg`` about the line through ``point_m`` along its viewing plane's normal (right-handed).
+
+    Its viewing plane stays the same plane; its optical axis turns within
+    it about the point (e.g. the ball's crossing), keeping its distance.
+    ``X_cam = R Q^T (X - p) + R p + T`` with ``Q`` the turn (world frame).
+    """
+    R, T = camera.rotation_matrix, camera.translation_vector
+    n = R[0]
+    a = math.radians(angle_deg)
+    K = np.array([[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]])
+    Q = np.eye(3) + math.sin(a) * K + (1.0 - math.cos(a)) * (K @ K)
+    p = np.asarray(point_m, dtype=float)
+    R2 = R @ Q.T
+    return camera.with_pose(R2, T + R @ p - R2 @ p)
 
 
 # ------------------------------------------------------------- the planes

@@ -34,10 +34,22 @@ from typing import NamedTuple
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
-from ..geometry.rig import Rig, RigCamera, WorldMotion, load_rig, save_rig, viewing_plane
+from ..geometry.rig import Rig, RigCamera, WorldMotion, load_rig, save_rig
 from ..model.render import Appearance, SensorNoise, render, write_image
 
-__all__ = ["RIG_PRESETS", "RigPreset", "RigSimulation", "camera_about_lane", "get_rig_preset", "rig_for_angle", "simulate_rig", "write_rig_simulation"]
+__all__ = [
+    "RIG_PRESETS",
+    "RigPreset",
+    "RigSimulation",
+    "camera_about_lane",
+    "get_rig_preset",
+    "plot_sweep",
+    "reference_crossing_motion",
+    "rig_for_angle",
+    "rig_scene",
+    "simulate_rig",
+    "write_rig_simulation",
+]
 
 _GRAVITY = (0.0, 0.0, -9.81)
 
@@ -221,7 +233,8 @@ def write_rig_simulation(sim: RigSimulation, out: str | Path, *, unknown_clocks:
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     rig = sim.rig
-    cams = tuple(replace(c, clock_offset_s=None) if c.name in unknown_clocks else c for c in rig.cameras)
+    # an unknown clock is written with a 1 ms prior (the matching window) unless the rig states one
+    cams = tuple(replace(c, clock_offset_s=None, clock_sigma_s=c.clock_sigma_s or 1e-3) if c.name in unknown_clocks else c for c in rig.cameras)
     rig_path = out.with_name(out.name + ".rig.toml")
     save_rig(replace(rig, cameras=cams), rig_path, comment="written by ballscan simulate --rig")
     paths = [rig_path]
@@ -255,11 +268,27 @@ def reference_crossing_motion(rig: Rig, radius_m: float, position_m, velocity_mp
     return WorldMotion(radius_m, t_c_s, tuple(position_m), tuple(velocity_mps), tuple(rig.gravity_vector()))
 
 
-def describe_planes(rig: Rig) -> list[str]:
-    """One line per camera: its viewing plane in the world frame (for reports)."""
-    out = []
-    for rc in rig.cameras:
-        vp = viewing_plane(rc.camera)
-        n = vp.normal
-        out.append(f"{rc.name}: plane {n[0]:+.4f} X {n[1]:+.4f} Y {n[2]:+.4f} Z = {vp.offset_m:+.4f} m")
-    return out
+def plot_sweep(rows, path: str | Path | None = None, ax=None):
+    """Plot the joint bound on the direction against the second camera's angle (:func:`ballscan.solve.rig_precision.sweep_second_camera`'s rows).
+
+    Draws on ``ax`` (a new figure without pyplot when None), writes ``path``
+    when given, and returns the figure.
+    """
+    from matplotlib.figure import Figure
+
+    if ax is None:
+        fig = Figure(figsize=(6.0, 3.6), layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
+    a = [r[0] for r in rows]
+    for key, label, style in (("direction_sigma_deg", "direction (largest)", "-o"), ("elevation_sigma_deg", "elevation", "--"), ("azimuth_sigma_deg", "azimuth", ":")):
+        ax.plot(a, [getattr(b, key) for _, b in rows], style, label=label)
+    ax.set_yscale("log")
+    ax.set_xlabel("second camera turned about the ball's path [deg]")
+    ax.set_ylabel("1-sigma bound [deg]")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig

@@ -152,7 +152,8 @@ def _json_default(o):
 
 def check_lines(rig: Rig) -> list[str]:
     """``ballscan rig check``: each camera's viewing plane and centre, and where each pair of planes meets."""
-    out = [f"rig {rig.source}: {len(rig.cameras)} cameras, gravity {list(rig.gravity_vector())} m/s^2, match window {rig.match_window_s:g} s"]
+    gravity = ", ".join(f"{v:g}" for v in rig.gravity_vector())
+    out = [f"rig {rig.source}: {len(rig.cameras)} cameras, gravity ({gravity}) m/s^2, match window {rig.match_window_s:g} s"]
     planes = [viewing_plane(c.camera) for c in rig.cameras]
     for c, p in zip(rig.cameras, planes):
         clock = "unknown" if c.clock_offset_s is None else f"{c.clock_offset_s:+.6g} s"
@@ -282,7 +283,9 @@ def combined_start(rig: Rig, picks: dict[int, BallEstimate], radius_m: float) ->
         dt = t - t_ref
         A = np.eye(6)
         A[:3, 3:] = np.eye(3) * dt
-        W = np.linalg.pinv(C, rcond=1e-12, hermitian=True)
+        # equilibrated before the pseudo-inverse (metres^2 and (m/s)^2 differ by 1e12)
+        d = np.sqrt(np.where(np.diag(C) > 0, np.diag(C), 1.0))
+        W = np.linalg.pinv(C / np.outer(d, d), rcond=1e-10, hermitian=True) / np.outer(d, d)
         N += A.T @ W @ A
         b += A.T @ W @ state
     x = np.linalg.lstsq(N + 1e-12 * np.trace(N) * np.eye(6), b, rcond=None)[0]
