@@ -26,11 +26,11 @@ from ..geometry.rig import Rig, WorldMotion, camera_params, turned_camera, world
 from ..model.silhouette import visible_line_count
 from .constraint import Constraint
 from .derived import WORLD_COVARIANCE_PARAMETERS, launch_angles
-from .precision import PrecisionBound, edge_crlb
+from .precision import edge_crlb
 
 __all__ = ["RigBound", "direction_sigma_deg", "rig_crlb", "sweep_second_camera"]
 
-CameraBound = Callable[[LineScanCamera, BallMotion], PrecisionBound]
+CameraBound = Callable[[LineScanCamera, BallMotion], np.ndarray]
 
 
 @dataclass(frozen=True)
@@ -50,7 +50,8 @@ class RigBound:
     direction_sigma_deg : float
         Largest principal sigma of the velocity's direction (degrees).
     per_camera : dict
-        Each camera's own bound alone by name (:class:`PrecisionBound`).
+        Each camera's own bound alone by name: the 6x6 covariance of its
+        parameters (:data:`ballscan.geometry.motion.PARAM_NAMES`, its frame).
     """
 
     motion: WorldMotion
@@ -80,7 +81,7 @@ class RigBound:
             "direction_sigma_deg": self.direction_sigma_deg,
             "clock_offset_sigma_s": dict(self.clock_sigma_s),
             "covariance": {"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": self.covariance.tolist()},
-            "per_camera": {n: b.to_dict() for n, b in self.per_camera.items()},
+            "per_camera": {n: {"velocity_sigma_mps": [float(v) for v in np.sqrt(np.abs(np.diag(c)[3:]))]} for n, c in self.per_camera.items()},
         }
 
     def to_text(self) -> str:
@@ -96,9 +97,9 @@ class RigBound:
         lines.append(f"  elevation  +- {self.elevation_sigma_deg:.4f} deg   azimuth +- {self.azimuth_sigma_deg:.4f} deg   direction +- {self.direction_sigma_deg:.4f} deg")
         for n, v in self.clock_sigma_s.items():
             lines.append(f"  clock offset of {n} +- {v:.3e} s")
-        for n, b in self.per_camera.items():
-            sv = b.velocity_sigma_mps
-            lines.append(f"  {n} alone: velocity sigma ({sv[0]:.3g}, {sv[1]:.3g}, {sv[2]:.3g}) m/s (its frame), speed {b.speed_sigma_mps:.3g} m/s")
+        for n, c in self.per_camera.items():
+            sv = np.sqrt(np.abs(np.diag(c)[3:]))
+            lines.append(f"  {n} alone: velocity sigma ({sv[0]:.3g}, {sv[1]:.3g}, {sv[2]:.3g}) m/s (its own frame)")
         return "\n".join(lines)
 
 
@@ -125,6 +126,7 @@ def rig_crlb(
     *,
     edge_noise_px: float = 0.1,
     constraint: Constraint | None = None,
+    retime: bool = True,
 ) -> RigBound:
     """The joint bound of a rig's cameras (and a constraint) on the world motion.
 
@@ -135,11 +137,17 @@ def rig_crlb(
         World frame, rig clock; the bound is given at its crossing of the
         reference camera's plane.
     camera_bound : callable, optional
-        ``(camera, camera_motion) -> PrecisionBound`` of one camera; by
-        default :func:`ballscan.solve.precision.edge_crlb` with ``edge_noise_px``.
+        ``(camera, camera_motion) -> covariance (6, 6)``: one camera's bound
+        on its own parameters (nuisance parameters marginalised), e.g. a
+        :class:`ballscan.solve.precision.PrecisionBound`'s ``covariance``;
+        by default :func:`ballscan.solve.precision.edge_crlb`'s with ``edge_noise_px``.
     edge_noise_px : float
         1-sigma of one edge, pixels (the default bound's).
     constraint : Constraint, optional
+    retime : bool
+        Hand each camera's view to ``camera_bound`` with its crossing early
+        in an image starting at line 0 (the bounds of
+        :mod:`ballscan.solve.precision` assume one); False: in its own clock.
 
     Raises
     ------
@@ -148,7 +156,7 @@ def rig_crlb(
     """
     if camera_bound is None:
         def camera_bound(cam, cm):
-            return edge_crlb(cam, cm, edge_noise_px)
+            return edge_crlb(cam, cm, edge_noise_px).covariance
     g = np.asarray(motion.gravity_mps2, dtype=float)
     unknown = rig.unknown_clocks
     n = 6 + len(unknown)
@@ -159,10 +167,10 @@ def rig_crlb(
         cm = motion.in_camera(rc, off)
         if cm is None or cm.position_m[2] <= motion.radius_m:
             raise ValueError(f"precision --rig: the ball does not cross camera {rc.name!r}'s viewing plane in front of it")
-        b = camera_bound(rc.camera, _retimed(cm, rc.camera))
-        per[rc.name] = b
-        d = np.sqrt(np.where(np.diag(b.covariance) > 0, np.diag(b.covariance), 1.0))
-        Fk = np.linalg.pinv(b.covariance / np.outer(d, d), hermitian=True) / np.outer(d, d)
+        ck = np.asarray(camera_bound(rc.camera, _retimed(cm, rc.camera) if retime else cm), dtype=float)
+        per[rc.name] = ck
+        d = np.sqrt(np.where(np.diag(ck) > 0, np.diag(ck), 1.0))
+        Fk = np.linalg.pinv(ck / np.outer(d, d), hermitian=True) / np.outer(d, d)
         _, Jt, _ = camera_params(motion.state, rc.camera, motion.t_ref_s, g, off)
         G = np.zeros((6, n))
         G[:, :6] = Jt
