@@ -328,7 +328,11 @@ def _joint_ball(rig: Rig, group: dict[int, int], reports, radius_m: float, recip
         return replace(ball, estimates=names)
     motion0, offsets = start
     order = sorted(usable)
-    cams = [JointCamera(rig.cameras[k].name, rig.cameras[k].camera, usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit) for k in order]
+    cams = [
+        JointCamera(rig.cameras[k].name, rig.cameras[k].camera, usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit,
+                    bool(usable[k].extra.get("partial_levelled", False)))
+        for k in order
+    ]
     offs = [offsets[rig.unknown_clocks.index(k)] for k in order if not rig.cameras[k].clock_known]
     res = fit_joint(cams, motion0, offs, constraint=constraint)
     flags += () if res.consistent else ("inconsistent_camera",)

@@ -59,6 +59,10 @@ class JointCamera:
         ``t_cam - t_rig`` (s); None: estimated.
     settings : FitSettings
         Its residuals' selection and weights.
+    level_partial : bool
+        The lines the ball enters or leaves during the exposure enter with
+        their levelled areas (where its own fit found them consistent,
+        :attr:`ballscan.solve.fit.FitResult.partial_levelled`).
     """
 
     name: str
@@ -66,6 +70,7 @@ class JointCamera:
     edges: EdgeMeasurements
     clock_offset_s: float | None
     settings: FitSettings = FitSettings()
+    level_partial: bool = False
 
 
 @dataclass(frozen=True)
@@ -301,7 +306,7 @@ def fit_joint(
     sol = problem = None
     layout = JointLayout(cams, start.t_ref_s, g, fit_bias)
     for rnd in range(max(s.max_reject_rounds, 0) + 1):
-        sels = [st.select(layout.camera_x(x, k)[0][:6], False) for k, st in enumerate(states)]
+        sels = [st.select(layout.camera_x(x, k)[0][:6], c.level_partial) for k, (st, c) in enumerate(zip(states, cams))]
         problem = JointProblem(layout, states, sels, start.radius_m, constraint)
         sol = levenberg_marquardt(problem, x, s, loss="linear")
         x, n_eval = sol.x, n_eval + sol.n_evaluations
