@@ -100,3 +100,32 @@ def test_estimate_rig_needs_one_image_per_camera(tmp_path, capsys):
     assert run(capsys, "simulate", "--rig", "lane-90", "--out", name, "--noise", "none")[0] == 0
     code, out, err = run(capsys, "estimate", "--rig", f"{name}.rig.toml", f"{name}.side.png", "--radius", "0.0335")
     assert code == 2 and "1 images for 2 cameras" in err
+
+
+def test_rig_watch_pairs_two_raw_streams(tmp_path, capsys):
+    from dataclasses import replace
+
+    from ballscan.lab.rig import RIG_PRESETS, simulate_rig
+    from ballscan.geometry.rig import save_rig
+
+    p = RIG_PRESETS["lane-90"]
+    motion = replace(p.motion, t_ref_s=1500 / 70000.0)
+    sim = simulate_rig(p.rig, motion, 2400, p.appearance, seed=4)
+    paths = []
+    for rc, img in zip(p.rig.cameras, sim.images):
+        path = tmp_path / f"{rc.name}.raw"
+        img.tofile(path)
+        paths.append(path)
+    save_rig(p.rig, tmp_path / "lane.rig.toml")
+    code, out, err = run(capsys, "rig", "watch", tmp_path / "lane.rig.toml", *paths, "--radius", "0.0335", "--chunk-lines", "200")
+    assert code == 0, err
+    lines = out.splitlines()
+    assert len(lines) == 1
+    b = json.loads(lines[0])
+    assert b["cameras"] == ["side", "top"] and b["flags"] == []
+    tr = motion.at(b["t_c_s"])
+    z = (np.array(b["velocity_mps"]) - tr.velocity_mps) / np.array(b["velocity_sigma_mps"])
+    assert np.all(np.abs(z) < 4.0), z  # the pairing and the crops' cameras (calibration: bench_rig.py)
+    assert set(b["own_t_c_s"]) == {"side", "top"}
+    code, out, err = run(capsys, "rig", "watch", tmp_path / "lane.rig.toml", paths[0], "--radius", "0.0335")
+    assert code == 2 and "1 sources for 2 cameras" in err

@@ -159,3 +159,33 @@ def precision_rig_command(
         plot_sweep(rows, plot)
         typer.echo(str(plot))
 
+
+
+@rig_app.command("watch")
+def watch(
+    rig: Path = typer.Argument(..., help="Rig TOML (docs/geometry.md)."),
+    sources: list[str] = typer.Argument(..., help="One line source per camera, in the rig's order (as for 'ballscan watch': a raw file, a named pipe, '-', a folder of image chunks, pylon[:SERIAL])."),
+    radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
+    dtype: str = typer.Option("uint8", "--dtype", help="Sample type of raw sources: uint8 or uint16."),
+    chunk_lines: int = typer.Option(1024, "--chunk-lines", help="Lines read at a time from each source."),
+    timeout: Optional[float] = typer.Option(None, "--timeout", help="Give up when a pipe or a camera sends nothing for this many seconds."),
+    pair_timeout: float = typer.Option(2.0, "--pair-timeout", help="Wall seconds a ball waits for the other cameras' balls before it is measured with what came."),
+    constraint: Optional[str] = typer.Option(None, "--constraint", help="Known constraint as for estimate (world frame)."),
+) -> None:
+    """Measure a rig's line streams as they arrive: one joint JSON line per ball (world frame), paired across the cameras by time."""
+    from ..geometry.rig import load_rig
+    from ..solve.constraint import parse_constraint
+    from ..stream.rig import pair_streams
+    from .stream import open_source
+
+    if not radius > 0:
+        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    if not pair_timeout > 0:
+        raise typer.BadParameter(f"must be positive, got {pair_timeout}", param_hint="--pair-timeout")
+    r = load_rig(rig)
+    con = parse_constraint(constraint) if constraint else None
+    if len(sources) != len(r.cameras):
+        raise ValueError(f"rig watch: {len(sources)} sources for {len(r.cameras)} cameras ({', '.join(r.names)}); give one per camera in the rig's order")
+    srcs = [open_source(s, rc.camera, dtype=dtype, chunk_lines=chunk_lines, timeout_s=timeout) for s, rc in zip(sources, r.cameras)]
+    for ball in pair_streams(srcs, r, radius, constraint=con, pair_timeout_s=pair_timeout):
+        typer.echo(ball.to_json(own=False))

@@ -30,7 +30,18 @@ from .estimate import estimate_image
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
 
-__all__ = ["RIG_FLAGS", "RigBall", "RigReport", "check_lines", "combined_start", "estimate_rig", "match_window_s", "single_camera_rig"]
+__all__ = [
+    "RIG_FLAGS",
+    "RigBall",
+    "RigReport",
+    "check_lines",
+    "combined_start",
+    "estimate_rig",
+    "match_window_s",
+    "measure_group",
+    "predicted_crossing",
+    "single_camera_rig",
+]
 
 #: Flags of a rig's ball (docs/geometry.md), beside the cameras' own.
 RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate")
@@ -117,6 +128,14 @@ class RigBall:
                 d["constraint"] = {**j.constraint.describe(), "residuals_sigma": _list(j.constraint_residuals)}
         d["own"] = {name: e.to_dict() for name, e in self.estimates.items()}
         return d
+
+    def to_json(self, *, own: bool = True, indent: int | None = None) -> str:
+        """:meth:`to_dict` as JSON; ``own=False`` keeps of the cameras' own estimates only their ``t_c_s`` (``own_t_c_s``: one line per ball in a stream)."""
+        d = self.to_dict()
+        if not own:
+            d["own_t_c_s"] = {n: e.t_c_s for n, e in self.estimates.items()}
+            del d["own"]
+        return json.dumps(d, indent=indent, default=_json_default)
 
 
 @dataclass(frozen=True)
@@ -212,6 +231,16 @@ def match_window_s(rig: Rig, k: int, ref_state: np.ndarray, ref_cov: np.ndarray,
     sig = math.sqrt(var) if np.isfinite(var) and var >= 0 else math.inf
     off = rc.clock_offset_s if rc.clock_known else 0.0
     return t + off, rig.match_window_s + 5.0 * sig + 5.0 * rc.clock_sigma_s
+
+
+def predicted_crossing(rig: Rig, reference: BallEstimate, k: int) -> tuple[float, float]:
+    """Camera ``k``'s predicted crossing (its clock, s) of a reference camera's ball and the window's half-width (s); NaN when it cannot say."""
+    ref = rig.cameras[rig.reference]
+    own = _own_world(ref, reference, ref.clock_offset_s)
+    if own is None:
+        return math.nan, 0.0
+    state, cov, t = own
+    return match_window_s(rig, k, state, cov, t)
 
 
 def _matches(rig: Rig, reports) -> list[dict[int, int]]:
@@ -317,7 +346,25 @@ def _single(rig: Rig, k: int, e: BallEstimate, flags: tuple[str, ...]) -> RigBal
 
 
 def _joint_ball(rig: Rig, group: dict[int, int], reports, radius_m: float, recipe: Recipe, constraint: Constraint | None) -> RigBall:
-    picks = {k: reports[k].balls[j] for k, j in group.items()}
+    return measure_group(rig, {k: reports[k].balls[j] for k, j in group.items()}, radius_m, recipe, constraint)
+
+
+def measure_group(
+    rig: Rig,
+    picks: dict[int, BallEstimate],
+    radius_m: float,
+    recipe: Recipe = Recipe(),
+    constraint: Constraint | None = None,
+    cameras: dict[int, LineScanCamera] | None = None,
+) -> RigBall:
+    """One ball from the cameras' own estimates of it (by camera index): the joint fit, or one camera's estimate alone (flagged).
+
+    The joint fit needs two cameras with fitted edges, or one and a
+    constraint.  ``cameras`` gives, by camera index, the camera an
+    estimate's edges were measured with where it is not the rig's (a
+    stream's crop, :func:`ballscan.geometry.camera.crop_camera`).
+    """
+    cameras = cameras or {}
     usable = {k: e for k, e in picks.items() if e.fitted_edges is not None and e.t_c_s is not None}
     names = {rig.cameras[k].name: e for k, e in picks.items()}
     flags: tuple[str, ...] = ("single_camera",) if len(rig.cameras) > 1 and len(usable) < 2 else ()
@@ -329,7 +376,7 @@ def _joint_ball(rig: Rig, group: dict[int, int], reports, radius_m: float, recip
     motion0, offsets = start
     order = sorted(usable)
     cams = [
-        JointCamera(rig.cameras[k].name, rig.cameras[k].camera, usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit,
+        JointCamera(rig.cameras[k].name, cameras.get(k, rig.cameras[k].camera), usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit,
                     bool(usable[k].extra.get("partial_levelled", False)))
         for k in order
     ]
