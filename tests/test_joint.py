@@ -206,13 +206,13 @@ def test_images_must_match_the_cameras(lane_render):
 
 
 def test_parallel_planes_apart_with_gravity_and_an_unknown_clock():
-    # the top camera's plane 0.3 m down the lane: 6.7 ms later, the ball 0.2 mm lower (gravity), its clock 3 ms behind
+    # the top camera's plane 0.3 m down the lane: 6.7 ms later, the ball 0.2 mm lower (gravity), its clock 6 ms behind
     top = camera_about_lane(LANE.rig.cameras[1].camera, 4.0, 90.0, 0.3)
     rig = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], camera=top))
-    sim = simulate_rig(rig, LANE.motion, 700, LANE.appearance, seed=21, clock_offsets_s={"top": -3e-3})
-    rig = rig.with_camera(1, replace(rig.cameras[1], clock_offset_s=None, clock_sigma_s=1e-3))
+    sim = simulate_rig(rig, LANE.motion, 220, LANE.appearance, seed=21, clock_offsets_s={"top": -6e-3})
+    rig = rig.with_camera(1, replace(rig.cameras[1], clock_offset_s=None, clock_sigma_s=2e-3))
     b = estimate_rig(sim.images, rig, LANE.motion.radius_m).balls[0]
     assert b.cameras == ("side", "top") and b.flags == ()
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
     top_fit = b.joint.cameras[1]
-    assert abs(top_fit.clock_offset_s + 3e-3) < 3 * top_fit.clock_offset_sigma_s
+    assert abs(top_fit.clock_offset_s + 6e-3) < 3 * top_fit.clock_offset_sigma_s
