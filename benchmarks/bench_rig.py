@@ -1,6 +1,7 @@
 """Two cameras against one: the joint estimate of a rig on seeded renders (run on demand, not a test).
 
-    python benchmarks/bench_rig.py [--renders 100] [--angles 90,30] [--out FILE.npz] [--figure docs/figures/rig_ellipses.png]
+    python benchmarks/bench_rig.py [--renders 100] [--angles 90,30] [--out FILE.pkl] [--figure docs/figures/rig_ellipses.png]
+    python benchmarks/bench_rig.py --replot FILE.pkl --figure docs/figures/rig_ellipses.png
 
 For each angle, the lane rig of :func:`ballscan.lab.rig.rig_for_angle`
 (camera ``side`` 4 m beside the lane, camera ``second`` 4 m from it turned
@@ -178,13 +179,14 @@ def figure(rows: list[dict], path: str) -> None:
     def ellipse(ax, C, colour):
         w, v = np.linalg.eigh(C)
         ang = math.degrees(math.atan2(v[1, 1], v[0, 1]))
-        ax.add_patch(Ellipse((0, 0), 2 * math.sqrt(w[1]), 2 * math.sqrt(w[0]), angle=ang, fill=False, color=colour, lw=2))
+        ax.add_patch(Ellipse((0, 0), 2 * math.sqrt(w[1]), 2 * math.sqrt(w[0]), angle=ang, fill=False, color=colour, lw=2.5, zorder=3))
+        ax.add_patch(Ellipse((0, 0), 2 * math.sqrt(w[1]), 2 * math.sqrt(w[0]), angle=ang, fill=False, color="black", lw=0.8, ls="--", zorder=4))
 
     sets = [("side alone", [r["singles"][0] for r in ok]), ("second alone", [r["singles"][1] for r in ok]), ("joint", ok)]
     for ax, chosen, title in ((axes[0], sets, "one camera against two"), (axes[1], sets[2:], "two cameras (zoomed)")):
         for name, items in chosen:
             e = np.array([x["v_err"][1:] for x in items])
-            ax.plot(e[:, 0], e[:, 1], ".", ms=3, color=colours[name], alpha=0.5, label=name)
+            ax.plot(e[:, 0], e[:, 1], ".", ms=3, color=colours[name], alpha=0.35, label=name)
             ellipse(ax, np.median([np.asarray(x["cov_v"])[1:, 1:] for x in items], axis=0), colours[name])
         ax.set_xlabel("error of V_Y (across the lane) [m/s]")
         ax.set_ylabel("error of V_Z (up) [m/s]")
@@ -203,7 +205,14 @@ def main(argv=None) -> None:
     ap.add_argument("--first", type=int, default=0)
     ap.add_argument("--figure", default=None)
     ap.add_argument("--out", default=None)
+    ap.add_argument("--replot", default=None, help="Only redraw --figure from a saved --out file.")
     args = ap.parse_args(argv)
+    if args.replot:
+        import pickle
+
+        with open(args.replot, "rb") as f:
+            figure(pickle.load(f)[90.0], args.figure)
+        return
     t0 = time.perf_counter()
     results = {}
     for a in (float(v) for v in args.angles.split(",")):
