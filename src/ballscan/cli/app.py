@@ -70,9 +70,25 @@ def simulate(
     stream: Optional[Path] = typer.Option(None, "--stream", help="Render a raw line stream instead: writes STREAM, STREAM.camera.toml, STREAM.truth.jsonl (needs --lines and --balls)."),
     balls: int = typer.Option(10, "--balls", help="With --stream: number of balls at random times and positions."),
     force: bool = typer.Option(False, "--force", help="Write through an output that is a symbolic link (refused otherwise)."),
+    rig: Optional[str] = typer.Option(None, "--rig", help="Rig TOML or rig preset (lane-90, lane-30, tee): one image per camera of the same ball, OUT.rig.toml and a world-frame OUT.truth.json (--position, --velocity world frame, --t-c rig clock)."),
+    rig_only: list[str] = typer.Option([], "--only", help="With --rig: draw the ball in this camera only (repeatable; the others' images are empty)."),
+    unknown_clock: list[str] = typer.Option([], "--unknown-clock", help="With --rig: write this camera's clock offset as \"unknown\" (repeatable)."),
+    clock_offset: list[str] = typer.Option([], "--clock-offset", help="With --rig: NAME=SECONDS, the camera's true clock offset (repeatable)."),
 ) -> None:
-    """Render a synthetic line-scan image (or, with --stream, a raw line stream) with its camera file and ground truth."""
+    """Render a synthetic line-scan image (or, with --stream, a raw line stream; with --rig, one per camera) with its camera file and ground truth."""
     from ..lab.simulate import SimulationRequest, run_simulation
+
+    if rig is not None:
+        from .rig import simulate_rig_command
+
+        if out is None:
+            raise ValueError("simulate --rig: give --out NAME")
+        pos = _vec(position, "--position") if position else None
+        vel = _vec(velocity, "--velocity") if velocity else None
+        for p in simulate_rig_command(rig, out, radius_m=radius, position_m=pos, velocity_mps=vel, t_c_s=t_c, n_lines=lines, noise=noise, seed=seed,
+                                      only=rig_only, unknown=unknown_clock, offsets=clock_offset):
+            typer.echo(str(p))
+        return
 
     if stream is not None:
         from ..geometry.camera import load_camera
@@ -122,8 +138,8 @@ def simulate(
 # ---------------------------------------------------------------- estimate
 @app.command()
 def estimate(
-    image: Path = typer.Argument(..., help="Line-scan image (PNG or TIFF, rows = scan lines)."),
-    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    images: list[Path] = typer.Argument(..., help="Line-scan image (PNG or TIFF, rows = scan lines); with --rig one per camera, in the rig's order."),
+    camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
     radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
     method: str = typer.Option("fit", "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
     as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
@@ -145,6 +161,8 @@ def estimate(
         True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
     ),
     force: bool = typer.Option(False, "--force", help="Write --plot through a symbolic link (refused otherwise)."),
+    rig: Optional[Path] = typer.Option(None, "--rig", help="Rig TOML (docs/geometry.md): each ball matched across the cameras' images and fitted jointly, world frame."),
+    constraint: Optional[str] = typer.Option(None, "--constraint", help="Known constraint, world frame (the camera frame without a pose): 'plane:NX,NY,NZ,D[,SIGMA_M[,SIGMA_DEG]]' (the ball rolls on n.X = D) or 'point:X,Y,Z[,SIGMA_M]'."),
 ) -> None:
     """Measure every ball in a line-scan image.
 
@@ -164,6 +182,19 @@ def estimate(
 
     check_radius(radius)
     _warn_radius(radius)
+    if rig is not None or constraint is not None:
+        from .rig import estimate_rig_command
+
+        if rig is None and (camera is None or len(images) != 1):
+            raise ValueError("estimate --constraint without --rig: give one image and --camera")
+        recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
+        estimate_rig_command(images, rig, camera, radius, constraint, recipe, as_json)
+        return
+    if camera is None:
+        raise ValueError("estimate: give --camera CAMERA.toml (or --rig RIG.toml)")
+    if len(images) != 1:
+        raise ValueError(f"estimate: one image per command without --rig, got {len(images)}")
+    image = images[0]
     if as_json and as_csv:
         raise typer.BadParameter("give one of --json and --csv", param_hint="--csv")
     if units not in UNITS:
@@ -233,23 +264,39 @@ def _print_csv(report, camera) -> None:
 # ---------------------------------------------------------------- precision
 @app.command()
 def precision(
-    camera: Path = typer.Option(..., "--camera", help="Camera TOML (geometry.md)."),
+    camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
     radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
-    velocity: str = typer.Option(..., "--velocity", help="Velocity VX,VY,VZ in m/s (camera frame)."),
+    velocity: str = typer.Option(..., "--velocity", help="Velocity VX,VY,VZ in m/s (camera frame; world frame with --rig or --constraint)."),
     position: str = typer.Option(..., "--position", help="Centre at the crossing, X,Y,Z in metres (X = 0)."),
     edge_noise: Optional[float] = typer.Option(None, "--edge-noise", help="1-sigma of one edge measurement, pixels."),
     pixel_noise: Optional[float] = typer.Option(None, "--pixel-noise", help="Pixel noise 1-sigma in DN (with --contrast): bound for any estimator on the image."),
     contrast: Optional[float] = typer.Option(None, "--contrast", help="Ball/background contrast in DN (with --pixel-noise)."),
     prnu: float = typer.Option(0.0, "--prnu", help="Relative 1-sigma of the columns' gains (PRNU) not flat-fielded, e.g. 0.008 (with --pixel-noise)."),
     as_json: bool = typer.Option(False, "--json", help="Print JSON (one object per bound, under \"bounds\") instead of tables."),
+    rig: Optional[Path] = typer.Option(None, "--rig", help="Rig TOML or rig preset (lane-90, lane-30, tee): the joint bound, world frame (--position is the centre at the reference camera's crossing; --edge-noise, default 0.1 px)."),
+    constraint: Optional[str] = typer.Option(None, "--constraint", help="Known constraint as for estimate: 'plane:NX,NY,NZ,D[,SIGMA_M[,SIGMA_DEG]]' or 'point:X,Y,Z[,SIGMA_M]'."),
+    sweep: Optional[str] = typer.Option(None, "--sweep", help="With --rig: START:STOP:STEP degrees, the second camera turned about the ball's path; prints sigma(direction) per angle."),
+    sweep_plot: Optional[Path] = typer.Option(None, "--plot", help="With --sweep: write the sweep's plot (PNG)."),
 ) -> None:
-    """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a rig."""
+    """Print the Cramér–Rao bound (1-sigma) on position, velocity and speed for a camera or a rig."""
     from ..geometry.camera import load_camera
     from ..geometry.motion import BallMotion
     from ..solve.precision import edge_crlb, pixel_crlb
 
     if not radius > 0:
         raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    if rig is not None or constraint is not None or sweep is not None:
+        from .rig import precision_rig_command
+
+        if rig is None and camera is None:
+            raise ValueError("precision: give --camera CAMERA.toml or --rig RIG.toml")
+        if sweep is not None and rig is None:
+            raise ValueError("precision --sweep: give --rig RIG.toml (the sweep turns its second camera)")
+        precision_rig_command(rig, camera, radius, _vec(position, "--position"), _vec(velocity, "--velocity"), edge_noise if edge_noise is not None else 0.1,
+                              constraint, sweep, sweep_plot, as_json)
+        return
+    if camera is None:
+        raise ValueError("precision: give --camera CAMERA.toml (or --rig RIG.toml)")
     cam = load_camera(camera)
     pos = _vec(position, "--position")
     vel = _vec(velocity, "--velocity")
@@ -344,9 +391,11 @@ def view(
 def _register_subcommands() -> None:
     """Experiments and line streams live in their own modules; the commands are theirs."""
     from .experiment import experiment_app
+    from .rig import rig_app
     from .stream import batch, watch
 
     app.add_typer(experiment_app, name="experiment")
+    app.add_typer(rig_app, name="rig")
     app.command()(watch)
     app.command()(batch)
 

@@ -234,6 +234,7 @@ def _fit_estimate(
         run_time_s=time.perf_counter() - t0,
         record=record,
         covariance=cov,
+        fitted_edges=final.edges,
         extra={
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,

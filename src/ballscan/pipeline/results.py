@@ -19,6 +19,7 @@ from ..geometry.motion import BallMotion
 from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, derive
 
 if TYPE_CHECKING:
+    from ..measure.edges import EdgeMeasurements
     from .recipe import Recipe
     from .stages import StageRecord
 
@@ -85,6 +86,10 @@ class BallEstimate:
         ``z0``, ``vx``, ``vy``, ``vz``; seconds, metres, m/s); NaN in the rows
         of undetermined parameters; None without uncertainties (the paper's
         method).
+    fitted_edges : EdgeMeasurements or None
+        The edges the reported fit used (a joint fit of several cameras
+        fits them again, :mod:`ballscan.pipeline.rig`); not part of the JSON
+        output. None for the paper's method.
     """
 
     method: str
@@ -106,6 +111,7 @@ class BallEstimate:
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
     record: "StageRecord | None" = field(default=None, compare=False)
     covariance: np.ndarray | None = field(default=None, compare=False, repr=False)
+    fitted_edges: "EdgeMeasurements | None" = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position_m", _tuple3(self.position_m))

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 
-__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "direction_jacobian", "world_covariance"]
+__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "direction_jacobian", "launch_angles", "world_covariance"]
 
 #: The order of :attr:`BallEstimate.covariance`'s rows and columns (seconds, metres, m/s).
 COVARIANCE_PARAMETERS = ("t_c_s", "y0_m", "z0_m", "vx_mps", "vy_mps", "vz_mps")
@@ -111,8 +111,8 @@ def world_covariance(camera: LineScanCamera, covariance: np.ndarray) -> np.ndarr
     return J @ covariance @ J.T
 
 
-def _launch_angles(Vw: np.ndarray, Cvw: np.ndarray) -> tuple[float, float, float, float]:
-    """Elevation and azimuth of a world velocity and their sigmas, degrees."""
+def launch_angles(Vw: np.ndarray, Cvw: np.ndarray) -> tuple[float, float, float, float]:
+    """Elevation ``atan2(VZ, |(VX, VY)|)`` and azimuth ``atan2(VY, VX)`` of a world velocity ``Vw`` (m/s) and their sigmas from its 3x3 covariance ``Cvw``, degrees."""
     h = math.hypot(Vw[0], Vw[1])
     elevation = math.atan2(Vw[2], h)
     azimuth = math.atan2(Vw[1], Vw[0])
@@ -164,7 +164,7 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
     if camera is not None and camera.has_pose:
         Cw = world_covariance(camera, C)
         Vw = camera.vectors_to_world(V)
-        elev, elev_s, azim, azim_s = _launch_angles(Vw, Cw[4:, 4:])
+        elev, elev_s, azim, azim_s = launch_angles(Vw, Cw[4:, 4:])
         out.update(
             world_position_m=camera.camera_to_world(np.asarray(position_m, dtype=float)),
             world_position_sigma_m=_sigmas(Cw[1:4, 1:4]),

@@ -1,0 +1,426 @@
+"""A rig's images to joint estimates: each camera's own estimate, the balls matched across cameras by time, one motion fitted to all.
+
+:func:`estimate_rig` runs :func:`ballscan.pipeline.estimate.estimate_image`
+on every camera's image, matches each ball of the reference camera with
+the other cameras' balls whose crossing time falls in a window about the
+crossing its motion predicts for them (:func:`match_window_s`), starts the
+joint fit from the cameras' estimates combined by their information
+(:func:`combined_start`) and fits one world motion to all their edges
+(:func:`ballscan.solve.joint.fit_joint`).  A ball seen by one camera only
+keeps that camera's estimate and is flagged ``single_camera``; a camera
+that disagrees with the others (a wrong pose, a wrong clock) is named in
+``inconsistent_cameras`` and the ball flagged ``inconsistent_camera``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+
+from ..geometry.camera import LineScanCamera
+from ..geometry.rig import Rig, RigCamera, WorldMotion, camera_params, plane_crossing, viewing_plane, world_crossing
+from ..solve.constraint import Constraint
+from ..solve.derived import WORLD_COVARIANCE_PARAMETERS, derive, launch_angles, world_covariance
+from ..solve.joint import JointCamera, JointResult, fit_joint
+from .estimate import estimate_image
+from .recipe import Recipe
+from .results import BallEstimate, EstimateReport
+
+__all__ = [
+    "RIG_FLAGS",
+    "RigBall",
+    "RigReport",
+    "check_lines",
+    "combined_start",
+    "estimate_rig",
+    "match_window_s",
+    "measure_group",
+    "predicted_crossing",
+    "single_camera_rig",
+]
+
+#: Flags of a rig's ball (docs/geometry.md), beside the cameras' own.
+RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate")
+
+
+def _list(a) -> list | None:
+    if a is None:
+        return None
+    return [None if not np.isfinite(v) else float(v) for v in np.asarray(a, dtype=float).ravel()]
+
+
+@dataclass(frozen=True)
+class RigBall:
+    """One ball of a rig: its world motion at the reference camera's crossing, with 1-sigma and covariance.
+
+    Attributes
+    ----------
+    cameras : tuple of str
+        The cameras whose measurements entered.
+    motion : WorldMotion or None
+        World frame, rig clock (``t_ref_s`` is the crossing); None where undetermined.
+    covariance : ndarray (7, 7) or None
+        Of ``(t_c, x, y, z, vx, vy, vz)``.
+    flags : tuple of str
+        :data:`RIG_FLAGS` words.
+    estimates : dict
+        Each camera's own :class:`BallEstimate` by name.
+    joint : JointResult or None
+        The joint fit (None for a ball measured by one camera alone, without a constraint).
+    """
+
+    cameras: tuple[str, ...]
+    motion: WorldMotion | None
+    covariance: np.ndarray | None
+    flags: tuple[str, ...] = ()
+    estimates: dict[str, BallEstimate] = field(default_factory=dict, compare=False, repr=False)
+    joint: JointResult | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def sigmas(self) -> np.ndarray:
+        return np.full(7, np.nan) if self.covariance is None else np.sqrt(np.abs(np.diag(self.covariance)))
+
+    @property
+    def t_c_s(self) -> float:
+        return math.nan if self.motion is None else self.motion.t_ref_s
+
+    def direction(self) -> tuple[float, float, float, float]:
+        """Elevation, its sigma, azimuth, its sigma (degrees; :func:`ballscan.solve.derived.launch_angles`)."""
+        if self.motion is None:
+            return (math.nan,) * 4
+        return launch_angles(np.asarray(self.motion.velocity_mps), self.covariance[4:, 4:])
+
+    def speed(self) -> tuple[float, float]:
+        """Speed and its 1-sigma (m/s, first order)."""
+        if self.motion is None:
+            return math.nan, math.nan
+        V = np.asarray(self.motion.velocity_mps)
+        sp = float(np.linalg.norm(V))
+        u = V / sp
+        return sp, float(math.sqrt(max(u @ self.covariance[4:, 4:] @ u, 0.0)))
+
+    def to_dict(self) -> dict[str, Any]:
+        """The ball's JSON (docs/geometry.md, "Rig results")."""
+        d: dict[str, Any] = {"frame": "world", "cameras": list(self.cameras), "flags": list(self.flags)}
+        if self.motion is None:
+            d.update(t_c_s=None, position_m=None, velocity_mps=None, speed_mps=None)
+        else:
+            m, s = self.motion, self.sigmas
+            elev, elev_s, azim, azim_s = self.direction()
+            sp, sp_s = self.speed()
+            d.update(
+                radius_m=m.radius_m, t_c_s=m.t_ref_s, position_m=list(m.position_m), velocity_mps=list(m.velocity_mps), speed_mps=sp,
+                t_c_sigma_s=float(s[0]), position_sigma_m=_list(s[1:4]), velocity_sigma_mps=_list(s[4:7]), speed_sigma_mps=sp_s,
+                elevation_deg=elev, elevation_sigma_deg=elev_s, azimuth_deg=azim, azimuth_sigma_deg=azim_s,
+                covariance={"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": [_list(r) for r in self.covariance]},
+            )
+        j = self.joint
+        if j is not None:
+            d["per_camera"] = {c.name: c.to_dict() for c in j.cameras}
+            d["inconsistent_cameras"] = [c.name for c in j.cameras if not c.consistent]
+            d["chi2_red"] = j.chi2_red
+            d["undetermined"] = list(j.undetermined)
+            if j.constraint is not None:
+                d["constraint"] = {**j.constraint.describe(), "residuals_sigma": _list(j.constraint_residuals)}
+        d["own"] = {name: e.to_dict() for name, e in self.estimates.items()}
+        return d
+
+    def to_json(self, *, own: bool = True, indent: int | None = None) -> str:
+        """:meth:`to_dict` as JSON; ``own=False`` keeps of the cameras' own estimates only their ``t_c_s`` (``own_t_c_s``: one line per ball in a stream)."""
+        d = self.to_dict()
+        if not own:
+            d["own_t_c_s"] = {n: e.t_c_s for n, e in self.estimates.items()}
+            del d["own"]
+        return json.dumps(d, indent=indent, default=_json_default)
+
+
+@dataclass(frozen=True)
+class RigReport:
+    """Every ball of one rig's images, in the order of ``t_c_s``."""
+
+    rig: Rig
+    images: tuple[str, ...]
+    balls: tuple[RigBall, ...]
+    reports: tuple[EstimateReport, ...] = field(default=(), compare=False, repr=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "rig": self.rig.source,
+            "images": {c.name: img for c, img in zip(self.rig.cameras, self.images)},
+            "balls": [b.to_dict() for b in self.balls],
+        }
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict(), indent=2, default=_json_default)
+
+
+def _json_default(o):
+    if isinstance(o, np.ndarray):
+        return _list(o) if o.ndim == 1 else [_list(r) for r in o]
+    if isinstance(o, (np.floating, np.integer, np.bool_)):
+        return o.item()
+    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+
+
+# ----------------------------------------------------------------- the check
+
+
+def check_lines(rig: Rig) -> list[str]:
+    """``ballscan rig check``: each camera's viewing plane and centre, and where each pair of planes meets."""
+    gravity = ", ".join(f"{v:g}" for v in rig.gravity_vector())
+    out = [f"rig {rig.source}: {len(rig.cameras)} cameras, gravity ({gravity}) m/s^2, match window {rig.match_window_s:g} s"]
+    planes = [viewing_plane(c.camera) for c in rig.cameras]
+    for c, p in zip(rig.cameras, planes):
+        clock = "unknown" if c.clock_offset_s is None else f"{c.clock_offset_s:+.6g} s"
+        n, ctr, ax = p.normal, p.centre_m, p.axis
+        out.append(
+            f"  {c.name}: viewing plane {n[0]:+.4f} X {n[1]:+.4f} Y {n[2]:+.4f} Z = {p.offset_m:+.4f} m; "
+            f"centre ({ctr[0]:+.3f}, {ctr[1]:+.3f}, {ctr[2]:+.3f}) m, optical axis ({ax[0]:+.3f}, {ax[1]:+.3f}, {ax[2]:+.3f}); clock offset {clock}"
+        )
+    for i in range(len(planes)):
+        for j in range(i + 1, len(planes)):
+            x = plane_crossing(planes[i], planes[j])
+            a, b = rig.cameras[i].name, rig.cameras[j].name
+            if x.parallel:
+                where = "the same plane" if x.distance_m < 1e-9 else f"parallel, {x.distance_m:.4f} m apart"
+                out.append(f"  {a} x {b}: {where}; optical axes {x.axes_angle_deg:.2f} deg apart")
+            else:
+                p0, d = x.point_m, x.direction
+                out.append(
+                    f"  {a} x {b}: planes {x.angle_deg:.2f} deg apart, crossing along ({d[0]:+.4f}, {d[1]:+.4f}, {d[2]:+.4f}) "
+                    f"through ({p0[0]:+.4f}, {p0[1]:+.4f}, {p0[2]:+.4f}) m; optical axes {x.axes_angle_deg:.2f} deg apart"
+                )
+    return out
+
+
+# --------------------------------------------------------------- matching
+
+
+def _own_world(rc: RigCamera, e: BallEstimate, offset_s: float) -> tuple[np.ndarray, np.ndarray, float] | None:
+    """A camera's estimate as the world state at its crossing (rig time), its 6x6 covariance at that fixed time, and the time."""
+    if e.t_c_s is None or e.position_m is None or e.velocity_mps is None or e.covariance is None:
+        return None
+    cam = rc.camera
+    C7 = world_covariance(cam, np.asarray(e.covariance, dtype=float))
+    X = cam.camera_to_world(np.asarray(e.position_m))
+    V = cam.vectors_to_world(np.asarray(e.velocity_mps))
+    A = np.zeros((6, 7))
+    A[:3, 0] = -V  # the centre at the fixed time: the crossing time's error moves it along V
+    A[:3, 1:4] = np.eye(3)
+    A[3:, 4:] = np.eye(3)
+    C = A @ np.nan_to_num(C7, nan=1e6) @ A.T
+    return np.concatenate([X, V]), C, float(e.t_c_s) - offset_s
+
+
+def match_window_s(rig: Rig, k: int, ref_state: np.ndarray, ref_cov: np.ndarray, t_ref_s: float) -> tuple[float, float]:
+    """Camera ``k``'s predicted crossing (its own clock, s) of the reference ball and the half-width of the matching window (s).
+
+    The window: the rig's ``match_window_s`` plus 5 sigma of the
+    prediction (the reference ball's covariance through the crossing's
+    derivative) and 5 times the camera's ``clock_sigma_s``.
+    """
+    rc = rig.cameras[k]
+    t, _, _, J, ok = world_crossing(ref_state, rc.camera, t_ref_s, rig.gravity_vector())
+    if not ok or not np.isfinite(t):
+        return math.nan, 0.0
+    var = float(J[0] @ ref_cov @ J[0])
+    sig = math.sqrt(var) if np.isfinite(var) and var >= 0 else math.inf
+    off = rc.clock_offset_s if rc.clock_known else 0.0
+    return t + off, rig.match_window_s + 5.0 * sig + 5.0 * rc.clock_sigma_s
+
+
+def predicted_crossing(rig: Rig, reference: BallEstimate, k: int) -> tuple[float, float]:
+    """Camera ``k``'s predicted crossing (its clock, s) of a reference camera's ball and the window's half-width (s); NaN when it cannot say."""
+    ref = rig.cameras[rig.reference]
+    own = _own_world(ref, reference, ref.clock_offset_s)
+    if own is None:
+        return math.nan, 0.0
+    state, cov, t = own
+    return match_window_s(rig, k, state, cov, t)
+
+
+def _matches(rig: Rig, reports) -> list[dict[int, int]]:
+    """Groups ``{camera index: ball index}``: each reference ball with the nearest unused ball in each window, then the rest alone."""
+    ref = rig.reference
+    used = [set() for _ in rig.cameras]
+    groups: list[dict[int, int]] = []
+    for i, e in enumerate(reports[ref].balls):
+        group = {ref: i}
+        used[ref].add(i)
+        own = _own_world(rig.cameras[ref], e, rig.cameras[ref].clock_offset_s)
+        if own is not None:
+            state, cov, t = own
+            for k in range(len(rig.cameras)):
+                if k == ref:
+                    continue
+                t_pred, half = match_window_s(rig, k, state, cov, t)
+                cands = [(abs(b.t_c_s - t_pred), j) for j, b in enumerate(reports[k].balls)
+                         if j not in used[k] and b.t_c_s is not None and abs(b.t_c_s - t_pred) <= half]
+                if cands:
+                    j = min(cands)[1]
+                    group[k] = j
+                    used[k].add(j)
+        groups.append(group)
+    for k, rep in enumerate(reports):
+        for j in range(len(rep.balls)):
+            if j not in used[k]:
+                groups.append({k: j})
+    return groups
+
+
+# -------------------------------------------------------------- the start
+
+
+def combined_start(rig: Rig, picks: dict[int, BallEstimate], radius_m: float) -> tuple[WorldMotion, list[float]] | None:
+    """The cameras' own estimates combined by their information into one world motion, and the unknown clocks' starts.
+
+    Each camera with a known clock gives the world state at its crossing
+    (its covariance at that fixed time, :func:`_own_world`); the state at
+    the first one's crossing is their weighted least squares (straight
+    line; gravity's few micrometres over a crossing are left to the fit).
+    Each unknown clock starts at its crossing less the predicted one.
+    Returns None when no camera with a known clock has an estimate.
+    """
+    g = rig.gravity_vector()
+    rows, t_ref = [], None
+    for k, e in sorted(picks.items()):
+        rc = rig.cameras[k]
+        if not rc.clock_known:
+            continue
+        own = _own_world(rc, e, rc.clock_offset_s)
+        if own is None:
+            continue
+        if rows:
+            # align an unstated crossing sign (V.x >= 0 by convention) with the first camera's
+            state, C, t = own
+            Rm = rc.camera.rotation_matrix
+            V_alt = Rm.T @ (np.diag([-1.0, 1.0, 1.0]) @ (Rm @ state[3:]))
+            if np.linalg.norm(V_alt - rows[0][0][3:]) < np.linalg.norm(state[3:] - rows[0][0][3:]):
+                state = np.concatenate([state[:3], V_alt])
+            own = (state, C, t)
+        rows.append(own)
+        t_ref = rows[0][2]
+    if not rows:
+        return None
+    N = np.zeros((6, 6))
+    b = np.zeros(6)
+    for state, C, t in rows:
+        dt = t - t_ref
+        A = np.eye(6)
+        A[:3, 3:] = np.eye(3) * dt
+        # equilibrated before the pseudo-inverse (metres^2 and (m/s)^2 differ by 1e12)
+        d = np.sqrt(np.where(np.diag(C) > 0, np.diag(C), 1.0))
+        W = np.linalg.pinv(C / np.outer(d, d), rcond=1e-10, hermitian=True) / np.outer(d, d)
+        N += A.T @ W @ A
+        b += A.T @ W @ state
+    x = np.linalg.lstsq(N + 1e-12 * np.trace(N) * np.eye(6), b, rcond=None)[0]
+    start = WorldMotion(radius_m, t_ref, tuple(x[:3]), tuple(x[3:]), tuple(g))
+    offsets = []
+    for k in rig.unknown_clocks:
+        if k in picks and picks[k].t_c_s is not None:
+            t_pred = camera_params(start.state, rig.cameras[k].camera, t_ref, g, 0.0)[0][0]
+            offsets.append(float(picks[k].t_c_s - t_pred))
+        else:
+            offsets.append(0.0)
+    return start, offsets
+
+
+# -------------------------------------------------------------- estimate
+
+
+def _single(rig: Rig, k: int, e: BallEstimate, flags: tuple[str, ...]) -> RigBall:
+    """A ball measured by camera ``k`` alone: its own estimate in the world frame."""
+    rc = rig.cameras[k]
+    name = rc.name
+    if e.t_c_s is None or e.covariance is None or e.position_m is None or e.velocity_mps is None:
+        return RigBall((name,), None, None, flags + ("degenerate",), {name: e})
+    dv = derive(rc.camera, e.position_m, e.velocity_mps, e.covariance)
+    off = rc.clock_offset_s if rc.clock_known else 0.0
+    motion = WorldMotion(e.radius_m, float(e.t_c_s) - off, tuple(dv.world_position_m), tuple(dv.world_velocity_mps), tuple(rig.gravity_vector()))
+    extra = tuple(f for f in ("not_converged", "degenerate") if f in e.flags)
+    return RigBall((name,), motion, dv.world_covariance, flags + extra, {name: e})
+
+
+def _joint_ball(rig: Rig, group: dict[int, int], reports, radius_m: float, recipe: Recipe, constraint: Constraint | None) -> RigBall:
+    return measure_group(rig, {k: reports[k].balls[j] for k, j in group.items()}, radius_m, recipe, constraint)
+
+
+def measure_group(
+    rig: Rig,
+    picks: dict[int, BallEstimate],
+    radius_m: float,
+    recipe: Recipe = Recipe(),
+    constraint: Constraint | None = None,
+    cameras: dict[int, LineScanCamera] | None = None,
+) -> RigBall:
+    """One ball from the cameras' own estimates of it (by camera index): the joint fit, or one camera's estimate alone (flagged).
+
+    The joint fit needs two cameras with fitted edges, or one and a
+    constraint.  ``cameras`` gives, by camera index, the camera an
+    estimate's edges were measured with where it is not the rig's (a
+    stream's crop, :func:`ballscan.geometry.camera.crop_camera`).
+    """
+    cameras = cameras or {}
+    usable = {k: e for k, e in picks.items() if e.fitted_edges is not None and e.t_c_s is not None}
+    names = {rig.cameras[k].name: e for k, e in picks.items()}
+    flags: tuple[str, ...] = ("single_camera",) if len(rig.cameras) > 1 and len(usable) < 2 else ()
+    start = combined_start(rig, usable, radius_m) if usable else None
+    if start is None or (len(usable) < 2 and constraint is None):
+        k = min(picks)
+        ball = _single(rig, k, picks[k], flags)
+        return replace(ball, estimates=names)
+    motion0, offsets = start
+    order = sorted(usable)
+    cams = [
+        JointCamera(rig.cameras[k].name, cameras.get(k, rig.cameras[k].camera), usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit,
+                    bool(usable[k].extra.get("partial_levelled", False)))
+        for k in order
+    ]
+    offs = [offsets[rig.unknown_clocks.index(k)] for k in order if not rig.cameras[k].clock_known]
+    res = fit_joint(cams, motion0, offs, constraint=constraint)
+    flags += () if res.consistent else ("inconsistent_camera",)
+    flags += () if res.converged else ("not_converged",)
+    flags += ("degenerate",) if res.undetermined else ()
+    return RigBall(tuple(c.name for c in cams), res.motion, res.covariance, flags, names, res)
+
+
+def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
+    """Detect, match and jointly measure every ball of a rig's images (one per camera, the rig's order).
+
+    Parameters
+    ----------
+    images : sequence of path or LineImage or array
+        One image per camera of ``rig``.
+    rig : Rig
+    radius_m : float
+        Ball radius (m).
+    recipe : Recipe
+        Each camera's estimator; the joint fit uses its ``edge_fit`` settings.
+    constraint : Constraint, optional
+        A known plane or point (world frame), as a prior of every ball's fit.
+
+    Returns
+    -------
+    RigReport
+    """
+    images = list(images)
+    if len(images) != len(rig.cameras):
+        raise ValueError(f"estimate --rig: {len(images)} images for {len(rig.cameras)} cameras ({', '.join(rig.names)}); give one per camera in the rig's order")
+    if recipe.method != "fit":
+        raise ValueError("estimate --rig: the joint fit needs --method fit")
+    reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=recipe) for img, rc in zip(images, rig.cameras))
+    balls = [_joint_ball(rig, g, reports, radius_m, recipe, constraint) for g in _matches(rig, reports)]
+    balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))
+    return RigReport(rig, tuple(r.image for r in reports), tuple(balls), reports)
+
+
+def single_camera_rig(camera: LineScanCamera, name: str = "camera") -> Rig:
+    """A rig of one camera (its pose, or the identity: the world frame is then the camera's), for a constraint without a second camera."""
+    if not camera.has_pose:
+        camera = camera.with_pose(np.eye(3), np.zeros(3))
+    g = camera.gravity_mps2
+    return Rig((RigCamera(name, camera, 0.0),), g, source=camera.source)

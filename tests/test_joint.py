@@ -1,0 +1,218 @@
+"""The joint fit of a rig (solve.joint, pipeline.rig) and known constraints (solve.constraint), end to end on rendered images."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from ballscan.geometry.rig import WorldMotion
+from ballscan.lab.presets import get_preset
+from ballscan.lab.rig import RIG_PRESETS, camera_about_lane, simulate_rig
+from ballscan.model.render import render
+from ballscan.pipeline.estimate import estimate_image
+from ballscan.pipeline.rig import combined_start, estimate_rig, match_window_s, single_camera_rig
+from ballscan.solve.constraint import Constraint, parse_constraint
+from ballscan.solve.joint import JointCamera, JointLayout, JointProblem, fit_joint
+from ballscan.solve.problem import BlockState, ResidualBlock
+from ballscan.solve.settings import FitSettings
+from ballscan.solve.synthetic import synthetic_edges
+
+LANE = RIG_PRESETS["lane-90"]
+
+
+def _errors_in_sigmas(ball, truth: WorldMotion) -> np.ndarray:
+    """(estimate - truth) / sigma of (y, z, vx, vy, vz) at the estimate's crossing time, and of t_c."""
+    m = ball.motion
+    tr = truth.at(m.t_ref_s)
+    est = np.array([*m.position_m[1:], *m.velocity_mps])
+    tv = np.array([*tr.position_m[1:], *tr.velocity_mps])
+    return (est - tv) / ball.sigmas[2:]
+
+
+@pytest.fixture(scope="module")
+def lane_render():
+    return simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, LANE.appearance, seed=11)
+
+
+def test_two_cameras_within_three_sigma_of_the_truth(lane_render):
+    rep = estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m)
+    assert len(rep.balls) == 1
+    b = rep.balls[0]
+    assert b.cameras == ("side", "top") and b.flags == ()
+    z = _errors_in_sigmas(b, LANE.motion)
+    assert np.all(np.abs(z) < 3.0), z
+    # the crossing time: the truth's crossing of the reference plane
+    assert abs(b.t_c_s - LANE.motion.t_ref_s) < 3 * b.sigmas[0]
+    assert all(c.consistent for c in b.joint.cameras)
+    # the depth axis pinned: the world velocity's largest principal sigma vs each camera alone
+    joint = math.sqrt(np.linalg.eigvalsh(b.covariance[4:, 4:]).max())
+    alone = [math.sqrt(np.linalg.eigvalsh(np.asarray(e.covariance)[3:, 3:]).max()) for e in b.estimates.values()]
+    assert joint * 10 < min(alone)
+    el, el_s, az, az_s = b.direction()
+    V = np.asarray(LANE.motion.velocity_mps)
+    assert abs(el - math.degrees(math.atan2(V[2], math.hypot(V[0], V[1])))) < 3 * el_s
+    assert abs(az - math.degrees(math.atan2(V[1], V[0]))) < 3 * az_s
+    d = b.to_dict()
+    assert d["per_camera"]["top"]["consistent"] and d["inconsistent_cameras"] == []
+    assert len(d["covariance"]["matrix"]) == 7 and d["own"]["side"]["velocity_mps"] is not None
+
+
+def test_unknown_clock_offset_recovered():
+    truth_offset = 2.5e-4
+    sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, LANE.appearance, seed=12, clock_offsets_s={"top": truth_offset})
+    rig = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], clock_offset_s=None, clock_sigma_s=1e-3))
+    b = estimate_rig(sim.images, rig, LANE.motion.radius_m).balls[0]
+    assert b.cameras == ("side", "top") and b.flags == ()
+    top = b.joint.cameras[1]
+    assert top.clock_offset_sigma_s > 0
+    assert abs(top.clock_offset_s - truth_offset) < 3 * top.clock_offset_sigma_s
+    assert "clock_offset_s:top" in b.joint.parameter_names
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+
+
+def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
+    sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, LANE.appearance, seed=13, cameras=("side",))
+    rep = estimate_rig(sim.images, LANE.rig, LANE.motion.radius_m)
+    assert len(rep.balls) == 1
+    b = rep.balls[0]
+    assert b.cameras == ("side",) and "single_camera" in b.flags and b.joint is None
+    own = estimate_image(sim.images[0], LANE.rig.cameras[0].camera, LANE.motion.radius_m).balls[0]
+    np.testing.assert_allclose(b.motion.velocity_mps, LANE.rig.cameras[0].camera.vectors_to_world(own.velocity_mps), rtol=1e-12)
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+
+
+def test_a_wrong_pose_is_flagged(lane_render):
+    # the top camera's viewing plane put 2 cm down the lane: its crossing disagrees with the side camera's
+    wrong = camera_about_lane(LANE.rig.cameras[1].camera, 4.0, 90.0, 0.02)
+    rig = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], camera=wrong))
+    b = estimate_rig(lane_render.images, rig, LANE.motion.radius_m).balls[0]
+    assert b.cameras == ("side", "top")
+    assert "inconsistent_camera" in b.flags
+    assert any(not c.consistent for c in b.joint.cameras)
+    assert max(c.delta_chi2 for c in b.joint.cameras) > 100
+    assert b.to_dict()["inconsistent_cameras"]
+
+
+def test_plane_constraint_on_a_rail_ball():
+    p = get_preset("paper-rail")
+    img = render(p.camera, [(p.motion, p.appearance)], p.n_lines, seed=4).image
+    R = p.motion.radius_m
+    # the rail's plane behind the ball, facing the camera: its centre at depth 1 m
+    con = Constraint("plane", normal=(0.0, 0.0, -1.0), offset_m=-(1.0 + R), sigma_m=1e-3, sigma_deg=0.1)
+    rig = single_camera_rig(p.camera)
+    b = estimate_rig([img], rig, R, constraint=con).balls[0]
+    free = estimate_image(img, p.camera, R).balls[0]
+    truth = WorldMotion(R, p.motion.t_c_s, p.motion.position_m, p.motion.velocity_mps)
+    assert np.all(np.abs(_errors_in_sigmas(b, truth)) < 3.0)
+    assert b.sigmas[6] * 3 < free.velocity_sigma_mps[2]  # V.z (depth) pinned by the plane
+    assert b.sigmas[3] <= free.position_sigma_m[2]
+    assert b.joint.constraint is con and b.joint.constraint_residuals.shape == (2,)
+    assert "constraint" in b.to_dict()
+
+
+def test_constraint_residuals_vanish_on_the_truth():
+    state = np.array([0.0, 0.1, 1.0, 10.0, 1.0, 2.0])
+    g = np.array([0.0, 0.0, -9.81])
+    plane = Constraint("plane", normal=(0.0, 0.0, 2.0), offset_m=1.0 - 0.03, sigma_m=1e-3)
+    flat = state.copy()
+    flat[5] = 0.0
+    np.testing.assert_allclose(plane.residuals(flat, 0.03, g), 0.0, atol=1e-9)
+    assert plane.residuals(state, 0.03, g)[1] > 10
+    # a point on the parabola, 0.2 s on
+    tau = 0.2
+    Q = state[:3] + state[3:] * tau + 0.5 * g * tau * tau
+    point = Constraint("point", point_m=tuple(Q), sigma_m=0.01)
+    np.testing.assert_allclose(point.residuals(state, 0.03, g), 0.0, atol=1e-9)
+    off = Constraint("point", point_m=tuple(Q + np.array([0.0, 0.05, 0.0])), sigma_m=0.01)
+    assert np.linalg.norm(off.residuals(state, 0.03, g)) == pytest.approx(5.0, rel=0.05)
+    assert off.jacobian(state, 0.03, g).shape == (3, 6)
+
+
+@pytest.mark.parametrize(
+    "spec, kind",
+    [("plane:0,0,1,0", "plane"), ("plane:0,0,1,0.1,0.002,0.2", "plane"), ("point:1,2,3", "point"), ("point:1,2,3,0.05", "point")],
+)
+def test_parse_constraint(spec, kind):
+    c = parse_constraint(spec)
+    assert c.kind == kind
+
+
+@pytest.mark.parametrize("spec", ["line:0,0,1", "plane:0,0,1", "plane:0,0,0,1", "point:a,b,c", "point:0,0,0,-1", "plane:0,0,1,0,0.001,95"])
+def test_parse_constraint_refuses(spec):
+    with pytest.raises(ValueError, match="constraint"):
+        parse_constraint(spec)
+
+
+def _synthetic_cameras(noise_px: float, seed: int):
+    cams = []
+    for k, rc in enumerate(LANE.rig.cameras):
+        cm = LANE.motion.in_camera(rc)
+        e = synthetic_edges(rc.camera, cm, LANE.n_lines, edge_sigma_px=max(noise_px, 0.1), seed=seed + k, add_noise=noise_px > 0)
+        cams.append(JointCamera(rc.name, rc.camera, e, 0.0 if k == 0 else None, FitSettings(fit_edge_bias=False, edge_floor_px=0.0)))
+    return cams
+
+
+def test_joint_problem_jacobian_matches_differences():
+    cams = _synthetic_cameras(0.0, 0)
+    m = LANE.motion
+    g = np.asarray(m.gravity_mps2)
+    lay = JointLayout(cams, m.t_ref_s, g, (False, False))
+    states = [BlockState(ResidualBlock(c.camera, c.edges), m.in_camera(LANE.rig.cameras[k], 0.0), c.settings) for k, c in enumerate(cams)]
+    x = np.concatenate([m.state, [0.0]]) + np.array([0, 1e-4, -1e-4, 0.01, 0.02, -0.02, 1e-7])
+    sels = [st.select(lay.camera_x(x, k)[0], False) for k, st in enumerate(states)]
+    con = Constraint("point", point_m=(0.0, 0.06, -0.05), sigma_m=0.01)
+    prob = JointProblem(lay, states, sels, m.radius_m, con)
+    r0, J = prob.residuals_and_jacobian(x)
+    h = np.array([1e-6, 1e-6, 1e-6, 1e-4, 1e-4, 1e-4, 1e-9])
+    for i in range(x.size):
+        xp, xm = x.copy(), x.copy()
+        xp[i] += h[i]
+        xm[i] -= h[i]
+        num = (prob.residuals(xp) - prob.residuals(xm)) / (2 * h[i])
+        assert np.allclose(J[:, i], num, rtol=2e-3, atol=2e-3 * np.abs(num).max() + 1e-9), i
+
+
+def test_fit_joint_on_synthetic_edges_is_unbiased_within_its_sigmas():
+    m = LANE.motion
+    cams = _synthetic_cameras(0.1, 5)
+    start = WorldMotion(m.radius_m, m.t_ref_s, tuple(np.asarray(m.position_m) + [0, 0.003, -0.002]), tuple(np.asarray(m.velocity_mps) + [0.05, 0.5, -0.5]), m.gravity_mps2)
+    res = fit_joint(cams, start, [2e-6])
+    assert res.converged and res.consistent
+    tr = m.at(res.motion.t_ref_s)
+    z = (np.array([*res.motion.position_m[1:], *res.motion.velocity_mps]) - np.array([*tr.position_m[1:], *tr.velocity_mps])) / res.sigmas[2:]
+    assert np.all(np.abs(z) < 3.0), z
+    i = res.parameter_names.index("clock_offset_s:top")
+    assert abs(res.cameras[1].clock_offset_s) < 3 * math.sqrt(res.parameter_covariance[i, i])
+
+
+def test_matching_window_and_combined_start(lane_render):
+    reports = [estimate_image(img, rc.camera, 0.0335) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    picks = {0: reports[0].balls[0], 1: reports[1].balls[0]}
+    start, offsets = combined_start(LANE.rig, picks, 0.0335)
+    assert offsets == []
+    tr = LANE.motion.at(start.t_ref_s)
+    assert np.linalg.norm(np.asarray(start.velocity_mps) - tr.velocity_mps) < 0.5
+    state = np.array([*tr.position_m, *tr.velocity_mps])
+    t_pred, half = match_window_s(LANE.rig, 1, state, np.zeros((6, 6)), tr.t_ref_s)
+    assert t_pred == pytest.approx(picks[1].t_c_s, abs=1e-6) and half == pytest.approx(LANE.rig.match_window_s)
+
+
+def test_images_must_match_the_cameras(lane_render):
+    with pytest.raises(ValueError, match="one per camera"):
+        estimate_rig(lane_render.images[:1], LANE.rig, 0.0335)
+
+
+def test_parallel_planes_apart_with_gravity_and_an_unknown_clock():
+    # the top camera's plane 0.3 m down the lane: 6.7 ms later, the ball 0.2 mm lower (gravity), its clock 6 ms behind
+    top = camera_about_lane(LANE.rig.cameras[1].camera, 4.0, 90.0, 0.3)
+    rig = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], camera=top))
+    sim = simulate_rig(rig, LANE.motion, 220, LANE.appearance, seed=21, clock_offsets_s={"top": -6e-3})
+    rig = rig.with_camera(1, replace(rig.cameras[1], clock_offset_s=None, clock_sigma_s=2e-3))
+    b = estimate_rig(sim.images, rig, LANE.motion.radius_m).balls[0]
+    assert b.cameras == ("side", "top") and b.flags == ()
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+    top_fit = b.joint.cameras[1]
+    assert abs(top_fit.clock_offset_s + 6e-3) < 3 * top_fit.clock_offset_sigma_s
