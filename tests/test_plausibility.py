@@ -137,6 +137,30 @@ def test_watch_with_dtype_uint16_on_8_bit_lines_flags_every_ball(tmp_path, capsy
         assert "wrong_bit_depth" in ball["flags"], ball["flags"]
 
 
+def test_watch_table_marks_a_wrong_bit_depth_ball_unreliable(tmp_path, capsys):
+    raw = tmp_path / "s.raw"
+    code, _, err = _run(capsys, "simulate", "--stream", raw, "--preset", "tennis-serve", "--lines", "8000", "--balls", "2", "--seed", "2")
+    assert code == 0, err
+    args = ("watch", raw, "--camera", f"{raw}.camera.toml", "--radius", "0.0335", "--format", "table")
+    code, out, err = _run(capsys, *args)
+    assert code == 0 and out.strip() and "UNRELIABLE" not in out
+    code, out, err = _run(capsys, *args, "--dtype", "uint16")
+    lines = [line for line in out.splitlines() if line.startswith("ball ")]
+    assert lines and all(" m/s (UNRELIABLE) | " in line and "8-bit data read as 16-bit" in line for line in lines), out
+
+
+@pytest.mark.parametrize("command", ["watch", "batch"])
+def test_watch_and_batch_warn_of_a_radius_in_millimetres(tmp_path, capsys, command):
+    raw = tmp_path / "s.raw"
+    code, _, err = _run(capsys, "simulate", "--stream", raw, "--preset", "tennis-serve", "--lines", "4000", "--balls", "1", "--seed", "3")
+    assert code == 0, err
+    extra = ("--out", tmp_path / "o.csv") if command == "batch" else ()
+    code, out, err = _run(capsys, command, raw, "--camera", f"{raw}.camera.toml", "--radius", "33.5", *extra)
+    assert "ballscan: warning: --radius: radius 33.5 m is outside 1 mm to 0.5 m" in err
+    code, out, err = _run(capsys, command, raw, "--camera", f"{raw}.camera.toml", "--radius", "1e308", *extra)
+    assert code == 2 and "the unit is metres" in err and "Traceback" not in err
+
+
 def test_estimate_radius_37_warns_of_the_unit_and_marks_the_table(capsys):
     from .conftest import DATA
 

@@ -176,12 +176,9 @@ def estimate(
     from ..pipeline.report import UNITS, format_table
     from ..stream.recording import measure_stored
 
-    if not radius > 0:
-        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
-    from ..pipeline.plausibility import check_radius
+    from .options import check_radius_option
 
-    check_radius(radius)
-    _warn_radius(radius)
+    radius = check_radius_option(radius)
     if rig is not None or constraint is not None:
         from .rig import estimate_rig_command
 
@@ -218,15 +215,6 @@ def estimate(
         typer.echo(format_table(report, cam, units))
     if plot is not None:
         _plot(plot, stored, cam, report, ts, force)
-
-
-def _warn_radius(radius_m: float) -> None:
-    """A one-line warning on stderr for a radius no ball has (its balls are flagged implausible_radius)."""
-    from ..pipeline.plausibility import radius_problem
-
-    problem = radius_problem(radius_m)
-    if problem is not None:
-        print(f"ballscan: warning: --radius: {problem}", file=sys.stderr)
 
 
 def _plot(path: Path, stored, camera, report, timestamps_s, force: bool = False) -> None:

@@ -176,10 +176,10 @@ def watch(
     from ..geometry.rig import load_rig
     from ..solve.constraint import parse_constraint
     from ..stream.rig import pair_streams
+    from .options import check_radius_option
     from .stream import open_source
 
-    if not radius > 0:
-        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    radius = check_radius_option(radius)
     if not pair_timeout > 0:
         raise typer.BadParameter(f"must be positive, got {pair_timeout}", param_hint="--pair-timeout")
     r = load_rig(rig)

@@ -204,9 +204,10 @@ def watch(
     from ..pipeline.recipe import Recipe
     from ..stream.engine import StreamConfig
 
+    from .options import check_radius_option
+
     cam = load_camera(camera)
-    if not radius > 0:
-        raise typer.BadParameter(f"must be positive, got {radius}", param_hint="--radius")
+    radius = check_radius_option(radius)
     if output_format not in ("json", "table"):
         raise typer.BadParameter(f"expected 'json' or 'table', got {output_format!r}", param_hint="--format")
     if units not in UNITS:
@@ -330,15 +331,17 @@ def _start_live(address: str, camera: LineScanCamera, src, name: str):
 
 def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str = "m/s") -> str:
     """One readable line of a stream's ball: lines, speed ± sigma, the speed across the axis, direction, flags, latency."""
-    from ..pipeline.report import UNITS, FLAG_TEXT
+    from ..pipeline.report import FLAG_TEXT, UNITS, UNRELIABLE
 
     b, u = result.estimate, UNITS[units]
     parts = [f"ball {result.event_index}", f"lines {b.first_line}-{b.last_line}"]
+    unreliable = [f for f in b.flags if f in UNRELIABLE]
     if b.speed_mps is None:
         parts.append("speed undetermined")
     else:
         sig = f" ± {b.speed_sigma_mps * u:.2f}" if b.speed_sigma_mps is not None else ""
-        parts.append(f"{b.speed_mps * u:.2f}{sig} {units}")
+        mark = " (UNRELIABLE)" if unreliable else ""
+        parts.append(f"{b.speed_mps * u:.2f}{sig} {units}{mark}")
         der = b.derived(camera)
         if der is not None and b.covariance is not None:
             parts.append(f"across axis {der.speed_transverse_mps * u:.2f} ± {der.speed_transverse_sigma_mps * u:.2f}")
@@ -374,8 +377,10 @@ def batch(
     signal's number (the rows written stay; a rerun does the rest).
     """
     from ..stream.batch import run_batch
+    from .options import check_radius_option
     from .signals import ExitStatus, stop_signals
 
+    radius = check_radius_option(radius)
     with stop_signals(graceful=False):
         summary = run_batch(
             inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
