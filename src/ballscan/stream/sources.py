@@ -964,6 +964,42 @@ def stream_balls(
 MAX_SIMULATED_LINES = 2**26
 
 
+def _check_stream_size(n_lines: int, n_balls: int, radius_m: float) -> None:
+    """Refuse a simulated stream's length, ball count or radius (m) that no scene can have (ValueError naming the value)."""
+    if isinstance(n_lines, bool) or not isinstance(n_lines, (int, np.integer)) or not 1000 <= n_lines <= MAX_SIMULATED_LINES:
+        raise ValueError(f"n_lines: must be an integer from 1000 to {MAX_SIMULATED_LINES}, got {n_lines!r}")
+    if isinstance(n_balls, bool) or not isinstance(n_balls, (int, np.integer)) or not 1 <= n_balls <= n_lines // 100:
+        raise ValueError(f"n_balls: must be an integer from 1 to {n_lines // 100} (a ball per 100 lines) for {n_lines} lines, got {n_balls!r}")
+    if not (isinstance(radius_m, (int, float)) and math.isfinite(radius_m) and 0 < radius_m <= 1.0):
+        raise ValueError(f"radius: must be a number of metres in (0, 1], got {radius_m!r}")
+
+
+def _ball_spans(camera: LineScanCamera, balls: list, t_lines_s: np.ndarray) -> tuple[list[dict], list[tuple[int, int]]]:
+    """Each ball's truth (with its first and last line on which the silhouette is present) and its span of lines to render.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    balls : list of BallMotion
+    t_lines_s : ndarray
+        Each written line's time, seconds.
+    """
+    from ..model.silhouette import silhouette
+
+    n_lines = t_lines_s.size
+    truths, spans = [], []
+    for m in balls:
+        half = _visible_lines(camera, m)
+        c = float(np.searchsorted(t_lines_s, m.t_c_s))
+        lo = max(int(c - half) - 4, 0)
+        hi = min(int(c + half) + 5, n_lines)
+        present = np.flatnonzero(silhouette(camera, m, t_lines_s[lo:hi]).present)
+        first, last = (lo + int(present[0]), lo + int(present[-1])) if present.size else (lo, lo)
+        spans.append((lo, hi))
+        truths.append({**m.to_dict(), "first_line": first, "last_line": last})
+    return truths, spans
+
+
 def simulate_stream(
     out_raw: str | os.PathLike[str],
     camera: LineScanCamera,
@@ -1036,14 +1072,8 @@ def simulate_stream(
     from dataclasses import replace as _replace
 
     from ..model.render import Appearance, SensorNoise, apply_sensor, render
-    from ..model.silhouette import silhouette
 
-    if isinstance(n_lines, bool) or not isinstance(n_lines, (int, np.integer)) or not 1000 <= n_lines <= MAX_SIMULATED_LINES:
-        raise ValueError(f"n_lines: must be an integer from 1000 to {MAX_SIMULATED_LINES}, got {n_lines!r}")
-    if isinstance(n_balls, bool) or not isinstance(n_balls, (int, np.integer)) or not 1 <= n_balls <= n_lines // 100:
-        raise ValueError(f"n_balls: must be an integer from 1 to {n_lines // 100} (a ball per 100 lines) for {n_lines} lines, got {n_balls!r}")
-    if not (isinstance(radius_m, (int, float)) and math.isfinite(radius_m) and 0 < radius_m <= 1.0):
-        raise ValueError(f"radius: must be a number of metres in (0, 1], got {radius_m!r}")
+    _check_stream_size(n_lines, n_balls, radius_m)
     noise = SensorNoise() if noise is None else noise
     out = Path(out_raw)
     for p in (out, out.with_name(out.name + ".camera.toml"), out.with_name(out.name + ".truth.jsonl"), out.with_name(out.name + ".timestamps.npy")):
@@ -1062,22 +1092,7 @@ def simulate_stream(
     gain = 1.0 + noise.prnu_sigma * rng.standard_normal(camera.width) if noise.prnu_sigma > 0 else np.ones(camera.width)
     noise_blocks = _replace(noise, prnu_sigma=0.0)
     app = Appearance.flat(ball_level)
-    # Lines of each ball (silhouette present) and their spans for block selection.
-    truths = []
-    spans = []
-    for m in balls:
-        half = _visible_lines(camera, m)
-        c = float(np.searchsorted(t, m.t_c_s))
-        lo = max(int(c - half) - 4, 0)
-        hi = min(int(c + half) + 5, n_lines)
-        sil = silhouette(camera, m, t[lo:hi])
-        present = np.flatnonzero(sil.present)
-        first, last = (lo + int(present[0]), lo + int(present[-1])) if present.size else (lo, lo)
-        spans.append((lo, hi))
-        d = m.to_dict()
-        d["first_line"] = first
-        d["last_line"] = last
-        truths.append(d)
+    truths, spans = _ball_spans(camera, balls, t)
     dtype = noise.dtype
     part = out.with_name(f".{out.name}.part")  # renamed over OUT when whole
     with open(part, "wb") as fh:
