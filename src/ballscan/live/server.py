@@ -74,12 +74,20 @@ def _sse(event: str, data: Any) -> str:
 
 
 class _Pump:
-    """On the server's loop: turns the hub's new balls into ring entries and wakes the event streams."""
+    """On the server's loop: turns the hub's new balls into ring entries and wakes the event streams.
+
+    The streams wait on a future shared by all of them and replaced at each
+    round, never on a shared lock: a viewer that closes its page cancels
+    its stream at any await, and the cancellation must leave the other
+    streams untouched (an ``asyncio.Condition`` waited on with a timeout
+    can have its lock released by a cancelled waiter and then fail in
+    another viewer's stream, ending it).
+    """
 
     def __init__(self, store: Any) -> None:
         self.store = store
-        self.changed = asyncio.Condition()
         self.wake = asyncio.Event()
+        self._changed: asyncio.Future | None = None  # done at the pump's next round (made on the loop, on first use)
         self.closing = False
         self._encoded: dict[int, str] = {}  # a ball's event, encoded once for every viewer
         self._health: tuple[float, str] = (-1.0, "")
@@ -113,10 +121,21 @@ class _Pump:
             made = self.store.drain() if hasattr(self.store, "drain") else 0
             if made:
                 self._health = (-1.0, "")  # the ball count changed: a fresh health for the next viewer
-            async with self.changed:
-                self.changed.notify_all()
+            self.notify()
             if made:
                 await asyncio.sleep(0)
+
+    def changed(self) -> asyncio.Future:
+        """A future done at the pump's next round (on the server's loop); a waiter must not cancel it (``asyncio.wait`` does not)."""
+        if self._changed is None or self._changed.done():
+            self._changed = asyncio.get_running_loop().create_future()
+        return self._changed
+
+    def notify(self) -> None:
+        """Wake every stream waiting on :meth:`changed`."""
+        fut, self._changed = self._changed, None
+        if fut is not None and not fut.done():
+            fut.set_result(None)
 
 
 async def _event_stream(store: Any, pump: _Pump, cursor: int):
@@ -134,9 +153,7 @@ async def _event_stream(store: Any, pump: _Pump, cursor: int):
         if now - last_health >= HEALTH_EVERY_S:
             last_health = now
             yield pump.health_event()
-        async with pump.changed:
-            with contextlib.suppress(asyncio.TimeoutError):
-                await asyncio.wait_for(pump.changed.wait(), HEALTH_EVERY_S)
+        await asyncio.wait((pump.changed(),), timeout=HEALTH_EVERY_S)
 
 
 def build_app(store: Any, *, title: str = "ballscan"):
