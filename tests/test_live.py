@@ -7,6 +7,7 @@ import csv
 import io
 import json
 import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -304,6 +305,7 @@ def test_server_routes_are_read_only(server_factory, results):
 def _read_events(client, path: str, want: int, kinds=("ball",)) -> list[tuple[str, dict]]:
     got = []
     with client.stream("GET", path) as resp:
+        assert resp.status_code == 200, resp.read()
         kind = None
         for text in resp.iter_lines():
             if text.startswith("event: "):
@@ -315,26 +317,84 @@ def _read_events(client, path: str, want: int, kinds=("ball",)) -> list[tuple[st
     return got
 
 
+def _viewers(server, count: int, want: int, path: str = "/events?after=-1", kinds=("ball",)) -> tuple[list[threading.Thread], dict]:
+    """``count`` viewers, each on a thread with a connection of its own, reading ``want`` events of ``kinds`` from ``path``.
+
+    Returns the started threads and a dict filled with each viewer's events,
+    or the exception that ended it (for the test to report, not lost on its thread).
+    """
+    import httpx
+
+    got: dict[int, list | Exception] = {}
+
+    def viewer(k):
+        try:
+            with httpx.Client(base_url=server.url.rstrip("/"), timeout=30) as client:
+                got[k] = _read_events(client, path, want, kinds)
+        except Exception as exc:
+            got[k] = exc
+
+    threads = [threading.Thread(target=viewer, args=(k,), daemon=True) for k in range(count)]
+    for t in threads:
+        t.start()
+    return threads, got
+
+
+def _joined(threads, got: dict, timeout_s: float = 60.0) -> dict:
+    t_end = time.monotonic() + timeout_s
+    for t in threads:
+        t.join(max(t_end - time.monotonic(), 0.0))
+    assert not any(t.is_alive() for t in threads), f"viewers still reading after {timeout_s} s: {sorted(got)} done"
+    errors = {k: v for k, v in got.items() if isinstance(v, Exception)}
+    assert not errors, f"viewers ended by an error: {errors!r}"
+    return got
+
+
 def test_event_stream_pushes_each_new_ball_to_every_viewer(server_factory, results):
     hub = LiveHub(CAM)
     server, client = server_factory(hub)
-    got: dict[int, list] = {}
-
-    def viewer(k):
-        got[k] = _read_events(client, "/events?after=-1", len(results))
-
-    threads = [threading.Thread(target=viewer, args=(k,)) for k in range(3)]
-    for t in threads:
-        t.start()
+    threads, got = _viewers(server, 3, len(results))
     for r in results:
         hub.ball(r)
-    for t in threads:
-        t.join(20)
+    _joined(threads, got)
     for k in range(3):
         assert [d["speed_mps"] for _, d in got[k]] == [r.estimate.speed_mps for r in results]
         assert all(d["crop"] is not None for _, d in got[k])
     health = _read_events(client, "/events?after=2", 1, kinds=("health",))
     assert health[0][1]["balls"] == len(results) and health[0][1]["state"] == "waiting"
+
+
+def test_a_viewer_closing_its_page_ends_no_other_stream(server_factory, results):
+    """Viewers that open the stream and close it at once, over and over, while three others wait for each ball."""
+    hub = LiveHub(CAM, LiveConfig(capacity=50, crop_capacity=2))
+    server, client = server_factory(hub)
+    n_balls = 12
+    threads, got = _viewers(server, 3, n_balls)
+    opened = ("ball", "health", "skipped")  # the brief viewers close at their first event
+    brief, brief_got = _viewers(server, 8, 1, kinds=opened)
+    t_brief = []
+
+    def come_and_go():
+        for _ in range(6):
+            ts, g = _viewers(server, 4, 1, kinds=opened)
+            t_brief.append((ts, g))
+            for t in ts:
+                t.join(30)
+
+    churn = threading.Thread(target=come_and_go, daemon=True)
+    churn.start()
+    for k in range(n_balls):  # one at a time: the three wait on the stream between balls while others close theirs
+        hub.ball(results[k % len(results)])
+        time.sleep(0.03)
+    churn.join(60)
+    assert not churn.is_alive()
+    _joined(threads, got)
+    _joined(brief, brief_got)
+    for ts, g in t_brief:
+        _joined(ts, g)
+    for k in range(3):
+        assert [d["index"] for _, d in got[k]] == list(range(n_balls))
+    assert client.get("/api/health").json()["balls"] == n_balls
 
 
 def test_a_stuck_or_closed_viewer_holds_nobody_up(server_factory, results):
