@@ -213,3 +213,42 @@ def test_committed_renders_match_their_seed(truth_path):
     assert generate.camera_toml(s) == (DATA / f"{name}.camera.toml").read_text()
     balls = truth["balls"] if "balls" in truth else [truth]
     assert all(b["precision_inputs"]["contrast_dn"] > 0 for b in balls)
+
+
+def test_audit_coverage_source_keeps_geometry_drops_appearance(scenes):
+    """The convention audit's source: every ball flat white and self-lit, no backdrop, no focal blur,
+    the camera, timing and motion lines untouched."""
+    import audit
+
+    for s in scenes:
+        src = pov.pov_source(s)
+        cov = audit.coverage_source(src)
+        assert cov.count("texture { pigment { rgb 1 } finish { ambient 1 diffuse 0 } }") == len(s.balls), s.name
+        assert "plane {" not in cov and "aperture" not in cov and "ambient_light rgb 1" in cov, s.name
+        keep = [ln for ln in src.splitlines() if ln.startswith(("#declare T ", "  #declare T ", "camera", "  direction",
+                                                                "  right", "#declare C0_", "#declare V_", "#declare TC_"))]
+        assert keep and all(ln in cov.splitlines() for ln in keep), s.name
+
+
+def test_audit_half_level_edges_of_a_disc():
+    """Half-level crossings of an analytic coverage: a disc's chord per line to 0.1 px (linear
+    interpolation between two box-filtered pixels; the audit compares two images through the same
+    crossings, so this bias cancels), and shifted by exactly a shift of the disc."""
+    import audit
+
+    yy, xx = np.mgrid[0:60, 0:80]
+    sub = (np.arange(8) + 0.5) / 8 - 0.5
+    cov = np.zeros((60, 80))
+    for dy in sub:
+        for dx in sub:
+            cov += ((xx + dx - 40.3) ** 2 + (yy + dy - 30) ** 2 <= 20.0**2) / 64
+    edges = audit.half_level_edges(cov)
+    for i, tol in ((20, 0.1), (30, 0.1), (40, 0.1)):
+        half = math.sqrt(20.0**2 - (i - 30) ** 2)
+        assert edges[i][0] == pytest.approx(40.3 - half, abs=tol)
+        assert edges[i][1] == pytest.approx(40.3 + half, abs=tol)
+    lo, hi = audit.offsets({i: (a + 1.0, b + 1.0) for i, (a, b) in edges.items()}, edges)
+    assert np.allclose(lo, 1.0) and np.allclose(hi, 1.0)
+    shifted = audit.half_level_edges(np.roll(cov, 2, axis=1))
+    lo, hi = audit.offsets(shifted, edges)
+    assert np.allclose(lo, 2.0) and np.allclose(hi, 2.0)

@@ -11,11 +11,13 @@ clean render, the column gains' PRNU).  Estimated balls are matched to true
 ones by the nearest ``t_c_s``, as ``shared/tools/score_scenes.py`` does.
 
 Columns (fit/paper where two values): balls measured (a speed reported), the
-median and worst relative speed error, the median direction error (degrees
-between the velocities with V.x >= 0), the share of errors within 1 and 3
-reported sigmas for the speed and for each direction angle (``direction_deg``
-against ``direction_sigma_deg``), and the fit's median speed error over the
-Cramér-Rao sigma; the ratio of the fit's median speed error to the paper
+median and worst relative speed error, the median relative error of the
+transverse speed ``hypot(V.x, V.y)`` (``speed_transverse_mps``: what one
+line camera sees directly, free of the weak depth axis), the median direction
+error (degrees between the velocities with V.x >= 0), the share of errors
+within 1 and 3 reported sigmas for the speed, for each direction angle
+(``direction_deg`` against ``direction_sigma_deg``) and, for the fit, for the
+depth velocity V.z; the fit's median speed error over the Cramér-Rao sigma; the ratio of the fit's median speed error to the paper
 method's on the balls both measured, and the number of the fit's speed errors
 beyond 4 reported sigmas (the paper method reports no sigma).  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
 100 lines and not cut, each ball kind, each condition tag of the truth files.
@@ -89,6 +91,13 @@ def compare(est: dict | None, tb: dict) -> dict:
     s_true = tb["speed_mps"]
     err = (est["speed_mps"] - s_true) / s_true
     row.update(measured=True, speed_err=err, flags=est.get("flags", []))
+    v = tb["velocity_mps"]
+    vt_true = math.hypot(v[0], v[1])
+    vt = est.get("speed_transverse_mps")
+    row["transverse_err"] = (vt - vt_true) / vt_true if vt is not None and vt_true > 0 else None
+    ev, es = est.get("velocity_mps"), est.get("velocity_sigma_mps")
+    ok_vz = ev is not None and es is not None and ev[2] is not None and es[2]
+    row["z_vz"] = abs(ev[2] - v[2]) / es[2] if ok_vz else None
     sig = est.get("speed_sigma_mps")
     row["z_speed"] = abs(est["speed_mps"] - s_true) / sig if sig else None
     try:
@@ -157,18 +166,21 @@ def summarise(rows: list[dict]) -> list[str]:
     for m in METHODS:
         ok = [r[m] for r in rows if r[m].get("measured")]
         errs = [abs(r["speed_err"]) * 100 for r in ok]
+        terrs = [abs(r["transverse_err"]) * 100 for r in ok if r.get("transverse_err") is not None]
         dirs = [r["dir_err_deg"] for r in ok if r.get("dir_err_deg") is not None]
 
         def cover(key: str, k: float) -> float | None:
             zs = [r[key] for r in ok if r.get(key) is not None]
             return 100 * sum(z <= k for z in zs) / len(zs) if zs else None
 
-        per[m] = dict(n=len(ok), med=_med(errs), worst=max(errs) if errs else None, dir=_med(dirs),
-                      **{f"c{k}_{key}": cover(f"z_{key}", k) for k in (1, 3) for key in ("speed", "psi_y", "psi_z")})
+        per[m] = dict(n=len(ok), med=_med(errs), worst=max(errs) if errs else None, dir=_med(dirs), tmed=_med(terrs),
+                      **{f"c{k}_{key}": cover(f"z_{key}", k) for k in (1, 3) for key in ("speed", "psi_y", "psi_z", "vz")})
     pair = lambda key, spec: f"{_fmt(per['fit'][key], spec)} / {_fmt(per['paper'][key], spec)}"  # noqa: E731
-    cells += [f"{per['fit']['n']} / {per['paper']['n']}", pair("med", ".3f"), pair("worst", ".2f"), pair("dir", ".2f")]
+    cells += [f"{per['fit']['n']} / {per['paper']['n']}", pair("med", ".3f"), pair("worst", ".2f"),
+              pair("tmed", ".3f"), pair("dir", ".2f")]
     for key in ("speed", "psi_y", "psi_z"):
         cells += [pair(f"c1_{key}", ".0f"), pair(f"c3_{key}", ".0f")]
+    cells.append(f"{_fmt(per['fit']['c1_vz'], '.0f')} / {_fmt(per['fit']['c3_vz'], '.0f')}")
     both = [r for r in rows if r["fit"].get("measured") and r["paper"].get("measured")]
     med_fit = _med([abs(r["fit"]["speed_err"]) for r in both])
     med_paper = _med([abs(r["paper"]["speed_err"]) for r in both])
@@ -188,8 +200,9 @@ def table(rows: list[dict]) -> list[str]:
         groups.append((f"kind {k}", [r for r in rows if r["kind"] == k]))
     for c in sorted({c for r in rows for c in r["conditions"]}):
         groups.append((c, [r for r in rows if c in r["conditions"]]))
-    head = ["group", "balls", "measured", "speed err median %", "worst %", "direction err median deg",
-            "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
+    head = ["group", "balls", "measured", "speed err median %", "worst %", "transverse speed err median %",
+            "direction err median deg", "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %",
+            "V.z 1σ / 3σ % (fit)", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for name, g in groups:
         if g:
