@@ -96,6 +96,41 @@ def test_a_wrong_pose_is_flagged(lane_render):
     assert b.to_dict()["inconsistent_cameras"]
 
 
+def _undetermined(e, keys: tuple[str, ...], guess_t_c_s: float | None = None):
+    """``e`` as a camera's own fit that left ``keys`` undetermined (their values None, covariance rows NaN)."""
+    cov = np.array(e.covariance, dtype=float)
+    rows = {"t_c_s": [0], "position_m": [1, 2], "velocity_mps": [3, 4, 5], "vz": [5]}
+    for k in keys:
+        cov[rows[k], :] = cov[:, rows[k]] = np.nan
+    values = {k: None for k in ("t_c_s", "position_m", "velocity_mps") if k in keys or (k == "velocity_mps" and "vz" in keys)}
+    initial = e.initial if guess_t_c_s is None else replace(e.initial, t_c_s=guess_t_c_s)
+    return replace(e, **values, speed_mps=None, covariance=cov, initial=initial, flags=e.flags + ("degenerate",))
+
+
+@pytest.mark.parametrize("keys, guess_t_c_s", [(("vz",), None), (("t_c_s", "position_m", "velocity_mps"), -6374.5)])
+def test_a_camera_whose_own_fit_is_degenerate_still_enters_the_joint_fit(lane_render, monkeypatch, keys, guess_t_c_s):
+    # one camera alone cannot fix its depth velocity (or, cut short, anything): the other camera pins it;
+    # an absurd key-point crossing falls back to the middle of the ball's lines
+    import ballscan.pipeline.rig as prig
+
+    reports = [estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    for k in (0, 1):  # the reference camera degenerate, then the other one
+        broken = list(reports)
+        broken[k] = replace(reports[k], balls=(_undetermined(reports[k].balls[0], keys, guess_t_c_s),))
+        it = iter(broken)
+        monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: next(it))
+        rep = prig.estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m)
+        assert len(rep.balls) == 1
+        b = rep.balls[0]
+        assert b.cameras == ("side", "top") and "single_camera" not in b.flags, (k, b.flags)
+        assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+        assert abs(b.t_c_s - LANE.motion.t_ref_s) < 3 * b.sigmas[0]
+    e = _undetermined(reports[0].balls[0], keys, guess_t_c_s)
+    x, C = prig.own_state(e, 1.0 / LANE.rig.cameras[0].camera.line_rate_hz)
+    assert np.all(np.isfinite(x)) and np.all(np.isfinite(C)) and np.all(np.linalg.eigvalsh(C) >= 0)
+    assert C[5, 5] >= 1e6 and C[5, :5] @ C[5, :5] == 0.0
+
+
 def test_plane_constraint_on_a_rail_ball():
     p = get_preset("paper-rail")
     img = render(p.camera, [(p.motion, p.appearance)], p.n_lines, seed=4).image
