@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from ballscan.geometry.rig import WorldMotion
+from ballscan.geometry.rig import WorldMotion, load_rig
 from ballscan.lab.presets import get_preset
 from ballscan.lab.rig import RIG_PRESETS, camera_about_lane, simulate_rig
 from ballscan.model.render import render
@@ -251,3 +253,45 @@ def test_parallel_planes_apart_with_gravity_and_an_unknown_clock():
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
     top_fit = b.joint.cameras[1]
     assert abs(top_fit.clock_offset_s + 6e-3) < 3 * top_fit.clock_offset_sigma_s
+
+
+POVRAY_RIG = Path(__file__).parent / "data" / "povray_rig"
+
+
+def test_two_povray_views_pin_the_direction(tmp_path):
+    # an independent render (POV-Ray, benchmarks/povray_set/score_rig.py): views a000 (the world frame)
+    # and a090 of one ball, a rig file referring to their camera files (shared clock, no gravity)
+    name = "pv1013"
+    rig_file = tmp_path / "pair.rig.toml"
+    rig_file.write_text("".join(
+        f'[[camera]]\nname = "{v}"\nclock_offset_s = 0.0\nfile = "{(POVRAY_RIG / f"{name}_{v}.camera.toml").as_posix()}"\n\n' for v in ("a000", "a090")))
+    rig = load_rig(rig_file)
+    truth = json.loads((POVRAY_RIG / f"{name}_a000.truth.json").read_text())
+    images = [POVRAY_RIG / f"{name}_{v}.png" for v in ("a000", "a090")]
+    rep = estimate_rig(images, rig, truth["radius_m"])
+    assert len(rep.balls) == 1
+    b = rep.balls[0]
+    assert b.cameras == ("a000", "a090") and "single_camera" not in b.flags and "inconsistent_camera" not in b.flags, b.flags
+    # a line-scan camera does not see the sign of V.x (both views share the axis x)
+    V, Vt = np.asarray(b.motion.velocity_mps), np.asarray(truth["velocity_mps"]) * np.array([-1.0, 1.0, 1.0])
+    assert V[0] > 0 and Vt[0] > 0
+    el, el_s, az, az_s = b.direction()
+    assert abs(el - math.degrees(math.atan2(Vt[2], math.hypot(Vt[0], Vt[1])))) < 3 * el_s
+    assert abs(az - math.degrees(math.atan2(Vt[1], Vt[0]))) < 3 * az_s
+    sp, sp_s = b.speed()
+    assert abs(sp - np.linalg.norm(Vt)) < 3 * sp_s
+    assert abs(b.t_c_s - truth["t_c_s"]) < 3 * b.sigmas[0]
+    joint_err = _angle_deg(V, Vt)
+    assert joint_err < 0.5
+    # each view alone, on the same pixels (its frame): its depth axis unpinned
+    alone = []
+    for v in ("a000", "a090"):
+        own = b.estimates[v]
+        vt = np.asarray(json.loads((POVRAY_RIG / f"{name}_{v}.truth.json").read_text())["velocity_mps"])
+        if own.velocity_mps is not None:
+            alone.append(_angle_deg(np.asarray(own.velocity_mps), vt * np.array([np.sign(vt[0]), 1.0, 1.0])))
+    assert alone and min(alone) > 10 * joint_err, (alone, joint_err)
+
+
+def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
+    return math.degrees(math.acos(min(1.0, float(a @ b / (np.linalg.norm(a) * np.linalg.norm(b))))))
