@@ -24,8 +24,10 @@ the true velocity); the relative speed error; the direction's Mahalanobis
 distance (the velocity error across the estimated direction, against the
 covariance projected there: two degrees of freedom, "covered" within the
 68.27 % quantile 2.296); the speed's |error| / sigma ("covered" within 1).
-A one-camera estimate whose ``V.z`` is undetermined (flag ``degenerate``)
-has no direction: it counts as not measured.
+An estimate flagged ``degenerate`` (some component undetermined: one
+camera's ``V.z``) or ``not_converged`` counts as not measured.  Each pair's
+table is printed over all balls and over the balls measured by the pair
+and by each of its views alone.
 """
 
 from __future__ import annotations
@@ -174,9 +176,18 @@ def _fmt(x: float, digits: int = 2) -> str:
     return "-" if x is None or not math.isfinite(x) else f"{x:.{digits}f}"
 
 
+#: Flags under which an estimate's velocity is not a measurement (some component undetermined, or no convergence).
+UNMEASURED_FLAGS = ("degenerate", "not_converged")
+
+
+def measured(r: dict) -> bool:
+    """A velocity reported and not flagged undetermined or unconverged."""
+    return bool(r.get("measured")) and not any(f in r.get("flags", []) for f in UNMEASURED_FLAGS)
+
+
 def summary_row(label: str, rs: list[dict], n_total: int) -> str:
     """One table row: measured, direction error median / 90th pct / worst, speed error, coverage."""
-    m = [r for r in rs if r.get("measured")]
+    m = [r for r in rs if measured(r)]
     if not m:
         return f"| {label} | 0/{n_total} | - | - | - | - | - | - | - |"
     d = np.array([r["dir_err_deg"] for r in m])
@@ -186,7 +197,13 @@ def summary_row(label: str, rs: list[dict], n_total: int) -> str:
     cov_d = 100 * np.mean(np.array(m2) <= CHI2_2_1SIGMA) if m2 else math.nan
     cov_s = 100 * np.mean(np.array(sz) <= 1.0) if sz else math.nan
     return (f"| {label} | {len(m)}/{n_total} | {_fmt(np.median(d), 3)} | {_fmt(np.percentile(d, 90), 2)} | {_fmt(d.max(), 2)} | "
-            f"{_fmt(np.median(sp), 2)} | {_fmt(sp.max(), 1)} | {_fmt(cov_d, 0)} | {_fmt(cov_s, 0)} |")
+            f"{_fmt(np.median(sp), 2)} | {sp.max():.3g} | {_fmt(cov_d, 0)} | {_fmt(cov_s, 0)} |")
+
+
+HEADER = (
+    "| estimate | measured | direction median [deg] | 90th pct [deg] | worst [deg] | speed error median (abs) [%] | worst [%] | direction 1-sigma coverage [%] | speed 1-sigma coverage [%] |",
+    "|---|---|---|---|---|---|---|---|---|",
+)
 
 
 def tables(rows: list[dict], pairs: list[int]) -> list[str]:
@@ -194,18 +211,24 @@ def tables(rows: list[dict], pairs: list[int]) -> list[str]:
     out = []
     for a in pairs:
         key = f"a{a:03d}"
-        out += ["", f"### Views a000 + {key} ({len(rows)} balls)", "",
-                "| estimate | measured | direction median [deg] | 90th pct [deg] | worst [deg] | |speed err| median [%] | worst [%] | direction 1-sigma coverage [%] | speed 1-sigma coverage [%] |",
-                "|---|---|---|---|---|---|---|---|---|"]
+        out += ["", f"### Views a000 + {key} ({len(rows)} balls)", "", *HEADER]
         joint = [r["pair"][key] for r in rows]
         out.append(summary_row(f"a000 + {key} jointly", joint, len(rows)))
         for v in ("a000", key):
             out.append(summary_row(f"{v} alone", [r["alone"][v] for r in rows], len(rows)))
-        both = [r for r in rows if r["pair"][key].get("measured") and "dual" in _cams(r["pair"][key])]
+        same = [r for r in rows if measured(r["pair"][key]) and all(measured(r["alone"][v]) for v in ("a000", key))]
+        out += ["", f"Same balls: the {len(same)} measured by the pair and by each of its views alone", "",
+                *HEADER]
+        out.append(summary_row(f"a000 + {key} jointly", [r["pair"][key] for r in same], len(same)))
+        for v in ("a000", key):
+            out.append(summary_row(f"{v} alone", [r["alone"][v] for r in same], len(same)))
+        both = [r for r in rows if measured(r["pair"][key]) and "dual" in _cams(r["pair"][key])]
         out.append("")
-        out.append(f"- fitted by both cameras: {len(both)} of {len(rows)}; flagged single_camera: "
-                   f"{sum('single_camera' in r['pair'][key].get('flags', []) for r in rows)}, inconsistent_camera: "
-                   f"{sum('inconsistent_camera' in r['pair'][key].get('flags', []) for r in rows)}")
+        def n_flag(f: str) -> int:
+            return sum(f in r["pair"][key].get("flags", []) for r in rows)
+        out.append(f"- measured by both cameras jointly: {len(both)} of {len(rows)}; flagged single_camera: {n_flag('single_camera')}, "
+                   f"inconsistent_camera: {n_flag('inconsistent_camera')}, degenerate: {n_flag('degenerate')}, not_converged: {n_flag('not_converged')}; "
+                   f"no ball found or none measured: {sum(not r['pair'][key].get('measured') for r in rows)}")
         ratios = []
         for r in both:
             s = [r["alone"][v].get("v_sigma_max_mps") for v in ("a000", key)]
