@@ -129,3 +129,28 @@ def test_rig_watch_pairs_two_raw_streams(tmp_path, capsys):
     assert set(b["own_t_c_s"]) == {"side", "top"}
     code, out, err = run(capsys, "rig", "watch", tmp_path / "lane.rig.toml", paths[0], "--radius", "0.0335")
     assert code == 2 and "1 sources for 2 cameras" in err
+    # 'ballscan watch --rig' is the same command
+    code, alias, err = run(capsys, "watch", "--rig", tmp_path / "lane.rig.toml", *paths, "--radius", "0.0335", "--chunk-lines", "200")
+    assert code == 0, err
+    assert [json.loads(x)["velocity_mps"] for x in alias.splitlines()] == [b["velocity_mps"]]
+    code, out, err = run(capsys, "watch", "--rig", tmp_path / "lane.rig.toml", paths[0], "--radius", "0.0335")
+    assert code == 2 and "1 sources for 2 cameras" in err
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--rig", "R.toml", "a.raw", "b.raw", "--radius", "0.03", "--camera", "c.toml"], ["--camera", "does not apply"]),
+        (["--rig", "R.toml", "a.raw", "b.raw", "--radius", "0.03", "--format", "table"], ["--format", "does not apply"]),
+        (["a.raw", "b.raw", "--camera", "c.toml", "--radius", "0.03"], ["one source without --rig"]),
+        (["a.raw", "--radius", "0.03"], ["give --camera"]),
+        (["a.raw", "--camera", "c.toml"], ["give --radius"]),
+        (["a.raw", "--camera", "c.toml", "--radius", "0.03", "--pair-timeout", "1"], ["--pair-timeout", "needs --rig"]),
+    ],
+)
+def test_watch_rig_alias_refuses_what_does_not_fit(tmp_path, capsys, monkeypatch, args, words):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, "watch", *args)
+    assert code == 2 and out == ""
+    assert all(w in err for w in words), err
+    assert len(err.strip().splitlines()) == 1

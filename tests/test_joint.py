@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from ballscan.geometry.rig import WorldMotion
+from ballscan.geometry.rig import WorldMotion, load_rig
 from ballscan.lab.presets import get_preset
 from ballscan.lab.rig import RIG_PRESETS, camera_about_lane, simulate_rig
 from ballscan.model.render import render
@@ -94,6 +96,41 @@ def test_a_wrong_pose_is_flagged(lane_render):
     assert any(not c.consistent for c in b.joint.cameras)
     assert max(c.delta_chi2 for c in b.joint.cameras) > 100
     assert b.to_dict()["inconsistent_cameras"]
+
+
+def _undetermined(e, keys: tuple[str, ...], guess_t_c_s: float | None = None):
+    """``e`` as a camera's own fit that left ``keys`` undetermined (their values None, covariance rows NaN)."""
+    cov = np.array(e.covariance, dtype=float)
+    rows = {"t_c_s": [0], "position_m": [1, 2], "velocity_mps": [3, 4, 5], "vz": [5]}
+    for k in keys:
+        cov[rows[k], :] = cov[:, rows[k]] = np.nan
+    values = {k: None for k in ("t_c_s", "position_m", "velocity_mps") if k in keys or (k == "velocity_mps" and "vz" in keys)}
+    initial = e.initial if guess_t_c_s is None else replace(e.initial, t_c_s=guess_t_c_s)
+    return replace(e, **values, speed_mps=None, covariance=cov, initial=initial, flags=e.flags + ("degenerate",))
+
+
+@pytest.mark.parametrize("keys, guess_t_c_s", [(("vz",), None), (("t_c_s", "position_m", "velocity_mps"), -6374.5)])
+def test_a_camera_whose_own_fit_is_degenerate_still_enters_the_joint_fit(lane_render, monkeypatch, keys, guess_t_c_s):
+    # one camera alone cannot fix its depth velocity (or, cut short, anything): the other camera pins it;
+    # an absurd key-point crossing falls back to the middle of the ball's lines
+    import ballscan.pipeline.rig as prig
+
+    reports = [estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    for k in (0, 1):  # the reference camera degenerate, then the other one
+        broken = list(reports)
+        broken[k] = replace(reports[k], balls=(_undetermined(reports[k].balls[0], keys, guess_t_c_s),))
+        it = iter(broken)
+        monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: next(it))
+        rep = prig.estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m)
+        assert len(rep.balls) == 1
+        b = rep.balls[0]
+        assert b.cameras == ("side", "top") and "single_camera" not in b.flags, (k, b.flags)
+        assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+        assert abs(b.t_c_s - LANE.motion.t_ref_s) < 3 * b.sigmas[0]
+    e = _undetermined(reports[0].balls[0], keys, guess_t_c_s)
+    x, C = prig.own_state(e, 1.0 / LANE.rig.cameras[0].camera.line_rate_hz)
+    assert np.all(np.isfinite(x)) and np.all(np.isfinite(C)) and np.all(np.linalg.eigvalsh(C) >= 0)
+    assert C[5, 5] >= 1e6 and C[5, :5] @ C[5, :5] == 0.0
 
 
 def test_plane_constraint_on_a_rail_ball():
@@ -216,3 +253,45 @@ def test_parallel_planes_apart_with_gravity_and_an_unknown_clock():
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
     top_fit = b.joint.cameras[1]
     assert abs(top_fit.clock_offset_s + 6e-3) < 3 * top_fit.clock_offset_sigma_s
+
+
+POVRAY_RIG = Path(__file__).parent / "data" / "povray_rig"
+
+
+def test_two_povray_views_pin_the_direction(tmp_path):
+    # an independent render (POV-Ray, benchmarks/povray_set/score_rig.py): views a000 (the world frame)
+    # and a090 of one ball, a rig file referring to their camera files (shared clock, no gravity)
+    name = "pv1013"
+    rig_file = tmp_path / "pair.rig.toml"
+    rig_file.write_text("".join(
+        f'[[camera]]\nname = "{v}"\nclock_offset_s = 0.0\nfile = "{(POVRAY_RIG / f"{name}_{v}.camera.toml").as_posix()}"\n\n' for v in ("a000", "a090")))
+    rig = load_rig(rig_file)
+    truth = json.loads((POVRAY_RIG / f"{name}_a000.truth.json").read_text())
+    images = [POVRAY_RIG / f"{name}_{v}.png" for v in ("a000", "a090")]
+    rep = estimate_rig(images, rig, truth["radius_m"])
+    assert len(rep.balls) == 1
+    b = rep.balls[0]
+    assert b.cameras == ("a000", "a090") and "single_camera" not in b.flags and "inconsistent_camera" not in b.flags, b.flags
+    # a line-scan camera does not see the sign of V.x (both views share the axis x)
+    V, Vt = np.asarray(b.motion.velocity_mps), np.asarray(truth["velocity_mps"]) * np.array([-1.0, 1.0, 1.0])
+    assert V[0] > 0 and Vt[0] > 0
+    el, el_s, az, az_s = b.direction()
+    assert abs(el - math.degrees(math.atan2(Vt[2], math.hypot(Vt[0], Vt[1])))) < 3 * el_s
+    assert abs(az - math.degrees(math.atan2(Vt[1], Vt[0]))) < 3 * az_s
+    sp, sp_s = b.speed()
+    assert abs(sp - np.linalg.norm(Vt)) < 3 * sp_s
+    assert abs(b.t_c_s - truth["t_c_s"]) < 3 * b.sigmas[0]
+    joint_err = _angle_deg(V, Vt)
+    assert joint_err < 0.5
+    # each view alone, on the same pixels (its frame): its depth axis unpinned
+    alone = []
+    for v in ("a000", "a090"):
+        own = b.estimates[v]
+        vt = np.asarray(json.loads((POVRAY_RIG / f"{name}_{v}.truth.json").read_text())["velocity_mps"])
+        if own.velocity_mps is not None:
+            alone.append(_angle_deg(np.asarray(own.velocity_mps), vt * np.array([np.sign(vt[0]), 1.0, 1.0])))
+    assert alone and min(alone) > 10 * joint_err, (alone, joint_err)
+
+
+def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
+    return math.degrees(math.acos(min(1.0, float(a @ b / (np.linalg.norm(a) * np.linalg.norm(b))))))

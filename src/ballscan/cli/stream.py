@@ -163,9 +163,9 @@ class _Watched:
 
 
 def watch(
-    source: Annotated[str, typer.Argument(help="Raw lines: a file, a named pipe or '-' (stdin); a folder of PNG/TIFF chunks; or 'pylon[:SERIAL]'.")],
-    camera: Annotated[Path, typer.Option("--camera", help="Camera TOML (geometry.md).")],
-    radius: Annotated[float, typer.Option("--radius", help="Ball radius R, metres.")],
+    source: Annotated[list[str], typer.Argument(help="Raw lines: a file, a named pipe or '-' (stdin); a folder of PNG/TIFF chunks; or 'pylon[:SERIAL]'. With --rig one per camera, in the rig's order.")],
+    camera: Annotated[Optional[Path], typer.Option("--camera", help="Camera TOML (geometry.md); required without --rig.")] = None,
+    radius: Annotated[Optional[float], typer.Option("--radius", help="Ball radius R, metres.  [required]")] = None,
     width: Annotated[Optional[int], typer.Option("--width", help="Pixels per raw line (default: the camera's width).")] = None,
     dtype: Annotated[str, typer.Option("--dtype", help="Raw sample type: uint8 or uint16 (little-endian).")] = "uint8",
     chunk_lines: Annotated[int, typer.Option("--chunk-lines", help="Lines read at a time from a raw source.")] = 1024,
@@ -188,7 +188,10 @@ def watch(
     jobs: Annotated[int, typer.Option("--jobs", "-j", "--workers", help="Processes that run the estimates (0: in the reading process, default).")] = 0,
     force: Annotated[bool, typer.Option("--force", help="Write --save-events files through symbolic links (refused otherwise).")] = False,
     serve: Annotated[Optional[str], typer.Option("--serve", metavar="[HOST:]PORT", help="Show the balls live on a web page at http://HOST:PORT/ (host default 127.0.0.1: this machine only; the 'live' extra). After the stream ends the page stays until Ctrl-C.")] = None,
-) -> int:
+    rig: Annotated[Optional[Path], typer.Option("--rig", help="Rig TOML (docs/geometry.md): one source per camera, each ball paired across them and fitted jointly, as 'ballscan rig watch'.")] = None,
+    pair_timeout: Annotated[float, typer.Option("--pair-timeout", help="With --rig: wall seconds a ball waits for the other cameras' balls.")] = 2.0,
+    constraint: Annotated[Optional[str], typer.Option("--constraint", help="With --rig: a known constraint as for estimate (world frame).")] = None,
+) -> int | None:
     """Measure balls in a continuous line stream, one line per ball as it is measured.
 
     With --format json each line holds geometry.md's estimate keys plus
@@ -197,8 +200,28 @@ def watch(
     The end of the stream, or Ctrl-C, SIGTERM or SIGHUP, measures the balls
     that have passed and the ball in view (flagged as cut) and stops; after
     a signal the exit status is 128 + its number (130, 143, 129). A reader
-    that goes away (| head) ends the watch quietly.
+    that goes away (| head) ends the watch quietly. With --rig, the
+    streams of a rig's cameras are measured as 'ballscan rig watch' does:
+    one joint JSON line per ball.
     """
+    sources = [source] if isinstance(source, str) else list(source)
+    if radius is None:
+        raise ValueError("watch: give --radius R (the ball's radius, metres)")
+    if rig is not None:
+        _refuse_without_rig(camera=camera, width=width, timestamps=timestamps, pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps,
+                            method=method, shading=shading, matched=matched, background=background, k_sigma=k_sigma, margin_lines=margin_lines,
+                            buffer_lines=buffer_lines, save_events=save_events, output_format=output_format, units=units, jobs=jobs, force=force, serve=serve)
+        from .rig import watch as rig_watch
+
+        return rig_watch(rig, sources, radius=radius, dtype=dtype, chunk_lines=chunk_lines, timeout=timeout, pair_timeout=pair_timeout, constraint=constraint)
+    for name, value, default in (("--pair-timeout", pair_timeout, 2.0), ("--constraint", constraint, None)):
+        if value != default:
+            raise ValueError(f"watch: {name} needs --rig RIG.toml")
+    if len(sources) != 1:
+        raise ValueError(f"watch: one source without --rig, got {len(sources)} (several sources: one per camera of a --rig RIG.toml)")
+    if camera is None:
+        raise ValueError("watch: give --camera CAMERA.toml (or --rig RIG.toml)")
+    source = sources[0]
     from ..geometry.camera import load_camera
     from ..pipeline.report import UNITS
     from ..pipeline.recipe import Recipe
@@ -249,6 +272,17 @@ def watch(
     if signum is not None:
         raise ExitStatus(exit_code)
     return n
+
+
+def _refuse_without_rig(**given) -> None:
+    """``watch --rig``: refuse the one-camera options (the rig file gives the cameras; 'ballscan rig watch' takes the rest)."""
+    import inspect
+
+    defaults = inspect.signature(watch).parameters
+    for name, value in given.items():
+        if value != defaults[name].default:
+            flag = "--format" if name == "output_format" else "--" + name.replace("_", "-")
+            raise ValueError(f"watch --rig: {flag} does not apply (the rig file gives the cameras; with --rig: --radius, --dtype, --chunk-lines, --timeout, --pair-timeout, --constraint)")
 
 
 def _event_folder(folder: Path | None, force: bool):

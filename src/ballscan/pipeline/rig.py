@@ -39,6 +39,7 @@ __all__ = [
     "estimate_rig",
     "match_window_s",
     "measure_group",
+    "own_state",
     "predicted_crossing",
     "single_camera_rig",
 ]
@@ -200,20 +201,78 @@ def check_lines(rig: Rig) -> list[str]:
 # --------------------------------------------------------------- matching
 
 
-def _own_world(rc: RigCamera, e: BallEstimate, offset_s: float) -> tuple[np.ndarray, np.ndarray, float] | None:
-    """A camera's estimate as the world state at its crossing (rig time), its 6x6 covariance at that fixed time, and the time."""
-    if e.t_c_s is None or e.position_m is None or e.velocity_mps is None or e.covariance is None:
+#: 1-sigma given to a camera's parameter its own image leaves undetermined (the key-point guess stands in):
+#: crossing time (s), centre (m), velocity (m/s); wide enough that the other cameras decide.
+_UNKNOWN_SIGMA = (1.0, 10.0, 1000.0)
+
+
+def own_state(e: BallEstimate, line_period_s: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """A camera's own ``(t_c, y0, z0, vx, vy, vz)`` and its 6x6 covariance, with the key-point guess where the fit left a value undetermined.
+
+    One camera leaves its depth velocity (or more) undetermined exactly
+    where a second camera pins it: such a parameter takes the key-point
+    guess's value (:attr:`BallEstimate.initial`), its covariance row and
+    column zero and its variance :data:`_UNKNOWN_SIGMA` squared, so that a
+    weighted combination leaves it to the other cameras.  The crossing time,
+    if undetermined, takes the guess's (the middle of the ball's lines where
+    the guess falls outside them) with the ball's time in the image as its
+    sigma.  None when neither the fit nor the guess has a crossing.
+
+    Parameters
+    ----------
+    e : BallEstimate
+        One camera's estimate (its frame, its clock; times s, lengths m,
+        velocities m/s).
+    line_period_s : float
+        The camera's line period (s).
+    """
+    g = e.initial
+    def pick(key: str):
+        v = getattr(e, key)
+        return v if v is not None else (None if g is None else getattr(g, key))
+    t_c, pos, vel = pick("t_c_s"), pick("position_m"), pick("velocity_mps")
+    if t_c is None or pos is None:
         return None
+    x = np.array([float(t_c), float(pos[1]), float(pos[2]), *(np.zeros(3) if vel is None else np.asarray(vel, dtype=float))])
+    C = np.full((6, 6), np.nan) if e.covariance is None else np.array(e.covariance, dtype=float)
+    unknown = ~np.isfinite(np.diag(C)) | np.any(~np.isfinite(C), axis=1) | ~np.isfinite(x)
+    unknown[0] |= e.t_c_s is None
+    unknown[1:3] |= e.position_m is None
+    unknown[3:] |= e.velocity_mps is None
+    x[~np.isfinite(x)] = 0.0
+    C[unknown, :] = 0.0
+    C[:, unknown] = 0.0
+    var = np.array([_UNKNOWN_SIGMA[0]] + [_UNKNOWN_SIGMA[1]] * 2 + [_UNKNOWN_SIGMA[2]] * 3) ** 2
+    if unknown[0] and e.first_line is not None and e.last_line is not None:
+        # the ball's time in the image (uniform line timing) bounds its crossing there
+        t_lo, t_hi = e.first_line * line_period_s, e.last_line * line_period_s
+        var[0] = (t_hi - t_lo + line_period_s) ** 2
+        if not t_lo <= x[0] <= t_hi:
+            x[0] = 0.5 * (t_lo + t_hi)
+    C[unknown, unknown] = var[unknown]
+    return x, C
+
+
+def _own_world(rc: RigCamera, e: BallEstimate, offset_s: float) -> tuple[np.ndarray, np.ndarray, float] | None:
+    """A camera's estimate as the world state at its crossing (rig time), its 6x6 covariance at that fixed time, and the time.
+
+    Parameters its image leaves undetermined come from :func:`own_state`
+    with a wide sigma.
+    """
+    own = own_state(e, 1.0 / rc.camera.line_rate_hz)
+    if own is None:
+        return None
+    x, C6 = own
     cam = rc.camera
-    C7 = world_covariance(cam, np.asarray(e.covariance, dtype=float))
-    X = cam.camera_to_world(np.asarray(e.position_m))
-    V = cam.vectors_to_world(np.asarray(e.velocity_mps))
+    C7 = world_covariance(cam, C6)
+    X = cam.camera_to_world(np.array([0.0, x[1], x[2]]))
+    V = cam.vectors_to_world(x[3:])
     A = np.zeros((6, 7))
     A[:3, 0] = -V  # the centre at the fixed time: the crossing time's error moves it along V
     A[:3, 1:4] = np.eye(3)
     A[3:, 4:] = np.eye(3)
-    C = A @ np.nan_to_num(C7, nan=1e6) @ A.T
-    return np.concatenate([X, V]), C, float(e.t_c_s) - offset_s
+    C = A @ C7 @ A.T
+    return np.concatenate([X, V]), C, float(x[0]) - offset_s
 
 
 def match_window_s(rig: Rig, k: int, ref_state: np.ndarray, ref_cov: np.ndarray, t_ref_s: float) -> tuple[float, float]:
@@ -243,6 +302,12 @@ def predicted_crossing(rig: Rig, reference: BallEstimate, k: int) -> tuple[float
     return match_window_s(rig, k, state, cov, t)
 
 
+def _crossing(rc: RigCamera, e: BallEstimate) -> tuple[float, float] | None:
+    """A camera's crossing of one ball (its clock, s) and its 1-sigma (s): the fit's, else the key-point guess's (:func:`own_state`)."""
+    own = own_state(e, 1.0 / rc.camera.line_rate_hz)
+    return None if own is None else (float(own[0][0]), float(math.sqrt(own[1][0, 0])))
+
+
 def _matches(rig: Rig, reports) -> list[dict[int, int]]:
     """Groups ``{camera index: ball index}``: each reference ball with the nearest unused ball in each window, then the rest alone."""
     ref = rig.reference
@@ -258,8 +323,11 @@ def _matches(rig: Rig, reports) -> list[dict[int, int]]:
                 if k == ref:
                     continue
                 t_pred, half = match_window_s(rig, k, state, cov, t)
-                cands = [(abs(b.t_c_s - t_pred), j) for j, b in enumerate(reports[k].balls)
-                         if j not in used[k] and b.t_c_s is not None and abs(b.t_c_s - t_pred) <= half]
+                cands = []
+                for j, b in enumerate(reports[k].balls):
+                    tb = _crossing(rig.cameras[k], b)
+                    if j not in used[k] and tb is not None and abs(tb[0] - t_pred) <= half + 5.0 * tb[1]:
+                        cands.append((abs(tb[0] - t_pred), j))
                 if cands:
                     j = min(cands)[1]
                     group[k] = j
@@ -321,9 +389,10 @@ def combined_start(rig: Rig, picks: dict[int, BallEstimate], radius_m: float) ->
     start = WorldMotion(radius_m, t_ref, tuple(x[:3]), tuple(x[3:]), tuple(g))
     offsets = []
     for k in rig.unknown_clocks:
-        if k in picks and picks[k].t_c_s is not None:
+        tk = _crossing(rig.cameras[k], picks[k]) if k in picks else None
+        if tk is not None:
             t_pred = camera_params(start.state, rig.cameras[k].camera, t_ref, g, 0.0)[0][0]
-            offsets.append(float(picks[k].t_c_s - t_pred))
+            offsets.append(float(tk[0] - t_pred))
         else:
             offsets.append(0.0)
     return start, offsets
@@ -365,7 +434,7 @@ def measure_group(
     stream's crop, :func:`ballscan.geometry.camera.crop_camera`).
     """
     cameras = cameras or {}
-    usable = {k: e for k, e in picks.items() if e.fitted_edges is not None and e.t_c_s is not None}
+    usable = {k: e for k, e in picks.items() if e.fitted_edges is not None and _crossing(rig.cameras[k], e) is not None}
     names = {rig.cameras[k].name: e for k, e in picks.items()}
     flags: tuple[str, ...] = ("single_camera",) if len(rig.cameras) > 1 and len(usable) < 2 else ()
     start = combined_start(rig, usable, radius_m) if usable else None
