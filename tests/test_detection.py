@@ -296,7 +296,7 @@ def test_balls_whose_closed_notch_is_one_line_are_flagged(radii, apart, shift):
     # Two overlapping balls (radii in lines and pixels) side by side whose
     # closed mask is in two runs on only one line at each end of the
     # overlap, not a ragged edge: the lightly closed mask shows the notch on
-    # neighbouring lines (a review found them passed as one clean ball).
+    # neighbouring lines: otherwise they pass as one clean ball.
     a, _ = _disc((200, 200), (100, 90), radii, 150.0)
     b, _ = _disc((200, 200), (100 + shift, 90 + apart), radii, 150.0)
     img = np.maximum(a, b)

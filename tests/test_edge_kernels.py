@@ -262,7 +262,7 @@ def test_finished_edges_is_the_numpy_forms_bit_for_bit():
 
 
 def _running_median_loop(x, n):
-    """The former single-block kernel (session 10), in plain Python: each window sorted by insertion in numpy's order (NaN last), its middle finite ranks averaged."""
+    """A single-block running median in plain Python (the reference form): each window sorted by insertion in numpy's order (NaN last), its middle finite ranks averaged."""
     size, h = x.shape[0], n // 2
     wl = 2 * h + 1
     out = np.empty(size)

@@ -13,11 +13,9 @@ Targets and what is met (see the module's tests for the tolerances used):
   target <= 0.3 %, achieved 0.11 % (worst 0.72 %), with the shading-aware
   second pass.
 * 1-sigma coverage of the speed over noisy renders of an untextured ball
-  crossing at 30 degrees: 60-76 % (measured 73.0 % in sessions 5 and 6,
-  70.5 % when the end lines' areas were first levelled by the shading
-  model, 75.5 % before; the sensor has 0.8 % PRNU, so the matched edges of
-  session 6 are not used: with them, before they were restricted to
-  flat-fielded sensors, 69.5 %).
+  crossing at 30 degrees: 60-76 % (measured 73.0 %; the sensor has 0.8 %
+  PRNU, so the matched edges, which are for flat-fielded sensors, are not
+  used: with them 69.5 %).
 * the default on a flat-fielded sensor (no PRNU, Gaussian noise): matched
   edges and the pixels of the ends and spread lines, speed RMSE 1.05x the
   pixel bound over 40 oblique renders (bench_fit, 100: 1.03x / 1.06x).
@@ -77,10 +75,9 @@ def _oblique(deg: float, speed: float = 30.0, towards: str = "z") -> BallMotion:
     # measured 0.0003 % and 0.0024 % (along the sensor); in depth 0.054 % with
     # the renderer's default 4 x 8 (height x time) samples per edge pixel
     # (16 x 16 on the cap lines; V.z, the weak axis, reads the other lines'
-    # 0.004 px RMS of sampling error), and 0.0082 % with 16 x 64.  History:
-    # with the renderer's coarse caps (before session 4: up to 0.066 px off)
-    # 0.0040 % / 0.0063 % / 0.081 %, which hid a -0.011 % bias of the spread
-    # edges next to the ends (see EdgeSettings.limb_texture_tol and
+    # 0.004 px RMS of sampling error), and 0.0082 % with 16 x 64.  Coarse
+    # caps (up to 0.066 px off) give 0.0040 % / 0.0063 % / 0.081 % and hide
+    # a -0.011 % bias of the spread edges next to the ends (see EdgeSettings.limb_texture_tol and
     # LimbProfile.pixel_coverage); with the caps fixed but before the exact
     # coverage 0.0042 % / 0.0081 % / 0.074 % / 0.030 %
     [(0.0, "z", 0.01, False), (30.0, "y", 0.05, False), (30.0, "z", 0.15, False), (30.0, "z", 0.05, True)],
@@ -108,10 +105,10 @@ def test_noisy_textured_tennis_ball_is_never_wildly_wrong(seed):
     dv = np.asarray(b.velocity_mps) - m.velocity_mps
     sv = np.asarray(b.velocity_sigma_mps)
     # vx, vy within 3 sigma; vz within 3.5: seed 1's seam next to the limb
-    # puts vz +16.5 m/s off, 2.8 sigma in session 2 (sigma 5.8-6 m/s) and 3.25
-    # sigma since the end lines' levelled areas (sigma 5.1 m/s: the areas add
-    # information, the seam's bias of the edges stays).  vx within 3.5 too:
-    # with the partial lines levelled (session 5) seed 1's vx is 3.3 sigma
+    # puts vz +16.5 m/s off, 3.25 sigma with the end lines' levelled areas
+    # (sigma 5.1 m/s: the areas add information, the seam's bias of the
+    # edges stays; 2.8 sigma of 5.8-6 m/s without them).  vx within 3.5 too:
+    # with the partial lines levelled seed 1's vx is 3.3 sigma
     # off (-0.049 +- 0.015 m/s); over 142 of our own textured renders V.x
     # lies within 3 sigma on 95.1 % (94.4 % with the partial lines loose)
     assert np.all(np.abs(dv) < np.array([3.5, 3.0, 3.5]) * sv)
@@ -153,7 +150,7 @@ def test_clean_reference_scenes_speed_error():
             zs.append(abs(eb.speed_mps - s_true) / eb.speed_sigma_mps)
             pos_err = np.linalg.norm(np.asarray(eb.position_m) - tb["position_m"])
             assert pos_err < 0.005, name  # metres
-    # measured median 0.11 %, worst 0.72 % (the serve: V.z sigma 10 m/s; session 3: 0.22 % and 0.80 %)
+    # measured median 0.11 %, worst 0.72 % (the serve: V.z sigma 10 m/s; without the shading-aware pass 0.22 % and 0.80 %)
     assert float(np.median(errs)) < 0.3
     assert max(errs) < 1.0
     # the clean 16-bit images have almost no pixel noise: the sigmas come from

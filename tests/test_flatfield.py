@@ -80,7 +80,7 @@ def test_gain_sigma_describes_the_remaining_gain_error():
 def test_a_stuck_column_is_no_gain_and_flat_fielding_stays_below_saturation():
     # A column stuck at the background inside the ball reads a ratio of ~0
     # to the trend: taken for a gain it would scale its signal by hundreds
-    # (review, session 8: gain -0.0045).  It keeps gain 1 and its whole
+    # (a gain of -0.0045 without this guard).  It keeps gain 1 and its whole
     # deviation as its error; the other columns' gains are untouched.
     data, bg, mask, gain = _disc(300, 120, 0.008, 2.0, 0)
     stuck = 60

@@ -1,4 +1,4 @@
-"""Tests of the live view's library: ballscan.live.balls, .hub, .review and .server (over HTTP, without a browser)."""
+"""Tests of the live view's library: ballscan.live.balls, .hub, .replay and .server (over HTTP, without a browser)."""
 
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ from ballscan.geometry.camera import LineScanCamera, crop_camera, save_camera
 from ballscan.geometry.motion import BallMotion
 from ballscan.live.balls import MAX_CROP_PX, TABLE_COLUMNS, BallFilter, ball_from_csv_row, ball_from_record, crop_view, table_csv
 from ballscan.live.hub import LiveConfig, LiveHub
-from ballscan.live.review import load_run
+from ballscan.live.replay import load_run
 from ballscan.model.render import Appearance, SensorNoise, render
 from ballscan.model.silhouette import silhouette
 from ballscan.pipeline.report import CSV_COLUMNS, UNITS
@@ -211,8 +211,8 @@ def test_live_config_checks():
         LiveConfig(stall_after_s=-1.0)
 
 
-# ------------------------------------------------------------------ review
-def test_review_of_json_lines_and_csv(tmp_path, results):
+# ------------------------------------------------------------------ replay
+def test_replay_of_json_lines_and_csv(tmp_path, results):
     jl = tmp_path / "run.jsonl"
     jl.write_text("".join(json.dumps(r.to_dict(CAM)) + "\n" for r in results) + "\n")
     run = load_run(jl)
@@ -230,7 +230,7 @@ def test_review_of_json_lines_and_csv(tmp_path, results):
     assert run.ball_detail(1).crop is None and run.ball_detail(3) is None
 
 
-def test_review_errors_name_the_file(tmp_path):
+def test_replay_errors_name_the_file(tmp_path):
     with pytest.raises(BallscanError, match="no such file"):
         load_run(tmp_path / "missing.jsonl")
     bad = tmp_path / "bad.jsonl"
@@ -263,7 +263,7 @@ def saved_events(tmp_path_factory, lines):
     return d / "events", out, cam
 
 
-def test_review_of_a_saved_events_folder(saved_events):
+def test_replay_of_a_saved_events_folder(saved_events):
     folder, out, cam = saved_events
     printed = [json.loads(t) for t in out.read_text().splitlines()]
     from ballscan.geometry.camera import load_camera
@@ -424,7 +424,7 @@ def test_view_serves_a_saved_run(server_factory, saved_events):
     from ballscan.geometry.camera import load_camera
 
     server, client = server_factory(load_run(folder, load_camera(cam)))
-    assert client.get("/api/info").json()["mode"] == "review"
+    assert client.get("/api/info").json()["mode"] == "replay"
     listed = client.get("/api/balls").json()["balls"]
     assert len(listed) == len(out.read_text().splitlines()) == len(BALLS)
     detail = client.get(f"/api/ball/{listed[-1]['index']}").json()

@@ -253,7 +253,7 @@ def _view(browser, proc, printed) -> None:
         _until(lambda: len(_rows(browser)) == len(printed), 10, "every saved ball")
         speeds = browser.execute_script("return Array.from(document.querySelectorAll('#balls-table tbody tr')).map((r) => r.cells[2].textContent)")
         assert speeds == [f"{r['speed_mps']:.2f} ± {r['speed_sigma_mps']:.2f}" for r in printed]
-        assert "review" in _text(browser, "banner")
+        assert "replay" in _text(browser, "banner")
         # the speed filter (in the viewer's unit) and the download link follow it
         Select(browser.find_element("id", "unit")).select_by_value("km/h")
         cut = sorted(r["speed_mps"] for r in printed)[1] * 3.6

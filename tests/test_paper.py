@@ -36,8 +36,8 @@ CASES = {
     # name: camera, motion, lines, speed error (%) the refinement must stay under
     # perpendicular: the refined speed error over noise seeds 0-5, dark and
     # bright balls, is 0.001-0.31 % (V.z, the gradient energy's flat axis;
-    # seed 3's dark ball, the one tested, 0.11 % with the renderer's coarse
-    # end lines before session 4 and 0.31 % since): 0.4 %
+    # seed 3's dark ball, the one tested, 0.31 %; 0.11 % with coarsely
+    # rendered end lines): 0.4 %
     "perpendicular": (LineScanCamera(2048, 3000.0, 1023.5, 50000.0), BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (30.0, 0, 0)), 150, 0.4),
     "oblique-30deg": (LineScanCamera(2048, 3000.0, 1023.5, 50000.0), BallMotion(0.0335, 0.0015, (0, 0.02, 3.0), (25.98, 15.0, 0)), 150, 3.0),
     "table-tennis": (LineScanCamera(1024, 2800.0, 511.5, 30000.0), BallMotion(0.02, 0.0036, (0, -0.04, 1.8), (12.37, 0.0, 0.0)), 220, 1.0),

@@ -154,10 +154,10 @@ def test_estimate_reports_the_shading_and_can_skip_it():
     assert on.extra["shading_pass"] == "used" and off.extra["shading_pass"] == "off"
     assert off.extra["time_shading_s"] == 0.0
     # the depth velocity of a shaded ball, noise-free.  Measured: without the
-    # second pass 0.37 m/s (sigma 1.5); with it 0.12 m/s in session 4, and
-    # -0.39 (sigma 1.25) since the lines of the ball's partial exposure are
-    # levelled (session 5: the shading law's brightness on those caps is a
-    # few per cent off), so the pass no longer lowers |V.z| on this ball; what
+    # second pass 0.37 m/s (sigma 1.5); with it -0.39 (sigma 1.25), the lines
+    # of the ball's partial exposure being levelled (the shading law's
+    # brightness on those caps is a few per cent off; 0.12 m/s unlevelled),
+    # so the pass does not lower |V.z| on this ball; what
     # stays asserted is that V.z is within a third of its sigma
     assert abs(on.velocity_mps[2]) < 0.5 and abs(on.velocity_mps[2]) < 0.35 * on.velocity_sigma_mps[2]
 

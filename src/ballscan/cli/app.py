@@ -356,7 +356,7 @@ def view(
 ) -> None:
     """Serve the live page over a saved run: every ball, filters by flag and speed range, the table as CSV (until Ctrl-C)."""
     from ..geometry.camera import load_camera
-    from ..live.review import load_run
+    from ..live.replay import load_run
     from ..live.server import LiveServer, parse_address
 
     try:

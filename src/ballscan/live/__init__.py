@@ -2,7 +2,7 @@
 
 :class:`~ballscan.live.hub.LiveHub` sits between the measurement loop and
 the page (a bounded ring of balls, the stream's health; the loop never
-waits for it); :func:`~ballscan.live.review.load_run` reads a saved run;
+waits for it); :func:`~ballscan.live.replay.load_run` reads a saved run;
 :class:`~ballscan.live.server.LiveServer` serves the page over either
 (the optional ``live`` extra: starlette and uvicorn). The page's script is
 vendored in ``static/`` and draws everything itself: the server sends
@@ -11,7 +11,7 @@ numbers, each ball's crop as grey pixels and its fitted outline.
 
 from .balls import TABLE_COLUMNS, BallFilter, CropView, LiveBall, crop_view, table_csv
 from .hub import Health, LiveConfig, LiveHub
-from .review import SavedRun, load_run
+from .replay import SavedRun, load_run
 from .server import LiveServer, parse_address
 
 __all__ = [

@@ -80,7 +80,7 @@ class Health:
 
     Attributes
     ----------
-    state : {"waiting", "running", "stalled", "ended", "failed", "review"}
+    state : {"waiting", "running", "stalled", "ended", "failed", "replay"}
     message : str
         Words for the banner (empty while running).
     lines : int

@@ -6,7 +6,7 @@ filtered by flag and speed range, ``.csv`` for the download),
 ``/api/ball/{index}`` (one ball with its crop and outline), ``/api/health``
 and ``/events``, a server-sent event stream of each new ball and, every half
 second, the stream's health. The store is a :class:`~ballscan.live.hub.LiveHub`
-(a live run) or a :class:`~ballscan.live.review.SavedRun` (a saved one).
+(a live run) or a :class:`~ballscan.live.replay.SavedRun` (a saved one).
 
 The server runs its own event loop on a daemon thread: the measurement loop
 only hands balls to the hub, and a slow or closed browser holds nothing but

@@ -172,7 +172,7 @@ function renderAll() {
   renderLast(state.shown); renderTable(); renderChart(); renderHistogram();
 }
 
-// -------------------------------------------------------- live and review runs
+// -------------------------------------------------------- live and replayed runs
 function query() {
   const p = new URLSearchParams();
   const u = state.units[state.unit];
@@ -182,7 +182,7 @@ function query() {
   return p.toString();
 }
 
-async function refreshReview() {
+async function refreshReplay() {
   const q = query();
   $("download").href = "/api/balls.csv" + (q ? "?" + q : "");
   const r = await fetch("/api/balls" + (q ? "?" + q : ""));
@@ -217,16 +217,16 @@ async function main() {
   if (saved && saved in state.units) state.unit = saved;
   $("unit").value = state.unit;
   $("unit").addEventListener("change", () => { state.unit = $("unit").value; localStorage.setItem("ballscan-unit", state.unit); renderAll(); });
-  if (state.mode === "review") {
+  if (state.mode === "replay") {
     for (const [word, text] of Object.entries(state.flags)) {
       const o = document.createElement("option"); o.value = word; o.textContent = word; o.title = text; $("f-flag").appendChild(o);
     }
     $("filters").classList.remove("hidden");
     $("health").classList.add("hidden");  // a saved run has no stream to watch
-    $("filters").addEventListener("change", refreshReview);
-    $("filters").addEventListener("submit", (e) => { e.preventDefault(); refreshReview(); });
+    $("filters").addEventListener("change", refreshReplay);
+    $("filters").addEventListener("submit", (e) => { e.preventDefault(); refreshReplay(); });
     renderHealth(await (await fetch("/api/health")).json());
-    await refreshReview();
+    await refreshReplay();
   } else {
     state.balls = (await (await fetch("/api/balls")).json()).balls;
     renderAll();

@@ -54,7 +54,7 @@ class SavedRun:
     camera: LineScanCamera | None = None
     crop_files: dict[int, tuple[Path, Path | None, BallMotion | None]] = field(default_factory=dict)
 
-    mode = "review"
+    mode = "replay"
 
     def balls(self, selection: BallFilter | None = None) -> list[LiveBall]:
         """The balls that pass ``selection``, in the run's order (without crops)."""
@@ -86,8 +86,8 @@ class SavedRun:
         return crop_view(pixels, first_line, first_col, camera=self.camera, motion=motion, times_s=times)
 
     def health(self) -> Health:
-        """A saved run's "health": its size; the banner says it is a review."""
-        return Health("review", f"review of {self.name}: {len(self.all_balls)} balls", 0, 0.0, 0.0, None, None, 0, len(self.all_balls), 0, (), 0)
+        """A saved run's "health": its size; the banner says it is a replay."""
+        return Health("replay", f"replay of {self.name}: {len(self.all_balls)} balls", 0, 0.0, 0.0, None, None, 0, len(self.all_balls), 0, (), 0)
 
 
 def _motion(record: dict) -> BallMotion | None:
