@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import json
 import os
+import subprocess
+import sys
 import time
 
 import psutil
@@ -37,10 +40,14 @@ def _warm_up() -> None:
     _WARM["calls"] = _WARM.get("calls", 0) + 1
 
 
-def _warm_state(x: int) -> tuple[int, int, int]:
+def _warm_state(x: int) -> tuple[int, int, int, int]:
     # slow enough that both workers of a 2-process pool get items
     time.sleep(0.05)
-    return x, _WARM.get("pid", -1), _WARM.get("calls", 0)
+    return x, _WARM.get("pid", -1), _WARM.get("calls", 0), os.getpid()
+
+
+def _pid(_: int) -> int:
+    return os.getpid()
 
 
 def _children() -> list[psutil.Process]:
@@ -64,13 +71,29 @@ def test_a_failing_task_is_a_result_and_the_others_complete(jobs):
     assert all(out[i].ok and out[i].value == i for i in (0, 1, 2, 4, 5))
 
 
-def test_warm_up_runs_once_in_each_worker_process():
-    out = [r.value for r in run_tasks(_warm_state, range(8), jobs=2, warm_up=_warm_up)]
-    pids = {pid for _, pid, _ in out}
-    assert -1 not in pids and os.getpid() not in pids
-    # every task saw its own worker warmed up exactly once
-    assert all(calls == 1 for _, _, calls in out)
-    assert len(pids) <= 2
+def test_every_task_runs_warm_and_workers_share_the_work():
+    _WARM.clear()
+    with TaskExecutor(2, warm_up=_warm_up) as ex:
+        out = [r.value for r in ex.map(_warm_state, range(16))]
+        method = ex.start_method
+    # every task saw its process warmed up exactly once
+    assert all(calls == 1 for _, _, calls, _ in out)
+    assert len({pid for *_, pid in out} - {os.getpid()}) >= 1  # the work was shared with worker processes
+    if method == "fork":
+        # forked workers inherit this process's warm-up: it ran here, once
+        assert {warm for _, warm, _, _ in out} == {os.getpid()}
+    else:
+        assert method == "loky"
+    _WARM.clear()
+
+
+def test_too_little_work_stays_in_this_process():
+    before = {p.pid for p in _children()}
+    with TaskExecutor(2) as ex:
+        pids = [r.value for r in ex.map(_pid, range(20))]
+        assert ex.start_method is None
+        assert {p.pid for p in _children()} - before == set()
+    assert set(pids) == {os.getpid()}
 
 
 def test_warm_up_in_this_process_for_one_job():
@@ -78,7 +101,7 @@ def test_warm_up_in_this_process_for_one_job():
     with TaskExecutor(1, warm_up=_warm_up) as ex:
         first = [r.value for r in ex.map(_warm_state, range(3))]
         second = [r.value for r in ex.map(_warm_state, range(2))]
-    assert {pid for _, pid, _ in first + second} == {os.getpid()}
+    assert {pid for _, pid, _, _ in first + second} == {os.getpid()}
     assert _WARM["calls"] == 1
     _WARM.clear()
 
@@ -86,10 +109,11 @@ def test_warm_up_in_this_process_for_one_job():
 def test_no_worker_process_outlives_the_call():
     before = {p.pid for p in _children()}
     with TaskExecutor(2) as ex:
-        assert sorted(r.value for r in ex.map(_square, range(4))) == [0, 1, 4, 9]
-        assert len({p.pid for p in _children()} - before) >= 1
-        # a second map reuses the same workers
-        assert sorted(r.value for r in ex.map(_square, range(3))) == [0, 1, 4]
+        assert sorted(r.value[0] for r in ex.map(_warm_state, range(16))) == list(range(16))
+        workers = {p.pid for p in _children()} - before
+        assert len(workers) >= 1
+        # a second map, however small, goes to the same workers
+        assert {r.value for r in ex.map(_pid, range(3))} <= workers
     assert {p.pid for p in _children()} - before == set()
 
 
@@ -135,3 +159,56 @@ def test_dask_unreachable_scheduler_is_one_line_error(monkeypatch):
     monkeypatch.setattr("ballscan.parallel.DASK_CONNECT_TIMEOUT_S", 1.0)
     with pytest.raises(BallscanError, match="cannot connect"):
         list(run_tasks(_square, [1], scheduler="tcp://127.0.0.1:1"))
+
+
+# ---------------------------------------------------------------- workers forked from a warm process
+FORKED = r"""
+import json, os, sys, time
+import numpy, scipy.linalg  # their BLAS thread pools start here, at the parent's size
+sys.path.insert(0, {tests!r})
+import test_parallel as T
+from ballscan.parallel import TaskExecutor
+
+def state(x):
+    from threadpoolctl import threadpool_info
+    time.sleep(0.05)
+    return T._WARM.get("pid", -1), T._WARM.get("calls", 0), os.getpid(), max(i["num_threads"] for i in threadpool_info())
+
+with TaskExecutor(2, warm_up=T._warm_up) as ex:
+    out = [r.value for r in ex.map(state, range(10))]
+    print(json.dumps({{"method": ex.start_method, "parent": os.getpid(), "out": out}}), flush=True)
+    if {hang}:
+        list(ex.map(time.sleep, [30.0] * 4))
+"""
+
+
+def _forked(hang: bool) -> subprocess.Popen:
+    code = FORKED.format(tests=os.path.dirname(__file__), hang=hang)
+    return subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def test_forked_workers_start_warm_with_one_thread_and_end_with_the_block():
+    p = _forked(hang=False)
+    out, err = p.communicate(timeout=60)
+    assert p.returncode == 0, err
+    d = json.loads(out)
+    assert d["method"] == "fork"
+    assert {(warm, calls) for warm, calls, _, _ in d["out"]} == {(d["parent"], 1)}  # the warm-up ran once, in the parent
+    assert len({pid for _, _, pid, _ in d["out"]} - {d["parent"]}) >= 1
+    assert {n for _, _, pid, n in d["out"] if pid != d["parent"]} == {1}  # one BLAS/OpenMP thread in the workers
+
+
+def test_forked_workers_end_when_their_parent_is_killed():
+    p = _forked(hang=True)
+    d = json.loads(p.stdout.readline())
+    assert d["method"] == "fork"
+    parent = psutil.Process(p.pid)
+    t0 = time.monotonic()
+    workers = []
+    while time.monotonic() - t0 < 30 and len(workers) < 2:
+        workers = parent.children()
+        time.sleep(0.02)
+    assert len(workers) == 2
+    p.kill()
+    p.communicate(timeout=60)
+    assert psutil.wait_procs(workers, timeout=10.0)[1] == []  # PARENT_POLL_S, not the 30 s sleeps

@@ -20,21 +20,29 @@ Where the tasks run:
 ``jobs == 1`` (or a first map of a single item)
     this process, one item after the other;
 ``jobs > 1`` (or ``-1``: every core available)
-    up to that many local processes (loky, bundled with joblib; no more than
-    the first map's items), each limited to one thread of BLAS/OpenMP/numba:
-    the parallelism is across items.
+    up to that many local processes (no more than the items left), each
+    limited to one thread of BLAS/OpenMP/numba: the parallelism is across
+    items. The first map of a block runs its items here, one after the other
+    (after ``warm_up``), until the items left would take longer serially than
+    with the workers plus their start-up (:data:`FORK_START_S` or
+    :data:`SPAWN_START_S` per worker, against the mean time of the items run
+    so far): too little work never pays for a process. The workers are then
+    forked from this warm process (POSIX, when no other Python thread runs
+    here), so they start with its imports and loaded kernels and the warm-up
+    runs once in all; elsewhere they are fresh loky processes (bundled with
+    joblib) that each run ``warm_up`` first. :attr:`TaskExecutor.start_method`
+    tells which.
 
-The worker processes start with the first :meth:`~TaskExecutor.map` of a
-``with TaskExecutor(...)`` block and serve every map of it; leaving the block
-normally lets them finish and shuts them down, leaving it on an error or an
-interrupt (Ctrl-C, or SIGTERM/SIGHUP turned into one) kills them at once, so
-no worker outlives the block. A local worker also watches its parent
-(:func:`worker_start`): when the parent dies without shutting them down
-(``kill -9``), the workers end within :data:`PARENT_POLL_S` seconds instead of
-finishing their queue. The ``warm_up`` callable runs once in each worker before
-its first task (e.g. loading compiled kernels), in this process for
-``jobs == 1`` and on every worker connected at the first map for Dask; it
-only saves time, a task must not depend on it for its result.
+The worker processes serve every later map of a ``with TaskExecutor(...)``
+block; leaving the block normally lets them finish and shuts them down,
+leaving it on an error or an interrupt (Ctrl-C, or SIGTERM/SIGHUP turned into
+one) kills them at once, so no worker outlives the block. A local worker also
+watches its parent (:func:`worker_start`): when the parent dies without
+shutting them down (``kill -9``), the workers end within :data:`PARENT_POLL_S`
+seconds instead of finishing their queue. The ``warm_up`` callable (e.g.
+loading compiled kernels) runs before the first task in this process, in each
+fresh (loky) worker, and on every worker connected at the first map for Dask;
+it only saves time, a task must not depend on it for its result.
 
 Only the errors module and third-party libraries are imported here (the
 base layer of the package).
@@ -54,7 +62,7 @@ from typing import Any, Generic, TypeVar
 
 from .errors import BallscanError
 
-__all__ = ["DASK_CONNECT_TIMEOUT_S", "PARENT_POLL_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "worker_start"]
+__all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "worker_start"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -64,6 +72,16 @@ DASK_CONNECT_TIMEOUT_S = 20.0
 
 #: Seconds between a local worker's checks that its parent process is alive.
 PARENT_POLL_S = 0.2
+
+#: Seconds a worker forked from a warm process costs before its first task
+#: (the fork of a process holding the estimator's loaded kernels, the thread
+#: limits and the parent watch: 0.033-0.037 s for two workers measured on a
+#: 2-core machine), rounded up.
+FORK_START_S = 0.05
+
+#: Seconds a fresh worker costs before its first task: importing the package
+#: and loading its compiled kernels (about 1.1 CPU-s measured for the estimator).
+SPAWN_START_S = 1.5
 
 #: Thread-count variables of the numerical libraries, set to 1 in local workers
 #: (several processes on one machine: one thread each, no oversubscription).
@@ -136,6 +154,36 @@ def worker_start(warm_up: Callable[[], Any] | None = None) -> None:
         warm_up()
 
 
+def _forked_worker_start() -> None:
+    """The initializer of a worker forked from a warm process: default signal handling, one thread, parent watch.
+
+    The fork inherits the parent's signal handlers (a command's stop
+    handlers) and its thread pools' sizes; a worker gets Python's defaults
+    (SIGINT raises ``KeyboardInterrupt``, SIGTERM/SIGHUP end it) and one
+    thread per native library (``threadpoolctl``), as a fresh worker does
+    through its environment.
+    """
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        signal.signal(sig, signal.SIG_DFL)
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(1)
+    worker_start(None)
+
+
+def _can_fork() -> bool:
+    """Whether workers may be forked from this process: a POSIX fork and no other Python thread running here.
+
+    A thread of this process could hold a lock at the fork that the child
+    then never sees released; native threads of the numerical libraries
+    (OpenBLAS) take care of the fork themselves.
+    """
+    import multiprocessing
+
+    return "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+
+
 def _one_line(exc: BaseException) -> str:
     text = " ".join(str(exc).split())
     return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
@@ -165,14 +213,16 @@ class _Bar:
 
         self._p = Progress(
             TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-            console=console,
+            console=console, auto_refresh=False,
         )  # fmt: skip
         self._task = self._p.add_task(label, total=total)
         self._p.start()
 
     def advance(self) -> None:
+        # refreshed here, not by a thread of its own: workers may be forked from this process
         if self._p is not None:
             self._p.advance(self._task)
+            self._p.refresh()
 
     def stop(self) -> None:
         if self._p is not None:
@@ -208,9 +258,15 @@ class TaskExecutor:
         self.scheduler = scheduler
         self.warm_up = warm_up
         self.progress = progress
-        self._pool = None  # loky ProcessPoolExecutor
+        self._pool = None  # a concurrent.futures or loky ProcessPoolExecutor
+        self._start_method: str | None = None
         self._client = None  # distributed.Client
         self._warmed = False
+
+    @property
+    def start_method(self) -> str | None:
+        """How the local workers started: ``"fork"`` (from this warm process), ``"loky"`` (fresh processes), or None while none runs."""
+        return self._start_method if self._pool is not None else None
 
     # ------------------------------------------------------------------ lifetime
     def __enter__(self) -> "TaskExecutor":
@@ -229,11 +285,13 @@ class TaskExecutor:
             they finish the tasks they are running first.
         """
         pool, self._pool = self._pool, None
+        self._start_method = None
         if pool is not None:
             if kill:
                 # SIGKILL each worker; the pool then fails its pending futures
                 # and its shutdown returns at once (loky's own kill_workers
-                # breaks on futures already cancelled)
+                # breaks on futures already cancelled; both pools keep their
+                # processes by pid in _processes)
                 for proc in list(getattr(pool, "_processes", {}).values()):
                     if proc.pid is not None and proc.is_alive():
                         with contextlib.suppress(OSError):
@@ -256,7 +314,9 @@ class TaskExecutor:
             return
         if self.scheduler is not None:
             results = self._map_dask(func, todo)
-        elif self._pool is None and min(self.jobs, len(todo)) == 1:
+        elif self._pool is not None:
+            results = self._map_pool(func, todo)
+        elif min(self.jobs, len(todo)) == 1:
             # one worker would do: no process to start
             results = self._map_here(func, todo)
         else:
@@ -277,21 +337,59 @@ class TaskExecutor:
         finally:
             bar.stop()
 
-    def _map_here(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+    def _warm_here(self) -> None:
         if self.warm_up is not None and not self._warmed:
             self.warm_up()
             self._warmed = True
+
+    def _map_here(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+        self._warm_here()
         for item in todo:
             value, error = _call(func, item)
             yield TaskResult(item, value, error)
 
+    def _worth_workers(self, n_left: int, item_s: float) -> bool:
+        """Whether ``n_left`` items of ``item_s`` seconds each finish sooner on workers, their start-up included."""
+        n = min(self.jobs, n_left)
+        start_s = (FORK_START_S if _can_fork() else SPAWN_START_S) * n
+        return n > 1 and n_left * item_s * (1.0 - 1.0 / n) > start_s
+
     def _map_local(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
-        if self._pool is None:
+        """The items here, timed, until the rest is worth the workers' start-up; the rest on the workers."""
+        self._warm_here()
+        spent = 0.0
+        for k, item in enumerate(todo):
+            if k and self._worth_workers(len(todo) - k, spent / k):
+                yield from self._map_pool(func, todo[k:])
+                return
+            t0 = time.perf_counter()
+            value, error = _call(func, item)
+            spent += time.perf_counter() - t0
+            yield TaskResult(item, value, error)
+
+    def _start_pool(self, n_workers: int) -> None:
+        if _can_fork():
+            import multiprocessing
+            import warnings
+            from concurrent.futures import ProcessPoolExecutor
+
+            pool = ProcessPoolExecutor(n_workers, mp_context=multiprocessing.get_context("fork"), initializer=_forked_worker_start)
+            with warnings.catch_warnings():
+                # Python >= 3.12 warns of a fork beside the numerical
+                # libraries' native threads (no other Python thread runs:
+                # _can_fork); the pool forks every worker at its first submit
+                warnings.simplefilter("ignore", DeprecationWarning)
+                pool.submit(int).result()
+            self._pool, self._start_method = pool, "fork"
+        else:
             from joblib.externals.loky.process_executor import ProcessPoolExecutor
 
-            self._pool = ProcessPoolExecutor(
-                min(self.jobs, len(todo)), initializer=worker_start, initargs=(self.warm_up,), env=dict(_ONE_THREAD_ENV)
-            )
+            self._pool = ProcessPoolExecutor(n_workers, initializer=worker_start, initargs=(self.warm_up,), env=dict(_ONE_THREAD_ENV))
+            self._start_method = "loky"
+
+    def _map_pool(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
+        if self._pool is None:
+            self._start_pool(min(self.jobs, len(todo)))
         pending = {self._pool.submit(_call, func, item): item for item in todo}
         try:
             while pending:
