@@ -166,10 +166,15 @@ def _forked_worker_start() -> None:
     signal.signal(signal.SIGINT, signal.default_int_handler)
     for sig in (signal.SIGTERM, signal.SIGHUP):
         signal.signal(sig, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)  # blocked by the parent around the fork
     from threadpoolctl import threadpool_limits
 
     threadpool_limits(1)
     worker_start(None)
+
+
+#: The signals that stop a command, held back while workers are forked.
+_STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
 
 
 def _can_fork() -> bool:
@@ -374,12 +379,19 @@ class TaskExecutor:
             from concurrent.futures import ProcessPoolExecutor
 
             pool = ProcessPoolExecutor(n_workers, mp_context=multiprocessing.get_context("fork"), initializer=_forked_worker_start)
-            with warnings.catch_warnings():
-                # Python >= 3.12 warns of a fork beside the numerical
-                # libraries' native threads (no other Python thread runs:
-                # _can_fork); the pool forks every worker at its first submit
-                warnings.simplefilter("ignore", DeprecationWarning)
-                pool.submit(int).result()
+            # A stop signal is held back until the forks are done: its
+            # handler's exception raised inside the fork's own hooks would be
+            # dropped (and the children would inherit it pending).
+            mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
+            try:
+                with warnings.catch_warnings():
+                    # Python >= 3.12 warns of a fork beside the numerical
+                    # libraries' native threads (no other Python thread runs:
+                    # _can_fork); the pool forks every worker at its first submit
+                    warnings.simplefilter("ignore", DeprecationWarning)
+                    pool.submit(int).result()
+            finally:
+                signal.pthread_sigmask(signal.SIG_SETMASK, mask)
             self._pool, self._start_method = pool, "fork"
         else:
             from joblib.externals.loky.process_executor import ProcessPoolExecutor
