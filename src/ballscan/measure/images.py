@@ -36,6 +36,7 @@ refusal naming the file, not a ``MemoryError``.
 
 from __future__ import annotations
 
+import io
 import os
 import struct
 import warnings
@@ -111,6 +112,17 @@ _PNG_DEPTHS = {0: (1, 2, 4, 8, 16), 2: (8, 16), 3: (1, 2, 4, 8), 4: (8, 16), 6: 
 _ADAM7 = ((0, 0, 8, 8), (4, 0, 8, 8), (0, 4, 4, 8), (2, 0, 4, 4), (0, 2, 2, 4), (1, 0, 2, 2), (0, 1, 1, 2))
 #: Bytes a PNG may hold beyond its compressed pixels (metadata chunks, zlib's framing) before it is refused unread.
 _PNG_SLACK_BYTES = 16 << 20
+#: Largest decompressed image data kept to hand to Pillow (:func:`_stored_png`); above it the data is counted piece by piece.
+_PNG_KEEP_BYTES = 64 << 20
+
+
+@dataclass(frozen=True)
+class _PngBody:
+    """What the chunk walk found: the palette's entries, the bytes before the first IDAT, and the checked image data (None when too large to keep)."""
+
+    palette: int
+    head: bytes
+    data: bytes | None
 
 
 @dataclass(frozen=True)
@@ -165,16 +177,14 @@ def _png_header(head: bytes, src: str, max_pixels: int) -> _PngHeader:
     return _PngHeader(width, height, depth, colour, interlace)
 
 
-def _check_png(raw: bytes, src: str, header: _PngHeader) -> int:
-    """Walk the PNG's chunks (CRCs, order, palette) and check that its data decompresses to exactly the declared size.
-
-    Returns the palette's number of entries (0 without a palette).
-    """
+def _check_png(raw: bytes, src: str, header: _PngHeader) -> _PngBody:
+    """Walk the PNG's chunks (CRCs, order, palette) and check that its data decompresses to exactly the declared size."""
     pos = len(_PNG_SIGNATURE) + 25
     n = len(raw)
     idat: list[bytes] = []
     palette = 0
     seen_iend = False
+    first_idat = 0
     while pos < n:
         if pos + 8 > n:
             raise ImageFileError(src, "truncated PNG (incomplete chunk header)")
@@ -194,6 +204,7 @@ def _check_png(raw: bytes, src: str, header: _PngHeader) -> int:
         if ctype == b"PLTE":
             palette = _check_palette(length, header, bool(idat), palette, src)
         elif ctype == b"IDAT":
+            first_idat = first_idat or pos
             idat.append(body[4:])
         elif ctype == b"IEND":
             seen_iend = True
@@ -205,8 +216,8 @@ def _check_png(raw: bytes, src: str, header: _PngHeader) -> int:
         raise ImageFileError(src, "truncated PNG (no IEND chunk)")
     if header.colour == 3 and not palette:
         raise ImageFileError(src, "corrupt PNG (a palette image without a PLTE palette)")
-    _check_png_data(idat, header, src)
-    return palette
+    data = _check_png_data(idat, header, src, keep=header.filtered_bytes() <= _PNG_KEEP_BYTES)
+    return _PngBody(palette, raw[:first_idat], data)
 
 
 def _check_palette(length: int, header: _PngHeader, after_data: bool, seen: int, src: str) -> int:
@@ -223,16 +234,23 @@ def _check_palette(length: int, header: _PngHeader, after_data: bool, seen: int,
     return entries
 
 
-def _check_png_data(idat: list[bytes], header: _PngHeader, src: str, piece: int = 1 << 24) -> None:
-    """The IDAT chunks' zlib stream decompresses to exactly the bytes the header declares (counted piece by piece, in bounded memory)."""
+def _check_png_data(idat: list[bytes], header: _PngHeader, src: str, piece: int = 1 << 24, keep: bool = False) -> bytes | None:
+    """The IDAT chunks' zlib stream decompresses to exactly the bytes the header declares (counted piece by piece, in bounded memory).
+
+    With ``keep`` the decompressed data is returned (else None), for Pillow
+    to decode without decompressing it again (:func:`_stored_png`).
+    """
     expected = header.filtered_bytes()
     d = zlib.decompressobj()
     got = 0
+    kept: list[bytes] = []
     try:
         for data in idat:
             while data and got <= expected:
                 out = d.decompress(data, piece)
                 got += len(out)
+                if keep:
+                    kept.append(out)
                 data = d.unconsumed_tail
             if got > expected or d.eof:
                 break
@@ -242,6 +260,8 @@ def _check_png_data(idat: list[bytes], header: _PngHeader, src: str, piece: int 
                 got += len(d.flush())
                 break
             got += len(out)
+            if keep:
+                kept.append(out)
     except zlib.error as exc:
         raise ImageFileError(src, f"corrupt PNG (image data: {_one_line(exc)})") from None
     if got > expected:
@@ -251,6 +271,21 @@ def _check_png_data(idat: list[bytes], header: _PngHeader, src: str, piece: int 
         raise ImageFileError(src, f"truncated PNG (image data holds {got} of the {expected} bytes its header declares{what})")
     if not d.eof:
         raise ImageFileError(src, "truncated PNG (the compressed image data does not end)")
+    return b"".join(kept) if keep else None
+
+
+def _stored_png(head: bytes, data: bytes) -> bytes:
+    """A PNG of the chunks ``head`` (signature to the first IDAT) and the checked image ``data`` in stored (uncompressed) deflate blocks.
+
+    The strict check of the data's length must decompress it (Pillow pads a
+    short stream with zeros silently); handed over this way, Pillow's own
+    decompression is a copy. On a 2048 x 300 8-bit image the check costs
+    1.8-1.9 ms besides Pillow's 2.5 ms decode, and decoding the stored copy
+    instead costs 0.35-0.4 ms above Pillow's decode alone.
+    """
+    stored = zlib.compress(data, 0)
+    idat = struct.pack(">I", len(stored)) + b"IDAT" + stored + struct.pack(">I", zlib.crc32(stored, zlib.crc32(b"IDAT")) & 0xFFFFFFFF)
+    return head + idat + struct.pack(">I", 0) + b"IEND" + struct.pack(">I", zlib.crc32(b"IEND") & 0xFFFFFFFF)
 
 
 def _read_png(path: Path, src: str, size: int, max_pixels: int) -> tuple[np.ndarray, int]:
@@ -266,7 +301,8 @@ def _read_png(path: Path, src: str, size: int, max_pixels: int) -> tuple[np.ndar
             raw = head + fh.read()
     except OSError as exc:
         raise ImageFileError(src, f"cannot read ({_one_line(exc)})") from None
-    palette = _check_png(raw, src, header)
+    body = _check_png(raw, src, header)
+    palette = body.palette
     del raw
     try:
         with warnings.catch_warnings():
@@ -274,7 +310,9 @@ def _read_png(path: Path, src: str, size: int, max_pixels: int) -> tuple[np.ndar
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)
             # The plugin class is used directly: Image.open would apply Pillow's
             # process-wide MAX_IMAGE_PIXELS instead of the caller's max_pixels.
-            with PngImagePlugin.PngImageFile(str(path)) as im:
+            source = str(path) if body.data is None else io.BytesIO(_stored_png(body.head, body.data))
+            del body
+            with PngImagePlugin.PngImageFile(source) as im:
                 im.load()
                 if im.mode == "P":
                     top = int(np.asarray(im).max())
