@@ -20,8 +20,11 @@ run from writing the same CSV; an ``OUT`` that is a symbolic link is refused
 unless forced.
 
 Work is spread over local processes or a Dask distributed cluster
-(``scheduler="tcp://host:port"``) by :class:`ballscan.parallel.TaskExecutor`;
-each worker loads the estimator once before its first input.
+(``scheduler="tcp://host:port"``) by :class:`ballscan.parallel.TaskExecutor`:
+this process loads the estimator, measures the first inputs itself and forks
+its local workers from there once the inputs left are worth their start-up
+(each starts with the estimator loaded); a Dask worker loads it once before
+its first input.
 """
 
 from __future__ import annotations
