@@ -55,14 +55,14 @@ def _children() -> list[psutil.Process]:
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_every_item_completes(jobs):
+def test_every_item_completes(jobs, cheap_workers):
     out = list(run_tasks(_square, range(7), jobs=jobs))
     assert all(isinstance(r, TaskResult) and r.ok for r in out)
     assert sorted((r.item, r.value) for r in out) == [(i, i * i) for i in range(7)]
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_a_failing_task_is_a_result_and_the_others_complete(jobs):
+def test_a_failing_task_is_a_result_and_the_others_complete(jobs, cheap_workers):
     out = {r.item: r for r in run_tasks(_fail_on_three, range(6), jobs=jobs)}
     assert sorted(out) == list(range(6))
     bad = out[3]
@@ -71,7 +71,14 @@ def test_a_failing_task_is_a_result_and_the_others_complete(jobs):
     assert all(out[i].ok and out[i].value == i for i in (0, 1, 2, 4, 5))
 
 
-def test_every_task_runs_warm_and_workers_share_the_work():
+@pytest.fixture
+def cheap_workers(monkeypatch):
+    """Worker start-up taken as free: the workers start after the first item whichever way they start (a suite may run threads, which rules out the fork)."""
+    monkeypatch.setattr("ballscan.parallel.FORK_START_S", 0.0)
+    monkeypatch.setattr("ballscan.parallel.SPAWN_START_S", 0.0)
+
+
+def test_every_task_runs_warm_and_workers_share_the_work(cheap_workers):
     _WARM.clear()
     with TaskExecutor(2, warm_up=_warm_up) as ex:
         out = [r.value for r in ex.map(_warm_state, range(16))]
@@ -106,7 +113,7 @@ def test_warm_up_in_this_process_for_one_job():
     _WARM.clear()
 
 
-def test_no_worker_process_outlives_the_call():
+def test_no_worker_process_outlives_the_call(cheap_workers):
     before = {p.pid for p in _children()}
     with TaskExecutor(2) as ex:
         assert sorted(r.value[0] for r in ex.map(_warm_state, range(16))) == list(range(16))
@@ -117,7 +124,7 @@ def test_no_worker_process_outlives_the_call():
     assert {p.pid for p in _children()} - before == set()
 
 
-def test_no_worker_process_outlives_an_error_in_the_loop():
+def test_no_worker_process_outlives_an_error_in_the_loop(cheap_workers):
     before = {p.pid for p in _children()}
     with pytest.raises(RuntimeError, match="stop"):
         for _ in run_tasks(_warm_state, range(20), jobs=2):
@@ -126,7 +133,7 @@ def test_no_worker_process_outlives_an_error_in_the_loop():
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_keyboard_interrupt_stops_everything(jobs):
+def test_keyboard_interrupt_stops_everything(jobs, cheap_workers):
     before = {p.pid for p in _children()}
     seen = []
     with pytest.raises(KeyboardInterrupt):
