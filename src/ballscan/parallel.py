@@ -379,6 +379,7 @@ class TaskExecutor:
             from concurrent.futures import ProcessPoolExecutor
 
             pool = ProcessPoolExecutor(n_workers, mp_context=multiprocessing.get_context("fork"), initializer=_forked_worker_start)
+            self._pool, self._start_method = pool, "fork"  # close() stops it whatever happens below
             # A stop signal is held back until the forks are done: its
             # handler's exception raised inside the fork's own hooks would be
             # dropped (and the children would inherit it pending).
@@ -392,7 +393,6 @@ class TaskExecutor:
                     pool.submit(int).result()
             finally:
                 signal.pthread_sigmask(signal.SIG_SETMASK, mask)
-            self._pool, self._start_method = pool, "fork"
         else:
             from joblib.externals.loky.process_executor import ProcessPoolExecutor
 
