@@ -13,9 +13,10 @@ import pytest
 from ballscan.geometry.rig import WorldMotion, load_rig
 from ballscan.lab.presets import get_preset
 from ballscan.lab.rig import RIG_PRESETS, camera_about_lane, simulate_rig
-from ballscan.model.render import render
+from ballscan.model.render import Appearance, render
 from ballscan.pipeline.estimate import estimate_image
-from ballscan.pipeline.rig import combined_start, estimate_rig, match_window_s, single_camera_rig
+from ballscan.pipeline.recipe import Recipe
+from ballscan.pipeline.rig import combined_start, estimate_rig, match_window_s, measure_group, own_block, single_camera_rig
 from ballscan.solve.constraint import Constraint, parse_constraint
 from ballscan.solve.joint import JointCamera, JointLayout, JointProblem, fit_joint
 from ballscan.solve.problem import BlockState, ResidualBlock
@@ -84,6 +85,27 @@ def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
     own = estimate_image(sim.images[0], LANE.rig.cameras[0].camera, LANE.motion.radius_m).balls[0]
     np.testing.assert_allclose(b.motion.velocity_mps, LANE.rig.cameras[0].camera.vectors_to_world(own.velocity_mps), rtol=1e-12)
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+
+
+def test_a_uniform_balls_window_edges_enter_the_joint_fit_as_their_pixels():
+    # a flat ball on the default sensor (column gains scatter): each camera's own fit takes window edges,
+    # the joint fit those windows' pixels (the pixel model describes the ball)
+    sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, Appearance(ball_level=0.65, shading=False), seed=14)
+    b = estimate_rig(sim.images, LANE.rig, LANE.motion.radius_m).balls[0]
+    assert b.cameras == ("side", "top") and b.flags == ()
+    for e in b.estimates.values():
+        assert e.record.final_fit == "edges" and e.pixel_limb is not None
+        edges, settings = own_block(e, Recipe())
+        assert settings == Recipe().pixel_fit and edges.profile_shade is not None
+        # without the limb model the block keeps the edges
+        assert own_block(replace(e, pixel_limb=None), Recipe())[1] == Recipe().edge_fit
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+    # the pixels hold more than the edges: the speed's and the direction's sigmas shrink
+    picks = {k: replace(b.estimates[rc.name], pixel_limb=None) for k, rc in enumerate(LANE.rig.cameras)}
+    edges_only = measure_group(LANE.rig, picks, LANE.motion.radius_m)
+    assert edges_only.flags == ()
+    assert b.speed()[1] < 0.9 * edges_only.speed()[1]
+    assert b.direction()[1] < 0.9 * edges_only.direction()[1] and b.direction()[3] < 0.9 * edges_only.direction()[3]
 
 
 def test_a_wrong_pose_is_flagged(lane_render):

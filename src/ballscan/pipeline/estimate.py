@@ -235,6 +235,7 @@ def _fit_estimate(
         record=record,
         covariance=cov,
         fitted_edges=final.edges,
+        pixel_limb=final.pixel_limb,
         extra={
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,

@@ -20,6 +20,7 @@ from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, 
 
 if TYPE_CHECKING:
     from ..measure.edges import EdgeMeasurements
+    from ..measure.shading import LimbProfile
     from .recipe import Recipe
     from .stages import StageRecord
 
@@ -90,6 +91,10 @@ class BallEstimate:
         The edges the reported fit used (a joint fit of several cameras
         fits them again, :mod:`ballscan.pipeline.rig`); not part of the JSON
         output. None for the paper's method.
+    pixel_limb : LimbProfile or None
+        Where the reported fit took edges although the pixel model describes
+        the ball: the limb model they were measured with (the joint fit
+        fits their windows' pixels instead); not part of the JSON output.
     """
 
     method: str
@@ -112,6 +117,7 @@ class BallEstimate:
     record: "StageRecord | None" = field(default=None, compare=False)
     covariance: np.ndarray | None = field(default=None, compare=False, repr=False)
     fitted_edges: "EdgeMeasurements | None" = field(default=None, compare=False, repr=False)
+    pixel_limb: "LimbProfile | None" = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position_m", _tuple3(self.position_m))

@@ -22,10 +22,13 @@ from typing import Any
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
+from ..measure.edges import EdgeMeasurements
+from ..measure.shading import shade_profile
 from ..geometry.rig import Rig, RigCamera, WorldMotion, camera_params, plane_crossing, viewing_plane, world_crossing
 from ..solve.constraint import Constraint
 from ..solve.derived import WORLD_COVARIANCE_PARAMETERS, derive, launch_angles, world_covariance
 from ..solve.joint import JointCamera, JointResult, fit_joint
+from ..solve.settings import FitSettings
 from .estimate import estimate_image
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport
@@ -39,6 +42,7 @@ __all__ = [
     "estimate_rig",
     "match_window_s",
     "measure_group",
+    "own_block",
     "own_state",
     "predicted_crossing",
     "single_camera_rig",
@@ -414,6 +418,50 @@ def _single(rig: Rig, k: int, e: BallEstimate, flags: tuple[str, ...]) -> RigBal
     return RigBall((name,), motion, dv.world_covariance, flags + extra, {name: e})
 
 
+def own_block(e: BallEstimate, recipe: Recipe) -> tuple[EdgeMeasurements, FitSettings]:
+    """A camera's block in the joint fit: its edges and the settings of their residuals.
+
+    Where the camera's own fit took pixels (its final fit's path,
+    :class:`ballscan.pipeline.stages.FinalFit`), the block takes them as it
+    did: the pixels of the edge windows and of the ball's ends
+    (``recipe.pixel_fit``, the pixel fit), or the ends' and the spread
+    lines' pixels beside the matched edges (``recipe.spread_fit``).  Where
+    it took edges although the pixel model describes the ball
+    (:attr:`BallEstimate.pixel_limb`: a uniform ball whose sensor's column
+    gains scatter, measured with window edges), the block fits those
+    edges' windows' pixels in their place (``recipe.pixel_fit``): a window
+    edge keeps of a short, fast ball's pixels less than they hold (each
+    camera's own window-edge fit is 1.6-1.9x its pixel Cramér-Rao bound on
+    the lane rig's balls, its pixel fit 1.1x).  Otherwise the edges and end
+    areas (``recipe.edge_fit``).
+
+    Parameters
+    ----------
+    e : BallEstimate
+        One camera's estimate, with its ``fitted_edges``.
+    recipe : Recipe
+        The estimator's recipe (its fit settings).
+    """
+    path = None if e.record is None else e.record.final_fit
+    edges = e.fitted_edges
+    if path == "pixels":
+        return edges, recipe.pixel_fit
+    if path == "spread":
+        return edges, recipe.spread_fit
+    if e.pixel_limb is not None:
+        shade = shade_profile(e.pixel_limb, edges)
+        if shade is not None:
+            return replace(edges, profile_shade=shade), recipe.pixel_fit
+    return edges, recipe.edge_fit
+
+
+def _block(e: BallEstimate, recipe: Recipe, clock_offset_s: float | None) -> tuple:
+    """:class:`JointCamera`'s fields after its camera: edges, clock offset, settings, and whether its partial lines enter levelled."""
+    edges, settings = own_block(e, recipe)
+    levelled = bool(e.extra.get("partial_levelled", False)) and not settings.pixels
+    return edges, clock_offset_s, settings, levelled
+
+
 def _joint_ball(rig: Rig, group: dict[int, int], reports, radius_m: float, recipe: Recipe, constraint: Constraint | None) -> RigBall:
     return measure_group(rig, {k: reports[k].balls[j] for k, j in group.items()}, radius_m, recipe, constraint)
 
@@ -445,8 +493,7 @@ def measure_group(
     motion0, offsets = start
     order = sorted(usable)
     cams = [
-        JointCamera(rig.cameras[k].name, cameras.get(k, rig.cameras[k].camera), usable[k].fitted_edges, rig.cameras[k].clock_offset_s, recipe.edge_fit,
-                    bool(usable[k].extra.get("partial_levelled", False)))
+        JointCamera(rig.cameras[k].name, cameras.get(k, rig.cameras[k].camera), *_block(usable[k], recipe, rig.cameras[k].clock_offset_s))
         for k in order
     ]
     offs = [offsets[rig.unknown_clocks.index(k)] for k in order if not rig.cameras[k].clock_known]

@@ -315,12 +315,15 @@ class PixelFit:
     """The asked-for fit of the ball's edge windows' and ends' pixels (``Recipe.pixels``).
 
     ``state`` is "off" where it was not asked for, "used" where it
-    converged (then ``fit`` is it), else why not.
+    converged (then ``fit`` is it and ``edges`` the edges it fitted, with
+    the surface brightness its pixel model multiplies the coverage by), else
+    why not.
     """
 
     state: PixelsState
     fit: FitResult | None = None
     time_s: float = 0.0
+    edges: EdgeMeasurements | None = None
 
 
 def pixel_fit_stage(ball: BallInput, first: FirstFit, shading: Shading) -> PixelFit:
@@ -339,7 +342,7 @@ def pixel_fit_stage(ball: BallInput, first: FirstFit, shading: Shading) -> Pixel
     fit = fit_motion(ball.camera, shaded, first.start, ball.recipe.pixel_fit)
     if not fit.converged:
         return PixelFit("not_converged", time_s=time.perf_counter() - t0)
-    return PixelFit("used", fit, time.perf_counter() - t0)
+    return PixelFit("used", fit, time.perf_counter() - t0, shaded)
 
 
 # ------------------------------------------------------ 6. second measurement
@@ -485,13 +488,19 @@ class FinalFit:
         where the shading path did not give a converged fit.
     fit : FitResult
     edges : EdgeMeasurements
-        The edges fitted.
+        The edges fitted (on the pixel paths with the surface brightness
+        the pixel model multiplies the coverage by, ``profile_shade``).
     shading : ShadingModel or None
         The shading law of the shading path's fit (None on ``"first_edges"``).
     time_attempts_s : float
         Seconds of the shading path's fits.
     time_refit_s : float
         Seconds of the refit's limb model (and of a refit not adopted).
+    pixel_limb : LimbProfile or None
+        On the ``"edges"`` path, where the pixel model describes the ball
+        (:func:`pixel_fit_refusal` None): the limb model its edges were
+        measured with, from which the pixels of their windows can be fitted
+        in their place (a rig's joint fit, :mod:`ballscan.pipeline.rig`).
     """
 
     path: FinalPath
@@ -500,6 +509,7 @@ class FinalFit:
     shading: ShadingModel | None = None
     time_attempts_s: float = 0.0
     time_refit_s: float = 0.0
+    pixel_limb: LimbProfile | None = None
 
 
 def final_fit_stage(
@@ -516,12 +526,13 @@ def final_fit_stage(
     """
     recipe = ball.recipe
     if pixel.fit is not None and shading is not None:
-        return FinalFit("pixels", pixel.fit, shading.edges, shading.limb.shading)
+        return FinalFit("pixels", pixel.fit, pixel.edges, shading.limb.shading)
     t0 = time.perf_counter()
     shaded = None if second is None else _shaded_fit(ball, first, second)
     attempts_s = time.perf_counter() - t0
     if shaded is not None and shaded.fit.converged:
-        return replace(shaded, time_attempts_s=attempts_s)
+        uniform = shaded.path == "edges" and shading is not None and shading.refusal is None
+        return replace(shaded, time_attempts_s=attempts_s, pixel_limb=second.limb if uniform else None)
     start = first.start if recipe.shading and first.start is not None else guess.motion
     fit = fit_motion(ball.camera, first.edges, start, recipe.edge_fit)
     return FinalFit("first_edges", fit, first.edges, None, attempts_s, 0.0 if shaded is None else shaded.time_refit_s)
@@ -533,9 +544,10 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
     edges, limb = second.edges, second.limb
     if second.kind != "window" and int(np.sum(edges.left_ok & edges.right_ok)) >= recipe.spread_min_lines:
         # the narrow edges matched: the ends' and the spread edges' pixels in their place
-        spread = fit_motion(camera, replace(edges, profile_shade=shade_profile(limb, edges)), first.start, recipe.spread_fit)
+        shaded = replace(edges, profile_shade=shade_profile(limb, edges))
+        spread = fit_motion(camera, shaded, first.start, recipe.spread_fit)
         if spread.converged:
-            return FinalFit("spread", spread, edges, limb.shading)
+            return FinalFit("spread", spread, shaded, limb.shading)
     fit = fit_motion(camera, edges, first.start, recipe.edge_fit)
     if not (recipe.refit_law and second.kind == "window" and fit.converged):
         return FinalFit("edges", fit, edges, limb.shading)
