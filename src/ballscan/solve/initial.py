@@ -388,7 +388,17 @@ def find_keypoints(
     def line_centroid(r: int) -> tuple[float, float]:
         cols = np.flatnonzero(ball_mask[r])
         lo, hi = max(cols[0] - 2, 0), min(cols[-1] + 3, box.shape[1])
-        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi])
+        s_row = sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi]
+        c, s = _centroid(box[r, lo:hi], s_row)
+        if not math.isfinite(c):
+            # the line shows the ball only on the background's other side (the
+            # shaded or dark-textured end of a bright ball): its centroid is
+            # that of the opposite deviation
+            c, s = _centroid(-box[r, lo:hi], s_row)
+        if not math.isfinite(c):
+            # no deviation at all: the detected pixels' middle, to a uniform
+            # spread over them
+            c, s = 0.5 * (cols[0] + cols[-1]) - lo, (cols[-1] - cols[0] + 1) / math.sqrt(12.0)
         return c + lo, math.hypot(s, 0.05)
 
     def line_edges(r: int) -> tuple[float, float]:
