@@ -188,6 +188,17 @@ def test_ellipse_of_a_ball_cut_by_both_image_ends():
     assert e.radius_px == pytest.approx(30.0, abs=0.3)
 
 
+def test_ellipse_fit_refuses_straight_limbs():
+    """Two straight edges (a band across the sensor, not a ball): no ellipse of a ball's length fits, so no key points millions of lines away."""
+    rng = np.random.default_rng(1)
+    t = np.arange(0.0, 41.0)
+    lines = np.concatenate([t, t])
+    side = np.concatenate([-np.ones(t.size), np.ones(t.size)])
+    u = np.where(side < 0, 5.0, 60.0) + 0.3 * rng.standard_normal(lines.size)
+    with pytest.raises(ValueError, match="not one ball's limb"):
+        fit_silhouette_ellipse(lines, u, side, ellipse_starts(0.0, 40.0))
+
+
 def test_ellipse_fit_refuses_too_few_points():
     with pytest.raises(ValueError, match="at least 6"):
         fit_silhouette_ellipse(np.arange(5.0), np.zeros(5), np.ones(5), ellipse_starts(0.0, 4.0))

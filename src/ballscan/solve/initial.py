@@ -252,7 +252,8 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
     Raises
     ------
     ValueError
-        Fewer than 6 points, or no ellipse with a positive radius fits them.
+        Fewer than 6 points, no ellipse with a positive radius fits them, or
+        the best one is more than twice as long as the longest of ``starts``.
     """
     from scipy.optimize import minimize  # scipy.optimize loads with the first cut ball
 
@@ -283,6 +284,17 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
     t0, h, coef, res = best
     if not coef[2] > 0:
         raise ValueError("fit_silhouette_ellipse: the limb points fit no ellipse of positive radius")
+    # the starts span every length the ball's lines allow (up to five times
+    # the lines seen where an image end cuts it); an ellipse twice longer
+    # than the longest is the straight edges of something that is not one
+    # ball's limb (a band across the sensor), whose key points would lie
+    # millions of lines away
+    h_max = float(np.max(starts[:, 1]))
+    if not h <= 2.0 * h_max:
+        raise ValueError(
+            f"fit_silhouette_ellipse: the limb points' ellipse spans {2 * h:.4g} lines, more than twice the {2 * h_max:.4g} "
+            "the lines seen allow: they are not one ball's limb"
+        )
     return SilhouetteEllipse(t0, h, float(coef[0]), float(coef[1]), float(coef[2]), float(np.sqrt(np.mean(res**2))), int(t.size))
 
 
