@@ -120,6 +120,24 @@ def test_keypoints_the_same_with_a_row_or_a_box_of_sigmas():
     assert a == b == c
 
 
+@pytest.mark.parametrize("end", ["first", "last"])
+def test_keypoint_on_an_end_line_darker_than_the_background(end):
+    """A bright ball whose first (last) line shows only its shaded end, below the background: u_a (u_b) is that line's centroid, not NaN."""
+    box = np.zeros((9, 12))
+    box[2:7, 3:9] = 1.0
+    r = 2 if end == "first" else 6
+    box[r, :] = 0.0
+    box[r, 5:8] = [-0.2, -0.4, -0.2]  # centroid at pixel 6
+    mask = np.abs(box) > 0.1
+    kp = find_keypoints(box, np.full(12, 0.01), mask, 10, 20, np.arange(40) * 1e-5)
+    u = kp.u_a if end == "first" else kp.u_b
+    assert u == pytest.approx(26.0, abs=1e-9)
+    assert math.isfinite(kp.u_a_sigma_px) and math.isfinite(kp.u_b_sigma_px)
+    cam = LineScanCamera(width=60, focal_px=2000.0, principal_px=30.0, line_rate_hz=1e5)
+    g = initial_guess(kp, cam, 0.02)
+    assert np.all(np.isfinite(g.motion.velocity_mps))
+
+
 # ------------------------------------------------------- cut balls' ellipse
 def _ellipse_points(t0=100.0, h=60.0, u0=20.0, a=0.08, r=30.0, noise=0.05, seed=3):
     """Both limbs of a sheared ellipse on lines t0 - h .. t0 + h, with Gaussian noise (pixels)."""
@@ -168,6 +186,17 @@ def test_ellipse_of_a_ball_cut_by_both_image_ends():
     assert e.line_o == pytest.approx(100.0, abs=1.0)
     assert e.half_lines == pytest.approx(60.0, abs=2.0)
     assert e.radius_px == pytest.approx(30.0, abs=0.3)
+
+
+def test_ellipse_fit_refuses_straight_limbs():
+    """Two straight edges (a band across the sensor, not a ball): no ellipse of a ball's length fits, so no key points millions of lines away."""
+    rng = np.random.default_rng(1)
+    t = np.arange(0.0, 41.0)
+    lines = np.concatenate([t, t])
+    side = np.concatenate([-np.ones(t.size), np.ones(t.size)])
+    u = np.where(side < 0, 5.0, 60.0) + 0.3 * rng.standard_normal(lines.size)
+    with pytest.raises(ValueError, match="not one ball's limb"):
+        fit_silhouette_ellipse(lines, u, side, ellipse_starts(0.0, 40.0))
 
 
 def test_ellipse_fit_refuses_too_few_points():

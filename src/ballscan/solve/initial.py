@@ -252,7 +252,8 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
     Raises
     ------
     ValueError
-        Fewer than 6 points, or no ellipse with a positive radius fits them.
+        Fewer than 6 points, no ellipse with a positive radius fits them, or
+        the best one is more than twice as long as the longest of ``starts``.
     """
     from scipy.optimize import minimize  # scipy.optimize loads with the first cut ball
 
@@ -283,6 +284,17 @@ def fit_silhouette_ellipse(lines: np.ndarray, u_px: np.ndarray, side: np.ndarray
     t0, h, coef, res = best
     if not coef[2] > 0:
         raise ValueError("fit_silhouette_ellipse: the limb points fit no ellipse of positive radius")
+    # the starts span every length the ball's lines allow (up to five times
+    # the lines seen where an image end cuts it); an ellipse twice longer
+    # than the longest is the straight edges of something that is not one
+    # ball's limb (a band across the sensor), whose key points would lie
+    # millions of lines away
+    h_max = float(np.max(starts[:, 1]))
+    if not h <= 2.0 * h_max:
+        raise ValueError(
+            f"fit_silhouette_ellipse: the limb points' ellipse spans {2 * h:.4g} lines, more than twice the {2 * h_max:.4g} "
+            "the lines seen allow: they are not one ball's limb"
+        )
     return SilhouetteEllipse(t0, h, float(coef[0]), float(coef[1]), float(coef[2]), float(np.sqrt(np.mean(res**2))), int(t.size))
 
 
@@ -388,7 +400,17 @@ def find_keypoints(
     def line_centroid(r: int) -> tuple[float, float]:
         cols = np.flatnonzero(ball_mask[r])
         lo, hi = max(cols[0] - 2, 0), min(cols[-1] + 3, box.shape[1])
-        c, s = _centroid(box[r, lo:hi], sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi])
+        s_row = sig[r, lo:hi] if sig.ndim == 2 else sig[lo:hi]
+        c, s = _centroid(box[r, lo:hi], s_row)
+        if not math.isfinite(c):
+            # the line shows the ball only on the background's other side (the
+            # shaded or dark-textured end of a bright ball): its centroid is
+            # that of the opposite deviation
+            c, s = _centroid(-box[r, lo:hi], s_row)
+        if not math.isfinite(c):
+            # no deviation at all: the detected pixels' middle, to a uniform
+            # spread over them
+            c, s = 0.5 * (cols[0] + cols[-1]) - lo, (cols[-1] - cols[0] + 1) / math.sqrt(12.0)
         return c + lo, math.hypot(s, 0.05)
 
     def line_edges(r: int) -> tuple[float, float]:
