@@ -65,6 +65,7 @@ from ._detection_kernels import (
     reflect_median_filter,
     region_values,
 )
+from .clear_lines import ClearLines, clear_line_levels, column_noise, line_levels
 from .images import LineImage
 from .robust import MAD_TO_SIGMA, median
 
@@ -383,8 +384,7 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
     # Per-line level from the line medians: balls cover a minority of a line.
     level = _row_median(xs)
     if known is None:
-        sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
-        start = _column_modes(x, level, sigma0, noise_floor_dn)
+        start = _column_modes(x, xs, step, level, noise_floor_dn)
     else:
         # a writeable copy: the kernels below take writeable arrays (a
         # read-only one would compile a second signature on a stream ball)
@@ -400,12 +400,57 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
     return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)
 
 
-def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float) -> _ColumnStart:
+def _drift_noise(xs: np.ndarray, level: np.ndarray, noise_floor_dn: float) -> tuple[float, bool, np.ndarray]:
+    """The image's noise sigma (DN), whether its drift is a gain, and the columns' noise (DN, floored) of the subsampled ``xs``.
+
+    The noise is measured on the lines levelled both ways (scaled and
+    shifted to the reference level, :func:`ballscan.measure.clear_lines.column_noise`)
+    and raw, and the least is taken: a flickering lamp changes every line's
+    level, and the raw differences of consecutive lines would read that
+    as noise (and choose the offset model on a bright backdrop).
+    """
+    ref = float(median(level))
+    k = -(-xs.shape[0] // _MODE_LINES)
+    sub, lev = xs[::k], level[::k]
+    sigmas = [_global_noise(xs[:, ::2])]
+    cols = None
+    if sub.shape[0] >= 8:
+        per = {g: column_noise(sub, lev, ref, g) for g in ((True, False) if float(level.min()) > 0.0 else (False,))}
+        sigmas += [float(median(v)) for v in per.values()]
+        sigma0 = max(min(sigmas), noise_floor_dn)
+        use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
+        cols = per[use_gain]
+    else:
+        sigma0 = max(sigmas[0], noise_floor_dn)
+        use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
+    if cols is None:
+        cols = np.full(xs.shape[1], sigma0)
+    return sigma0, use_gain, np.maximum(cols, max(noise_floor_dn, 0.25 * float(median(cols))))
+
+
+def _clear_start(x: np.ndarray, level_full: np.ndarray, ref: float, use_gain: bool, noise_floor_dn: float, first: np.ndarray, sigma0: float) -> tuple[ClearLines | None, np.ndarray, np.ndarray]:
+    """The ball-free lines' profile (:mod:`ballscan.measure.clear_lines`), the columns' noise and the lines' first scale (offset) on it."""
+    k = -(-x.shape[0] // _MODE_LINES)
+    sub = x[::k]
+    if sub.shape[0] >= 8:
+        cols = column_noise(sub, level_full[::k], ref, use_gain)
+        cols = np.maximum(cols, max(noise_floor_dn, 0.25 * float(median(cols))))
+    else:
+        cols = np.full(x.shape[1], sigma0)
+    clear = clear_line_levels(x, level_full, ref, cols, use_gain) if x.shape[0] >= 8 else None
+    if clear is None:
+        return None, cols, first
+    return clear, cols, line_levels(x, clear.level_dn, cols, first, clear.scale_range, use_gain)
+
+
+def _column_modes(x: np.ndarray, xs: np.ndarray, step: int, level: np.ndarray, noise_floor_dn: float) -> _ColumnStart:
     """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
     ref = float(median(level))
-    use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
-    gain0 = level / ref if use_gain else np.ones(level.size)
-    offset0 = np.zeros(level.size) if use_gain else level - ref
+    sigma0, use_gain, _ = _drift_noise(xs, level, noise_floor_dn)
+    first = level / ref if use_gain else level - ref
+    clear, col_noise, first = _clear_start(x, level, ref, use_gain, noise_floor_dn, first, sigma0)
+    gain0 = first if use_gain else np.ones(level.size)
+    offset0 = np.zeros(level.size) if use_gain else first
     # The columns' statistics from at most _MODE_LINES evenly spaced lines:
     # their level is then known to a few hundredths of the noise, and the
     # cost of the sorts below does not grow with the image's length.
@@ -437,10 +482,17 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
         # compiled (_detection_kernels.reflect_median_filter): ndi.median_filter's values
         neighbours = reflect_median_filter(col_med, size)
     sig_start = np.full(w, sigma0)
+    if clear is not None:
+        # the ball-free lines' level: the backdrop's own, where a ball covers
+        # most of a column's lines or the backdrop changes across the sensor
+        neighbours = clear.level_dn
     b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
     min_support = max(3, int(np.ceil(0.03 * n)))
     weak = cnt < min_support
-    if np.any(weak):
+    if np.any(weak) and clear is not None:
+        b[weak] = clear.level_dn[weak]
+        sig[weak] = col_noise[weak]
+    elif np.any(weak):
         # A column whose values are nowhere near its neighbours' level is a
         # defective (hot/cold) column, not a ball: use its own mode.
         b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)

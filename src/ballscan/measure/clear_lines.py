@@ -1,0 +1,229 @@
+"""The scan lines that show the backdrop alone, and the background level they give each column.
+
+A line-scan camera sees the same backdrop on every line, times the lamp's
+level on that line (drift, flicker). A line that no ball crosses therefore
+matches every other such line pixel by pixel after one scale factor (or,
+on a backdrop near zero, one offset), while a line a ball crosses differs
+from them wherever the ball is. The lines without a ball are found as the
+largest set of lines that match one line (the line that matches the most
+others): this holds where a ball covers most of a column's lines or most
+of a line's pixels, where a per-column or per-line median reads the ball.
+
+Their per-column median is the backdrop's profile, with its gradient
+across the sensor, its dead, hot and gain-varied columns
+(:func:`clear_line_levels`); :func:`line_levels` then finds each line's
+scale (or offset) as the one that puts the most pixels of the line on
+that profile, within the range of scales the ball-free lines show.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .robust import MAD_TO_SIGMA
+
+__all__ = ["ClearLines", "clear_line_levels", "column_noise", "line_levels"]
+
+#: Most lines compared pairwise (their matches cost the square of this count).
+_SAMPLE_LINES = 96
+#: A pixel differs from the other line where the difference exceeds this many sigmas.
+_MATCH_SIGMA = 5.0
+#: Fewest lines without a ball for their profile to be used.
+_MIN_CLEAR = 3
+
+
+@dataclass(frozen=True, eq=False)
+class ClearLines:
+    """The ball-free lines among the compared ones and the backdrop's profile from them.
+
+    Attributes
+    ----------
+    lines : numpy.ndarray
+        int64, the indices (into the image's lines) of the ball-free lines found.
+    level_dn : numpy.ndarray
+        float64, shape ``(W,)``: per-column background (DN) at the image's
+        reference level (a line scale of 1, or a line offset of 0).
+    scale_range : tuple of float
+        Smallest and largest line scale (gain model, relative to the
+        reference level) or line offset (DN, offset model) of those lines.
+    """
+
+    lines: np.ndarray
+    level_dn: np.ndarray
+    scale_range: tuple[float, float]
+
+
+def column_noise(x: np.ndarray, level: np.ndarray, ref: float, use_gain: bool) -> np.ndarray:
+    """Per-column noise sigma (DN) from the differences of consecutive lines, each line brought to the reference level.
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        float, shape ``(n, W)``, ``n >= 2``: the image's lines (DN).
+    level : numpy.ndarray
+        float, shape ``(n,)``: each line's level (its median, DN).
+    ref : float
+        The reference level (DN).
+    use_gain : bool
+        Lines are scaled by ``ref / level`` (lamp drift, flicker), else
+        shifted by ``ref - level``.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(W,)``: ``MAD_TO_SIGMA * MAD / sqrt(2)`` of each
+        column's differences. A ball changes a column's differences only on
+        the few lines where its edges cross it, and a flickering lamp not at
+        all once the lines are levelled, so neither widens it.
+    """
+    xn = _levelled(np.asarray(x, dtype=np.float64), level, ref, use_gain)
+    d = np.diff(xn, axis=0)
+    med = np.median(d, axis=0)
+    return MAD_TO_SIGMA * np.median(np.abs(d - med), axis=0) / np.sqrt(2.0)
+
+
+def _levelled(x: np.ndarray, level: np.ndarray, ref: float, use_gain: bool) -> np.ndarray:
+    """The lines brought to the reference level: ``x * ref / level`` (gain model) or ``x + ref - level``."""
+    if use_gain:
+        return x * (ref / np.where(level > 0, level, ref))[:, None]
+    return x + (ref - level)[:, None]
+
+
+def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np.ndarray, use_gain: bool) -> ClearLines | None:
+    """The ball-free lines of an image and the per-column background they give (see the module docstring).
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        float, shape ``(n, W)``: the image's lines (DN).
+    level : numpy.ndarray
+        float, shape ``(n,)``: each line's median (DN).
+    ref : float
+        The reference level (DN): the median of ``level``.
+    noise_dn : numpy.ndarray
+        float, shape ``(W,)``: per-column noise sigma (DN, floored > 0).
+    use_gain : bool
+        Drift model: a scale per line (True) or an offset (False).
+
+    Returns
+    -------
+    ClearLines or None
+        None where fewer than 3 compared lines match the best line (no
+        backdrop seen alone often enough to trust its profile).
+    """
+    n, w = x.shape
+    idx = np.unique(np.linspace(0, n - 1, min(n, _SAMPLE_LINES)).round().astype(np.int64))
+    full = _levelled(np.asarray(x[idx], dtype=np.float64), level[idx], ref, use_gain)
+    # a few hundred columns tell a ball-free line from a crossed one
+    step = max(1, w // 256)
+    xs = full[:, ::step]
+    tol = _MATCH_SIGMA * np.sqrt(2.0) * np.asarray(noise_dn, dtype=np.float64)[::step]
+    allowed = max(2, int(0.02 * xs.shape[1]))
+    m = idx.size
+    match = np.zeros((m, m), dtype=bool)
+    for i in range(m):
+        # line i against every compared line, after the one factor (offset) that fits best
+        if use_gain:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                c = np.median(np.where(xs > 0, xs[i][None, :] / xs, np.nan), axis=1)
+            c = np.where(np.isfinite(c), c, 1.0)
+            off = np.abs(xs[i][None, :] - c[:, None] * xs) > tol[None, :] * np.sqrt(0.5 * (1.0 + c[:, None] ** 2))
+        else:
+            c = np.median(xs[i][None, :] - xs, axis=1)
+            off = np.abs(xs[i][None, :] - xs - c[:, None]) > tol[None, :]
+        match[i] = off.sum(axis=1) <= allowed
+    match &= match.T
+    best = int(np.argmax(match.sum(axis=1)))
+    sel = np.flatnonzero(match[best])
+    if sel.size < _MIN_CLEAR:
+        return None
+    rows = full[sel]
+    # each clear line's own scale against the best one, so that the profile
+    # is their median at one level
+    if use_gain:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = np.median(np.where(full[best] > 0, rows / full[best][None, :], np.nan), axis=1)
+        s = np.where(np.isfinite(s) & (s > 0), s, 1.0)
+        profile = np.median(rows / s[:, None], axis=0)
+        scale = s * level[idx[sel]] / ref
+    else:
+        s = np.median(rows - full[best][None, :], axis=1)
+        profile = np.median(rows - s[:, None], axis=0)
+        scale = s + level[idx[sel]] - ref
+    # the profile at the reference level: the clear lines' median scale is 1 (offset 0)
+    mid = float(np.median(scale))
+    if use_gain:
+        profile = profile * mid
+        scale = scale / mid
+    else:
+        profile = profile + mid
+        scale = scale - mid
+    return ClearLines(lines=idx[sel], level_dn=profile, scale_range=(float(scale.min()), float(scale.max())))
+
+
+def line_levels(
+    x: np.ndarray, profile_dn: np.ndarray, noise_dn: np.ndarray, first: np.ndarray, scale_range: tuple[float, float], use_gain: bool, k_sigma: float = 3.0
+) -> np.ndarray:
+    """Each line's scale (offset) on ``profile_dn``: the one that puts the most of its pixels within ``k_sigma`` noise of it.
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        float, shape ``(n, W)``: the image's lines (DN).
+    profile_dn : numpy.ndarray
+        float, shape ``(W,)``: the backdrop's per-column level (DN) at scale 1 (offset 0).
+    noise_dn : numpy.ndarray
+        float, shape ``(W,)``: per-column noise sigma (DN, > 0).
+    first : numpy.ndarray
+        float, shape ``(n,)``: a first scale (offset) per line (from the lines'
+        medians); kept where at least half the line's pixels lie on it.
+    scale_range : tuple of float
+        The scales (offsets) the ball-free lines show: the search covers
+        this range widened by a quarter of its width and 4 relative noise
+        sigmas on each side.
+    use_gain : bool
+        Scale (True) or offset (False) model.
+    k_sigma : float, optional
+        Half-width of the window, noise sigmas.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(n,)``: the scale (offset) per line. A ball can
+        cover most of a line's pixels, but its pixels spread over its
+        shading while the backdrop's lie within the noise of one scale.
+    """
+    x = np.asarray(x, dtype=np.float64)
+    half = k_sigma * noise_dn
+    unit = np.maximum(np.abs(profile_dn), 1e-12) if use_gain else np.ones_like(profile_dn)
+
+    def on(rows: np.ndarray, c: np.ndarray) -> np.ndarray:
+        """Pixels of each line within the window of each scale: shape (lines, scales)."""
+        pred = c[None, :, None] * profile_dn[None, None, :] if use_gain else profile_dn[None, None, :] + c[None, :, None]
+        return (np.abs(rows[:, None, :] - pred) <= half[None, None, :]).sum(axis=2)
+
+    out = np.asarray(first, dtype=np.float64).copy()
+    bad = np.flatnonzero(_on_first(x, out, profile_dn, half, use_gain) < 0.5 * x.shape[1])
+    if bad.size == 0:
+        return out
+    lo, hi = scale_range
+    rel = float(np.median(noise_dn / unit))
+    pad = 0.25 * (hi - lo) + 4.0 * rel
+    step = max(0.5 * rel, 1e-9)
+    grid = np.arange(lo - pad, hi + pad + step, step)
+    for a in range(0, bad.size, 64):
+        b = bad[a : a + 64]
+        counts = on(x[b], grid)
+        top = counts.max(axis=1)
+        # among the best scales, the one nearest the first
+        near = np.where(counts == top[:, None], np.abs(grid[None, :] - out[b][:, None]), np.inf)
+        out[b] = grid[np.argmin(near, axis=1)]
+    return out
+
+
+def _on_first(x: np.ndarray, first: np.ndarray, profile_dn: np.ndarray, half: np.ndarray, use_gain: bool) -> np.ndarray:
+    """Pixels of each line within ``half`` of its first scale's (offset's) background."""
+    pred = first[:, None] * profile_dn[None, :] if use_gain else profile_dn[None, :] + first[:, None]
+    return (np.abs(x - pred) <= half[None, :]).sum(axis=1)
