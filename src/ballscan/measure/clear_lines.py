@@ -120,9 +120,9 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
     step = max(1, w // 256)
     xs = full[:, ::step]
     tol = _MATCH_SIGMA * np.sqrt(2.0) * np.asarray(noise_dn, dtype=np.float64)[::step]
-    allowed = max(2, int(0.02 * xs.shape[1]))
+    allowed = 1  # a noise spike; two pixels off are a ball's narrowest chord
     m = idx.size
-    match = np.zeros((m, m), dtype=bool)
+    offs = np.zeros((m, m, xs.shape[1]), dtype=bool)
     for i in range(m):
         # line i against every compared line, after the one factor (offset) that fits best
         if use_gain:
@@ -133,9 +133,10 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
         else:
             c = np.median(xs[i][None, :] - xs, axis=1)
             off = np.abs(xs[i][None, :] - xs - c[:, None]) > tol[None, :]
-        match[i] = off.sum(axis=1) <= allowed
+        offs[i] = off
+    match = offs.sum(axis=2) <= allowed
     match &= match.T
-    best = int(np.argmax(match.sum(axis=1)))
+    best = _backdrop_line(match, offs)
     sel = np.flatnonzero(match[best])
     if sel.size < _MIN_CLEAR:
         return None
@@ -161,6 +162,48 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
         profile = profile + mid
         scale = scale - mid
     return ClearLines(lines=idx[sel], level_dn=profile, scale_range=(float(scale.min()), float(scale.max())))
+
+
+def _backdrop_line(match: np.ndarray, offs: np.ndarray, candidates: int = 3) -> int:
+    """The compared line that shows the backdrop: the best-matched line of the largest group of matching lines, or of another group against which clearly fewer lines differ in two or more separate runs of pixels.
+
+    Lines that hold a ball's wide middle can match one another as well as
+    the ball-free lines do (a dark, even ball on a short image), so the
+    largest group alone does not say which is the backdrop. Against the
+    backdrop every line differs where a ball covers it, one run of pixels
+    per ball; against a ball's line, a line crossed by a narrower chord
+    differs on both sides of that chord.
+    """
+    free = np.ones(match.shape[0], dtype=bool)
+    picks: list[int] = []
+    largest = 0
+    for _ in range(candidates):
+        if not free.any():
+            break
+        counts = np.where(free, (match & free[None, :]).sum(axis=1), -1)
+        b = int(np.argmax(counts))
+        largest = largest or int(counts[b])
+        if picks and counts[b] < max(_MIN_CLEAR, 0.5 * largest):
+            break
+        picks.append(b)
+        free &= ~match[b]
+        free[b] = False
+    if len(picks) == 1:
+        return picks[0]
+    scores = []
+    for b in picks:
+        d = offs[b]
+        # gaps of up to two pixels (a seam, a limb at the backdrop's level) close
+        g = d.copy()
+        g[:, 1:] |= d[:, :-1]
+        g[:, :-1] |= d[:, 1:]
+        runs = (g[:, 1:] & ~g[:, :-1]).sum(axis=1) + g[:, 0]
+        scores.append(int((runs >= 2).sum()))
+    # the largest group unless another one, at least half its size, explains
+    # the lines by one run each clearly better (a textured ball's seam or a
+    # second ball splits a few lines' runs against the backdrop too)
+    k = int(np.argmin(scores))
+    return picks[k] if 2 * scores[k] + 3 <= scores[0] else picks[0]
 
 
 def line_levels(
