@@ -136,7 +136,7 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
         offs[i] = off
     match = offs.sum(axis=2) <= allowed
     match &= match.T
-    best = _backdrop_line(match, offs)
+    best = _backdrop_line(match, offs, allowed)
     sel = np.flatnonzero(match[best])
     if sel.size < _MIN_CLEAR:
         return None
@@ -164,46 +164,53 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
     return ClearLines(lines=idx[sel], level_dn=profile, scale_range=(float(scale.min()), float(scale.max())))
 
 
-def _backdrop_line(match: np.ndarray, offs: np.ndarray, candidates: int = 3) -> int:
-    """The compared line that shows the backdrop: the best-matched line of the largest group of matching lines, or of another group against which clearly fewer lines differ in two or more separate runs of pixels.
+def _backdrop_line(match: np.ndarray, offs: np.ndarray, allowed: int, candidates: int = 3) -> int:
+    """The compared line that shows the backdrop, among the best-matched lines of the largest groups of matching lines.
 
     Lines that hold a ball's wide middle can match one another as well as
     the ball-free lines do (a dark, even ball on a short image), so the
-    largest group alone does not say which is the backdrop. Against the
-    backdrop every line differs where a ball covers it, one run of pixels
-    per ball; against a ball's line, a line crossed by a narrower chord
-    differs on both sides of that chord.
+    largest group alone does not say which is the backdrop. The choice, in
+    this order: a line that the image's first and last lines both match
+    (where no ball is cut by the first or last line, the backdrop shows at
+    both ends, a ball's line at neither);
+    then the largest group, unless another one at least half its size
+    explains the lines clearly better by one run of differing pixels each
+    (against the backdrop every line differs where a ball covers it, one
+    run per ball; against a ball's line, a line crossed by a narrower chord
+    differs on both sides of that chord).
     """
     free = np.ones(match.shape[0], dtype=bool)
     picks: list[int] = []
-    largest = 0
+    sizes: list[int] = []
     for _ in range(candidates):
         if not free.any():
             break
         counts = np.where(free, (match & free[None, :]).sum(axis=1), -1)
         b = int(np.argmax(counts))
-        largest = largest or int(counts[b])
-        if picks and counts[b] < max(_MIN_CLEAR, 0.5 * largest):
+        if picks and counts[b] < _MIN_CLEAR:
             break
         picks.append(b)
+        sizes.append(int(counts[b]))
         free &= ~match[b]
         free[b] = False
     if len(picks) == 1:
         return picks[0]
-    scores = []
-    for b in picks:
-        d = offs[b]
+    ends = [int(offs[b][0].sum() > allowed) + int(offs[b][-1].sum() > allowed) for b in picks]
+    keep = [k for k in range(len(picks)) if ends[k] == 0] or list(range(len(picks)))
+    multi = {}
+    for k in keep:
+        d = offs[picks[k]]
         # gaps of up to two pixels (a seam, a limb at the backdrop's level) close
         g = d.copy()
         g[:, 1:] |= d[:, :-1]
         g[:, :-1] |= d[:, 1:]
         runs = (g[:, 1:] & ~g[:, :-1]).sum(axis=1) + g[:, 0]
-        scores.append(int((runs >= 2).sum()))
-    # the largest group unless another one, at least half its size, explains
-    # the lines by one run each clearly better (a textured ball's seam or a
-    # second ball splits a few lines' runs against the backdrop too)
-    k = int(np.argmin(scores))
-    return picks[k] if 2 * scores[k] + 3 <= scores[0] else picks[0]
+        multi[k] = int((runs >= 2).sum())
+    first = keep[0]
+    best = min(keep, key=lambda k: multi[k])
+    if 2 * multi[best] + 3 <= multi[first] and 2 * sizes[best] >= sizes[first]:
+        return picks[best]
+    return picks[first]
 
 
 def line_levels(
