@@ -228,7 +228,8 @@ def line_levels(
         float, shape ``(W,)``: per-column noise sigma (DN, > 0).
     first : numpy.ndarray
         float, shape ``(n,)``: a first scale (offset) per line (from the lines'
-        medians); kept where at least half the line's pixels lie on it.
+        medians); kept where it lies in the searched range and at least
+        half the line's pixels lie on it.
     scale_range : tuple of float
         The scales (offsets) the ball-free lines show: the search covers
         this range widened by a quarter of its width and 4 relative noise
@@ -255,21 +256,29 @@ def line_levels(
         return (np.abs(rows[:, None, :] - pred) <= half[None, None, :]).sum(axis=2)
 
     out = np.asarray(first, dtype=np.float64).copy()
-    bad = np.flatnonzero(_on_first(x, out, profile_dn, half, use_gain) < 0.5 * x.shape[1])
-    if bad.size == 0:
-        return out
     lo, hi = scale_range
     rel = float(np.median(noise_dn / unit))
     pad = 0.25 * (hi - lo) + 4.0 * rel
+    outside = (out < lo - pad) | (out > hi + pad)
+    bad = np.flatnonzero(outside | (_on_first(x, out, profile_dn, half, use_gain) < 0.5 * x.shape[1]))
+    if bad.size == 0:
+        return out
     step = max(0.5 * rel, 1e-9)
     grid = np.arange(lo - pad, hi + pad + step, step)
     for a in range(0, bad.size, 64):
         b = bad[a : a + 64]
         counts = on(x[b], grid)
         top = counts.max(axis=1)
-        # among the best scales, the one nearest the first
-        near = np.where(counts == top[:, None], np.abs(grid[None, :] - out[b][:, None]), np.inf)
-        out[b] = grid[np.argmin(near, axis=1)]
+        # among the best scales, the run of them nearest the first, its middle
+        tied = counts == top[:, None]
+        near = np.argmin(np.where(tied, np.abs(grid[None, :] - out[b][:, None]), np.inf), axis=1)
+        for q, k in enumerate(near):
+            lo_k, hi_k = k, k
+            while lo_k > 0 and tied[q, lo_k - 1]:
+                lo_k -= 1
+            while hi_k < grid.size - 1 and tied[q, hi_k + 1]:
+                hi_k += 1
+            out[b[q]] = 0.5 * (grid[lo_k] + grid[hi_k])
     return out
 
 
