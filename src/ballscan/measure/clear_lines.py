@@ -18,6 +18,7 @@ that profile, within the range of scales the ball-free lines show.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,9 +28,11 @@ from .robust import MAD_TO_SIGMA
 __all__ = ["ClearLines", "clear_line_levels", "column_noise", "line_levels"]
 
 #: Most lines compared pairwise (their matches cost the square of this count).
-_SAMPLE_LINES = 96
+_SAMPLE_LINES = 64
 #: A pixel differs from the other line where the difference exceeds this many sigmas.
 _MATCH_SIGMA = 5.0
+#: Most pairs of consecutive lines the columns' noise is measured on.
+_NOISE_PAIRS = 128
 #: Fewest lines without a ball for their profile to be used.
 _MIN_CLEAR = 3
 
@@ -78,8 +81,11 @@ def column_noise(x: np.ndarray, level: np.ndarray, ref: float, use_gain: bool) -
         the few lines where its edges cross it, and a flickering lamp not at
         all once the lines are levelled, so neither widens it.
     """
-    xn = _levelled(np.asarray(x, dtype=np.float64), level, ref, use_gain)
-    d = np.diff(xn, axis=0)
+    # at most _NOISE_PAIRS pairs of consecutive lines: the MAD to a few per cent
+    i = np.unique(np.linspace(0, x.shape[0] - 2, min(x.shape[0] - 1, _NOISE_PAIRS)).round().astype(np.int64))
+    a = _levelled(np.asarray(x[i], dtype=np.float64), level[i], ref, use_gain)
+    b = _levelled(np.asarray(x[i + 1], dtype=np.float64), level[i + 1], ref, use_gain)
+    d = b - a
     med = np.median(d, axis=0)
     return MAD_TO_SIGMA * np.median(np.abs(d - med), axis=0) / np.sqrt(2.0)
 
@@ -91,7 +97,9 @@ def _levelled(x: np.ndarray, level: np.ndarray, ref: float, use_gain: bool) -> n
     return x + (ref - level)[:, None]
 
 
-def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np.ndarray, use_gain: bool) -> ClearLines | None:
+def clear_line_levels(
+    x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np.ndarray, use_gain: bool, saturation_dn: float = np.inf
+) -> ClearLines | None:
     """The ball-free lines of an image and the per-column background they give (see the module docstring).
 
     Parameters
@@ -106,6 +114,10 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
         float, shape ``(W,)``: per-column noise sigma (DN, floored > 0).
     use_gain : bool
         Drift model: a scale per line (True) or an offset (False).
+    saturation_dn : float, optional
+        Level (DN) at or above which pixels are clipped: they neither tell
+        lines apart nor enter the profile (a bright backdrop clips on a
+        flickering lamp's brightest lines).
 
     Returns
     -------
@@ -115,44 +127,40 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
     """
     n, w = x.shape
     idx = np.unique(np.linspace(0, n - 1, min(n, _SAMPLE_LINES)).round().astype(np.int64))
-    full = _levelled(np.asarray(x[idx], dtype=np.float64), level[idx], ref, use_gain)
+    raw = np.asarray(x[idx], dtype=np.float64)
+    clipped = raw >= saturation_dn
+    full = _levelled(raw, level[idx], ref, use_gain)
     # a few hundred columns tell a ball-free line from a crossed one
     step = max(1, w // 256)
     xs = full[:, ::step]
+    cl = clipped[:, ::step]
     tol = _MATCH_SIGMA * np.sqrt(2.0) * np.asarray(noise_dn, dtype=np.float64)[::step]
     allowed = 1  # a noise spike; two pixels off are a ball's narrowest chord
-    m = idx.size
-    offs = np.zeros((m, m, xs.shape[1]), dtype=bool)
-    for i in range(m):
-        # line i against every compared line, after the one factor (offset) that fits best
-        if use_gain:
-            with np.errstate(divide="ignore", invalid="ignore"):
-                c = np.median(np.where(xs > 0, xs[i][None, :] / xs, np.nan), axis=1)
-            c = np.where(np.isfinite(c), c, 1.0)
-            off = np.abs(xs[i][None, :] - c[:, None] * xs) > tol[None, :] * np.sqrt(0.5 * (1.0 + c[:, None] ** 2))
-        else:
-            c = np.median(xs[i][None, :] - xs, axis=1)
-            off = np.abs(xs[i][None, :] - xs - c[:, None]) > tol[None, :]
-        offs[i] = off
+    # the clip level of each compared line, levelled like its values
+    clip_at = _levelled(np.full((idx.size, 1), float(saturation_dn)), level[idx], ref, use_gain)[:, 0]
+    offs = _pair_offs(xs, cl, clip_at, tol, use_gain)
     match = offs.sum(axis=2) <= allowed
     match &= match.T
     best = _backdrop_line(match, offs, allowed)
     sel = np.flatnonzero(match[best])
     if sel.size < _MIN_CLEAR:
         return None
-    rows = full[sel]
+    rows = np.where(clipped[sel], np.nan, full[sel])
     # each clear line's own scale against the best one, so that the profile
     # is their median at one level
     if use_gain:
         with np.errstate(divide="ignore", invalid="ignore"):
-            s = np.median(np.where(full[best] > 0, rows / full[best][None, :], np.nan), axis=1)
+            s = _nanmedian(np.where(full[best] > 0, rows / full[best][None, :], np.nan), axis=1)
         s = np.where(np.isfinite(s) & (s > 0), s, 1.0)
-        profile = np.median(rows / s[:, None], axis=0)
+        profile = _nanmedian(rows / s[:, None], axis=0)
         scale = s * level[idx[sel]] / ref
     else:
-        s = np.median(rows - full[best][None, :], axis=1)
-        profile = np.median(rows - s[:, None], axis=0)
+        s = _nanmedian(rows - full[best][None, :], axis=1)
+        s = np.where(np.isfinite(s), s, 0.0)
+        profile = _nanmedian(rows - s[:, None], axis=0)
         scale = s + level[idx[sel]] - ref
+    # a column clipped on every clear line: at least its clipped level
+    profile = np.where(np.isfinite(profile), profile, np.median(full[sel], axis=0))
     # the profile at the reference level: the clear lines' median scale is 1 (offset 0)
     mid = float(np.median(scale))
     if use_gain:
@@ -162,6 +170,43 @@ def clear_line_levels(x: np.ndarray, level: np.ndarray, ref: float, noise_dn: np
         profile = profile + mid
         scale = scale - mid
     return ClearLines(lines=idx[sel], level_dn=profile, scale_range=(float(scale.min()), float(scale.max())))
+
+
+def _pair_offs(xs: np.ndarray, cl: np.ndarray, clip_at: np.ndarray, tol: np.ndarray, use_gain: bool) -> np.ndarray:
+    """``offs[i, k, j]``: pixel ``j`` of line ``i`` differs from line ``k``'s after the one factor (offset) that fits them best.
+
+    ``xs`` are the levelled lines, ``cl`` their clipped pixels, ``clip_at``
+    each line's levelled clip level and ``tol`` the per-column tolerance
+    (DN). A clipped pixel differs only where the other line puts it well
+    below the clip.
+    """
+    xi, xk = xs[:, None, :], xs[None, :, :]
+    clipped_any = bool(cl.any())
+    both = ~(cl[:, None, :] | cl[None, :, :])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.where((xk > 0) & both, xi / xk, np.nan) if use_gain else np.where(both, xi - xk, np.nan)
+        # the factor from some 64 columns: well within the tolerance
+        r = r[:, :, :: max(1, r.shape[2] // 64)]
+        c = _nanmedian(r, axis=2) if clipped_any else np.median(r, axis=2)
+    c = np.where(np.isfinite(c), c, 1.0 if use_gain else 0.0)[:, :, None]
+    if use_gain:
+        t = tol[None, None, :] * np.sqrt(0.5 * (1.0 + c**2))
+        pred_i, clip_k = c * xk, c * clip_at[None, :, None]
+    else:
+        t = tol[None, None, :] + np.zeros_like(c)
+        pred_i, clip_k = xk + c, clip_at[None, :, None] + c
+    off = np.abs(xi - pred_i) > t
+    if clipped_any:
+        off = np.where(cl[:, None, :], pred_i < clip_at[:, None, None] - t, off)
+        off = np.where(cl[None, :, :], (xi < clip_k - t) & ~cl[:, None, :], off)
+    return off
+
+
+def _nanmedian(a: np.ndarray, axis: int) -> np.ndarray:
+    """``numpy.nanmedian`` along ``axis``; NaN where a row (column) holds no value, without a warning."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return np.nanmedian(a, axis=axis)
 
 
 def _backdrop_line(match: np.ndarray, offs: np.ndarray, allowed: int, candidates: int = 3) -> int:
@@ -214,7 +259,14 @@ def _backdrop_line(match: np.ndarray, offs: np.ndarray, allowed: int, candidates
 
 
 def line_levels(
-    x: np.ndarray, profile_dn: np.ndarray, noise_dn: np.ndarray, first: np.ndarray, scale_range: tuple[float, float], use_gain: bool, k_sigma: float = 3.0
+    x: np.ndarray,
+    profile_dn: np.ndarray,
+    noise_dn: np.ndarray,
+    first: np.ndarray,
+    scale_range: tuple[float, float],
+    use_gain: bool,
+    k_sigma: float = 3.0,
+    saturation_dn: float = np.inf,
 ) -> np.ndarray:
     """Each line's scale (offset) on ``profile_dn``: the one that puts the most of its pixels within ``k_sigma`` noise of it.
 
@@ -238,6 +290,9 @@ def line_levels(
         Scale (True) or offset (False) model.
     k_sigma : float, optional
         Half-width of the window, noise sigmas.
+    saturation_dn : float, optional
+        Level (DN) at or above which pixels are clipped: a clipped pixel
+        lies on any scale whose background reaches the clip.
 
     Returns
     -------
@@ -253,14 +308,15 @@ def line_levels(
     def on(rows: np.ndarray, c: np.ndarray) -> np.ndarray:
         """Pixels of each line within the window of each scale: shape (lines, scales)."""
         pred = c[None, :, None] * profile_dn[None, None, :] if use_gain else profile_dn[None, None, :] + c[None, :, None]
-        return (np.abs(rows[:, None, :] - pred) <= half[None, None, :]).sum(axis=2)
+        r = rows[:, None, :]
+        return ((np.abs(r - pred) <= half) | ((r >= saturation_dn) & (pred >= saturation_dn - half))).sum(axis=2)
 
     out = np.asarray(first, dtype=np.float64).copy()
     lo, hi = scale_range
     rel = float(np.median(noise_dn / unit))
     pad = 0.25 * (hi - lo) + 4.0 * rel
     outside = (out < lo - pad) | (out > hi + pad)
-    bad = np.flatnonzero(outside | (_on_first(x, out, profile_dn, half, use_gain) < 0.5 * x.shape[1]))
+    bad = np.flatnonzero(outside | (_on_first(x, out, profile_dn, half, use_gain, saturation_dn) < 0.5 * x.shape[1]))
     if bad.size == 0:
         return out
     step = max(0.5 * rel, 1e-9)
@@ -282,7 +338,7 @@ def line_levels(
     return out
 
 
-def _on_first(x: np.ndarray, first: np.ndarray, profile_dn: np.ndarray, half: np.ndarray, use_gain: bool) -> np.ndarray:
-    """Pixels of each line within ``half`` of its first scale's (offset's) background."""
+def _on_first(x: np.ndarray, first: np.ndarray, profile_dn: np.ndarray, half: np.ndarray, use_gain: bool, saturation_dn: float) -> np.ndarray:
+    """Pixels of each line within ``half`` of its first scale's (offset's) background, or clipped where that background reaches the clip."""
     pred = first[:, None] * profile_dn[None, :] if use_gain else profile_dn[None, :] + first[:, None]
-    return (np.abs(x - pred) <= half[None, :]).sum(axis=1)
+    return ((np.abs(x - pred) <= half[None, :]) | ((x >= saturation_dn) & (pred >= saturation_dn - half[None, :]))).sum(axis=1)

@@ -374,7 +374,9 @@ class _Background:
     drift_model: str
 
 
-def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None) -> _Background:
+def _background(
+    x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None, saturation_dn: float = np.inf
+) -> _Background:
     """The background model of the float32 image ``x`` (see the module docstring), with the columns of ``known`` where given."""
     n, w = x.shape
     # Column subsample for per-line statistics: a few hundred columns give a
@@ -384,7 +386,7 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
     # Per-line level from the line medians: balls cover a minority of a line.
     level = _row_median(xs)
     if known is None:
-        start = _column_modes(x, xs, step, level, noise_floor_dn)
+        start = _column_modes(x, xs, step, level, noise_floor_dn, saturation_dn)
     else:
         # a writeable copy: the kernels below take writeable arrays (a
         # read-only one would compile a second signature on a stream ball)
@@ -400,8 +402,8 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
     return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)
 
 
-def _drift_noise(xs: np.ndarray, level: np.ndarray, noise_floor_dn: float) -> tuple[float, bool, np.ndarray]:
-    """The image's noise sigma (DN), whether its drift is a gain, and the columns' noise (DN, floored) of the subsampled ``xs``.
+def _drift_noise(xs: np.ndarray, level: np.ndarray, noise_floor_dn: float) -> tuple[float, bool]:
+    """The image's noise sigma (DN) and whether its drift is a gain, from the subsampled ``xs``.
 
     The noise is measured on the lines levelled both ways (scaled and
     shifted to the reference level, :func:`ballscan.measure.clear_lines.column_noise`)
@@ -411,24 +413,23 @@ def _drift_noise(xs: np.ndarray, level: np.ndarray, noise_floor_dn: float) -> tu
     """
     ref = float(median(level))
     k = -(-xs.shape[0] // _MODE_LINES)
-    sub, lev = xs[::k], level[::k]
+    # some 128 columns decide the model
+    sub, lev = xs[::k, :: max(1, xs.shape[1] // 128)], level[::k]
     sigmas = [_global_noise(xs[:, ::2])]
-    cols = None
     if sub.shape[0] >= 8:
         per = {g: column_noise(sub, lev, ref, g) for g in ((True, False) if float(level.min()) > 0.0 else (False,))}
         sigmas += [float(median(v)) for v in per.values()]
         sigma0 = max(min(sigmas), noise_floor_dn)
         use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
-        cols = per[use_gain]
     else:
         sigma0 = max(sigmas[0], noise_floor_dn)
         use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
-    if cols is None:
-        cols = np.full(xs.shape[1], sigma0)
-    return sigma0, use_gain, np.maximum(cols, max(noise_floor_dn, 0.25 * float(median(cols))))
+    return sigma0, use_gain
 
 
-def _clear_start(x: np.ndarray, level_full: np.ndarray, ref: float, use_gain: bool, noise_floor_dn: float, first: np.ndarray, sigma0: float) -> tuple[ClearLines | None, np.ndarray, np.ndarray]:
+def _clear_start(
+    x: np.ndarray, level_full: np.ndarray, ref: float, use_gain: bool, noise_floor_dn: float, first: np.ndarray, sigma0: float, saturation_dn: float
+) -> tuple[ClearLines | None, np.ndarray, np.ndarray]:
     """The ball-free lines' profile (:mod:`ballscan.measure.clear_lines`), the columns' noise and the lines' first scale (offset) on it."""
     k = -(-x.shape[0] // _MODE_LINES)
     sub = x[::k]
@@ -437,18 +438,18 @@ def _clear_start(x: np.ndarray, level_full: np.ndarray, ref: float, use_gain: bo
         cols = np.maximum(cols, max(noise_floor_dn, 0.25 * float(median(cols))))
     else:
         cols = np.full(x.shape[1], sigma0)
-    clear = clear_line_levels(x, level_full, ref, cols, use_gain) if x.shape[0] >= 8 else None
+    clear = clear_line_levels(x, level_full, ref, cols, use_gain, saturation_dn) if x.shape[0] >= 8 else None
     if clear is None:
         return None, cols, first
-    return clear, cols, line_levels(x, clear.level_dn, cols, first, clear.scale_range, use_gain)
+    return clear, cols, line_levels(x, clear.level_dn, cols, first, clear.scale_range, use_gain, saturation_dn=saturation_dn)
 
 
-def _column_modes(x: np.ndarray, xs: np.ndarray, step: int, level: np.ndarray, noise_floor_dn: float) -> _ColumnStart:
+def _column_modes(x: np.ndarray, xs: np.ndarray, step: int, level: np.ndarray, noise_floor_dn: float, saturation_dn: float = np.inf) -> _ColumnStart:
     """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
     ref = float(median(level))
-    sigma0, use_gain, _ = _drift_noise(xs, level, noise_floor_dn)
+    sigma0, use_gain = _drift_noise(xs, level, noise_floor_dn)
     first = level / ref if use_gain else level - ref
-    clear, col_noise, first = _clear_start(x, level, ref, use_gain, noise_floor_dn, first, sigma0)
+    clear, col_noise, first = _clear_start(x, level, ref, use_gain, noise_floor_dn, first, sigma0, saturation_dn)
     gain0 = first if use_gain else np.ones(level.size)
     offset0 = np.zeros(level.size) if use_gain else first
     # The columns' statistics from at most _MODE_LINES evenly spaced lines:
@@ -817,6 +818,22 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
     )
 
 
+def _unclip_backdrop(x32: np.ndarray, bg: _Background, sat: float, k_sigma: float) -> np.ndarray:
+    """``x32`` with its pixels at the saturation level (within ``k_sigma`` noise) where the backdrop itself reaches it set to the background.
+
+    A bright backdrop under a flickering lamp clips on its brightest lines:
+    there it reads the saturation level, less than the model's ``gain *
+    level``, and would pass for a dark ball across the whole line.
+    """
+    if not np.isfinite(sat) or not np.any(x32 >= sat):
+        return x32
+    pred = bg.line_gain[:, None] * bg.background_dn[None, :] + bg.line_offset_dn[:, None]
+    near = sat - k_sigma * bg.noise_dn[None, :]
+    # the clipped backdrop's values lie within the noise below the level
+    clip = (x32 >= near) & (pred >= near)
+    return np.where(clip, pred, x32).astype(np.float32) if np.any(clip) else x32
+
+
 def detect(
     image: LineImage,
     *,
@@ -876,7 +893,8 @@ def detect(
     # float32 for the whole-image passes: exact for 16-bit integers, and the
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
-    bg = _background(x32, floor, first_pass_k=3.0, known=columns)
+    bg = _background(x32, floor, first_pass_k=3.0, known=columns, saturation_dn=sat)
+    x32 = _unclip_backdrop(x32, bg, sat, k_sigma)
     # The pixels with |x - background| > k_sigma noise (in float32), labelled
     # 8-connected, with their sizes and boxes (compiled).  The offset is 0
     # in the gain model: adding it there changes no residual.
