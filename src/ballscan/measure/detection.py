@@ -9,19 +9,32 @@ background of pixel ``(i, j)`` is modelled as
 
 * ``background_dn[j]`` is a per-column level: the *mode* of the column,
   found by mode seeking (a median restricted to a window of +-4.5 noise
-  sigmas, iterated) started from the level of the neighbouring columns (a
-  wide running median of the column medians). This stays on the background
-  even where a ball covers most of a column's lines (a plain median fails
-  there once the ball covers more than half of them), and, because the
-  window is re-centred on the column's own values, follows hot/cold columns,
-  PRNU and vignetting. Where a column has almost no values near its
-  neighbours' level (a strongly defective column) its own median is used.
-* Slow illumination drift along time is one factor per line, estimated as a
-  median over the background pixels of the line (pixels of a first-pass
-  ball mask excluded), so a ball never biases it. The drift is a gain
-  (``line_gain``, multiplicative: illumination) when the background is well
-  above zero, and an offset (``line_offset_dn``) when the background is near
+  sigmas, iterated) started from the backdrop's level on the lines no ball
+  crosses (:mod:`ballscan.measure.clear_lines`: the largest set of lines
+  that match one another pixel by pixel after one scale each), or, where
+  fewer than three such lines are found, from the level of the neighbouring
+  columns (a wide running median of the column medians). This stays on the
+  background where a ball covers most of a column's lines (a plain median
+  fails there once the ball covers more than half of them) and where the
+  backdrop's level changes across the sensor (the neighbours' level is then
+  another level), and, because the window is re-centred on the column's own
+  values, follows hot/cold columns, PRNU and vignetting. Where a column has
+  almost no values near its start (a strongly defective column) its level on
+  the ball-free lines (else its own median) is used.
+* Slow illumination drift and a lamp's flicker along time are one factor
+  per line, estimated as a median over the background pixels of the line
+  (pixels of a first-pass ball mask excluded), so a ball never biases it.
+  The first pass is centred on the lines' medians, or, on a line where
+  fewer than half the pixels lie on that level (a ball covering most of
+  the line), on the scale that puts the most pixels on the ball-free
+  lines' profile (:func:`ballscan.measure.clear_lines.line_levels`). The
+  drift is a gain (``line_gain``, multiplicative: illumination) when the
+  background is well above its noise (measured on consecutive lines
+  levelled by their medians, so that a flickering lamp is not read as
+  noise), and an offset (``line_offset_dn``) when the background is near
   zero, where a ratio would be unstable. The other one is then 1 / 0.
+* Pixels at the saturation level where the backdrop itself reaches it (a
+  bright backdrop on a flickering lamp's brightest lines) are background.
 * ``noise_dn[j]`` is a per-column noise sigma (DN): the standard deviation
   of the column's values in the mode seeking's last window, floored at
   ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
