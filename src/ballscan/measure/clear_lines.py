@@ -23,6 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..compiled import as_arg
+from ._detection_kernels import on_first, pair_offs, scale_counts
 from .robust import MAD_TO_SIGMA
 
 __all__ = ["ClearLines", "clear_line_levels", "column_noise", "line_levels"]
@@ -180,26 +182,10 @@ def _pair_offs(xs: np.ndarray, cl: np.ndarray, clip_at: np.ndarray, tol: np.ndar
     (DN). A clipped pixel differs only where the other line puts it well
     below the clip.
     """
-    xi, xk = xs[:, None, :], xs[None, :, :]
-    clipped_any = bool(cl.any())
-    both = ~(cl[:, None, :] | cl[None, :, :])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        r = np.where((xk > 0) & both, xi / xk, np.nan) if use_gain else np.where(both, xi - xk, np.nan)
-        # the factor from some 64 columns: well within the tolerance
-        r = r[:, :, :: max(1, r.shape[2] // 64)]
-        c = _nanmedian(r, axis=2) if clipped_any else np.median(r, axis=2)
-    c = np.where(np.isfinite(c), c, 1.0 if use_gain else 0.0)[:, :, None]
-    if use_gain:
-        t = tol[None, None, :] * np.sqrt(0.5 * (1.0 + c**2))
-        pred_i, clip_k = c * xk, c * clip_at[None, :, None]
-    else:
-        t = tol[None, None, :] + np.zeros_like(c)
-        pred_i, clip_k = xk + c, clip_at[None, :, None] + c
-    off = np.abs(xi - pred_i) > t
-    if clipped_any:
-        off = np.where(cl[:, None, :], pred_i < clip_at[:, None, None] - t, off)
-        off = np.where(cl[None, :, :], (xi < clip_k - t) & ~cl[:, None, :], off)
-    return off
+    # compiled (_detection_kernels.pair_offs): the pairs' factors from some
+    # 64 columns (well within the tolerance), then each pixel against them
+    stride = max(1, xs.shape[1] // 64)
+    return pair_offs(as_arg(xs), as_arg(cl, np.bool_), as_arg(clip_at), as_arg(tol), use_gain, stride, bool(cl.any()))
 
 
 def _nanmedian(a: np.ndarray, axis: int) -> np.ndarray:
@@ -301,15 +287,8 @@ def line_levels(
         cover most of a line's pixels, but its pixels spread over its
         shading while the backdrop's lie within the noise of one scale.
     """
-    x = np.asarray(x, dtype=np.float64)
-    half = k_sigma * noise_dn
+    half = k_sigma * np.asarray(noise_dn, dtype=np.float64)
     unit = np.maximum(np.abs(profile_dn), 1e-12) if use_gain else np.ones_like(profile_dn)
-
-    def on(rows: np.ndarray, c: np.ndarray) -> np.ndarray:
-        """Pixels of each line within the window of each scale: shape (lines, scales)."""
-        pred = c[None, :, None] * profile_dn[None, None, :] if use_gain else profile_dn[None, None, :] + c[None, :, None]
-        r = rows[:, None, :]
-        return ((np.abs(r - pred) <= half) | ((r >= saturation_dn) & (pred >= saturation_dn - half))).sum(axis=2)
 
     out = np.asarray(first, dtype=np.float64).copy()
     lo, hi = scale_range
@@ -323,7 +302,7 @@ def line_levels(
     grid = np.arange(lo - pad, hi + pad + step, step)
     for a in range(0, bad.size, 64):
         b = bad[a : a + 64]
-        counts = on(x[b], grid)
+        counts = scale_counts(as_arg(x[b]), grid, as_arg(profile_dn), as_arg(half), use_gain, float(saturation_dn))
         top = counts.max(axis=1)
         # among the best scales, the run of them nearest the first, its middle
         tied = counts == top[:, None]
@@ -340,5 +319,5 @@ def line_levels(
 
 def _on_first(x: np.ndarray, first: np.ndarray, profile_dn: np.ndarray, half: np.ndarray, use_gain: bool, saturation_dn: float) -> np.ndarray:
     """Pixels of each line within ``half`` of its first scale's (offset's) background, or clipped where that background reaches the clip."""
-    pred = first[:, None] * profile_dn[None, :] if use_gain else profile_dn[None, :] + first[:, None]
-    return ((np.abs(x - pred) <= half[None, :]) | ((x >= saturation_dn) & (pred >= saturation_dn - half[None, :]))).sum(axis=1)
+    # compiled (_detection_kernels.on_first): one pass over the image, in its float32
+    return on_first(as_arg(x, np.float32), as_arg(first), as_arg(profile_dn), as_arg(half), use_gain, float(saturation_dn))
