@@ -429,3 +429,86 @@ def test_a_long_images_columns_are_measured_on_a_sample_of_its_lines_as_on_all_o
     assert np.median(sampled.noise_dn) == pytest.approx(np.median(every.noise_dn), rel=0.05)
     assert [(r.line_start, r.col_start) for r in sampled.regions] == [(r.line_start, r.col_start) for r in every.regions]
     assert len(sampled.regions) == 1
+
+
+# ------------------------------------------------- backdrops a median misreads
+def _shaded_scene(n, w, centre, radii, ball_dn, gains, sigma, seed, level=150.0):
+    """Lines ``gains[i] * backdrop`` (a ramp and a wave across the sensor, 1 % column gains) and a shaded ball lit by the same lamp."""
+    j = np.arange(w)
+    rng = np.random.default_rng(seed)
+    b = level * (1.0 + 0.5 * (j / w - 0.5) + 0.15 * np.sin(2 * np.pi * 1.3 * j / w)) * (1.0 + 0.01 * rng.normal(size=w))
+    i, jj = np.mgrid[:n, :w]
+    r2 = ((i - centre[0]) / radii[0]) ** 2 + ((jj - centre[1]) / radii[1]) ** 2
+    shade = ball_dn * (0.6 + 0.4 * np.sqrt(np.clip(1.0 - r2, 0.0, 1.0)))
+    img = np.where(r2 <= 1.0, shade, b[None, :]) * gains[:, None]
+    return np.clip(np.round(img + rng.normal(0.0, sigma, img.shape)), 0, 255), b, r2 <= 1.0
+
+
+def _one_ball_box(det, inside):
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    rows = np.flatnonzero(inside.any(axis=1))
+    cols = np.flatnonzero(inside.any(axis=0))
+    assert abs(r.line_start - rows[0]) <= 2 and abs(r.line_stop - 1 - rows[-1]) <= 2
+    assert abs(r.col_start - cols[0]) <= 2 and abs(r.col_stop - 1 - cols[-1]) <= 2
+    return r
+
+
+def test_ball_covering_most_of_the_lines_and_pixels():
+    # a dark ball over 62 % of its columns' lines and 75 % of its middle
+    # lines' pixels, on a backdrop varying +-35 % across a 102-pixel sensor:
+    # the columns' and lines' medians read the ball (the region used to
+    # span the whole image, flagged cut at both lines and an end)
+    n, w = 113, 102
+    img, b, inside = _shaded_scene(n, w, (56, 58), (35, 38), 30.0, np.ones(n), 2.0, 21)
+    det = detect(_image(img))
+    r = _one_ball_box(det, inside)
+    assert r.flags == () and r.polarity == -1
+    np.testing.assert_allclose(det.background_dn * det.line_gain[0], b, atol=2.5)
+    assert np.all(np.abs(det.line_gain / det.line_gain[0] - 1.0) < 0.02)
+
+
+def test_narrow_ball_over_most_lines_of_its_columns_on_a_sloped_backdrop():
+    # 6 pixels wide over 60 % of the lines, where the backdrop's level is far
+    # from the sensor's median: the neighbours' level misses the column's
+    # mode and its own median is the ball's
+    # (the ball cut by the image's last line)
+    img, b, _ = _shaded_scene(60, 132, (45, 118), (28, 4), 20.0, np.ones(60), 2.0, 22)
+    det = detect(_image(img[:46]))
+    r = det.regions[0]
+    assert len(det.regions) == 1 and "cut_last_line" in r.flags and "cut_first_line" not in r.flags
+    np.testing.assert_allclose(det.background_dn[112:124], b[112:124], atol=3.0)
+
+
+def test_flickering_lamp_keeps_the_gain_model_and_the_noise():
+    # the lamp flickers 30 % line to line (100 Hz sampled at an unrelated
+    # line rate): consecutive lines' raw differences read that as noise,
+    # and the detector chose the offset model with a tenfold noise, finding no ball
+    n, w = 94, 182
+    gains = 1.0 + 0.3 * np.sin(2 * np.pi * 0.41 * np.arange(n) + 0.3)
+    img, b, inside = _shaded_scene(n, w, (45, 90), (20, 15), 40.0, gains, 3.0, 23, level=120.0)
+    det = detect(_image(img))
+    assert det.drift_model == "gain"
+    assert np.median(det.noise_dn) < 5.0
+    _one_ball_box(det, inside)
+    np.testing.assert_allclose(det.line_gain / np.median(det.line_gain), gains / np.median(gains), atol=0.02)
+
+
+def test_even_ball_cut_by_the_last_line_with_more_ball_lines_than_backdrop():
+    # 57 lines: 39 show the ball, whose wide middle lines all look alike
+    n, w = 57, 103
+    img, b, inside = _shaded_scene(n, w, (60, 46), (43, 9), 40.0, np.ones(n), 2.0, 24)
+    det = detect(_image(img))
+    r = _one_ball_box(det, inside)
+    assert r.flags == ("cut_last_line",) and r.polarity == -1
+
+
+def test_clipped_backdrop_on_a_flickering_lamp():
+    # the brightest lines clip the bright part of the backdrop at 255
+    n, w = 111, 177
+    gains = 1.0 + 0.35 * np.sin(2 * np.pi * 0.45 * np.arange(n))
+    img, b, inside = _shaded_scene(n, w, (55, 135), (30, 5), 20.0, gains, 2.0, 25, level=180.0)
+    assert np.mean(img >= 255) > 0.05
+    det = detect(_image(img))
+    r = _one_ball_box(det, inside)
+    assert "cut_sensor_end" not in r.flags and "saturated" not in r.flags

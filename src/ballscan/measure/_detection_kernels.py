@@ -113,6 +113,151 @@ def mode_seek(s: np.ndarray, start: np.ndarray, sigma: np.ndarray, floor: float)
     return centre, sig_out, cnt
 
 
+@jit()
+def second_level(s: np.ndarray, centre: np.ndarray, half: np.ndarray):
+    """Each row's values off its mode and the most of them within ``half`` of one level (:func:`ballscan.measure.detection._column_modes`).
+
+    ``s`` is row-sorted (float32); a row's values beyond ``half[i]`` of
+    ``centre[i]`` on the side holding more of them are its tail, and a
+    median restricted to ``+-half[i]`` (three rounds from the tail's
+    median) finds the tail's densest level. Returns, per row, the tail's
+    size and the number of its values within that level's window.
+    """
+    w, n = s.shape
+    tail = np.zeros(w, dtype=np.int64)
+    dense = np.zeros(w, dtype=np.int64)
+    for i in range(w):
+        h = half[i]
+        below = _search_keys(s, i, 0.0, centre[i] - h, False)
+        above = n - _search_keys(s, i, 0.0, centre[i] + h, True)
+        a0, a1 = (0, below) if below >= above else (n - above, n)
+        tail[i] = a1 - a0
+        if a1 - a0 < 3:
+            continue
+        m = np.float64(s[i, (a0 + a1) // 2])
+        k = 0
+        for _ in range(3):
+            lo = max(_search_keys(s, i, 0.0, m - h, False), a0)
+            hi = min(_search_keys(s, i, 0.0, m + h, True), a1)
+            k = hi - lo
+            if k <= 0:
+                break
+            m = 0.5 * (np.float64(s[i, lo + (k - 1) // 2]) + np.float64(s[i, lo + k // 2]))
+        dense[i] = max(k, 0)
+    return tail, dense
+
+
+@jit(inline="always")
+def _select(a: np.ndarray, k: int) -> float:
+    """The ``k``-th smallest value of ``a`` (0-based), by selection in place: afterwards ``a[:k] <= a[k] <= a[k + 1:]``."""
+    lo = 0
+    hi = a.size - 1
+    while lo < hi:
+        pivot = a[(lo + hi) // 2]
+        i = lo
+        j = hi
+        while i <= j:
+            while a[i] < pivot:
+                i += 1
+            while a[j] > pivot:
+                j -= 1
+            if i <= j:
+                t = a[i]
+                a[i] = a[j]
+                a[j] = t
+                i += 1
+                j -= 1
+        if k <= j:
+            hi = j
+        elif k >= i:
+            lo = i
+        else:
+            break
+    return a[k]
+
+
+@jit()
+def pair_offs(xs: np.ndarray, cl: np.ndarray, clip_at: np.ndarray, tol: np.ndarray, use_gain: bool, stride: int, clipped_any: bool) -> np.ndarray:
+    """``offs[i, k, j]`` of :func:`ballscan.measure.clear_lines._pair_offs`: pixel ``j`` of line ``i`` off line ``k``'s after their factor (offset).
+
+    The factor is the median of ``xs[i] / xs[k]`` (``xs[i] - xs[k]``) over
+    every ``stride``-th column where neither pixel is clipped (and, for the
+    ratio, ``xs[k] > 0``); without clipped pixels a column without a ratio
+    leaves no factor (1, or offset 0), as numpy's median of a NaN would.
+    """
+    m, w = xs.shape
+    offs = np.zeros((m, m, w), dtype=np.bool_)
+    buf = np.empty((w + stride - 1) // stride)
+    for i in range(m):
+        for k in range(m):
+            q = 0
+            gap = False
+            for j in range(0, w, stride):
+                ok = not (cl[i, j] or cl[k, j])
+                if use_gain:
+                    ok = ok and xs[k, j] > 0
+                if ok:
+                    buf[q] = xs[i, j] / xs[k, j] if use_gain else xs[i, j] - xs[k, j]
+                    q += 1
+                else:
+                    gap = True
+            if q == 0 or (gap and not clipped_any):
+                c = 1.0 if use_gain else 0.0
+            else:
+                # the median by selection in place (numpy's value: the mean
+                # of the middle two of an even count)
+                part = buf[:q]
+                c = _select(part, q // 2)
+                if q % 2 == 0:
+                    c = (part[: q // 2].max() + c) / 2.0
+            f = math.sqrt(0.5 * (1.0 + c**2)) if use_gain else 1.0
+            for j in range(w):
+                t = tol[j] * f
+                pred = c * xs[k, j] if use_gain else xs[k, j] + c
+                off = abs(xs[i, j] - pred) > t
+                if clipped_any:
+                    if cl[i, j]:
+                        off = pred < clip_at[i] - t
+                    if cl[k, j]:
+                        clip_k = c * clip_at[k] if use_gain else clip_at[k] + c
+                        off = (xs[i, j] < clip_k - t) and not cl[i, j]
+                offs[i, k, j] = off
+    return offs
+
+
+@jit()
+def scale_counts(rows: np.ndarray, grid: np.ndarray, profile: np.ndarray, half: np.ndarray, use_gain: bool, sat: float) -> np.ndarray:
+    """Pixels of each line of ``rows`` within ``half`` of each scale's (offset's) background, or clipped where it reaches the clip (:func:`ballscan.measure.clear_lines.line_levels`)."""
+    n, w = rows.shape
+    out = np.zeros((n, grid.size), dtype=np.int64)
+    for i in range(n):
+        for g in range(grid.size):
+            c = grid[g]
+            e = 0
+            for j in range(w):
+                pred = c * profile[j] if use_gain else profile[j] + c
+                r = rows[i, j]
+                e += (abs(r - pred) <= half[j]) | ((r >= sat) & (pred >= sat - half[j]))
+            out[i, g] = e
+    return out
+
+
+@jit()
+def on_first(x: np.ndarray, first: np.ndarray, profile: np.ndarray, half: np.ndarray, use_gain: bool, sat: float) -> np.ndarray:
+    """Pixels of each line of ``x`` (float32, widened) within ``half`` of its first scale's (offset's) background, or clipped where that reaches the clip."""
+    n, w = x.shape
+    out = np.zeros(n, dtype=np.int64)
+    for i in range(n):
+        c = first[i]
+        e = 0
+        for j in range(w):
+            pred = c * profile[j] if use_gain else profile[j] + c
+            r = np.float64(x[i, j])
+            e += (abs(r - pred) <= half[j]) | ((r >= sat) & (pred >= sat - half[j]))
+        out[i] = e
+    return out
+
+
 @jit(inline="always")
 def _root(parent: np.ndarray, q: int) -> int:
     """Root of ``q`` in the union-find forest ``parent`` (path halving)."""
@@ -497,3 +642,7 @@ def warm_up() -> None:
     kept_median(s, e, 1e300)
     multi_runs(group_mask(np.zeros((2, 2), dtype=np.int32), 0, 2, 0, 2, np.ones(1, dtype=np.bool_)), 1)
     region_values(np.ones((2, 2)), np.ones(2), np.ones(2), np.zeros(2), 0, 0, fill_lines_and_cols(np.ones((2, 2), dtype=np.bool_)), 255.0)
+    second_level(np.zeros((1, 4), dtype=np.float32), np.zeros(1), np.ones(1))
+    pair_offs(np.ones((2, 2)), np.zeros((2, 2), dtype=np.bool_), np.ones(2), np.ones(2), True, 1, False)
+    scale_counts(np.ones((1, 2)), np.ones(2), np.ones(2), np.ones(2), True, 255.0)
+    on_first(np.ones((1, 2), dtype=np.float32), np.ones(1), np.ones(2), np.ones(2), True, 255.0)

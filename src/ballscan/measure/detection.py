@@ -9,19 +9,32 @@ background of pixel ``(i, j)`` is modelled as
 
 * ``background_dn[j]`` is a per-column level: the *mode* of the column,
   found by mode seeking (a median restricted to a window of +-4.5 noise
-  sigmas, iterated) started from the level of the neighbouring columns (a
-  wide running median of the column medians). This stays on the background
-  even where a ball covers most of a column's lines (a plain median fails
-  there once the ball covers more than half of them), and, because the
-  window is re-centred on the column's own values, follows hot/cold columns,
-  PRNU and vignetting. Where a column has almost no values near its
-  neighbours' level (a strongly defective column) its own median is used.
-* Slow illumination drift along time is one factor per line, estimated as a
-  median over the background pixels of the line (pixels of a first-pass
-  ball mask excluded), so a ball never biases it. The drift is a gain
-  (``line_gain``, multiplicative: illumination) when the background is well
-  above zero, and an offset (``line_offset_dn``) when the background is near
+  sigmas, iterated) started from the backdrop's level on the lines no ball
+  crosses (:mod:`ballscan.measure.clear_lines`: the largest set of lines
+  that match one another pixel by pixel after one scale each), or, where
+  fewer than three such lines are found, from the level of the neighbouring
+  columns (a wide running median of the column medians). This stays on the
+  background where a ball covers most of a column's lines (a plain median
+  fails there once the ball covers more than half of them) and where the
+  backdrop's level changes across the sensor (the neighbours' level is then
+  another level), and, because the window is re-centred on the column's own
+  values, follows hot/cold columns, PRNU and vignetting. Where a column has
+  almost no values near its start (a strongly defective column) its level on
+  the ball-free lines (else its own median) is used.
+* Slow illumination drift and a lamp's flicker along time are one factor
+  per line, estimated as a median over the background pixels of the line
+  (pixels of a first-pass ball mask excluded), so a ball never biases it.
+  The first pass is centred on the lines' medians, or, on a line where
+  fewer than half the pixels lie on that level (a ball covering most of
+  the line), on the scale that puts the most pixels on the ball-free
+  lines' profile (:func:`ballscan.measure.clear_lines.line_levels`). The
+  drift is a gain (``line_gain``, multiplicative: illumination) when the
+  background is well above its noise (measured on consecutive lines
+  levelled by their medians, so that a flickering lamp is not read as
+  noise), and an offset (``line_offset_dn``) when the background is near
   zero, where a ratio would be unstable. The other one is then 1 / 0.
+* Pixels at the saturation level where the backdrop itself reaches it (a
+  bright backdrop on a flickering lamp's brightest lines) are background.
 * ``noise_dn[j]`` is a per-column noise sigma (DN): the standard deviation
   of the column's values in the mode seeking's last window, floored at
   ``noise_floor_dn`` (default 0.5 DN, the quantisation of integer data) and
@@ -64,7 +77,9 @@ from ._detection_kernels import (
     multi_runs,
     reflect_median_filter,
     region_values,
+    second_level,
 )
+from .clear_lines import ClearLines, clear_line_levels, column_noise, line_levels
 from .images import LineImage
 from .robust import MAD_TO_SIGMA, median
 
@@ -345,6 +360,10 @@ def _global_noise(x: np.ndarray) -> float:
 # --------------------------------------------------------------------------
 #: Most lines the per-column background mode and noise are measured on (:func:`_column_modes`).
 _MODE_LINES = 2048
+#: A column's lines off its mode are taken for a ball's unless this share of them lies at one level.
+_TAIL_SHARE = 0.5
+#: The lines' medians hold where at most this share of each line's pixels lie off its median's level.
+_LINE_OFF_SHARE = 0.5
 
 
 @dataclass(frozen=True)
@@ -373,8 +392,20 @@ class _Background:
     drift_model: str
 
 
-def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None) -> _Background:
-    """The background model of the float32 image ``x`` (see the module docstring), with the columns of ``known`` where given."""
+def _background(
+    x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known: ColumnModel | None = None, saturation_dn: float = np.inf
+) -> _Background:
+    """The background model of the float32 image ``x`` (see the module docstring), with the columns of ``known`` where given.
+
+    The columns' modes and the lines' medians are tried first (one sort of
+    the sampled columns, one pass over the subsampled lines). They hold
+    where no column's lines off its mode hold another level that the
+    image's first or last line shows (a backdrop under an even ball's
+    middle, see :func:`_column_modes`), no column is defective and every
+    line has at most ``_LINE_OFF_SHARE`` of its pixels off its median's
+    level. Only an image that fails a check pays for the search of its
+    ball-free lines (:mod:`ballscan.measure.clear_lines`).
+    """
     n, w = x.shape
     # Column subsample for per-line statistics: a few hundred columns give a
     # per-line level to a small fraction of the noise, at a fraction of the cost.
@@ -382,10 +413,7 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
     xs = x[:, ::step]
     # Per-line level from the line medians: balls cover a minority of a line.
     level = _row_median(xs)
-    if known is None:
-        sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
-        start = _column_modes(x, level, sigma0, noise_floor_dn)
-    else:
+    if known is not None:
         # a writeable copy: the kernels below take writeable arrays (a
         # read-only one would compile a second signature on a stream ball)
         b = known.background_dn.copy()
@@ -397,15 +425,87 @@ def _background(x: np.ndarray, noise_floor_dn: float, first_pass_k: float, known
         gain0 = level / ref if use_gain else np.ones(n)
         offset0 = np.zeros(n) if use_gain else level - ref
         start = _ColumnStart(background_dn=b, noise_dn=sig, line_gain=gain0, line_offset_dn=offset0, use_gain=use_gain)
-    return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)
-
-
-def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_dn: float) -> _ColumnStart:
-    """Per-column background mode and noise (see the module docstring), and the first per-line drift."""
+        return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)[0]
     ref = float(median(level))
-    use_gain = ref > 10.0 * sigma0 and float(level.min()) > 0.0
-    gain0 = level / ref if use_gain else np.ones(level.size)
-    offset0 = np.zeros(level.size) if use_gain else level - ref
+    sigma0, use_gain = _drift_noise(xs, level, noise_floor_dn)
+    first = level / ref if use_gain else level - ref
+    start, held = _column_modes(x, first, use_gain, sigma0, noise_floor_dn)
+    bg, off_share = _line_drift(xs, step, start, noise_floor_dn, first_pass_k)
+    if held and off_share <= _LINE_OFF_SHARE:
+        return bg
+    clear, col_noise, first = _clear_start(x, level, ref, use_gain, noise_floor_dn, first, sigma0, saturation_dn)
+    if clear is None:
+        # no backdrop seen alone often enough: the modes and medians stand
+        return bg
+    start, _ = _column_modes(x, first, use_gain, sigma0, noise_floor_dn, clear, col_noise)
+    return _line_drift(xs, step, start, noise_floor_dn, first_pass_k)[0]
+
+
+def _drift_noise(xs: np.ndarray, level: np.ndarray, noise_floor_dn: float) -> tuple[float, bool]:
+    """The image's noise sigma (DN) and whether its drift is a gain, from the subsampled ``xs``.
+
+    The noise is measured on the differences of consecutive lines. Where
+    the lines' levels change from line to line by more than a quarter of
+    that (a flickering lamp), the differences read the change as noise (and
+    the offset model would be chosen on a bright backdrop): the noise is
+    then also measured on the lines levelled both ways (scaled and shifted
+    to the reference level, :func:`ballscan.measure.clear_lines.column_noise`)
+    and the least is taken.
+    """
+    ref = float(median(level))
+    positive = float(level.min()) > 0.0
+    sigma0 = max(_global_noise(xs[:, ::2]), noise_floor_dn)
+    k = -(-xs.shape[0] // _MODE_LINES)
+    # some 128 columns decide the model
+    sub, lev = xs[::k, :: max(1, xs.shape[1] // 128)], level[::k]
+    if sub.shape[0] >= 8:
+        dl = np.diff(lev)
+        spread = MAD_TO_SIGMA * float(median(np.abs(dl - median(dl))))
+        if spread > 0.25 * sigma0:
+            per = [column_noise(sub, lev, ref, g) for g in ((True, False) if positive else (False,))]
+            sigma0 = max(min([sigma0] + [float(median(v)) for v in per]), noise_floor_dn)
+    return sigma0, ref > 10.0 * sigma0 and positive
+
+
+def _clear_start(
+    x: np.ndarray, level_full: np.ndarray, ref: float, use_gain: bool, noise_floor_dn: float, first: np.ndarray, sigma0: float, saturation_dn: float
+) -> tuple[ClearLines | None, np.ndarray, np.ndarray]:
+    """The ball-free lines' profile (:mod:`ballscan.measure.clear_lines`), the columns' noise and the lines' first scale (offset) on it."""
+    k = -(-x.shape[0] // _MODE_LINES)
+    sub = x[::k]
+    if sub.shape[0] >= 8:
+        cols = column_noise(sub, level_full[::k], ref, use_gain)
+        cols = np.maximum(cols, max(noise_floor_dn, 0.25 * float(median(cols))))
+    else:
+        cols = np.full(x.shape[1], sigma0)
+    clear = clear_line_levels(x, level_full, ref, cols, use_gain, saturation_dn) if x.shape[0] >= 8 else None
+    if clear is None:
+        return None, cols, first
+    return clear, cols, line_levels(x, clear.level_dn, cols, first, clear.scale_range, use_gain, saturation_dn=saturation_dn)
+
+
+def _column_modes(
+    x: np.ndarray,
+    first: np.ndarray,
+    use_gain: bool,
+    sigma0: float,
+    noise_floor_dn: float,
+    clear: ClearLines | None = None,
+    col_noise: np.ndarray | None = None,
+) -> tuple[_ColumnStart, bool]:
+    """Per-column background mode and noise (see the module docstring), with the lines' first drift ``first``.
+
+    Started from the neighbouring columns' level, or from the ball-free
+    lines' profile ``clear`` (their noise ``col_noise``) where given.
+    Returns the start and whether the modes hold on their own: no
+    ``clear`` given, no defective column, and no column whose lines off
+    its mode hold, for at least ``_TAIL_SHARE`` of them, one level within
+    the noise that its first or last line lies off the mode (that level
+    may be the backdrop's and the mode an even ball's over most of the
+    column's lines).
+    """
+    gain0 = first if use_gain else np.ones(first.size)
+    offset0 = np.zeros(first.size) if use_gain else first
     # The columns' statistics from at most _MODE_LINES evenly spaced lines:
     # their level is then known to a few hundredths of the noise, and the
     # cost of the sorts below does not grow with the image's length.
@@ -423,6 +523,47 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
         np.subtract(x.T, o.astype(x.dtype)[None, :], out=s)
     s.sort(axis=1)
     col_med = (s[:, n // 2] if n % 2 else 0.5 * (s[:, n // 2 - 1] + s[:, n // 2])).astype(np.float64)
+    if clear is not None:
+        # the ball-free lines' level: the backdrop's own, where a ball covers
+        # most of a column's lines or the backdrop changes across the sensor
+        neighbours = clear.level_dn
+    else:
+        neighbours = _neighbour_level(col_med)
+    sig_start = np.full(w, sigma0)
+    b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
+    min_support = max(3, int(np.ceil(0.03 * n)))
+    weak = cnt < min_support
+    if np.any(weak) and clear is not None:
+        b[weak] = clear.level_dn[weak]
+        sig[weak] = col_noise[weak]
+    elif np.any(weak):
+        # A column whose values are nowhere near its neighbours' level is a
+        # defective (hot/cold) column, not a ball: use its own mode.
+        b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
+        b[weak] = b2
+        sig[weak] = sig2
+    held = clear is None and not np.any(weak)
+    if held:
+        # The lines off a column's mode are a ball's, unless most of them
+        # hold one level within the noise and the first or last line is
+        # among them: then they may be the backdrop's (seen at an end of
+        # the image, where a ball is only if it is cut there), and the mode
+        # an even ball's over most of the column's lines.
+        half = 4.5 * np.maximum(sig, noise_floor_dn)
+        tail, dense = second_level(s, b, half)
+        ends = (np.abs(_levelled_line(x, g, o, use_gain, 0) - b) > half) | (np.abs(_levelled_line(x, g, o, use_gain, n - 1) - b) > half)
+        held = not np.any((dense >= min_support) & (dense >= _TAIL_SHARE * tail) & ends)
+    return _ColumnStart(background_dn=b, noise_dn=sig, line_gain=gain0, line_offset_dn=offset0, use_gain=use_gain), held
+
+
+def _levelled_line(x: np.ndarray, g: np.ndarray, o: np.ndarray, use_gain: bool, i: int) -> np.ndarray:
+    """Line ``i`` of ``x`` brought to the reference level as the sorted columns are (divided by its gain, or its offset removed)."""
+    return x[i] / g[i] if use_gain else x[i] - o[i]
+
+
+def _neighbour_level(col_med: np.ndarray) -> np.ndarray:
+    """The level of each column's neighbours: a wide running median of the columns' medians."""
+    w = col_med.size
     # Wide enough to out-vote a run of up to ~127 ball-dominated columns (a
     # median filter leaves monotone profiles such as vignetting unchanged).
     win = max(w // 4, 255) | 1
@@ -432,25 +573,19 @@ def _column_modes(x: np.ndarray, level: np.ndarray, sigma0: float, noise_floor_d
     if np.isnan(col_med).any():
         from scipy.ndimage import median_filter  # only here: scipy.ndimage takes a quarter second to import
 
-        neighbours = median_filter(col_med, size=size, mode="reflect")
-    else:
-        # compiled (_detection_kernels.reflect_median_filter): ndi.median_filter's values
-        neighbours = reflect_median_filter(col_med, size)
-    sig_start = np.full(w, sigma0)
-    b, sig, cnt = _mode_seek(s, neighbours, sig_start, noise_floor_dn)
-    min_support = max(3, int(np.ceil(0.03 * n)))
-    weak = cnt < min_support
-    if np.any(weak):
-        # A column whose values are nowhere near its neighbours' level is a
-        # defective (hot/cold) column, not a ball: use its own mode.
-        b2, sig2, _ = _mode_seek(s[weak], col_med[weak], sig_start[weak], noise_floor_dn)
-        b[weak] = b2
-        sig[weak] = sig2
-    return _ColumnStart(background_dn=b, noise_dn=sig, line_gain=gain0, line_offset_dn=offset0, use_gain=use_gain)
+        return median_filter(col_med, size=size, mode="reflect")
+    # compiled (_detection_kernels.reflect_median_filter): ndi.median_filter's values
+    return reflect_median_filter(col_med, size)
 
 
-def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: float, first_pass_k: float) -> _Background:
-    """Per-line gain or offset from the background pixels of the subsampled columns ``xs`` (every ``step``-th), and the floored noise."""
+def _line_drift(
+    xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: float, first_pass_k: float
+) -> tuple[_Background, float]:
+    """Per-line gain or offset from the background pixels of the subsampled columns ``xs`` (every ``step``-th), and the floored noise.
+
+    Also returns the largest share of a line's pixels off its first level
+    (beyond ``first_pass_k`` noise): above one half, that level is a ball's.
+    """
     n = xs.shape[0]
     b, sig, gain0, offset0, use_gain = start.background_dn, start.noise_dn, start.line_gain, start.line_offset_dn, start.use_gain
     # First-pass ball mask on the subsampled columns, then per-line drift from
@@ -462,6 +597,7 @@ def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: 
     samples, n_excluded = first_pass_lines(
         as_arg(xs, np.float32), as_arg(gain0), as_arg(offset0), as_arg(bs), as_arg(thr), use_gain
     )
+    off_share = float(n_excluded.max()) / xs.shape[1] if n else 0.0
     v, c = _masked_median(samples, n_excluded)
     good = c >= max(3, xs.shape[1] // 10)
     if use_gain:
@@ -476,7 +612,8 @@ def _line_drift(xs: np.ndarray, step: int, start: _ColumnStart, noise_floor_dn: 
     # measure must not get a tiny sigma and flood the mask).
     typical = float(median(sig)) if sig.size else noise_floor_dn
     noise = np.maximum(sig, max(noise_floor_dn, 0.25 * typical))
-    return _Background(background_dn=b, noise_dn=noise, line_gain=gain, line_offset_dn=offset, drift_model="gain" if use_gain else "offset")
+    bg = _Background(background_dn=b, noise_dn=noise, line_gain=gain, line_offset_dn=offset, drift_model="gain" if use_gain else "offset")
+    return bg, off_share
 
 
 def _fill_bad(values: np.ndarray, good: np.ndarray, fallback: np.ndarray) -> np.ndarray:
@@ -765,6 +902,22 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
     )
 
 
+def _unclip_backdrop(x32: np.ndarray, bg: _Background, sat: float, k_sigma: float) -> np.ndarray:
+    """``x32`` with its pixels at the saturation level (within ``k_sigma`` noise) where the backdrop itself reaches it set to the background.
+
+    A bright backdrop under a flickering lamp clips on its brightest lines:
+    there it reads the saturation level, less than the model's ``gain *
+    level``, and would pass for a dark ball across the whole line.
+    """
+    if not np.isfinite(sat) or not np.any(x32 >= sat):
+        return x32
+    pred = bg.line_gain[:, None] * bg.background_dn[None, :] + bg.line_offset_dn[:, None]
+    near = sat - k_sigma * bg.noise_dn[None, :]
+    # the clipped backdrop's values lie within the noise below the level
+    clip = (x32 >= near) & (pred >= near)
+    return np.where(clip, pred, x32).astype(np.float32) if np.any(clip) else x32
+
+
 def detect(
     image: LineImage,
     *,
@@ -824,7 +977,8 @@ def detect(
     # float32 for the whole-image passes: exact for 16-bit integers, and the
     # statistics are accumulated in float64.
     x32 = x.astype(np.float32)
-    bg = _background(x32, floor, first_pass_k=3.0, known=columns)
+    bg = _background(x32, floor, first_pass_k=3.0, known=columns, saturation_dn=sat)
+    x32 = _unclip_backdrop(x32, bg, sat, k_sigma)
     # The pixels with |x - background| > k_sigma noise (in float32), labelled
     # 8-connected, with their sizes and boxes (compiled).  The offset is 0
     # in the gain model: adding it there changes no residual.
