@@ -512,3 +512,13 @@ def test_clipped_backdrop_on_a_flickering_lamp():
     det = detect(_image(img))
     r = _one_ball_box(det, inside)
     assert "cut_sensor_end" not in r.flags and "saturated" not in r.flags
+
+
+def test_saturation_beyond_the_float32_range_is_never_reached():
+    # a saturation level above float32's largest value (a user's --saturation): nothing clips,
+    # and the same balls are found as with no clipping level in reach
+    img = _noisy(_disc((80, 120), (40, 60), (12, 12), 200.0)[0], 2.0, 3)
+    huge = detect(_image(img, sat=3.4028235677973366e38))
+    plain = detect(_image(img, sat=1e6))
+    assert len(huge.regions) == len(plain.regions) == 1
+    assert huge.regions[0].flags == plain.regions[0].flags

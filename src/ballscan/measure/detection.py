@@ -910,7 +910,7 @@ def _unclip_backdrop(x32: np.ndarray, bg: _Background, sat: float, k_sigma: floa
     level``, and would pass for a dark ball across the whole line.
     """
     # a level beyond the pixels' float range is never reached (and would overflow the cast)
-    if not np.isfinite(sat) or sat > np.finfo(x32.dtype).max or not np.any(x32 >= sat):
+    if not np.isfinite(sat) or sat > float(np.finfo(x32.dtype).max) or not np.any(x32 >= sat):
         return x32
     pred = bg.line_gain[:, None] * bg.background_dn[None, :] + bg.line_offset_dn[:, None]
     near = sat - k_sigma * bg.noise_dn[None, :]
