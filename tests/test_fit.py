@@ -441,3 +441,31 @@ def test_pixel_coverage_histogram_equals_the_direct_sum(grid):
     assert np.array_equal(np.isnan(new), np.isnan(ref)) and np.isnan(new[1, 7]).all()
     assert np.nanmax(np.abs(new - ref)) < 1e-12
     assert np.nanmax(ref) > 0.99  # fully covered pixels are in the test
+
+
+def test_pixel_fit_widens_its_covariance_by_its_pixels_correlated_model_error():
+    """An unmodelled pattern over neighbouring pixels (a texture) inflates the covariance as correlated edges do; white noise does not.
+
+    The pixel residuals enter the covariance scale's correlation terms
+    (``Selection.correlated_runs``): a ball whose profile carries a smooth
+    stripe pattern of 6 noise sigmas, 8 pixels long, that no motion
+    explains, gets an inflation above 2; the same ball with only white
+    noise keeps an inflation of 1 (its scale is the reduced chi-square's).
+    """
+    from dataclasses import replace
+
+    cam, m = _serve()
+    st = FitSettings(pixels=True, pixel_groups="end", pixel_nodes=16)
+    init = BallMotion(0.0335, 0.00172, (0, -0.079, 4.3), (43.0, 3.5, -3.0))
+    base = synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False)
+    white = _with_profile(cam, m, base, noise=0.01, seed=3)
+    cols = white.profile_col0 + np.arange(white.profile.shape[1])
+    stripes = 0.06 * np.sin(2 * np.pi * cols / 16.0)[None, :] * (white.profile > 0.05)
+    textured = replace(white, profile=white.profile + stripes)
+    fit_white = fit_motion(cam, white, init, st)
+    fit_textured = fit_motion(cam, textured, init, st)
+    assert fit_white.converged and fit_textured.converged
+    assert fit_white.inflation == 1.0
+    assert fit_textured.inflation > 2.0
+    # the sigmas grow with it: sqrt(inflation) on top of the reduced chi-square's scale
+    assert np.sqrt(fit_textured.covariance[3, 3]) > 1.4 * np.sqrt(fit_white.covariance[3, 3] * fit_textured.chi2_red / fit_white.chi2_red)

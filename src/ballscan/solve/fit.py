@@ -291,14 +291,15 @@ def _reject(states, sels, r: np.ndarray, reject_sigma: float) -> int:
     return n_bad
 
 
+def _blocks(sels, r: np.ndarray) -> list[np.ndarray]:
+    """Each block's whitened residuals (views of ``r``)."""
+    ends = np.cumsum([0] + [sel.n_residuals for sel in sels])
+    return [r[a:b] for a, b in zip(ends[:-1], ends[1:])]
+
+
 def _edge_sides(sels, r: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """Each block's whitened left and right edge residuals (views of ``r``)."""
-    out, o = [], 0
-    for sel in sels:
-        nl, nr = sel.n_left, sel.n_right
-        out.append((r[o : o + nl], r[o + nl : o + nl + nr]))
-        o += sel.n_residuals
-    return out
+    return [(rb[: sel.n_left], rb[sel.n_left : sel.n_left + sel.n_right]) for sel, rb in zip(sels, _blocks(sels, r))]
 
 
 def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, verdict: str, settings: FitSettings, t0: float) -> FitResult:
@@ -314,7 +315,8 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     dof = r.size - len(x) - sum(s.n_groups for s in sels)
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
     sides = _edge_sides(sels, r)
-    total_scale, inflation = residual_scale(chi2_red, tuple(a for pair in sides for a in pair), settings.correlation_inflation)
+    runs = tuple(a for sel, rb in zip(sels, _blocks(sels, r)) for a in sel.correlated_runs(rb))
+    total_scale, inflation = residual_scale(chi2_red, runs, settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
     cov = cov_full[:6, :6].copy()
     for name in undetermined:

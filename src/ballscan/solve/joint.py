@@ -41,9 +41,6 @@ __all__ = ["CONSISTENCY_P", "JointCamera", "JointCameraFit", "JointLayout", "Joi
 
 #: False-alarm rate of the per-camera consistency test.
 CONSISTENCY_P = 1e-4
-
-#: Fewest pixel residuals whose correlation enters a camera's covariance scale.
-PIXEL_RUN_MIN = 32
 #: The world state's parameters.
 STATE_NAMES = ("x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps")
 
@@ -322,20 +319,6 @@ def fit_joint(
     return _joint_result(problem, sol, states, start, constraint, n_eval, t0)
 
 
-def _residual_sides(r: np.ndarray, n_left: int, n_right: int) -> tuple[np.ndarray, ...]:
-    """A camera block's whitened residuals in the runs whose correlation :func:`residual_scale` measures.
-
-    The left and the right edges in line order, and the pixels (of the
-    windows and ends, in their order) where the block has them: a textured
-    or shaded ball leaves model error correlated over neighbouring pixels as
-    over neighbouring edges, and it widens the joint covariance and the
-    consistency test's unit alike.
-    """
-    sides = (r[:n_left], r[n_left : n_left + n_right])
-    pixels = r[n_left + n_right :]
-    return sides + (pixels,) if pixels.size >= PIXEL_RUN_MIN else sides
-
-
 def _camera_fits(problem: JointProblem, sol, states) -> tuple[list[JointCameraFit], list[float]]:
     """Each camera's chi-square under the joint motion and alone, its consistency and covariance scale."""
     x, r, lay = sol.x, sol.residuals, problem.layout
@@ -352,8 +335,7 @@ def _camera_fits(problem: JointProblem, sol, states) -> tuple[list[JointCameraFi
         chi2 = float(rk @ rk)
         own = levenberg_marquardt(FitProblem((st,), (sel,), fit_bias=lay.fit_bias[k]), xk, st.settings, loss="linear")
         chi2_own = float(own.residuals @ own.residuals)
-        nl, nr = sel.n_left, sel.n_right
-        scale, _ = residual_scale(chi2_own / dof, _residual_sides(rk, nl, nr), st.settings.correlation_inflation)
+        scale, _ = residual_scale(chi2_own / dof, sel.correlated_runs(rk), st.settings.correlation_inflation)
         delta = max(chi2 - chi2_own, 0.0) / scale
         i = lay.bias_index[k]
         fits.append(

@@ -65,6 +65,8 @@ __all__ = [
 ]
 
 BIAS_NAME = "edge_bias_px"  # the edge bias's name beside PARAM_NAMES
+#: Fewest pixel residuals of a block whose correlation enters its covariance scale.
+PIXEL_RUN_MIN = 32
 _REL_STEP = 1e-3  # forward-difference step, fraction of param_scale
 
 
@@ -127,6 +129,23 @@ class Selection:
     n_groups: int = field(init=False)
     n_edge_lines: int = field(init=False)
     n_single_edge_lines: int = field(init=False)
+
+    def correlated_runs(self, r: np.ndarray) -> tuple[np.ndarray, ...]:
+        """This block's whitened residuals ``r`` in the runs whose correlation the covariance scale measures.
+
+        The left and the right edges (line order) and, where the block has
+        at least :data:`PIXEL_RUN_MIN` of them, its pixels (window by
+        window, line by line): a shaded or textured ball leaves model error
+        correlated over neighbouring pixels as over neighbouring edges, and
+        it widens the covariance alike
+        (:func:`ballscan.solve.uncertainty.residual_scale`).
+        """
+        nl, nr = self.n_left, self.n_right
+        edges = (r[:nl], r[nl : nl + nr])
+        if self.n_pixels < PIXEL_RUN_MIN:
+            return edges
+        o = nl + nr + self.n_area
+        return edges + (r[o : o + self.n_pixels],)
 
     @property
     def n_line_pairs(self) -> int:
