@@ -77,10 +77,10 @@ def largest_sigma(C) -> float:
     return float(math.sqrt(max(np.linalg.eigvalsh(np.asarray(C, float)).max(), 0.0)))
 
 
-def one(rig, seed: int) -> dict:
+def one(rig, seed: int, noise: SensorNoise = SensorNoise()) -> dict:
     truth = ball(seed)
     app = Appearance(ball_level=BALL, shading=False)
-    sim = simulate_rig(rig, truth, N_LINES, app, seed=seed, noise=SensorNoise(), background_level=BACKGROUND)
+    sim = simulate_rig(rig, truth, N_LINES, app, seed=seed, noise=noise, background_level=BACKGROUND)
     t0 = time.perf_counter()
     rep = estimate_rig(sim.images, rig, RADIUS)
     wall = time.perf_counter() - t0
@@ -93,7 +93,7 @@ def one(rig, seed: int) -> dict:
     el, el_s, az, az_s = b.direction()
     el_t, _, az_t, _ = launch_angles(Vt, np.eye(3))
     sp, sp_s = b.speed()
-    bound = rig_crlb(rig, tr, lambda cam, cm: sensor_crlb(cam, cm, SensorNoise(), BALL, BACKGROUND).covariance)
+    bound = rig_crlb(rig, tr, lambda cam, cm: sensor_crlb(cam, cm, noise, BALL, BACKGROUND).covariance)
     out.update(
         flags=list(b.flags), cameras=list(b.cameras), dir_err=angle_between_deg(V, Vt), v_err=V - Vt, v_sig=b.sigmas[4:7],
         cov_v=b.covariance[4:, 4:], joint_sigma=largest_sigma(b.covariance[4:, 4:]),
@@ -112,7 +112,7 @@ def one(rig, seed: int) -> dict:
         Vw = rc.camera.vectors_to_world(np.asarray(e.velocity_mps))
         Cw = world_covariance(rc.camera, np.asarray(e.covariance))[4:, 4:]
         cm = sim.camera_motions[rig.cameras.index(rc)]
-        cr = sensor_crlb(rc.camera, cm, SensorNoise(), BALL, BACKGROUND)
+        cr = sensor_crlb(rc.camera, cm, noise, BALL, BACKGROUND)
         # the single camera's efficiency on its well-measured axes: vx and vy (its frame) over its own pixel bound
         ev = (np.asarray(e.velocity_mps) - np.asarray(cm.velocity_mps))[:2] / cr.velocity_sigma_mps[:2]
         singles.append({"dir_err": angle_between_deg(Vw, Vt), "sigma": largest_sigma(Cw), "v_err": Vw - Vt, "cov_v": Cw, "err_cr": ev})
@@ -146,7 +146,8 @@ def summarise(angle: float, rows: list[dict]) -> list[str]:
         cov.append(np.abs(e) <= s)
         lines.append(
             f"- {label}: RMS error / joint CR sigma {math.sqrt(np.mean((e / cr) ** 2)):.2f}, RMS error / reported sigma "
-            f"{math.sqrt(np.mean((e / s) ** 2)):.2f}, 1-sigma coverage {100 * np.mean(np.abs(e) <= s):.0f} %, mean reported / CR sigma {np.mean(s / cr):.2f}"
+            f"{math.sqrt(np.mean((e / s) ** 2)):.2f}, 1-sigma coverage {100 * np.mean(np.abs(e) <= s):.0f} %, mean reported / CR sigma {np.mean(s / cr):.2f}, "
+            f"mean error / CR sigma {np.mean(e / cr):+.2f}"
         )
     e1 = np.concatenate(singles_cr)
     lines.append(f"- each camera alone, RMS error / its own pixel CR sigma (its frame): vx {math.sqrt(np.mean(e1[:, 0] ** 2)):.2f}, vy {math.sqrt(np.mean(e1[:, 1] ** 2)):.2f} (the estimator's efficiency on one camera)")
@@ -203,6 +204,7 @@ def main(argv=None) -> None:
     ap.add_argument("--renders", type=int, default=100)
     ap.add_argument("--angles", default="90,30")
     ap.add_argument("--first", type=int, default=0)
+    ap.add_argument("--prnu", type=float, default=SensorNoise().prnu_sigma, help="The sensors' column-gain scatter (PRNU), relative 1-sigma.")
     ap.add_argument("--figure", default=None)
     ap.add_argument("--out", default=None)
     ap.add_argument("--replot", default=None, help="Only redraw --figure from a saved --out file.")
@@ -217,7 +219,8 @@ def main(argv=None) -> None:
     results = {}
     for a in (float(v) for v in args.angles.split(",")):
         rig = rig_for_angle(a)
-        rows = [one(rig, seed) for seed in range(args.first, args.first + args.renders)]
+        noise = SensorNoise(prnu_sigma=args.prnu)
+        rows = [one(rig, seed, noise) for seed in range(args.first, args.first + args.renders)]
         results[a] = rows
         print("\n".join(summarise(a, rows)), flush=True)
         print(flush=True)

@@ -16,7 +16,7 @@ from ballscan.lab.rig import RIG_PRESETS, camera_about_lane, simulate_rig
 from ballscan.model.render import Appearance, render
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
-from ballscan.pipeline.rig import combined_start, estimate_rig, match_window_s, measure_group, own_block, single_camera_rig
+from ballscan.pipeline.rig import combined_start, estimate_rig, gain_prior, match_window_s, measure_group, own_block, single_camera_rig
 from ballscan.solve.constraint import Constraint, parse_constraint
 from ballscan.solve.joint import JointCamera, JointLayout, JointProblem, fit_joint
 from ballscan.solve.problem import BlockState, ResidualBlock
@@ -96,9 +96,17 @@ def test_a_uniform_balls_window_edges_enter_the_joint_fit_as_their_pixels():
     for e in b.estimates.values():
         assert e.record.final_fit == "edges" and e.pixel_limb is not None
         edges, settings = own_block(e, Recipe())
-        assert settings == Recipe().pixel_fit and edges.profile_shade is not None
+        # the sensor's column gains (0.8 %) measured on the ball's interior: the pixels' gains take that prior
+        gain = gain_prior(e, Recipe())
+        assert 0.004 < gain < 0.012 and gain == e.record.column_gain_sigma
+        assert settings == replace(Recipe().pixel_fit, pixel_gain_sigma=gain) and edges.profile_shade is not None
         # without the limb model the block keeps the edges
         assert own_block(replace(e, pixel_limb=None), Recipe())[1] == Recipe().edge_fit
+        # gains counted as known: on a flat-fielded image, or a scatter within what the recipe takes for a flat sensor
+        assert gain_prior(replace(e, record=replace(e.record, flat_fielded=True)), Recipe()) == 0.0
+        assert gain_prior(e, Recipe(matched_max_gain_sigma=gain)) == 0.0
+        assert gain_prior(replace(e, record=replace(e.record, column_gain_sigma=math.nan)), Recipe()) == 0.0
+    assert all(c.consistent for c in b.joint.cameras)
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
     # the pixels hold more than the edges: the speed's and the direction's sigmas shrink
     picks = {k: replace(b.estimates[rc.name], pixel_limb=None) for k, rc in enumerate(LANE.rig.cameras)}

@@ -40,6 +40,7 @@ __all__ = [
     "check_lines",
     "combined_start",
     "estimate_rig",
+    "gain_prior",
     "match_window_s",
     "measure_group",
     "own_block",
@@ -435,6 +436,12 @@ def own_block(e: BallEstimate, recipe: Recipe) -> tuple[EdgeMeasurements, FitSet
     the lane rig's balls, its pixel fit 1.1x).  Otherwise the edges and end
     areas (``recipe.edge_fit``).
 
+    A pixel block on a sensor whose column gains scatter (:func:`gain_prior`)
+    takes each column's gain as a nuisance parameter with that scatter as
+    its prior (``FitSettings.pixel_gain_sigma``, :mod:`ballscan.solve.gains`):
+    the gains repeat on every line of a column, an error the pixels' own
+    weights take as independent.
+
     Parameters
     ----------
     e : BallEstimate
@@ -444,15 +451,39 @@ def own_block(e: BallEstimate, recipe: Recipe) -> tuple[EdgeMeasurements, FitSet
     """
     path = None if e.record is None else e.record.final_fit
     edges = e.fitted_edges
+    gain = gain_prior(e, recipe)
     if path == "pixels":
-        return edges, recipe.pixel_fit
+        return edges, replace(recipe.pixel_fit, pixel_gain_sigma=gain)
     if path == "spread":
-        return edges, recipe.spread_fit
+        return edges, replace(recipe.spread_fit, pixel_gain_sigma=gain)
     if e.pixel_limb is not None:
         shade = shade_profile(e.pixel_limb, edges)
         if shade is not None:
-            return replace(edges, profile_shade=shade), recipe.pixel_fit
+            return replace(edges, profile_shade=shade), replace(recipe.pixel_fit, pixel_gain_sigma=gain)
     return edges, recipe.edge_fit
+
+
+def gain_prior(e: BallEstimate, recipe: Recipe) -> float:
+    """The relative 1-sigma of the column gains in a camera's pixels, 0 where they count as known.
+
+    The scatter of the gains measured on the ball's own interior
+    (:attr:`ballscan.pipeline.stages.StageRecord.column_gain_sigma`,
+    :func:`ballscan.measure.flatfield.column_gains`) where it exceeds what
+    the recipe takes for a flat-fielded sensor
+    (``recipe.matched_max_gain_sigma``) and the edges were not measured on
+    the image with the gains divided out (``flat_fielded``); else 0.
+
+    Parameters
+    ----------
+    e : BallEstimate
+        One camera's estimate (its stage record).
+    recipe : Recipe
+    """
+    r = e.record
+    if r is None or r.column_gain_sigma is None or r.flat_fielded:
+        return 0.0
+    sigma = float(r.column_gain_sigma)
+    return sigma if math.isfinite(sigma) and sigma > recipe.matched_max_gain_sigma else 0.0
 
 
 def _block(e: BallEstimate, recipe: Recipe, clock_offset_s: float | None) -> tuple:

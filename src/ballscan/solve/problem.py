@@ -46,6 +46,7 @@ from ..measure.robust import median as _median
 from ..measure.edges import EdgeMeasurements
 from ..model.averaged import JacobianMemo, ModelEdges, ModelEvaluator, averaged_model, hybrid_jacobian, model_jacobian
 from ..model.pixels import PixelWindows, pixel_residuals, pixel_residuals_jacobian
+from .gains import GainColumns, GainElimination, gain_columns
 from .settings import FitSettings
 from .uncertainty import param_scale
 
@@ -99,12 +100,16 @@ class Selection:
         Their measured values, pixels.
     pixels : PixelWindows or None
         The fitted pixels (after the edges and areas), or None.
+    gains : GainColumns or None
+        The pixels' column gains, eliminated nuisance parameters with a
+        prior (:mod:`ballscan.solve.gains`): one prior row each after the
+        pixels; None: gains known.
     n_left, n_right, n_area, n_pixels : int
         Residuals of each kind (derived).
     n_residuals : int
-        All of them (derived).
+        All of them, the gains' prior rows included (derived).
     n_groups : int
-        Free brightnesses of the pixels, nuisance parameters (derived).
+        Free brightnesses of the pixels and column gains, nuisance parameters (derived).
     n_edge_lines : int
         Lines with both edges, as edges or as the pixels of their windows (derived).
     n_single_edge_lines : int
@@ -121,6 +126,7 @@ class Selection:
     meas_right: np.ndarray
     meas_area: np.ndarray
     pixels: PixelWindows | None = None
+    gains: GainColumns | None = None
     n_left: int = field(init=False)
     n_right: int = field(init=False)
     n_area: int = field(init=False)
@@ -162,8 +168,9 @@ class Selection:
         put(self, "n_right", n_r)
         put(self, "n_area", n_a)
         put(self, "n_pixels", n_p)
-        put(self, "n_residuals", n_l + n_r + n_a + n_p)
-        put(self, "n_groups", 0 if px is None else px.n_groups)
+        n_g = 0 if self.gains is None else self.gains.n_columns
+        put(self, "n_residuals", n_l + n_r + n_a + n_p + n_g)
+        put(self, "n_groups", (0 if px is None else px.n_groups) + n_g)
         put(self, "n_edge_lines", int((self.use_left & self.use_right).sum()) + (0 if px is None else px.n_spread))
         put(self, "n_single_edge_lines", int((self.use_left ^ self.use_right).sum()))
 
@@ -335,11 +342,12 @@ def beyond_sensor(me: ModelEdges, width_px: int, margin_px: float = 1.0) -> np.n
         return (me.presence > 0) & ((me.left_px - half < 0.0) | (me.right_px + half > width_px - 1.0))
 
 
-def _weighted(T: WeightTables, use_l, use_r, use_a, wide_l, wide_r, loose_a, pixels) -> Selection:
+def _weighted(T: WeightTables, use_l, use_r, use_a, wide_l, wide_r, loose_a, pixels, gains=None) -> Selection:
     """The selection of the masks with its measurements and 1-sigma from the tables.
 
     Edges in ``wide_l`` / ``wide_r`` come from the wide window; areas of
-    lines in ``loose_a`` (None: none) are not levelled.
+    lines in ``loose_a`` (None: none) are not levelled; ``gains`` the
+    pixels' column gains (:class:`Selection`).
     """
     n = use_l.size
     wl = np.zeros(n, dtype=bool) if wide_l is None or not T.has_wide else wide_l
@@ -356,6 +364,7 @@ def _weighted(T: WeightTables, use_l, use_r, use_a, wide_l, wide_r, loose_a, pix
         np.where(wr, T.right_wide, T.right)[use_r],
         np.where(lev, T.area_levelled, T.area)[use_a],
         pixels,
+        gains,
     )
 
 
@@ -552,13 +561,14 @@ class BlockState:
                 ua = ua & ~end_p
                 ul, ur = ul & ~spread_p, ur & ~spread_p
         loose = None if (s.area_level_partial or level_partial) else me.presence < 0.999
-        return _weighted(self.tables, ul, ur, ua, wl, wr, loose, pix)
+        gains = gain_columns(pix, s.pixel_gain_sigma) if pix is not None and s.pixel_gain_sigma > 0 else None
+        return _weighted(self.tables, ul, ur, ua, wl, wr, loose, pix, gains)
 
 
 class _BlockTerms:
     """One block's selection in the compiled kernels' form, converted once per problem."""
 
-    __slots__ = ("state", "sel", "il", "ir", "ia", "ml", "mr", "ma", "sl", "sr", "sa", "used", "n_pix")
+    __slots__ = ("state", "sel", "il", "ir", "ia", "ml", "mr", "ma", "sl", "sr", "sa", "used", "n_pix", "gains_key", "gains")
 
     def __init__(self, state: BlockState, sel: Selection):
         self.state, self.sel = state, sel
@@ -567,6 +577,16 @@ class _BlockTerms:
         self.sl, self.sr, self.sa = as_arg(sel.sigma_left), as_arg(sel.sigma_right), as_arg(sel.sigma_area)
         self.used = sel.use_left | sel.use_right | sel.use_area
         self.n_pix = sel.n_pixels
+        # the column gains eliminated at the last point (bytes of its six parameters)
+        self.gains_key: bytes | None = None
+        self.gains: GainElimination | None = None
+
+    def eliminated(self, th: np.ndarray, raw: np.ndarray) -> GainElimination:
+        """The column gains eliminated at ``th``, whose raw pixel residuals are ``raw``."""
+        key = th.tobytes()
+        if self.gains is None or self.gains_key != key:
+            self.gains, self.gains_key = GainElimination(self.sel.gains, raw), key
+        return self.gains
 
 
 _NO_PIXELS = np.zeros(0)
@@ -633,6 +653,8 @@ class FitProblem:
         st = t.state
         me = st.model_at(th)
         tail = _NO_PIXELS if t.sel.pixels is None else as_arg(self._pixel_res(st, t.sel.pixels, th[None])[0])
+        if t.sel.gains is not None:
+            tail = t.eliminated(th, tail).residuals
         return fit_residuals(
             me.left_px[0], me.right_px[0], me.area_px[0], t.il, t.ir, t.ia, float(b), t.ml, t.mr, t.ma, t.sl, t.sr, t.sa, tail
         )
@@ -675,9 +697,11 @@ class FitProblem:
             st.line_derivatives = LineDerivatives(dl, dr, da, t.used, t.sel.use_area | st.memo.last_fd)
             return self._assemble(t, dl, dr, da, _NO_PIXEL_ROWS)
         st.line_derivatives = None
-        # the base set's pixel residuals are the tail of r
-        jp = self._pixel_jac(st, t.sel.pixels, th, r[r.size - t.n_pix :])
-        return self._assemble(t, dl, dr, da, jp)
+        if t.sel.gains is None:
+            # the base set's pixel residuals are the tail of r
+            return self._assemble(t, dl, dr, da, self._pixel_jac(st, t.sel.pixels, th, r[r.size - t.n_pix :]))
+        g = t.gains if t.gains_key == th.tobytes() else t.eliminated(th, self._pixel_res(st, t.sel.pixels, th[None])[0])
+        return self._assemble(t, dl, dr, da, g.jacobian(self._pixel_jac(st, t.sel.pixels, th, g.raw)))
 
     def _fd_block(self, t: _BlockTerms, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """One block's residuals and rows by forward differences of the averaged model on every line (``jacobian_reach`` 0)."""
@@ -691,6 +715,9 @@ class FitProblem:
         sel = t.sel
         pr0 = self._pixel_res(st, sel.pixels, th[None])[0]
         jp = self._pixel_jac(st, sel.pixels, th, pr0)
+        if sel.gains is not None:
+            g = t.eliminated(th, pr0)
+            pr0, jp = g.residuals, g.jacobian(jp)
         r = np.concatenate([
             (me.left_px[sel.use_left] - b - t.ml) / t.sl, (me.right_px[sel.use_right] + b - t.mr) / t.sr,
             (me.area_px[sel.use_area] - t.ma) / t.sa, pr0,

@@ -96,6 +96,12 @@ class FitSettings:
         Also fit the pixels of lines seen during only part of the exposure.
     pixel_floor : float
         Systematic 1-sigma of a fitted pixel's normalised value (contrast units).
+    pixel_gain_sigma : float
+        Relative 1-sigma of the sensor's column gains (PRNU, not
+        flat-fielded), which scale the fitted pixels' ball signal alike on
+        every line of a column: each column's gain is a nuisance parameter
+        with this prior, eliminated (:mod:`ballscan.solve.gains`); 0: the
+        gains are taken as known (a flat-fielded sensor).
     level_areas : bool
         Divide the end lines' areas by the ball's local brightness next to
         them (the median inner level of ``level_lines`` nearest lines).
@@ -193,6 +199,7 @@ class FitSettings:
     pixel_jacobian: PixelJacobian = "analytic"
     pixel_groups: PixelGroups = "end"
     pixel_partial: bool = True
+    pixel_gain_sigma: float = 0.0
     level_areas: bool = False
     edge_floor_px: float = 0.015
     matched_floor_px: float = 0.003
