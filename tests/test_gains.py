@@ -12,7 +12,7 @@ from ballscan.geometry.motion import BallMotion
 from ballscan.model.averaged import _model_core, averaged_model
 from ballscan.model.pixels import pixel_coverage, pixel_residuals
 from ballscan.solve.fit import fit_motion
-from ballscan.solve.gains import GainColumns, GainElimination, gain_columns
+from ballscan.solve.gains import GainColumns, GainElimination, gain_columns, interior_levels
 from ballscan.solve.problem import BlockState, FitProblem, ResidualBlock, pixel_windows
 from ballscan.solve.settings import FitSettings
 from ballscan.solve.synthetic import synthetic_edges
@@ -33,17 +33,19 @@ def _dense(gc: GainColumns, raw: np.ndarray) -> np.ndarray:
 @pytest.mark.parametrize("seed", range(4))
 def test_elimination_equals_the_pixels_chi_square_under_the_gains_covariance(seed):
     rng = np.random.default_rng(seed)
-    n, nc, ng, sigma = 80, 9, 3, 0.01
-    gc = GainColumns(rng.integers(0, nc, n), rng.integers(0, ng, n), rng.uniform(20.0, 60.0, n), nc, ng, sigma)
+    n, nc, ng = 80, 9, 3
+    sigma, mean = rng.uniform(0.002, 0.01, nc), rng.normal(0.0, 0.005, nc) * (seed > 1)
+    gc = GainColumns(rng.integers(0, nc, n), rng.integers(0, ng, n), rng.uniform(20.0, 60.0, n), nc, ng, mean, sigma)
     raw = rng.standard_normal(n)
     J = rng.standard_normal((n, 6))
     g = GainElimination(gc, raw)
     M = _dense(gc, raw)
-    W = np.linalg.inv(np.eye(n) + sigma**2 * M @ M.T)
-    # the residuals' sum of squares: r^T (I + sigma^2 M M^T)^-1 r, and the gains the stacked least squares'
-    np.testing.assert_allclose(g.residuals @ g.residuals, raw @ W @ raw, rtol=1e-10)
-    A = np.vstack([M, np.eye(nc) / sigma])
-    delta = np.linalg.lstsq(A, -np.concatenate([raw, np.zeros(nc)]), rcond=None)[0]
+    W = np.linalg.inv(np.eye(n) + M @ np.diag(sigma**2) @ M.T)
+    # the residuals' sum of squares: (r + M mu)^T (I + M S^2 M^T)^-1 (r + M mu), and the gains the stacked least squares'
+    rm = raw + M @ mean
+    np.testing.assert_allclose(g.residuals @ g.residuals, rm @ W @ rm, rtol=1e-10)
+    A = np.vstack([M, np.diag(1.0 / sigma)])
+    delta = np.linalg.lstsq(A, np.concatenate([-raw, mean / sigma]), rcond=None)[0]
     np.testing.assert_allclose(g.delta, delta, rtol=1e-8, atol=1e-12)
     assert g.residuals.shape == (n + nc,)
     # the Jacobian's rows (each pixel's scaled by its column's gain): the information and the gradient under the same covariance
@@ -51,12 +53,12 @@ def test_elimination_equals_the_pixels_chi_square_under_the_gains_covariance(see
     assert Jg.shape == (n + nc, 6)
     Js = J * (1.0 + g.delta[gc.column])[:, None]
     np.testing.assert_allclose(Jg.T @ Jg, Js.T @ W @ Js, rtol=1e-9)
-    np.testing.assert_allclose(Jg.T @ g.residuals, Js.T @ W @ raw, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(Jg.T @ g.residuals, Js.T @ W @ rm, rtol=1e-9, atol=1e-9)
 
 
 def test_a_vanishing_prior_leaves_the_pixels_alone():
     rng = np.random.default_rng(5)
-    gc = GainColumns(rng.integers(0, 6, 50), rng.integers(0, 2, 50), rng.uniform(20.0, 60.0, 50), 6, 2, 1e-9)
+    gc = GainColumns(rng.integers(0, 6, 50), rng.integers(0, 2, 50), rng.uniform(20.0, 60.0, 50), 6, 2, np.zeros(6), np.full(6, 1e-9))
     raw = rng.standard_normal(50)
     g = GainElimination(gc, raw)
     np.testing.assert_allclose(g.residuals[:50], raw, atol=1e-9)
@@ -155,3 +157,32 @@ def test_a_pixel_fit_with_the_gains_covers_the_truth_and_its_chi_square_is_the_n
         assert abs(gains.chi2_red - 1.0) < 0.05
         assert np.all(np.abs(gains.motion.to_params() - plain.motion.to_params()) < s)
         assert np.all(s >= 0.98 * np.sqrt(np.diag(plain.covariance)))
+
+
+def test_interior_levels_measure_each_columns_gain_beyond_the_windows():
+    cam, m = _serve()
+    e, pix, gains, cols = _windows(0.008, 0.01, 7)
+    me = averaged_model(cam, m.to_params()[None], m.radius_m, e.t_s)
+    L, R, sp, pres = me.left_px[0], me.right_px[0], np.nan_to_num(me.spread_px[0]), me.presence[0]
+    reach = 0.5 * sp + 3.0
+    whole = e.signal & me.valid[0] & (pres >= 0.999)
+    inner = interior_levels(e, L, R, reach, whole, 0.0)
+    assert inner.columns.size > 40 and np.all(np.diff(inner.columns) > 0)
+    # every pixel taken lies wholly more than the reach inside both edges on its line
+    i = np.flatnonzero(whole)
+    c = inner.columns[:, None]
+    inside = (c - 0.5 >= (L + reach)[i][None, :]) & (c + 0.5 <= (R - reach)[i][None, :])
+    assert np.all(inside.any(axis=1))
+    # the levels are the columns' gains (level 1 ball), within their sigmas: normalised errors of unit spread
+    z = (inner.level - gains[np.searchsorted(cols, inner.columns)]) / inner.sigma
+    assert abs(np.mean(z)) < 0.5 and 0.7 < np.std(z) < 1.3, (np.mean(z), np.std(z))
+    # the gains' prior: tighter where the interior measured the column, the scatter where it did not
+    gc = gain_columns(pix, 0.008, inner)
+    wcols = np.unique(np.rint(pix.cols_px[pix.mask]).astype(int))
+    hit = np.isin(wcols, inner.columns)
+    assert hit.any() and (~hit).any()
+    assert np.all(gc.sigma[hit] < 0.008) and np.allclose(gc.sigma[~hit], 0.008) and np.all(gc.mean[~hit] == 0.0)
+    t = gains[np.searchsorted(cols, wcols[hit])] - 1.0
+    assert np.corrcoef(gc.mean[hit], t)[0, 1] > 0.8
+    # no lines, no levels
+    assert interior_levels(e, L, R, reach, np.zeros_like(whole), 0.0).columns.size == 0

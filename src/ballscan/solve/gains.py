@@ -15,16 +15,21 @@ derivative of Kaufman's form).  The gains are alike on every line of a
 column, so this error does not average out over the lines a slow edge
 spends in one column.
 
-With the prior ``delta_j ~ N(0, sigma^2)`` (the column gains' scatter,
-:attr:`ballscan.measure.flatfield.ColumnGains.prnu_sigma`) the gains are
-eliminated at every point: ``delta = -(M^T M + I / sigma^2)^-1 M^T r``; the
-pixel rows become ``r + M delta`` and each column gives one prior row
-``delta_j / sigma``.  Their sum of squares is ``r^T (I + sigma^2 M
-M^T)^-1 r``: the chi-square of the pixels under the covariance of white
-noise plus the columns' unknown gains, the model of the pixels'
-Cramér-Rao bound (:func:`ballscan.solve.precision.sensor_crlb`), so the
-fit's covariance carries the gains' share.  The Jacobian rows are projected
-the same way (``M`` held at the point).
+Each gain's prior is the columns' scatter ``N(0, sigma^2)``
+(:attr:`ballscan.measure.flatfield.ColumnGains.prnu_sigma`) combined with
+what the ball's interior pixels of that column say
+(:func:`interior_levels`: pixels the ball covers whole, beyond the fitted
+windows, whose level is the column's gain times the ball's brightness):
+``N(mu_j, sigma_j^2)``.  The gains are eliminated at every point:
+``delta = (M^T M + S^-2)^-1 (S^-2 mu - M^T r)`` with ``S = diag(sigma_j)``;
+the pixel rows become ``r + M delta`` and each column gives one prior row
+``(delta_j - mu_j) / sigma_j``.  Their sum of squares is ``(r + M mu)^T (I
++ M S^2 M^T)^-1 (r + M mu)``: the chi-square of the pixels under the
+covariance of white noise plus the columns' unknown gains, the model of the
+pixels' Cramér-Rao bound (:func:`ballscan.solve.precision.sensor_crlb`,
+which takes every pixel of the ball), so the fit's covariance carries the
+gains' share.  The Jacobian rows are projected the same way (``M`` held at
+the point).
 """
 
 from __future__ import annotations
@@ -33,9 +38,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..measure.edges import EdgeMeasurements
 from ..model.pixels import PixelWindows
 
-__all__ = ["GainColumns", "GainElimination", "gain_columns"]
+__all__ = ["GainColumns", "GainElimination", "InteriorLevels", "gain_columns", "interior_levels"]
 
 
 @dataclass(frozen=True)
@@ -56,8 +62,8 @@ class GainColumns:
         Distinct sensor columns (gains).
     n_groups : int
         Brightness groups.
-    sigma : float
-        Prior 1-sigma of a column's relative gain.
+    mean, sigma : ndarray (n_columns,)
+        Prior mean and 1-sigma of each column's relative gain less 1.
     """
 
     column: np.ndarray
@@ -65,11 +71,22 @@ class GainColumns:
     weighted_values: np.ndarray
     n_columns: int
     n_groups: int
-    sigma: float
+    mean: np.ndarray
+    sigma: np.ndarray
 
 
-def gain_columns(pix: PixelWindows, sigma: float) -> GainColumns:
-    """The columns of the fitted pixels ``pix`` (pixel centres rounded to the sensor's columns) and the prior 1-sigma ``sigma`` (relative gain).
+def gain_columns(pix: PixelWindows, sigma: float, interior: InteriorLevels | None = None) -> GainColumns:
+    """The columns of the fitted pixels ``pix`` (pixel centres rounded to the sensor's columns) and their gains' prior.
+
+    Parameters
+    ----------
+    pix : PixelWindows
+    sigma : float
+        The columns' gain scatter (relative 1-sigma): every gain's prior.
+    interior : InteriorLevels, optional
+        The ball's interior levels by column (:func:`interior_levels`),
+        relative to their weighted mean: each measured column's prior is
+        combined with its level's (product of the two normal densities).
 
     Raises
     ------
@@ -81,7 +98,72 @@ def gain_columns(pix: PixelWindows, sigma: float) -> GainColumns:
     cols = np.rint(pix.cols_px[pix.mask]).astype(np.int64)
     uniq, column = np.unique(cols, return_inverse=True)
     wv = (pix.weights * pix.values)[pix.mask]
-    return GainColumns(column.astype(np.int64), pix.group[pix.mask].astype(np.int64), wv, int(uniq.size), int(pix.n_groups), float(sigma))
+    prec = np.full(uniq.size, 1.0 / sigma**2)
+    num = np.zeros(uniq.size)
+    if interior is not None and interior.columns.size:
+        w = 1.0 / interior.sigma**2
+        ref = float(np.sum(w * interior.level) / np.sum(w))
+        k = np.searchsorted(interior.columns, uniq)
+        k = np.clip(k, 0, interior.columns.size - 1)
+        hit = interior.columns[k] == uniq
+        # the level relative to the columns' mean: the gain less 1, with its sigma
+        d, sd = interior.level[k] / ref - 1.0, interior.sigma[k] / ref
+        prec = prec + np.where(hit, 1.0 / sd**2, 0.0)
+        num = np.where(hit, d / sd**2, 0.0)
+    return GainColumns(
+        column.astype(np.int64), pix.group[pix.mask].astype(np.int64), wv, int(uniq.size), int(pix.n_groups), num / prec, 1.0 / np.sqrt(prec)
+    )
+
+
+@dataclass(frozen=True)
+class InteriorLevels:
+    """The ball's level in each sensor column, measured on the pixels it covers whole (:func:`interior_levels`).
+
+    Attributes
+    ----------
+    columns : ndarray of int64 (n,)
+        Sensor columns, ascending.
+    level, sigma : ndarray (n,)
+        Each column's mean of ``value / shade`` (normalised units) and its 1-sigma.
+    """
+
+    columns: np.ndarray
+    level: np.ndarray
+    sigma: np.ndarray
+
+
+def interior_levels(edges: EdgeMeasurements, left_px, right_px, reach_px, lines: np.ndarray, floor: float) -> InteriorLevels:
+    """Each column's level on the ball's interior: the pixels of ``lines`` whose whole width lies more than ``reach_px`` inside both edges.
+
+    Those pixels are covered whole at any motion near the model's
+    (``left_px``, ``right_px``: its edges on every line, pixels; ``reach_px``
+    per line: half the edge spread and the fitted window beyond it), so
+    their values are ``B g_j s_p`` plus noise: the column's gain times the
+    ball's brightness ``B`` and relative surface brightness ``s_p``
+    (``edges.profile_shade``).  Each column's weighted mean of ``v / s``
+    (weights ``(s / sigma)^2``, ``sigma`` the pixel's noise and ``floor`` in
+    quadrature) and its 1-sigma.  They are not among the fitted pixels
+    (:func:`ballscan.solve.problem.pixel_windows` takes the windows within
+    ``reach_px`` of an edge), so their evidence on the gains is their own.
+    """
+    idx = np.flatnonzero(lines)
+    if edges.profile is None or idx.size == 0:
+        return InteriorLevels(np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0))
+    prof, psig = edges.profile[idx], edges.profile_sigma[idx]
+    cols = edges.profile_col0 + np.arange(prof.shape[1], dtype=float)
+    lo = (np.asarray(left_px)[idx] + np.asarray(reach_px)[idx])[:, None]
+    hi = (np.asarray(right_px)[idx] - np.asarray(reach_px)[idx])[:, None]
+    shade = np.ones(prof.shape) if edges.profile_shade is None else edges.profile_shade[idx]
+    shade = np.where(np.isfinite(shade) & (shade > 0), shade, 1.0)
+    use = (cols[None, :] - 0.5 >= lo) & (cols[None, :] + 0.5 <= hi) & np.isfinite(prof) & (psig > 0)
+    if not use.any():
+        return InteriorLevels(np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0))
+    w = np.where(use, shade**2 / (np.where(psig > 0, psig, 1.0) ** 2 + floor**2), 0.0)
+    y = np.where(use, prof / shade, 0.0)
+    sw = w.sum(axis=0)
+    have = sw > 0
+    level = (w * y).sum(axis=0)[have] / sw[have]
+    return InteriorLevels(cols[have].astype(np.int64), level, 1.0 / np.sqrt(sw[have]))
 
 
 class GainElimination:
@@ -94,7 +176,7 @@ class GainElimination:
     delta : ndarray (n_columns,)
         The gains' estimate at the point, ``g_j - 1``.
     residuals : ndarray (n_pixels + n_columns,)
-        The pixel rows ``raw + M delta``, then the prior rows ``delta / sigma``.
+        The pixel rows ``raw + M delta``, then the prior rows ``(delta - mean) / sigma``.
     """
 
     def __init__(self, gc: GainColumns, raw: np.ndarray):
@@ -109,11 +191,12 @@ class GainElimination:
         # S = U^T E: the group's signal in each column (U: a group's signal, E: a column's)
         self.S = np.bincount(gc.group * nc + gc.column, m2, minlength=ng * nc).reshape(ng, nc)
         ee = np.bincount(gc.column, m2, minlength=nc)
-        K = np.diag(ee + 1.0 / gc.sigma**2) - self.S.T @ (self.inv[:, None] * self.S)
+        prec = 1.0 / gc.sigma**2
+        K = np.diag(ee + prec) - self.S.T @ (self.inv[:, None] * self.S)
         # positive definite (a projection's Gram matrix plus the prior's); a few hundred columns at most
         self.K = K
-        self.delta = -np.linalg.solve(K, self._mt(self.raw[:, None]))[:, 0]
-        self.residuals = np.concatenate([self.raw + self._m(self.delta[:, None])[:, 0], self.delta / gc.sigma])
+        self.delta = np.linalg.solve(K, prec * gc.mean - self._mt(self.raw[:, None])[:, 0])
+        self.residuals = np.concatenate([self.raw + self._m(self.delta[:, None])[:, 0], (self.delta - gc.mean) / gc.sigma])
 
     def _mt(self, A: np.ndarray) -> np.ndarray:
         """``M^T A`` for ``A`` (n_pixels, k): ``E^T A - S^T diag(1/mm) U^T A``."""
@@ -138,4 +221,4 @@ class GainElimination:
         # the pixels' model scaled by their columns' estimated gains moves with theta as much
         J = np.asarray(J, dtype=float) * (1.0 + self.delta[self.gc.column])[:, None]
         Z = -np.linalg.solve(self.K, self._mt(J))
-        return np.vstack([J + self._m(Z), Z / self.gc.sigma])
+        return np.vstack([J + self._m(Z), Z / self.gc.sigma[:, None]])

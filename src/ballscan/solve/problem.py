@@ -46,7 +46,7 @@ from ..measure.robust import median as _median
 from ..measure.edges import EdgeMeasurements
 from ..model.averaged import JacobianMemo, ModelEdges, ModelEvaluator, averaged_model, hybrid_jacobian, model_jacobian
 from ..model.pixels import PixelWindows, pixel_residuals, pixel_residuals_jacobian
-from .gains import GainColumns, GainElimination, gain_columns
+from .gains import GainColumns, GainElimination, gain_columns, interior_levels
 from .settings import FitSettings
 from .uncertainty import param_scale
 
@@ -549,7 +549,7 @@ class BlockState:
         ul, ur, ua, wl, wr = select_lines_of(edges, me, s)
         ul, ur = ul & ~self.rejected_left, ur & ~self.rejected_right
         ua = ua & ~beyond_sensor(me, self.block.camera.width)
-        pix = None
+        pix = gains = None
         if s.pixels and edges.profile is not None:
             # the ends seen during the whole exposure: their pixels instead of
             # their areas, and the spread edges' windows instead of the edges
@@ -560,8 +560,13 @@ class BlockState:
             if pix is not None:
                 ua = ua & ~end_p
                 ul, ur = ul & ~spread_p, ur & ~spread_p
+                if s.pixel_gain_sigma > 0:
+                    # the column gains' prior, with the interior pixels beyond the windows of the lines seen whole
+                    whole = edges.signal & me.valid & (me.presence >= 0.999) & ~end_p
+                    reach = 0.5 * _nan_to_zero(me.spread_px) + s.pixel_window_px
+                    inner = interior_levels(edges, me.left_px, me.right_px, reach, whole, s.pixel_floor)
+                    gains = gain_columns(pix, s.pixel_gain_sigma, inner)
         loose = None if (s.area_level_partial or level_partial) else me.presence < 0.999
-        gains = gain_columns(pix, s.pixel_gain_sigma) if pix is not None and s.pixel_gain_sigma > 0 else None
         return _weighted(self.tables, ul, ur, ua, wl, wr, loose, pix, gains)
 
 
