@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import subprocess
@@ -12,7 +13,7 @@ import psutil
 import pytest
 
 from ballscan.errors import BallscanError
-from ballscan.parallel import TaskExecutor, TaskResult, run_tasks
+from ballscan.parallel import TaskExecutor, TaskResult, collector_paused, run_tasks
 
 #: Set by the warm-up hook in the process it runs in.
 _WARM: dict[str, int] = {}
@@ -219,3 +220,34 @@ def test_forked_workers_end_when_their_parent_is_killed():
     p.kill()
     p.communicate(timeout=60)
     assert psutil.wait_procs(workers, timeout=10.0)[1] == []  # PARENT_POLL_S, not the 30 s sleeps
+
+
+# ---------------------------------------------------------------- the garbage collector
+def _freeze_count(_: int) -> tuple[int, int]:
+    time.sleep(0.02)
+    return gc.get_freeze_count(), os.getpid()
+
+
+def test_workers_keep_what_they_loaded_out_of_the_collector_and_this_process_does_not(cheap_workers):
+    before = gc.get_freeze_count()
+    with TaskExecutor(2, warm_up=_warm_up) as ex:
+        out = [r.value for r in ex.map(_freeze_count, range(12))]
+    assert gc.get_freeze_count() == before  # this process may be a user's: nothing frozen here
+    in_workers = [n for n, pid in out if pid != os.getpid()]
+    assert in_workers and all(n > 0 for n in in_workers)
+    _WARM.clear()
+
+
+@pytest.mark.parametrize("enabled", [True, False])
+def test_the_collector_is_paused_within_the_block_and_restored_after(enabled):
+    was = gc.isenabled()
+    try:
+        gc.enable() if enabled else gc.disable()
+        with collector_paused():
+            assert not gc.isenabled()
+        assert gc.isenabled() == enabled
+        with pytest.raises(ValueError), collector_paused():
+            raise ValueError("out of the block")
+        assert gc.isenabled() == enabled
+    finally:
+        gc.enable() if was else gc.disable()

@@ -42,7 +42,11 @@ shutting them down (``kill -9``), the workers end within :data:`PARENT_POLL_S`
 seconds instead of finishing their queue. The ``warm_up`` callable (e.g.
 loading compiled kernels) runs before the first task in this process, in each
 fresh (loky) worker, and on every worker connected at the first map for Dask;
-it only saves time, a task must not depend on it for its result.
+it only saves time, a task must not depend on it for its result. A worker
+moves what it holds once warm out of the garbage collector's reach
+(``gc.freeze``): its collections never walk the loaded modules and kernels
+again, nor copy the pages a forked worker shares with its parent by touching
+them.
 
 Only the errors module and third-party libraries are imported here (the
 base layer of the package).
@@ -51,18 +55,19 @@ base layer of the package).
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import signal
 import threading
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import FIRST_COMPLETED, wait
+from concurrent.futures import as_completed
 from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
 from .errors import BallscanError
 
-__all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "worker_start"]
+__all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "collector_paused", "worker_start"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -137,6 +142,23 @@ def _watch_parent(parent_pid: int) -> None:
     os._exit(1)
 
 
+@contextlib.contextmanager
+def collector_paused() -> Iterator[None]:
+    """The cyclic garbage collector off within the block (its state before restored after).
+
+    Loading compiled kernels makes about 10^5 objects that live as long as
+    the process; each collection that runs meanwhile walks all those made so
+    far, for nothing.  Garbage without cycles is freed at once all the same.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def worker_start(warm_up: Callable[[], Any] | None = None) -> None:
     """The initializer of a local worker process: watch the parent, then run ``warm_up``.
 
@@ -152,6 +174,7 @@ def worker_start(warm_up: Callable[[], Any] | None = None) -> None:
     threading.Thread(target=_watch_parent, args=(parent,), name="ballscan-parent-watch", daemon=True).start()
     if warm_up is not None:
         warm_up()
+        gc.freeze()  # what this worker loaded is never walked again by its collections
 
 
 def _forked_worker_start() -> None:
@@ -167,6 +190,9 @@ def _forked_worker_start() -> None:
     for sig in (signal.SIGTERM, signal.SIGHUP):
         signal.signal(sig, signal.SIG_DFL)
     signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)  # blocked by the parent around the fork
+    # what the parent loaded is kept out of this worker's collections: they
+    # would walk it, and copy every page of it they touch (the fork shares them)
+    gc.freeze()
     from threadpoolctl import threadpool_limits
 
     threadpool_limits(1)
@@ -404,12 +430,12 @@ class TaskExecutor:
             self._start_pool(min(self.jobs, len(todo)))
         pending = {self._pool.submit(_call, func, item): item for item in todo}
         try:
-            while pending:
-                done, _ = wait(pending, return_when=FIRST_COMPLETED)
-                for fut in done:
-                    item = pending.pop(fut)
-                    value, error = fut.result()
-                    yield TaskResult(item, value, error)
+            # as_completed waits on all the futures with one waiter (a wait()
+            # per result would install and remove one on every pending future)
+            for fut in as_completed(list(pending)):
+                item = pending.pop(fut)
+                value, error = fut.result()
+                yield TaskResult(item, value, error)
         except GeneratorExit:
             # the caller stopped early: items not started yet are dropped
             # (after an error or an interrupt the caller kills the workers,

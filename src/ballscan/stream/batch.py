@@ -43,7 +43,7 @@ from ..outputs import OutputLock, check_not_symlink
 from ..parallel import TaskExecutor
 from ..pipeline.report import CSV_COLUMNS, csv_row
 
-__all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "measure_input", "run_batch"]
+__all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "load_estimator", "measure_input", "run_batch"]
 
 IMAGE_SUFFIXES = (".png", ".tif", ".tiff")
 RAW_SUFFIXES = (".raw", ".bin", ".u8", ".u16")
@@ -303,7 +303,7 @@ def run_batch(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     if method not in ("fit", "paper"):
         raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
-    from .engine import BACKGROUNDS, preload_estimator
+    from .engine import BACKGROUNDS
 
     if background not in BACKGROUNDS:
         raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
@@ -342,14 +342,27 @@ def run_batch(
     return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors), tuple(repairs))
 
 
+def load_estimator() -> None:
+    """Import the estimator and load its compiled kernels (the executor's warm-up for a batch).
+
+    The stream engine's own kernels are not loaded here: an input measured
+    as a stream (a raw file, a recording longer than the engine's ring)
+    loads them when its engine starts.
+    """
+    from ..parallel import collector_paused
+    from ..pipeline.warmup import ensure_warm
+
+    with collector_paused():  # modules: objects that live as long as the process
+        from .recording import measure_stored  # noqa: F401 (the estimator's modules)
+    ensure_warm()
+
+
 def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
     """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write."""
-    from .engine import preload_estimator
-
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
     task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
-    with open(side, "a") as side_fh, TaskExecutor(jobs, scheduler, warm_up=preload_estimator, progress=progress) as executor:
+    with open(side, "a") as side_fh, TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress) as executor:
         for outcome in executor.map(task, todo, label="batch"):
             # measure_input reports the input's own faults; anything else it raised is the item's error
             res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
