@@ -67,7 +67,7 @@ from typing import Any, Generic, TypeVar
 
 from .errors import BallscanError
 
-__all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "collector_paused", "worker_start"]
+__all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "can_fork", "collector_paused", "start_forked", "worker_start"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -203,7 +203,7 @@ def _forked_worker_start() -> None:
 _STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
 
 
-def _can_fork() -> bool:
+def can_fork() -> bool:
     """Whether workers may be forked from this process: a POSIX fork and no other Python thread running here.
 
     A thread of this process could hold a lock at the fork that the child
@@ -213,6 +213,35 @@ def _can_fork() -> bool:
     import multiprocessing
 
     return "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+
+
+def _forked_main(target: Callable[..., Any], args: tuple) -> None:
+    _forked_worker_start()
+    target(*args)
+
+
+def start_forked(target: Callable[..., Any], *args: Any, name: str = "ballscan-forked"):
+    """Start ``target(*args)`` in a process forked from this one (only where :func:`can_fork`), set up as a forked worker.
+
+    The child handles signals Python's default way, runs one thread per
+    numerical library and ends when this process dies (as the executor's
+    forked workers); the stop signals are held back during the fork.  The
+    caller joins (or kills and joins) the returned
+    ``multiprocessing.Process``; it is a daemon, ended at the latest when
+    this interpreter exits.
+    """
+    import multiprocessing
+    import warnings
+
+    proc = multiprocessing.get_context("fork").Process(target=_forked_main, args=(target, args), name=name, daemon=True)
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)  # as in TaskExecutor._start_pool
+            proc.start()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    return proc
 
 
 def _one_line(exc: BaseException) -> str:
@@ -382,7 +411,7 @@ class TaskExecutor:
     def _worth_workers(self, n_left: int, item_s: float) -> bool:
         """Whether ``n_left`` items of ``item_s`` seconds each finish sooner on workers, their start-up included."""
         n = min(self.jobs, n_left)
-        start_s = (FORK_START_S if _can_fork() else SPAWN_START_S) * n
+        start_s = (FORK_START_S if can_fork() else SPAWN_START_S) * n
         return n > 1 and n_left * item_s * (1.0 - 1.0 / n) > start_s
 
     def _map_local(self, func: Callable[[T], R], todo: Sequence[T]) -> Iterator[TaskResult[T, R]]:
@@ -399,7 +428,7 @@ class TaskExecutor:
             yield TaskResult(item, value, error)
 
     def _start_pool(self, n_workers: int) -> None:
-        if _can_fork():
+        if can_fork():
             import multiprocessing
             import warnings
             from concurrent.futures import ProcessPoolExecutor
@@ -414,7 +443,7 @@ class TaskExecutor:
                 with warnings.catch_warnings():
                     # Python >= 3.12 warns of a fork beside the numerical
                     # libraries' native threads (no other Python thread runs:
-                    # _can_fork); the pool forks every worker at its first submit
+                    # can_fork); the pool forks every worker at its first submit
                     warnings.simplefilter("ignore", DeprecationWarning)
                     pool.submit(int).result()
             finally:

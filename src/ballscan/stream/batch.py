@@ -167,9 +167,12 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         else:
             from ..measure.images import load_timestamps, read_stored
             from ..pipeline.recipe import Recipe
+            from .prefetch import decoded
             from .recording import measure_stored
 
-            stored = read_stored(p)
+            stored = decoded(src)  # decoded ahead on another core, or None
+            if stored is None:
+                stored = read_stored(p)
             ts = load_timestamps(ts_path, stored.n_lines) if ts_path is not None else None
             ests = list(measure_stored(stored, camera, radius_m, Recipe(method=method), timestamps_s=ts).balls)
         return InputResult(src, tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests)))
@@ -357,12 +360,34 @@ def load_estimator() -> None:
     ensure_warm()
 
 
+def _load_estimator_then_take_decoded() -> None:
+    """The executor's warm-up when PNGs are decoded ahead: :func:`load_estimator`, then the decoder ends (its images are used from here on)."""
+    from .prefetch import stop_decoding
+
+    load_estimator()
+    stop_decoding()
+
+
 def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
-    """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write."""
+    """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write.
+
+    With local workers allowed (``jobs`` other than 1, no ``scheduler``),
+    the PNGs are decoded on another core while this process loads the
+    estimator (:func:`ballscan.stream.prefetch.decoding_ahead`).
+    """
+    from ..parallel import available_cores
+    from .prefetch import decoding_ahead
+
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
     task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
-    with open(side, "a") as side_fh, TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress) as executor:
+    ahead = scheduler is None and (available_cores() if jobs == -1 else jobs) > 1 and len(todo) > 1
+    warm_up = _load_estimator_then_take_decoded if ahead else load_estimator
+    with (
+        decoding_ahead(todo if ahead else []),
+        open(side, "a") as side_fh,
+        TaskExecutor(jobs, scheduler, warm_up=warm_up, progress=progress) as executor,
+    ):
         for outcome in executor.map(task, todo, label="batch"):
             # measure_input reports the input's own faults; anything else it raised is the item's error
             res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
