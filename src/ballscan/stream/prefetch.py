@@ -93,6 +93,20 @@ class _Ahead:
             self.block.close()
 
 
+def _png_bytes(path: str) -> int:
+    """The decoded size a PNG's header announces (width x height x channels x bytes per sample); 0 where unreadable."""
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(26)
+    except OSError:
+        return 0
+    if len(head) < 26 or head[12:16] != b"IHDR":
+        return 0
+    width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}.get(head[25], 4)
+    return width * height * channels * max(1, head[24] // 8)
+
+
 def _decode_all(paths: list[str], block: mmap.mmap, send) -> None:
     """The decoder: each PNG of ``paths`` into ``block`` after the previous, a note of it on ``send``; until told to stop or full."""
     from ..errors import BallscanError
@@ -102,6 +116,8 @@ def _decode_all(paths: list[str], block: mmap.mmap, send) -> None:
     for path in paths:
         if block[0]:
             return
+        if offset + _png_bytes(path) > len(block):
+            return  # not decoded at all: it would not fit
         try:
             stored = read_stored(path)
         except (BallscanError, ValueError, OSError):
