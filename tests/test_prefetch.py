@@ -25,6 +25,7 @@ paths = sys.argv[2:]
 out = {}
 with prefetch.decoding_ahead(paths, capacity_bytes=int(sys.argv[1])):
     time.sleep(1.0)  # the decoder's turn (this process would load the estimator)
+    out["while_running"] = prefetch.decoded(paths[0]) is not None
     out["n"] = prefetch.stop_decoding()
     out["again"] = prefetch.stop_decoding()
     out["children"] = len(__import__("psutil").Process().children())
@@ -72,7 +73,7 @@ def test_decoded_pngs_are_read_stored_bit_for_bit_here_and_in_forked_workers(tmp
     out = _run(paths, 1 << 20)
     # every readable PNG (the damaged one and the TIFF are read where measured)
     assert out["same"] == {"a0.png": True, "a1.png": True, "deep.png": True, "a2.png": True, "a3.png": True}
-    assert out["n"] == out["again"] == 5
+    assert out["while_running"] and out["n"] == out["again"] == 5
     assert out["children"] == 0  # the decoder is gone once stopped
     expect = {p.rsplit("/", 1)[-1]: None for p in paths}
     for p in paths:

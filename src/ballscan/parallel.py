@@ -335,6 +335,9 @@ class TaskExecutor:
         Called without arguments once in each worker before its first task.
     progress : bool
         Show a progress bar per map on stderr (never when stderr is not a terminal).
+    before_workers : callable or None
+        Called without arguments in this process just before its local
+        workers start (e.g. to end a helper process whose work they inherit).
 
     Raises
     ------
@@ -342,13 +345,14 @@ class TaskExecutor:
         If ``jobs`` is not a positive integer or -1.
     """
 
-    def __init__(self, jobs: int = 1, scheduler: str | None = None, *, warm_up: Callable[[], Any] | None = None, progress: bool = False) -> None:
+    def __init__(self, jobs: int = 1, scheduler: str | None = None, *, warm_up: Callable[[], Any] | None = None, progress: bool = False, before_workers: Callable[[], Any] | None = None) -> None:
         if isinstance(jobs, bool) or not isinstance(jobs, int) or not (jobs >= 1 or jobs == -1):
             raise ValueError(f"jobs: must be a positive integer or -1 (every core), got {jobs!r}")
         self.jobs = available_cores() if jobs == -1 else jobs
         self.scheduler = scheduler
         self.warm_up = warm_up
         self.progress = progress
+        self.before_workers = before_workers
         self._pool = None  # a concurrent.futures or loky ProcessPoolExecutor
         self._start_method: str | None = None
         self._client = None  # distributed.Client
@@ -459,6 +463,8 @@ class TaskExecutor:
             yield TaskResult(item, value, error)
 
     def _start_pool(self, n_workers: int) -> None:
+        if self.before_workers is not None:
+            self.before_workers()
         if can_fork():
             import multiprocessing
             import warnings

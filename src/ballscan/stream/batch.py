@@ -364,33 +364,25 @@ def load_estimator() -> None:
     ensure_warm()
 
 
-def _load_estimator_then_take_decoded() -> None:
-    """The executor's warm-up when PNGs are decoded ahead: :func:`load_estimator`, then the decoder ends (its images are used from here on)."""
-    from .prefetch import stop_decoding
-
-    load_estimator()
-    stop_decoding()
-
-
 def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
     """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write.
 
     With local workers allowed (``jobs`` other than 1, no ``scheduler``),
     the PNGs are decoded on another core while this process loads the
-    estimator (:func:`ballscan.stream.prefetch.decoding_ahead`).
+    estimator and measures the first inputs, until the workers start
+    (:func:`ballscan.stream.prefetch.decoding_ahead`).
     """
     from ..parallel import available_cores
-    from .prefetch import decoding_ahead
+    from .prefetch import decoding_ahead, stop_decoding
 
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
     task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
     ahead = scheduler is None and (available_cores() if jobs == -1 else jobs) > 1 and len(todo) > 1
-    warm_up = _load_estimator_then_take_decoded if ahead else load_estimator
     with (
         decoding_ahead(todo if ahead else []),
         open(side, "a") as side_fh,
-        TaskExecutor(jobs, scheduler, warm_up=warm_up, progress=progress) as executor,
+        TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress, before_workers=stop_decoding) as executor,
     ):
         for outcome in executor.map(task, todo, label="batch"):
             # measure_input reports the input's own faults; anything else it raised is the item's error

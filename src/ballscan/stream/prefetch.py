@@ -1,15 +1,16 @@
 """PNG inputs decoded on another core while this process loads the estimator.
 
 A ``batch`` command's first half second goes to importing the estimator and
-loading its compiled kernels, one core's work; with local workers allowed
-(``-j 2`` or more) the other core is idle meanwhile.  :func:`decoding_ahead`
-forks a decoder (:func:`ballscan.parallel.start_forked`) that reads the PNG
-inputs in their order (:func:`ballscan.measure.images.read_stored`, a quarter
-of a small image's measuring time) into memory shared with this process and
-every process later forked from it; :func:`stop_decoding`, called once this
-process is warm, ends the decoder and takes note of what it finished;
-:func:`decoded` then hands an input's samples over instead of reading the
-file again.  The samples are those ``read_stored`` gives (the same call), so
+loading its compiled kernels, then to the first inputs, measured there
+before workers are worth starting: one core's work; with local workers
+allowed (``-j 2`` or more) the other core is idle meanwhile.
+:func:`decoding_ahead` forks a decoder (:func:`ballscan.parallel.start_forked`)
+that reads the PNG inputs in their order
+(:func:`ballscan.measure.images.read_stored`, a quarter of a small image's
+measuring time) into memory shared with this process and every process
+later forked from it; :func:`decoded` hands an input's samples over instead
+of reading the file again, and :func:`stop_decoding`, called before the
+workers start, ends the decoder (the workers then use what it finished).  The samples are those ``read_stored`` gives (the same call), so
 the results do not change; an input the decoder could not read or did not
 reach is read where it is measured, which also reports its faults.
 
@@ -60,6 +61,13 @@ class _Ahead:
         self._proc = start_forked(_decode_all, list(paths), self.block, send, name="ballscan-decoder")
         send.close()  # the decoder's end: the pipe reads its end when the decoder is gone
 
+    def _take_notes(self) -> None:
+        """The notes the decoder has sent so far (each one small write to the pipe, whole or not at all)."""
+        with contextlib.suppress(EOFError, OSError):
+            while self._recv.poll():
+                path, slot = self._recv.recv()
+                self.slots[path] = slot
+
     def stop(self) -> int:
         """End the decoder (at once) and take note of the images it finished; the count."""
         if self._proc is None:
@@ -68,17 +76,15 @@ class _Ahead:
         self._proc.kill()
         self._proc.join()
         self._proc = None
-        # each note is one small write to the pipe, whole or not at all
-        with contextlib.suppress(EOFError, OSError):
-            while self._recv.poll():
-                path, slot = self._recv.recv()
-                self.slots[path] = slot
+        self._take_notes()
         self._recv.close()
         return len(self.slots)
 
     def get(self, path: str):
         from ..measure.images import StoredImage
 
+        if self._proc is not None:
+            self._take_notes()
         slot = self.slots.get(path)
         if slot is None:
             return None
@@ -164,7 +170,7 @@ def stop_decoding() -> int:
 def decoded(path: str):
     """The :class:`~ballscan.measure.images.StoredImage` of ``path`` as decoded ahead (a copy), or None.
 
-    Only after :func:`stop_decoding`, in this process or one forked from it
-    since.
+    In this process while the decoder runs, or after :func:`stop_decoding`
+    in this process and those forked from it since.
     """
     return None if _current is None else _current.get(path)
