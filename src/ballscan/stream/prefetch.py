@@ -1,4 +1,4 @@
-"""PNG inputs decoded on another core while this process loads the estimator.
+"""PNG inputs decoded on another core while this process loads the estimator and measures the first ones.
 
 A ``batch`` command's first half second goes to importing the estimator and
 loading its compiled kernels, then to the first inputs, measured there
@@ -10,9 +10,10 @@ that reads the PNG inputs in their order
 measuring time) into memory shared with this process and every process
 later forked from it; :func:`decoded` hands an input's samples over instead
 of reading the file again, and :func:`stop_decoding`, called before the
-workers start, ends the decoder (the workers then use what it finished).  The samples are those ``read_stored`` gives (the same call), so
-the results do not change; an input the decoder could not read or did not
-reach is read where it is measured, which also reports its faults.
+workers start, ends the decoder (the workers then use what it finished).
+The samples are those ``read_stored`` gives (the same call), so the results
+do not change; an input the decoder could not read or did not reach is read
+where it is measured, which also reports its faults.
 
 The decoded images stay in the shared memory until the block ends, at most
 :data:`CAPACITY_BYTES`.  The decoder never outlives the block, nor this
