@@ -16,9 +16,11 @@ commit before this work, checked out in a temporary worktree), in one run:
   image of 20 balls against one of 1 ball, and the whole image's time per
   ball above an image of the same size without balls;
 * ``batch``: ``ballscan batch`` over 200 images of 2048 x 300 with ``-j 1``
-  and ``-j 2`` (median wall of :data:`BATCH_ROUNDS` interleaved rounds), the
-  speed-up of ``-j 2``, ``-j 1``'s wall against the old code's, and the
-  processes left behind after it exits;
+  and ``-j 2`` (median wall of :data:`BATCH_ROUNDS` interleaved rounds, the
+  two checkouts in ABBA order), the speed-up of ``-j 2``, ``-j 1``'s wall
+  against the old code's, the processes left behind after it exits, and the
+  fixed cost: ``batch`` over one of the images (each checkout's program
+  entry: its console script's function);
 * ``latency``: the stream's latency (``bench_stream.run``) over >= 200 balls,
   alone and with a CPU-bound process pinned to the other core (``taskset``).
 
@@ -45,6 +47,10 @@ PARTS = ("memory", "noball", "balls", "batch", "latency")
 OLD_COMMIT = "30fe372"
 #: Interleaved rounds of the batch part (medians of the walls).
 BATCH_ROUNDS = 3
+
+#: ``python -c`` code that runs a checkout's ``ballscan`` program as its console script does
+#: (``ballscan.cli.run`` where it has one, else ``sys.exit(main())``).
+PROGRAM = "import sys, ballscan.cli as c; sys.argv[0] = 'ballscan'; c.run() if hasattr(c, 'run') else sys.exit(c.main(sys.argv[1:]))"
 
 # A subprocess's view of either layout (the flat one before the redesign, or sub-packages).
 HARNESS = r"""
@@ -243,25 +249,31 @@ def part_batch(folder: Path, old: Path) -> dict:
         img = np.clip(base.astype(np.int16) + np.random.default_rng(k).integers(-1, 2, base.shape), 0, 255).astype(np.uint8)
         Image.fromarray(img).save(data / f"img{k:03d}.png")
     cam = _camera_file(folder)
+    one = folder / "one"
+    one.mkdir()
+    shutil.copy(data / "img000.png", one / "img000.png")
     walls: dict[str, list[float]] = {}
     res: dict = {}
-    # interleaved rounds (new -j 1, old -j 1, new -j 2, old -j 2): a noisy
-    # machine's load changes alike for the runs compared; medians reported
+    # interleaved rounds (-j 1, -j 2, one image; the checkouts in ABBA order):
+    # a noisy machine's load changes alike for the runs compared; medians reported
     for rnd in range(BATCH_ROUNDS):
-        for jobs in (1, 2):
-            for name, src in (("new", None), ("old", old)):
-                out = folder / f"{name}_{jobs}_{rnd}.csv"
-                cmd = [sys.executable, "-c", "import sys; from ballscan.cli import main; sys.exit(main(sys.argv[1:]))", "batch", str(data), "--camera", str(cam), "--radius", "0.0335", "--out", str(out), "-j", str(jobs), "--no-progress"]
+        for jobs, inputs in ((1, data), (2, data), (1, one)):
+            for name, src in (("new", None), ("old", old))[:: 1 if rnd % 2 == 0 else -1]:
+                key = f"{name}_j{jobs}" if inputs is data else f"{name}_one_image"
+                out = folder / f"{key}_{rnd}.csv"
+                cmd = [sys.executable, "-c", PROGRAM, "batch", str(inputs), "--camera", str(cam), "--radius", "0.0335", "--out", str(out), "-j", str(jobs), "--no-progress"]
                 t0 = time.perf_counter()
                 subprocess.run(cmd, capture_output=True, text=True, env=_env(src))
-                walls.setdefault(f"{name}_j{jobs}", []).append(time.perf_counter() - t0)
+                walls.setdefault(key, []).append(time.perf_counter() - t0)
                 time.sleep(0.5)
                 rows = max(sum(1 for _ in open(out)) - 1, 0) if out.exists() else 0
-                key = f"{name}_j{jobs}"
                 res[key] = {"rows": min(rows, res.get(key, {}).get("rows", rows)), "left_behind": max(len(_leftovers(str(folder))), res.get(key, {}).get("left_behind", 0))}
     for key, w in walls.items():
         res[key]["wall_s"] = float(np.median(w))
         res[key]["walls_s"] = [round(x, 2) for x in w]
+    for name in ("new", "old"):
+        # the same rows whatever the workers (in the order the inputs finished)
+        res[f"{name}_j2"]["rows_equal_j1"] = sorted(open(folder / f"{name}_j1_0.csv")) == sorted(open(folder / f"{name}_j2_0.csv"))
     for name in ("new", "old"):
         res[f"{name}_speedup_j2"] = res[f"{name}_j1"]["wall_s"] / res[f"{name}_j2"]["wall_s"]
     res["j1_new_over_old"] = res["new_j1"]["wall_s"] / res["old_j1"]["wall_s"]

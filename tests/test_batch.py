@@ -137,3 +137,18 @@ def test_batch_background_reaches_raw_streams(recordings, tmp_path):
     assert [r["t_c_s"] for r in rows["engine"]] != [r["t_c_s"] for r in rows["crop"]]
     with pytest.raises(ValueError, match="background"):
         run_batch([recordings / "stream.raw"], tmp_path / "x.csv", RADIUS, background="image")
+
+
+def test_the_batch_warm_up_loads_the_estimators_kernels_not_the_stream_engines():
+    import subprocess
+
+    code = (
+        "from ballscan.stream.batch import load_estimator; load_estimator(); "
+        "from ballscan import compiled; from ballscan.pipeline.warmup import KERNEL_MODULES; "
+        "est = [bool(k.signatures) for m in KERNEL_MODULES for k in compiled.KERNELS[m] if not k.py_func.__name__.startswith('_')]; "
+        "line = [bool(k.signatures) for k in compiled.KERNELS['ballscan.stream._line_kernels']]; "
+        "print(len(est), all(est), len(line), any(line))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert int(out[0]) >= 40 and out[1] == "True"
+    assert int(out[2]) >= 1 and out[3] == "False"

@@ -209,3 +209,17 @@ def test_estimate_matched_switch(tmp_path, capsys):
     on, off = json.loads(on)["balls"][0], json.loads(off)["balls"][0]
     assert on["edges"] == "matched" and off["edges"] == "window"
     assert on["column_gain_sigma"] < 0.003
+
+
+def test_the_program_exits_with_mains_status_its_objects_frozen_before_the_teardown():
+    import subprocess
+    import sys
+
+    code = (
+        "import gc, sys; from ballscan.cli import run; sys.argv = ['ballscan', '--version']\n"
+        "try:\n    run()\nexcept SystemExit as e:\n    print(e.code, gc.get_freeze_count() > 0)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
+    assert out[-2:] == ["0", "True"]
+    bad = subprocess.run([sys.executable, "-m", "ballscan", "estimate", "/no/such/image.png", "--radius", "0.03"], capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.startswith("ballscan: ")

@@ -191,6 +191,14 @@ def test_two_watches_on_one_event_folder_the_second_refused(stream, tmp_path, ca
 
 
 # ---------------------------------------------------------------- batch
+def _cmdline(proc: psutil.Process) -> str:
+    """A child's command line; empty for one that has just ended (a batch's decoder, joined at once)."""
+    try:
+        return " ".join(proc.cmdline())
+    except (psutil.ZombieProcess, psutil.NoSuchProcess):
+        return ""
+
+
 def test_kill_9_during_batch_ends_its_workers_and_a_rerun_gives_every_ball_once(images, tmp_path):
     want = {f"img{k}.png": 1 if k % 2 else 2 for k in range(8)}
     out = tmp_path / "out.csv"
@@ -199,7 +207,7 @@ def test_kill_9_during_batch_ends_its_workers_and_a_rerun_gives_every_ball_once(
     t0 = time.monotonic()
     workers: list[psutil.Process] = []
     while time.monotonic() - t0 < HANG_S and p.poll() is None:
-        workers = [c for c in parent.children(recursive=True) if "resource_tracker" not in " ".join(c.cmdline())]
+        workers = [c for c in parent.children(recursive=True) if "resource_tracker" not in _cmdline(c)]
         if len(workers) >= 2 and out.is_file() and out.read_bytes().count(b"\n") >= 2:
             break
         time.sleep(0.02)

@@ -154,3 +154,21 @@ def test_the_trend_is_scipys_savitzky_golay_filter():
     assert leak == pytest.approx(float(np.sum(coef**2)))
     x = np.random.default_rng(1).normal(size=80).cumsum()
     np.testing.assert_allclose(_trend(x.copy()), savgol_filter(x, _TREND_COLS, 2, mode="interp"), rtol=0, atol=1e-9)
+
+
+def test_the_symmetric_filter_is_scipys_convolve1d_bit_for_bit():
+    from scipy.ndimage import convolve1d
+
+    from ballscan.measure.flatfield import _symmetric_filter, _trend_filter
+
+    rng = np.random.default_rng(7)
+    coefs = [_trend_filter()[0]]
+    for m in (0, 1, 3, 9):
+        half = rng.normal(size=m + 1)
+        coefs.append(np.concatenate([half, half[-2::-1]]))  # symmetric, odd length
+    for coef in coefs:
+        for n in (1, 2, 7, 15, 16, 120, 2048):
+            for scale in (1e-3, 1.0, 255.0, 1e6):
+                x = scale * rng.standard_normal(n) + scale * rng.uniform(-3, 3)
+                got = _symmetric_filter(x, coef)
+                assert np.array_equal(got, convolve1d(x, coef, mode="constant")), (coef.size, n, scale)

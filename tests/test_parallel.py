@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import subprocess
@@ -12,7 +13,7 @@ import psutil
 import pytest
 
 from ballscan.errors import BallscanError
-from ballscan.parallel import TaskExecutor, TaskResult, run_tasks
+from ballscan.parallel import TaskExecutor, TaskResult, collector_paused, run_tasks
 
 #: Set by the warm-up hook in the process it runs in.
 _WARM: dict[str, int] = {}
@@ -219,3 +220,74 @@ def test_forked_workers_end_when_their_parent_is_killed():
     p.kill()
     p.communicate(timeout=60)
     assert psutil.wait_procs(workers, timeout=10.0)[1] == []  # PARENT_POLL_S, not the 30 s sleeps
+
+
+# ---------------------------------------------------------------- the garbage collector
+def _freeze_count(_: int) -> tuple[int, int]:
+    time.sleep(0.02)
+    return gc.get_freeze_count(), os.getpid()
+
+
+def test_workers_keep_what_they_loaded_out_of_the_collector_and_this_process_does_not(cheap_workers):
+    before = gc.get_freeze_count()
+    with TaskExecutor(2, warm_up=_warm_up) as ex:
+        out = [r.value for r in ex.map(_freeze_count, range(12))]
+    assert gc.get_freeze_count() == before  # this process may be a user's: nothing frozen here
+    in_workers = [n for n, pid in out if pid != os.getpid()]
+    assert in_workers and all(n > 0 for n in in_workers)
+    _WARM.clear()
+
+
+@pytest.mark.parametrize("enabled", [True, False])
+def test_the_collector_is_paused_within_the_block_and_restored_after(enabled):
+    was = gc.isenabled()
+    try:
+        gc.enable() if enabled else gc.disable()
+        with collector_paused():
+            assert not gc.isenabled()
+        assert gc.isenabled() == enabled
+        with pytest.raises(ValueError), collector_paused():
+            raise ValueError("out of the block")
+        assert gc.isenabled() == enabled
+    finally:
+        gc.enable() if was else gc.disable()
+
+
+# ---------------------------------------------------------------- memory reuse
+REUSE = r"""
+import resource, sys, numpy as np
+from ballscan.parallel import reuse_freed_memory
+ok = reuse_freed_memory() if sys.argv[1] == "1" else None
+faults = []
+for rep in range(4):
+    f0 = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+    arrays = [np.ones(1 << 18) for _ in range(20)]  # an image's working arrays: 20 x 2 MB
+    del arrays
+    faults.append(resource.getrusage(resource.RUSAGE_SELF).ru_minflt - f0)
+print(ok, max(faults[1:]))
+"""
+
+
+@pytest.mark.skipif("glibc" not in " ".join(__import__("platform").libc_ver()), reason="glibc's allocator")
+def test_the_next_images_arrays_reuse_freed_memory_instead_of_fresh_pages():
+    def run(flag: str) -> tuple[str, int]:
+        ok, faults = subprocess.run([sys.executable, "-c", REUSE, flag], capture_output=True, text=True, check=True).stdout.split()
+        return ok, int(faults)
+
+    ok, faults = run("1")
+    assert ok == "True" and faults < 1000  # 40 MB kept: touched again without a fault
+    ok, faults = run("0")
+    assert ok == "None" and faults > 5000  # glibc's default: given back and zero-filled again (10 240 pages)
+
+
+def test_before_workers_runs_here_once_before_they_start_and_not_without_them(cheap_workers):
+    calls: list[int] = []
+    before = {p.pid for p in _children()}
+    with TaskExecutor(2, before_workers=lambda: calls.append(len({p.pid for p in _children()} - before))) as ex:
+        assert sorted(r.value for r in ex.map(_square, range(8))) == [i * i for i in range(8)]
+        list(ex.map(_square, range(4)))  # the same workers
+    assert calls == [0]  # once, with no worker of this executor running yet
+    calls.clear()
+    with TaskExecutor(1, before_workers=lambda: calls.append(1)) as ex:
+        list(ex.map(_square, range(8)))
+    assert calls == []

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import importlib.util
 import subprocess
 import sys
@@ -75,3 +76,38 @@ def test_the_estimators_kernels_load_silently_once_compiled(capsys):
 def test_the_warm_up_command_reports_the_kernels_and_the_cache():
     res = subprocess.run([sys.executable, "-m", "ballscan", "warm-up"], capture_output=True, text=True, check=True)
     assert "kernels ready" in res.stdout and "cache:" in res.stdout
+
+
+PAUSE_SOURCE = textwrap.dedent(
+    """
+    import gc
+    from ballscan.compiled import jit
+
+    SEEN = []
+
+    @jit()
+    def thrice(x):
+        return 3.0 * x
+
+    def warm_up():
+        SEEN.append(gc.isenabled())
+        thrice(1.0)
+    """
+)
+
+
+def test_the_collector_pauses_while_cached_kernels_load_not_while_they_compile(tmp_path):
+    src = tmp_path / "paused_kernels.py"
+    src.write_text(PAUSE_SOURCE)
+    mod = _load(src, "paused_kernels")
+    assert gc.isenabled()
+    assert warmup.warm_up(("paused_kernels",), show=False).compiled == 1
+    code = (
+        f"import sys; sys.path.insert(0, {str(tmp_path)!r}); import paused_kernels as m; "
+        "from ballscan.pipeline import warmup; import gc; "
+        "d = warmup.warm_up(('paused_kernels',), show=False); print(d.compiled, m.SEEN, gc.isenabled())"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split(maxsplit=1)
+    assert mod.SEEN == [True]  # compiling: the collector ran
+    assert out == ["0", "[False] True\n"]  # loaded from the cache: paused, then running again
+    assert gc.isenabled()

@@ -1,5 +1,5 @@
 """The ``ballscan`` command, a thin layer over the library."""
 
-from .app import app, main
+from .app import app, main, run
 
-__all__ = ["app", "main"]
+__all__ = ["app", "main", "run"]

@@ -428,5 +428,21 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
+def run() -> None:
+    """The ``ballscan`` program (its console script and ``python -m ballscan``): :func:`main`, then exit with its status.
+
+    Before the interpreter's teardown, every object is moved out of the
+    garbage collector's reach (``gc.freeze``): the teardown's collections
+    then free the loaded modules and compiled kernels without walking them
+    again and again (about 0.12 s of a command that measured a ball).  Only
+    here, where the process ends next: frozen objects are never collected.
+    """
+    code = main()
+    import gc
+
+    gc.freeze()
+    sys.exit(code)
+
+
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    run()

@@ -35,7 +35,6 @@ from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
-from scipy.ndimage import convolve1d
 
 from ..compiled import as_arg
 from ._flatfield_kernels import median_deviations, sorted_medians
@@ -91,10 +90,28 @@ _MAX_DEFECTS = 8
 _DEFECT_FLOOR = 1e-3
 
 
+def _symmetric_filter(x: np.ndarray, coef: np.ndarray) -> np.ndarray:
+    """``scipy.ndimage.convolve1d(x, coef, mode="constant")`` for a symmetric ``coef`` of odd length, bit for bit.
+
+    Each output is ``x[i] c[m] + sum over d = m .. 1 of (x[i - d] + x[i + d]) c[m - d]``,
+    summed in that order, as ``scipy.ndimage`` does for a symmetric filter
+    (zeros beyond the ends); computed here across all ``i`` at once, which
+    spares the batch path ``scipy.ndimage``'s import (about 50 ms).
+    """
+    m = coef.size // 2
+    n = x.size
+    xp = np.zeros(n + 2 * m)
+    xp[m : m + n] = x
+    y = xp[m : m + n] * coef[m]
+    for d in range(m, 0, -1):
+        y += (xp[m - d : m - d + n] + xp[m + d : m + d + n]) * coef[m - d]
+    return y
+
+
 def _trend(x: np.ndarray) -> np.ndarray:
     """``savgol_filter(x, _TREND_COLS, 2, mode="interp")`` (the edges to rounding; ``x`` at least ``_TREND_COLS`` long)."""
     coef, edge, _ = _trend_filter()
-    y = convolve1d(x, coef, mode="constant")
+    y = _symmetric_filter(x, coef)
     h = _TREND_COLS // 2
     y[:h] = edge @ x[:_TREND_COLS]
     y[-h:] = (edge @ x[::-1][:_TREND_COLS])[::-1]

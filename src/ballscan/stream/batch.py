@@ -43,7 +43,7 @@ from ..outputs import OutputLock, check_not_symlink
 from ..parallel import TaskExecutor
 from ..pipeline.report import CSV_COLUMNS, csv_row
 
-__all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "measure_input", "run_batch"]
+__all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "load_estimator", "measure_input", "run_batch"]
 
 IMAGE_SUFFIXES = (".png", ".tif", ".tiff")
 RAW_SUFFIXES = (".raw", ".bin", ".u8", ".u16")
@@ -167,9 +167,12 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         else:
             from ..measure.images import load_timestamps, read_stored
             from ..pipeline.recipe import Recipe
+            from .prefetch import decoded
             from .recording import measure_stored
 
-            stored = read_stored(p)
+            stored = decoded(src)  # decoded ahead on another core, or None
+            if stored is None:
+                stored = read_stored(p)
             ts = load_timestamps(ts_path, stored.n_lines) if ts_path is not None else None
             ests = list(measure_stored(stored, camera, radius_m, Recipe(method=method), timestamps_s=ts).balls)
         return InputResult(src, tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests)))
@@ -303,7 +306,7 @@ def run_batch(
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
     if method not in ("fit", "paper"):
         raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
-    from .engine import BACKGROUNDS, preload_estimator
+    from .engine import BACKGROUNDS
 
     if background not in BACKGROUNDS:
         raise ValueError(f"background: expected one of {BACKGROUNDS}, got {background!r}")
@@ -342,14 +345,45 @@ def run_batch(
     return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors), tuple(repairs))
 
 
+def load_estimator() -> None:
+    """Import the estimator and load its compiled kernels (the executor's warm-up for a batch).
+
+    The stream engine's own kernels are not loaded here: an input measured
+    as a stream (a raw file, a recording longer than the engine's ring)
+    loads them when its engine starts.  The process measures image after
+    image: its working arrays reuse freed memory
+    (:func:`ballscan.parallel.reuse_freed_memory`).
+    """
+    from ..parallel import collector_paused, reuse_freed_memory
+    from ..pipeline.warmup import ensure_warm
+
+    reuse_freed_memory()
+
+    with collector_paused():  # modules: objects that live as long as the process
+        from .recording import measure_stored  # noqa: F401 (the estimator's modules)
+    ensure_warm()
+
+
 def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
-    """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write."""
-    from .engine import preload_estimator
+    """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write.
+
+    With local workers allowed (``jobs`` other than 1, no ``scheduler``),
+    the PNGs are decoded on another core while this process loads the
+    estimator and measures the first inputs, until the workers start
+    (:func:`ballscan.stream.prefetch.decoding_ahead`).
+    """
+    from ..parallel import available_cores
+    from .prefetch import decoding_ahead, stop_decoding
 
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
     task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
-    with open(side, "a") as side_fh, TaskExecutor(jobs, scheduler, warm_up=preload_estimator, progress=progress) as executor:
+    ahead = scheduler is None and (available_cores() if jobs == -1 else jobs) > 1 and len(todo) > 1
+    with (
+        decoding_ahead(todo if ahead else []),
+        open(side, "a") as side_fh,
+        TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress, before_workers=stop_decoding) as executor,
+    ):
         for outcome in executor.map(task, todo, label="batch"):
             # measure_input reports the input's own faults; anything else it raised is the item's error
             res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
