@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -340,3 +341,61 @@ def test_a_neighbours_mask_is_cut_to_the_window_as_the_whole_images_would_be():
         l0, l1 = sorted(rng.integers(0, n, 2).tolist())
         c0, c1 = sorted(rng.integers(0, w, 2).tolist())
         np.testing.assert_array_equal(_region_pixels(region, l0, l1 + 1, c0, c1 + 1), full[l0 : l1 + 1, c0 : c1 + 1])
+
+
+# --------------------------------------------------- a side-lit ball's shaded limb
+def _side_lit_ball():
+    """A bright ball lit from the side with little ambient light (noise-free 16 bits but for 0.5 DN), its camera, motion, detection and the truth's mean edges.
+
+    Its shaded half, at the ambient level (12 % of the ball's), is a plateau
+    below a quarter of the lit side's peak about half the diameter (28 px) wide.
+    """
+    from ballscan.geometry.camera import LineScanCamera, line_times
+    from ballscan.geometry.motion import BallMotion
+    from ballscan.measure.detection import detect
+    from ballscan.measure.images import LineImage
+    from ballscan.model.averaged import averaged_model
+    from ballscan.model.render import Appearance, render
+    from ballscan.pipeline.background import full_background
+
+    cam = LineScanCamera(160, 2500.0, 79.5, 4000.0, None)
+    m = BallMotion(0.0335, 0.025, (0.0, 0.002, 3.0), (2.0, 0.1, 0.0))
+    app = Appearance(ball_level=0.9, light_dir=(0.3, 0.9, -0.3), ambient=0.12)
+    n = 200
+    clean = render(cam, (m, app), n, background_level=0.02, noise=None).clean
+    img = LineImage(clean * 4000.0 + 0.5 * np.random.default_rng(1).standard_normal(clean.shape), 1e12, 16, "side-lit ball")
+    t = line_times(cam, n)
+    det = detect(img)
+    me = averaged_model(cam, m.to_params()[None], m.radius_m, t, m.acceleration_mps2)
+    return cam, m, img, t, det, full_background(det), me
+
+
+def test_edges_reach_the_limb_of_a_side_lit_balls_shaded_half():
+    from ballscan.measure.edges import EdgeSettings
+
+    _, _, img, t, det, bg, me = _side_lit_ball()
+    offsets = {}
+    for walk in (4096, 12):
+        e = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t, settings=EdgeSettings(max_walk_px=walk))
+        sharp = (me.presence[0][e.lines] > 0.999) & (me.spread_px[0][e.lines] < 0.3)
+        # inwards positive
+        dl = (e.left_px - me.left_px[0][e.lines])[e.left_ok & sharp]
+        dr = (me.right_px[0][e.lines] - e.right_px)[e.right_ok & sharp]
+        assert dl.size > 80 and dr.size > 80
+        offsets[walk] = (dl, dr)
+    dl, dr = offsets[4096]
+    # measured: medians -0.0004 / +0.009 px, worst 0.015 / 0.028 px
+    assert abs(np.median(dl)) < 0.01 and abs(np.median(dr)) < 0.02
+    assert np.abs(dl).max() < 0.05 and np.abs(dr).max() < 0.06
+    # a walk of at most 12 px stops on the shaded plateau, 8.5 px inside the limb
+    assert np.median(offsets[12][0]) > 5.0
+
+
+def test_side_lit_ball_measured_to_its_sigmas():
+    from ballscan.pipeline.estimate import estimate_image
+
+    cam, m, img, *_ = _side_lit_ball()
+    (b,) = estimate_image(img, cam, m.radius_m).balls
+    # measured: V.z 0.035 +- 0.045 m/s, speed +0.13 %
+    assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
+    assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.003

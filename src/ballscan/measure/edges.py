@@ -108,7 +108,15 @@ class EdgeSettings:
         pixel instead of the background's noise alone.
     max_walk_px : int
         Pixels the rough edge may move outwards from the peak-fraction
-        crossing towards a darker (shaded) limb.
+        crossing towards a darker (shaded) limb.  The walk ends where the
+        profile stops holding ``find_fraction`` of its inner neighbour or
+        falls to the noise floor, so the default bounds it only by the box:
+        on a ball lit from the side with little ambient light the shaded
+        side, at the ambient level, is a plateau below a quarter of a
+        highlight's peak that can span a third of the diameter, and a
+        window left at the terminator reads that side's limb pixels inside
+        the ball by as much (the depth velocity then follows the
+        terminator's path across the passage).
     limb_samples : int
         Point samples per pixel of the profile model (``limb`` of
         :func:`measure_edges`) for the surface's mean brightness on the
@@ -146,7 +154,7 @@ class EdgeSettings:
     n_out_wide: int = 3
     n_in_wide: int = 1
     level_slope: float = 1.0
-    max_walk_px: int = 12
+    max_walk_px: int = 4096
     slope_lines: int = 9
     slope_degree: int = -1
     slope_threshold: float = 2.0

@@ -1,0 +1,152 @@
+"""Edge bias on the POV-Ray set: each measured edge against the truth's projected limb, line by line.
+
+    python benchmarks/povray_set/edge_bias.py [--scenes DIR] [--split tune] [--clean] [--per-line] NAME [NAME ...]
+
+For each scene (its first true ball) the default estimator runs in-process
+(``estimate_image``); the edges its reported fit took
+(``BallEstimate.fitted_edges``) are compared with the mean edges of the
+averaged silhouette at the truth's motion (``model.averaged``: the limb the
+set's own coverage matches to 0.001 px, see the convention audit in
+``docs/benchmarks.md``).  Offsets are counted positive inwards (a left edge
+to the right of the true limb, a right edge to its left), in pixels, on the
+narrow-window edges where the model's edge spread is below 0.3 px and the
+wide-window ones where it is 0.3-0.8 px (where the fit takes each).
+
+Columns: the fit's path, the lines with both edges, each side's median
+offset, the slope of each side's offset over the passage (pixels from the
+first to the last measured line: a straight fit in time), the fit's V.z
+error in transverse speeds, and the same fit's V.z error started from the
+truth on the same edges.  ``--clean`` measures the scene's noise-free
+render (``scenes/clean/``, same detection) instead; ``--per-line`` prints
+every line's offsets.  Tuning half only unless ``--split all``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+
+
+def truth_motion(tb: dict):
+    from ballscan.geometry.motion import BallMotion
+
+    return BallMotion(tb["radius_m"], tb["t_c_s"], tuple(tb["position_m"]), tuple(tb["velocity_mps"]))
+
+
+def load(scenes: Path, name: str, clean: bool):
+    """The scene's truth, camera and image (the noise-free render with ``clean``, at the noisy one's scale)."""
+    from ballscan.geometry.camera import load_camera
+    from ballscan.measure.images import as_line_image, load_image
+
+    truth = json.loads((scenes / f"{name}.truth.json").read_text())
+    cam = load_camera(scenes / f"{name}.camera.toml")
+    img = load_image(scenes / f"{name}.png")
+    if clean:
+        from PIL import Image
+
+        n = truth["noise"]
+        raw = np.asarray(Image.open(scenes / "clean" / f"{name}.png"), float) / 65535.0
+        dn = n["black_dn"] + raw * n["white_dn"]
+        img = as_line_image(dn.astype(np.float32), bits=16)
+    return truth, cam, img
+
+
+def offsets(edges, cam, motion) -> dict:
+    """Inward offsets of the narrow-window edges from the truth's mean edges, per line (NaN where unusable)."""
+    from ballscan.model.averaged import averaged_model
+
+    me = averaged_model(cam, motion.to_params()[None], motion.radius_m, edges.t_s, motion.acceleration_mps2)
+    tl, tr, spread = me.left_px[0], me.right_px[0], me.spread_px[0]
+    seen = me.presence[0] > 0
+    # the narrow windows where the fit takes them, the wide ones beyond (FitSettings' spreads)
+    narrow = seen & (spread < 0.3)
+    wide = seen & (spread >= 0.3) & (spread <= 0.8) & (edges.left_wide_ok is not None)
+    out = {"lines": edges.lines, "t": edges.t_s, "true_left": tl, "true_right": tr, "wide": wide}
+    for side, sg, true in (("left", 1.0, tl), ("right", -1.0, tr)):
+        e_n, ok_n = getattr(edges, f"{side}_px"), getattr(edges, f"{side}_ok")
+        e_w, ok_w = getattr(edges, f"{side}_wide_px"), getattr(edges, f"{side}_wide_ok")
+        d = np.where(ok_n & narrow, sg * (e_n - true), np.nan)
+        if e_w is not None:
+            d = np.where(ok_w & wide, sg * (e_w - true), d)
+        out[side] = d
+    return out
+
+
+def trend(t: np.ndarray, d: np.ndarray) -> float:
+    """Change of ``d`` from the first to the last finite line, by a straight fit in time (pixels)."""
+    ok = np.isfinite(d)
+    if ok.sum() < 5:
+        return math.nan
+    c = np.polyfit(t[ok], d[ok], 1)
+    return float(c[0] * (t[ok].max() - t[ok].min()))
+
+
+def refit_from_truth(cam, edges, motion):
+    from ballscan.solve.fit import fit_motion
+
+    return fit_motion(cam, edges, motion).motion
+
+
+def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
+    from ballscan.pipeline.estimate import estimate_image
+
+    truth, cam, img = load(scenes, name, clean)
+    tb = (truth["balls"] if "balls" in truth else [truth])[0]
+    rep = estimate_image(img, cam, tb["radius_m"])
+    found = [b for b in rep.balls if b.t_c_s is not None and b.fitted_edges is not None]
+    if not found:
+        return f"| {name} | no fit | | | | | | |"
+    b = min(found, key=lambda e: abs(e.t_c_s - tb["t_c_s"]))
+    m = truth_motion(tb)
+    o = offsets(b.fitted_edges, cam, m)
+    both = np.isfinite(o["left"]) & np.isfinite(o["right"])
+    v = tb["velocity_mps"]
+    vt = math.hypot(v[0], v[1])
+    vz_fit = b.extra.get("vz_fit")
+    est_vz = b.velocity_mps[2] if b.velocity_mps is not None else None
+    try:
+        vz_t = refit_from_truth(cam, b.fitted_edges, m).velocity_mps[2]
+    except (ValueError, ArithmeticError):
+        vz_t = math.nan
+    if per_line:
+        for i in range(o["lines"].size):
+            if np.isfinite(o["left"][i]) or np.isfinite(o["right"][i]):
+                print(f"  {name} line {o['lines'][i]}: L {o['left'][i]:+.3f} R {o['right'][i]:+.3f}", file=sys.stderr)
+    f = lambda x: f"{x:+.3f}" if x is not None and np.isfinite(x) else "-"  # noqa: E731
+    med = lambda x: float(np.nanmedian(x)) if np.isfinite(x).any() else math.nan  # noqa: E731
+    ez = (est_vz - v[2]) / vt if est_vz is not None else None
+    del vz_fit
+    return (f"| {name} | {truth['kind']} | {b.record.final_fit if b.record else '-'} / {b.fitted_edges.edges_method} | {int(both.sum())} | "
+            f"{f(med(o['left']))} / {f(med(o['right']))} | {f(trend(o['t'], o['left']))} / {f(trend(o['t'], o['right']))} | "
+            f"{f(ez)} | {f((vz_t - v[2]) / vt)} |")
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("names", nargs="+")
+    ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
+    ap.add_argument("--split", choices=("tune", "all"), default="tune")
+    ap.add_argument("--clean", action="store_true")
+    ap.add_argument("--per-line", action="store_true")
+    a = ap.parse_args(argv)
+    print("| scene | kind | fit path / edges | lines with both edges | median offset L / R px (inwards) | "
+          "trend over the passage L / R px | fit V.z error / V_t | V.z error / V_t, fit from the truth |")
+    print("|" + "---|" * 8)
+    for name in a.names:
+        t = json.loads((a.scenes / f"{name}.truth.json").read_text())
+        if a.split == "tune" and t["split"] != "tune":
+            print(f"| {name} | report half: skipped | | | | | | |")
+            continue
+        print(scene_row(a.scenes, name, a.clean, a.per_line), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
