@@ -136,6 +136,7 @@ def test_short_end_lines_carry_area():
         ({"find_fraction": 1.0}, "find_fraction"),
         ({"pad_px": -1}, "pad_px"),
         ({"min_snr": float("nan")}, "min_snr"),
+        ({"walk_snr": -1.0}, "walk_snr"),
         ({"slope_degree": -2}, "slope_degree"),
         ({"limb_wide_px": (1.0, 0.2)}, "limb_wide_px"),
         ({"ball_noise": 1}, "ball_noise"),

@@ -117,6 +117,13 @@ class EdgeSettings:
         window left at the terminator reads that side's limb pixels inside
         the ball by as much (the depth velocity then follows the
         terminator's path across the passage).
+    walk_snr : float
+        The walk's floor: the next pixel must exceed this many noise sigmas.
+        Below ``min_snr``: a dim limb (a shaded side at the ambient level,
+        blurred by defocus) fades into the noise pixel by pixel, and a walk
+        that stops short leaves the window a pixel or two inside the limb;
+        one that steps onto the background on a noise spike only widens the
+        window by a pixel of background, which adds its noise but no bias.
     limb_samples : int
         Point samples per pixel of the profile model (``limb`` of
         :func:`measure_edges`) for the surface's mean brightness on the
@@ -155,6 +162,7 @@ class EdgeSettings:
     n_in_wide: int = 1
     level_slope: float = 1.0
     max_walk_px: int = 4096
+    walk_snr: float = 3.0
     slope_lines: int = 9
     slope_degree: int = -1
     slope_threshold: float = 2.0
@@ -173,7 +181,7 @@ class EdgeSettings:
             v = getattr(self, name)
             if not (isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= lo):
                 raise ValueError(f"EdgeSettings.{name}: must be an integer >= {lo}, got {v!r}")
-        for name in ("min_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px"):
+        for name in ("min_snr", "walk_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px"):
             v = getattr(self, name)
             if not (_is_number(v) and v >= 0):
                 raise ValueError(f"EdgeSettings.{name}: must be a finite number >= 0, got {v!r}")
@@ -822,7 +830,7 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     # walk outwards while the next pixel still holds find_fraction of its
     # inner neighbour (and is significant), so that the window sits on the
     # ball's real edge (compiled, line by line).
-    floor_p = s.min_snr * noise_row
+    floor_p = s.walk_snr * noise_row
     k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
     return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
 
