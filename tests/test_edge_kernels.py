@@ -56,21 +56,18 @@ def test_walk_edges_equals_its_numpy_form():
         w = p.shape[1]
         rows = np.arange(p.shape[0])
         kl, kr = k_left.copy(), k_right.copy()
-        # all lines stepped at once, as ballscan.measure.edges._edge_pass did in numpy
-        for _ in range(12):
-            cand = kl - 1
-            pc = p[rows, np.clip(cand, 0, w - 1)]
-            step = has_signal & (cand >= 0) & (pc >= 0.25 * p[rows, np.clip(kl + 1, 0, w - 1)]) & (pc >= floor_p)
-            if not step.any():
-                break
-            kl = np.where(step, cand, kl)
-        for _ in range(12):
-            cand = kr + 1
-            pc = p[rows, np.clip(cand, 0, w - 1)]
-            step = has_signal & (cand <= w - 1) & (pc >= 0.25 * p[rows, np.clip(kr - 1, 0, w - 1)]) & (pc >= floor_p)
-            if not step.any():
-                break
-            kr = np.where(step, cand, kr)
+        # all lines stepped at once: to the next pixel, or over one to the one after it
+        for k, step in ((kl, -1), (kr, 1)):
+            for _ in range(12):
+                need = np.maximum(floor_p, 0.25 * p[rows, np.clip(k, 0, w - 1)])
+                c1, c2 = k + step, k + 2 * step
+                p1 = p[rows, np.clip(c1, 0, w - 1)]
+                p2 = p[rows, np.clip(c2, 0, w - 1)]
+                one = has_signal & (c1 >= 0) & (c1 <= w - 1) & (p1 >= need)
+                two = has_signal & ~one & (c2 >= 0) & (c2 <= w - 1) & (p2 >= need)
+                if not (one | two).any():
+                    break
+                k[:] = np.where(one, c1, np.where(two, c2, k))
         got = K.walk_edges(p, k_left, k_right, has_signal, floor_p, 0.25, 12)
         assert np.array_equal(got[0], kl) and np.array_equal(got[1], kr)
         walked += int((kl != k_left).sum() + (kr != k_right).sum())

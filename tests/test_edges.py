@@ -345,11 +345,13 @@ def test_a_neighbours_mask_is_cut_to_the_window_as_the_whole_images_would_be():
 
 
 # --------------------------------------------------- a side-lit ball's shaded limb
-def _side_lit_ball():
-    """A bright ball lit from the side with little ambient light (noise-free 16 bits but for 0.5 DN), its camera, motion, detection and the truth's mean edges.
+def _side_lit_ball(ambient: float = 0.12, scale_dn: float = 4000.0, noise_dn: float = 0.5, seed: int = 1):
+    """A bright ball lit from the side with little ambient light, its camera, motion, image, line times, detection, background and the truth's mean edges.
 
-    Its shaded half, at the ambient level (12 % of the ball's), is a plateau
-    below a quarter of the lit side's peak about half the diameter (28 px) wide.
+    Its shaded half, at the ambient level (``ambient`` of the ball's), is a
+    plateau below a quarter of the lit side's peak about half the diameter
+    (28 px) wide.  The image is ``scale_dn`` times the renderer's noise-free
+    grey plus ``noise_dn`` of Gaussian noise.
     """
     from ballscan.geometry.camera import LineScanCamera, line_times
     from ballscan.geometry.motion import BallMotion
@@ -361,10 +363,10 @@ def _side_lit_ball():
 
     cam = LineScanCamera(160, 2500.0, 79.5, 4000.0, None)
     m = BallMotion(0.0335, 0.025, (0.0, 0.002, 3.0), (2.0, 0.1, 0.0))
-    app = Appearance(ball_level=0.9, light_dir=(0.3, 0.9, -0.3), ambient=0.12)
+    app = Appearance(ball_level=0.9, light_dir=(0.3, 0.9, -0.3), ambient=ambient)
     n = 200
     clean = render(cam, (m, app), n, background_level=0.02, noise=None).clean
-    img = LineImage(clean * 4000.0 + 0.5 * np.random.default_rng(1).standard_normal(clean.shape), 1e12, 16, "side-lit ball")
+    img = LineImage(clean * scale_dn + noise_dn * np.random.default_rng(seed).standard_normal(clean.shape), 1e12, 16, "side-lit ball")
     t = line_times(cam, n)
     det = detect(img)
     me = averaged_model(cam, m.to_params()[None], m.radius_m, t, m.acceleration_mps2)
@@ -400,3 +402,16 @@ def test_side_lit_ball_measured_to_its_sigmas():
     # measured: V.z 0.035 +- 0.045 m/s, speed +0.13 %
     assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
     assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.003
+
+
+def test_edges_reach_a_dim_shaded_limb_through_the_noise():
+    # the shaded half at 5 % of the ball's level, about 5 noise sigmas: single
+    # pixels dip below the walk's floor, and at the terminator the brightness
+    # falls by more than 4x over two pixels
+    _, _, img, t, det, bg, me = _side_lit_ball(ambient=0.05, scale_dn=600.0, noise_dn=2.0, seed=1)
+    e = measure_edges(img.data, det.regions[0], bg, det.noise_dn, t)
+    sharp = (me.presence[0][e.lines] > 0.999) & (me.spread_px[0][e.lines] < 0.3)
+    dl = (e.left_px - me.left_px[0][e.lines])[e.left_ok & sharp]
+    assert dl.size > 80
+    # measured: +0.105 px (seeds 0 and 2: +0.164, +0.053); stopped at the terminator: 14 px
+    assert np.median(dl) < 0.25

@@ -25,9 +25,10 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
     """The rough edges of :func:`ballscan.measure.edges._edge_pass` walked outwards towards a darker (shaded) limb.
 
     On each line with signal, the left edge ``k`` moves to ``k - 1`` while
-    that pixel holds ``fraction`` of its inner neighbour's value (``k + 1``)
-    and at least ``floor_p``, at most ``max_walk`` times; the right edge
-    likewise.  Returns new ``(k_left, k_right)``.
+    that pixel holds ``fraction`` of pixel ``k``'s value and at least
+    ``floor_p``, or to ``k - 2`` where pixel ``k - 1`` does not but ``k - 2``
+    does (one pixel of a dim limb lost in the noise), at most ``max_walk``
+    times; the right edge likewise.  Returns new ``(k_left, k_right)``.
     """
     n, w = p.shape
     kl = k_left.copy()
@@ -35,23 +36,28 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
     for r in range(n):
         if not has_signal[r]:
             continue
-        for _ in range(max_walk):
-            cand = kl[r] - 1
-            inner = p[r, min(max(kl[r] + 1, 0), w - 1)]
-            pc = p[r, min(max(cand, 0), w - 1)]
-            if cand >= 0 and pc >= fraction * inner and pc >= floor_p[r]:
-                kl[r] = cand
-            else:
-                break
-        for _ in range(max_walk):
-            cand = kr[r] + 1
-            inner = p[r, min(max(kr[r] - 1, 0), w - 1)]
-            pc = p[r, min(max(cand, 0), w - 1)]
-            if cand <= w - 1 and pc >= fraction * inner and pc >= floor_p[r]:
-                kr[r] = cand
-            else:
-                break
+        kl[r] = _walk(p, r, kl[r], -1, floor_p[r], fraction, max_walk)
+        kr[r] = _walk(p, r, kr[r], 1, floor_p[r], fraction, max_walk)
     return kl, kr
+
+
+@jit(inline="always")
+def _walk(p: np.ndarray, r: int, k: int, step: int, floor: float, fraction: float, max_walk: int) -> int:
+    """Pixel ``k`` of line ``r`` walked by ``step`` (-1 left, +1 right), see :func:`walk_edges`."""
+    w = p.shape[1]
+    for _ in range(max_walk):
+        if k < 0 or k > w - 1:
+            break
+        need = max(floor, fraction * p[r, k])
+        c1 = k + step
+        c2 = k + 2 * step
+        if 0 <= c1 <= w - 1 and p[r, c1] >= need:
+            k = c1
+        elif 0 <= c2 <= w - 1 and p[r, c2] >= need:
+            k = c2
+        else:
+            break
+    return k
 
 
 @jit()
