@@ -56,10 +56,10 @@ def test_walk_edges_equals_its_numpy_form():
         w = p.shape[1]
         rows = np.arange(p.shape[0])
         kl, kr = k_left.copy(), k_right.copy()
-        # all lines stepped at once: to the next pixel, or over one to the one after it
+        # all lines stepped at once: to the next pixel, or over one to the one after it (against the pixel inside k)
         for k, step in ((kl, -1), (kr, 1)):
             for _ in range(12):
-                need = np.maximum(floor_p, 0.25 * p[rows, np.clip(k, 0, w - 1)])
+                need = np.maximum(floor_p, 0.25 * p[rows, np.clip(k - step, 0, w - 1)])
                 c1, c2 = k + step, k + 2 * step
                 p1 = p[rows, np.clip(c1, 0, w - 1)]
                 p2 = p[rows, np.clip(c2, 0, w - 1)]

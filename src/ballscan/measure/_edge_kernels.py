@@ -25,10 +25,11 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
     """The rough edges of :func:`ballscan.measure.edges._edge_pass` walked outwards towards a darker (shaded) limb.
 
     On each line with signal, the left edge ``k`` moves to ``k - 1`` while
-    that pixel holds ``fraction`` of pixel ``k``'s value and at least
-    ``floor_p``, or to ``k - 2`` where pixel ``k - 1`` does not but ``k - 2``
-    does (one pixel of a dim limb lost in the noise), at most ``max_walk``
-    times; the right edge likewise.  Returns new ``(k_left, k_right)``.
+    that pixel holds ``fraction`` of its inner neighbour's value (``k + 1``)
+    and at least ``floor_p``, or to ``k - 2`` where pixel ``k - 1`` does not
+    but ``k - 2`` does (one pixel of a dim limb lost in the noise), at most
+    ``max_walk`` times; the right edge likewise.  Returns new ``(k_left,
+    k_right)``.
     """
     n, w = p.shape
     kl = k_left.copy()
@@ -48,7 +49,7 @@ def _walk(p: np.ndarray, r: int, k: int, step: int, floor: float, fraction: floa
     for _ in range(max_walk):
         if k < 0 or k > w - 1:
             break
-        need = max(floor, fraction * p[r, k])
+        need = max(floor, fraction * p[r, min(max(k - step, 0), w - 1)])
         c1 = k + step
         c2 = k + 2 * step
         if 0 <= c1 <= w - 1 and p[r, c1] >= need:
