@@ -109,7 +109,6 @@ def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
     both = np.isfinite(o["left"]) & np.isfinite(o["right"])
     v = tb["velocity_mps"]
     vt = math.hypot(v[0], v[1])
-    vz_fit = b.extra.get("vz_fit")
     est_vz = b.velocity_mps[2] if b.velocity_mps is not None else None
     try:
         vz_t = refit_from_truth(cam, b.fitted_edges, m).velocity_mps[2]
@@ -122,7 +121,6 @@ def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
     f = lambda x: f"{x:+.3f}" if x is not None and np.isfinite(x) else "-"  # noqa: E731
     med = lambda x: float(np.nanmedian(x)) if np.isfinite(x).any() else math.nan  # noqa: E731
     ez = (est_vz - v[2]) / vt if est_vz is not None else None
-    del vz_fit
     return (f"| {name} | {truth['kind']} | {b.record.final_fit if b.record else '-'} / {b.fitted_edges.edges_method} | {int(both.sum())} | "
             f"{f(med(o['left']))} / {f(med(o['right']))} | {f(trend(o['t'], o['left']))} / {f(trend(o['t'], o['right']))} | "
             f"{f(ez)} | {f((vz_t - v[2]) / vt)} |")
