@@ -175,9 +175,10 @@ def test_plane_constraint_on_a_rail_ball():
     truth = WorldMotion(R, p.motion.t_c_s, p.motion.position_m, p.motion.velocity_mps)
     assert np.all(np.abs(_errors_in_sigmas(b, truth)) < 3.0)
     assert b.sigmas[6] * 3 < free.velocity_sigma_mps[2]  # V.z (depth) pinned by the plane
-    # z0: the plane's 1 mm adds little to the free fit's depth; the joint fit's covariance scale
-    # (this camera's, 2.67) is not the single fit's, which puts its z0 sigma at 2.0e-4 m against the
-    # free fit's 1.27e-4 m here (at 2.87e-4 / 2.97e-4 before the edges' walk to a shaded limb)
+    # z0: the plane's 1 mm adds little to the free fit's depth.  The joint fit scales this camera's
+    # rows by the correlation of its edge residuals under the constrained motion (scale 2.67, its
+    # reduced chi-square 1.05): the plane's V.z leaves the shaded, textured ball's edges a structured
+    # misfit, and its z0 sigma is 2.0e-4 m against the free fit's 1.27e-4 m on the same 235 edges
     assert b.sigmas[3] <= 2.0 * free.position_sigma_m[2]
     assert b.joint.constraint is con and b.joint.constraint_residuals.shape == (2,)
     assert "constraint" in b.to_dict()
