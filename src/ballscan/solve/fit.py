@@ -291,15 +291,10 @@ def _reject(states, sels, r: np.ndarray, reject_sigma: float) -> int:
     return n_bad
 
 
-def _blocks(sels, r: np.ndarray) -> list[np.ndarray]:
-    """Each block's whitened residuals (views of ``r``)."""
+def _correlated_runs(sels, r: np.ndarray) -> list[tuple[np.ndarray, ...]]:
+    """Each block's :meth:`Selection.correlated_runs` of ``r`` (views): its left and right edges first."""
     ends = np.cumsum([0] + [sel.n_residuals for sel in sels])
-    return [r[a:b] for a, b in zip(ends[:-1], ends[1:])]
-
-
-def _edge_sides(sels, r: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Each block's whitened left and right edge residuals (views of ``r``)."""
-    return [(rb[: sel.n_left], rb[sel.n_left : sel.n_left + sel.n_right]) for sel, rb in zip(sels, _blocks(sels, r))]
+    return [sel.correlated_runs(r[a:b]) for sel, a, b in zip(sels, ends[:-1], ends[1:])]
 
 
 def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, verdict: str, settings: FitSettings, t0: float) -> FitResult:
@@ -314,9 +309,9 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     # the pixel windows' (or ends') free brightnesses are parameters too
     dof = r.size - len(x) - sum(s.n_groups for s in sels)
     chi2_red = float(np.sum(r * r) / dof) if dof > 0 else math.nan
-    sides = _edge_sides(sels, r)
-    runs = tuple(a for sel, rb in zip(sels, _blocks(sels, r)) for a in sel.correlated_runs(rb))
-    total_scale, inflation = residual_scale(chi2_red, runs, settings.correlation_inflation)
+    runs = _correlated_runs(sels, r)
+    sides = [block[:2] for block in runs]
+    total_scale, inflation = residual_scale(chi2_red, tuple(a for block in runs for a in block), settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
     cov = cov_full[:6, :6].copy()
     for name in undetermined:
