@@ -175,11 +175,11 @@ def test_plane_constraint_on_a_rail_ball():
     truth = WorldMotion(R, p.motion.t_c_s, p.motion.position_m, p.motion.velocity_mps)
     assert np.all(np.abs(_errors_in_sigmas(b, truth)) < 3.0)
     assert b.sigmas[6] * 3 < free.velocity_sigma_mps[2]  # V.z (depth) pinned by the plane
-    # z0: the plane's 1 mm adds little to the free fit's depth.  The joint fit scales this camera's
-    # rows by the correlation of its edge residuals under the constrained motion (scale 2.67, its
-    # reduced chi-square 1.05): the plane's V.z leaves the shaded, textured ball's edges a structured
-    # misfit, and its z0 sigma is 2.0e-4 m against the free fit's 1.27e-4 m on the same 235 edges
-    assert b.sigmas[3] <= 2.0 * free.position_sigma_m[2]
+    # z0: the plane adds information on the depth.  The joint fit scales this camera's rows by the
+    # correlation of its edge residuals under the constrained motion (the plane's V.z leaves the shaded,
+    # textured ball's edges a structured misfit), so the comparison is per unit of that scale; the free
+    # fit's reported sigma carries a scale of at least 1
+    assert b.sigmas[3] / math.sqrt(b.joint.cameras[0].scale) <= free.position_sigma_m[2]
     assert b.joint.constraint is con and b.joint.constraint_residuals.shape == (2,)
     assert "constraint" in b.to_dict()
 
@@ -292,17 +292,24 @@ def test_parallel_planes_apart_with_gravity_and_an_unknown_clock():
 POVRAY_RIG = Path(__file__).parent / "data" / "povray_rig"
 
 
-def test_two_povray_views_pin_the_direction(tmp_path):
-    # an independent render (POV-Ray, benchmarks/povray_set/score_rig.py): views a000 (the world frame)
-    # and a090 of one ball, a rig file referring to their camera files (shared clock, no gravity)
+@pytest.fixture(scope="module")
+def povray_pair(tmp_path_factory):
+    """An independent render (POV-Ray, benchmarks/povray_set/score_rig.py): views a000 (the world frame)
+    and a090 of one ball, a rig file referring to their camera files (shared clock, no gravity); the rig,
+    the truth and the joint report."""
     name = "pv1013"
-    rig_file = tmp_path / "pair.rig.toml"
+    rig_file = tmp_path_factory.mktemp("pair") / "pair.rig.toml"
     rig_file.write_text("".join(
         f'[[camera]]\nname = "{v}"\nclock_offset_s = 0.0\nfile = "{(POVRAY_RIG / f"{name}_{v}.camera.toml").as_posix()}"\n\n' for v in ("a000", "a090")))
     rig = load_rig(rig_file)
     truth = json.loads((POVRAY_RIG / f"{name}_a000.truth.json").read_text())
     images = [POVRAY_RIG / f"{name}_{v}.png" for v in ("a000", "a090")]
-    rep = estimate_rig(images, rig, truth["radius_m"])
+    return rig, truth, estimate_rig(images, rig, truth["radius_m"])
+
+
+def test_two_povray_views_pin_the_direction(povray_pair):
+    name = "pv1013"
+    rig, truth, rep = povray_pair
     assert len(rep.balls) == 1
     b = rep.balls[0]
     assert b.cameras == ("a000", "a090") and "single_camera" not in b.flags and "inconsistent_camera" not in b.flags, b.flags
@@ -314,9 +321,7 @@ def test_two_povray_views_pin_the_direction(tmp_path):
     assert abs(az - math.degrees(math.atan2(Vt[1], Vt[0]))) < 3 * az_s
     sp, sp_s = b.speed()
     assert abs(sp - np.linalg.norm(Vt)) < 3 * sp_s
-    # the crossing time: within a tenth of a line period; the textured, shaded limb's model error moves
-    # it by 13.6 us here (0.085 line periods, 3.1 of its joint sigmas: that sigma is not calibrated on
-    # this ball, docs/benchmarks.md "Two cameras on independent renders")
+    # the crossing time within a tenth of a line period (its 3-sigma check: the next test)
     line_period_s = 1.0 / rig.cameras[0].camera.line_rate_hz
     assert abs(b.t_c_s - truth["t_c_s"]) < 0.1 * line_period_s
     joint_err = _angle_deg(V, Vt)
@@ -329,6 +334,14 @@ def test_two_povray_views_pin_the_direction(tmp_path):
         if own.velocity_mps is not None:
             alone.append(_angle_deg(np.asarray(own.velocity_mps), vt * np.array([np.sign(vt[0]), 1.0, 1.0])))
     assert alone and min(alone) > 10 * joint_err, (alone, joint_err)
+
+
+@pytest.mark.xfail(strict=True, reason="the textured, shaded limb's model error moves the joint crossing time by 14 us, "
+                   "3.2 of its joint sigmas: the t_c sigma is not calibrated on this ball")
+def test_two_povray_views_crossing_time_within_3_sigma(povray_pair):
+    _, truth, rep = povray_pair
+    b = rep.balls[0]
+    assert abs(b.t_c_s - truth["t_c_s"]) < 3 * b.sigmas[0]
 
 
 def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
