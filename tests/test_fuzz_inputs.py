@@ -245,11 +245,11 @@ def _run(capsys, args) -> tuple[int, str, str]:
 def _without_compile_notice(err: str) -> list[str]:
     """``err``'s lines less the kernels' one-time compile notice (printed by whichever command runs first after an install)."""
     lines = err.strip().splitlines()
-    if any(line.startswith("ballscan: compiling ") for line in lines):
-        first = next(i for i, line in enumerate(lines) if line.startswith("ballscan: compiling "))
-        last = next(i for i, line in enumerate(lines) if line.startswith("ballscan: kernels ready"))
-        lines = lines[:first] + lines[last + 1 :]
-    return lines
+    first = next((i for i, line in enumerate(lines) if line.startswith("ballscan: compiling ")), None)
+    if first is None:
+        return lines
+    last = next(i for i, line in enumerate(lines) if line.startswith("ballscan: kernels ready"))
+    return lines[:first] + lines[last + 1 :]
 
 
 def _check_output(code: int, out: str, err: str) -> None:
