@@ -421,3 +421,25 @@ def test_timestamps_files_far_too_large_are_refused_unread(tmp_path):
     np.save(n, np.arange(1000.0))
     with pytest.raises(ImageFileError, match="1000 timestamps for an image of 10 lines"):
         load_timestamps(n, 10)
+
+
+def test_png_sample_bytes_is_what_read_stored_gives(tmp_path):
+    from PIL import Image
+
+    from ballscan.measure.images import png_sample_bytes, read_stored
+
+    rng = np.random.default_rng(5)
+    grey8 = rng.integers(0, 256, (30, 40), dtype=np.uint8)
+    cases = {
+        "g8.png": Image.fromarray(grey8),
+        "g16.png": Image.fromarray(rng.integers(0, 65536, (30, 40), dtype=np.uint16)),
+        "rgb.png": Image.fromarray(rng.integers(0, 256, (30, 40, 3), dtype=np.uint8)),
+        "pal.png": Image.fromarray(grey8).convert("P"),
+    }
+    for name, im in cases.items():
+        im.save(tmp_path / name)
+        got, stored = png_sample_bytes(tmp_path / name), read_stored(tmp_path / name).data.nbytes
+        # a palette is counted as RGBA (its transparency is not in the header)
+        assert got == (stored * 4 // 3 if name == "pal.png" else stored), (name, got, stored)
+    (tmp_path / "bad.png").write_bytes(b"\x89PNG\r\n\x1a\n but no image")
+    assert png_sample_bytes(tmp_path / "bad.png") == png_sample_bytes(tmp_path / "missing.png") == 0

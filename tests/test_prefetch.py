@@ -21,10 +21,13 @@ from ballscan.measure.images import read_stored
 from ballscan.parallel import TaskExecutor
 from ballscan.stream import prefetch
 
-paths = sys.argv[2:]
+wait_for, paths = sys.argv[2], sys.argv[3:]
 out = {}
 with prefetch.decoding_ahead(paths, capacity_bytes=int(sys.argv[1])):
-    time.sleep(1.0)  # the decoder's turn (this process would load the estimator)
+    # the decoder's turn (this process would load the estimator): until it has reached wait_for
+    deadline = time.monotonic() + 60.0
+    while prefetch.decoded(wait_for) is None and time.monotonic() < deadline:
+        time.sleep(0.01)
     out["while_running"] = prefetch.decoded(paths[0]) is not None
     out["n"] = prefetch.stop_decoding()
     out["again"] = prefetch.stop_decoding()
@@ -62,15 +65,15 @@ def _images(tmp_path):
     return [str(p) for p in (paths[0], paths[1], tmp_path / "bad.png", tmp_path / "deep.png", tmp_path / "c.tif", paths[2], paths[3])]
 
 
-def _run(paths, capacity):
-    res = subprocess.run([sys.executable, "-c", SCRIPT, str(capacity), *paths], capture_output=True, text=True, timeout=120)
+def _run(paths, capacity, wait_for):
+    res = subprocess.run([sys.executable, "-c", SCRIPT, str(capacity), wait_for, *paths], capture_output=True, text=True, timeout=120)
     assert res.returncode == 0, res.stderr
     return json.loads(res.stdout.splitlines()[-1])
 
 
 def test_decoded_pngs_are_read_stored_bit_for_bit_here_and_in_forked_workers(tmp_path):
     paths = _images(tmp_path)
-    out = _run(paths, 1 << 20)
+    out = _run(paths, 1 << 20, paths[-1])  # the last PNG decoded
     # every readable PNG (the damaged one and the TIFF are read where measured)
     assert out["same"] == {"a0.png": True, "a1.png": True, "deep.png": True, "a2.png": True, "a3.png": True}
     assert out["while_running"] and out["n"] == out["again"] == 5
@@ -87,7 +90,7 @@ def test_decoded_pngs_are_read_stored_bit_for_bit_here_and_in_forked_workers(tmp
 
 def test_the_decoder_stops_before_an_image_that_does_not_fit(tmp_path):
     paths = _images(tmp_path)
-    out = _run(paths, 2 * 41 * 64 + 64)  # a0 (40 lines) and a1 (41 lines), 64-byte aligned
+    out = _run(paths, 2 * 41 * 64 + 64, paths[1])  # room for a0 (40 lines) and a1 (41 lines), 64-byte aligned, not deep.png
     assert sorted(out["same"]) == ["a0.png", "a1.png"]
 
 

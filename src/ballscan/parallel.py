@@ -80,12 +80,12 @@ PARENT_POLL_S = 0.2
 
 #: Seconds a worker forked from a warm process costs before its first task
 #: (the fork of a process holding the estimator's loaded kernels, the thread
-#: limits and the parent watch: 0.033-0.037 s for two workers measured on a
-#: 2-core machine), rounded up.
+#: limits and the parent watch), rounded up from its measured cost
+#: (docs/benchmarks.md).
 FORK_START_S = 0.05
 
 #: Seconds a fresh worker costs before its first task: importing the package
-#: and loading its compiled kernels (about 1.1 CPU-s measured for the estimator).
+#: and loading its compiled kernels, rounded up from their measured cost.
 SPAWN_START_S = 1.5
 
 #: Thread-count variables of the numerical libraries, set to 1 in local workers
@@ -146,8 +146,8 @@ def _watch_parent(parent_pid: int) -> None:
 def collector_paused() -> Iterator[None]:
     """The cyclic garbage collector off within the block (its state before restored after).
 
-    Loading compiled kernels makes about 10^5 objects that live as long as
-    the process; each collection that runs meanwhile walks all those made so
+    Loading compiled kernels makes many objects that live as long as the
+    process; each collection that runs meanwhile walks all those made so
     far, for nothing.  Garbage without cycles is freed at once all the same.
     """
     enabled = gc.isenabled()
@@ -171,14 +171,15 @@ def reuse_freed_memory(mmap_threshold_bytes: int = 16 << 20, trim_threshold_byte
     ``free``, and gives the top of its heap back beyond twice that: each
     of an image's working arrays (a 300 x 2048 float64 array is 4.9 MB) is
     then new memory, which the kernel zero-fills page by page on first touch
-    (about 3,400 page faults and 5 ms of an image's 18 ms measured for
-    ``batch``'s 2048 x 300 PNGs).  Blocks below ``mmap_threshold_bytes`` come
-    from the heap, and up to ``trim_threshold_bytes`` of freed heap is kept:
-    the next image's arrays reuse it (25 page faults per image).  The
-    process's peak memory is unchanged; what it holds after a peak stays
-    mapped up to ``trim_threshold_bytes``.  For a process that measures
-    image after image (a batch's, a worker); inherited by processes forked
-    later.  True where the allocator took both settings.
+    (docs/benchmarks.md has the page faults and time it costs a batch).
+    Blocks below ``mmap_threshold_bytes`` come from the heap, and up to
+    ``trim_threshold_bytes`` of freed heap is kept: the next image's arrays
+    reuse it.  The process's peak memory is unchanged; what it holds after a
+    peak stays mapped up to ``trim_threshold_bytes``.  A process-wide
+    setting: taken by the ``ballscan`` program's own process
+    (:func:`ballscan.cli.app.run`) and by every local worker
+    (:func:`worker_start`), never by a library caller's process.  True where
+    the allocator took both settings.
     """
     import ctypes
 
@@ -202,6 +203,7 @@ def worker_start(warm_up: Callable[[], Any] | None = None) -> None:
     parent = os.getppid()
     if parent == 1:
         os._exit(1)  # the parent died before this worker started
+    reuse_freed_memory()  # a worker measures item after item
     threading.Thread(target=_watch_parent, args=(parent,), name="ballscan-parent-watch", daemon=True).start()
     if warm_up is not None:
         warm_up()

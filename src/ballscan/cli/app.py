@@ -431,12 +431,17 @@ def main(argv: list[str] | None = None) -> int:
 def run() -> None:
     """The ``ballscan`` program (its console script and ``python -m ballscan``): :func:`main`, then exit with its status.
 
-    Before the interpreter's teardown, every object is moved out of the
-    garbage collector's reach (``gc.freeze``): the teardown's collections
-    then free the loaded modules and compiled kernels without walking them
-    again and again (about 0.12 s of a command that measured a ball).  Only
-    here, where the process ends next: frozen objects are never collected.
+    The process is the program's own: its large working arrays reuse freed
+    memory (:func:`ballscan.parallel.reuse_freed_memory`).  Before the
+    interpreter's teardown, every object is moved out of the garbage
+    collector's reach (``gc.freeze``): the teardown's collections then free
+    the loaded modules and compiled kernels without walking them again and
+    again.  Only here, where the process ends next: frozen objects are never
+    collected.
     """
+    from ..parallel import reuse_freed_memory
+
+    reuse_freed_memory()
     code = main()
     import gc
 

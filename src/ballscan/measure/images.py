@@ -48,7 +48,7 @@ import numpy as np
 
 from ..errors import ImageFileError
 
-__all__ = ["LineImage", "StoredImage", "as_line_image", "line_image", "load_image", "load_timestamps", "read_stored", "DEFAULT_MAX_PIXELS"]
+__all__ = ["LineImage", "StoredImage", "as_line_image", "line_image", "load_image", "load_timestamps", "read_stored", "png_sample_bytes", "DEFAULT_MAX_PIXELS"]
 
 #: Default refusal limit on ``n_lines * W`` (about 268 million pixels, 2 GiB
 #: as float64): far above any real line-scan capture, far below what a forged
@@ -339,6 +339,21 @@ def _read_png(path: Path, src: str, size: int, max_pixels: int) -> tuple[np.ndar
             raise ImageFileError(src, "16-bit PNG decoded out of range")
         arr = arr.astype(np.uint16)
     return arr, (16 if header.depth == 16 else 8)
+
+
+def png_sample_bytes(path: str | Path) -> int:
+    """Bytes of the samples :func:`read_stored` gives for a PNG, from its header alone; 0 where the header is unreadable.
+
+    A palette expands to RGB or RGBA (counted as RGBA), 1- to 4-bit grey to
+    8 bits; 16-bit samples take two bytes.
+    """
+    try:
+        with open(path, "rb") as fh:
+            header = _png_header(fh.read(33), str(path), DEFAULT_MAX_PIXELS)
+    except (OSError, ImageFileError):
+        return 0
+    channels = 4 if header.colour == 3 else _PNG_CHANNELS[header.colour]
+    return header.width * header.height * channels * (2 if header.depth == 16 else 1)
 
 
 # --------------------------------------------------------------------------

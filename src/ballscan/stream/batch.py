@@ -350,14 +350,10 @@ def load_estimator() -> None:
 
     The stream engine's own kernels are not loaded here: an input measured
     as a stream (a raw file, a recording longer than the engine's ring)
-    loads them when its engine starts.  The process measures image after
-    image: its working arrays reuse freed memory
-    (:func:`ballscan.parallel.reuse_freed_memory`).
+    loads them when its engine starts.
     """
-    from ..parallel import collector_paused, reuse_freed_memory
+    from ..parallel import collector_paused
     from ..pipeline.warmup import ensure_warm
-
-    reuse_freed_memory()
 
     with collector_paused():  # modules: objects that live as long as the process
         from .recording import measure_stored  # noqa: F401 (the estimator's modules)

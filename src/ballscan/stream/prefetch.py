@@ -34,7 +34,7 @@ __all__ = ["CAPACITY_BYTES", "decoded", "decoding_ahead", "stop_decoding"]
 #: Bytes of decoded samples held at most (the decoder stops before an image that would not fit).
 CAPACITY_BYTES = 256 << 20
 
-# the shared block: one flag byte (set: stop), then the images, each at a multiple of _ALIGN
+# the shared block: the images one after the other, each at a multiple of _ALIGN
 _ALIGN = 64
 
 
@@ -56,7 +56,7 @@ class _Ahead:
 
         from ..parallel import start_forked
 
-        self.block = mmap.mmap(-1, _ALIGN + capacity_bytes)  # anonymous and shared with forked children
+        self.block = mmap.mmap(-1, capacity_bytes)  # anonymous and shared with forked children
         self.slots: dict[str, _Slot] = {}
         self._recv, send = multiprocessing.get_context("fork").Pipe(duplex=False)
         self._proc = start_forked(_decode_all, list(paths), self.block, send, name="ballscan-decoder")
@@ -73,7 +73,6 @@ class _Ahead:
         """End the decoder (at once) and take note of the images it finished; the count."""
         if self._proc is None:
             return len(self.slots)
-        self.block[0] = 1
         self._proc.kill()
         self._proc.join()
         self._proc = None
@@ -100,30 +99,14 @@ class _Ahead:
             self.block.close()
 
 
-def _png_bytes(path: str) -> int:
-    """The decoded size a PNG's header announces (width x height x channels x bytes per sample); 0 where unreadable."""
-    try:
-        with open(path, "rb") as fh:
-            head = fh.read(26)
-    except OSError:
-        return 0
-    if len(head) < 26 or head[12:16] != b"IHDR":
-        return 0
-    width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
-    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}.get(head[25], 4)
-    return width * height * channels * max(1, head[24] // 8)
-
-
 def _decode_all(paths: list[str], block: mmap.mmap, send) -> None:
-    """The decoder: each PNG of ``paths`` into ``block`` after the previous, a note of it on ``send``; until told to stop or full."""
+    """The decoder: each PNG of ``paths`` into ``block`` after the previous, a note of it on ``send``; until killed or full."""
     from ..errors import BallscanError
-    from ..measure.images import read_stored
+    from ..measure.images import png_sample_bytes, read_stored
 
-    offset = _ALIGN
+    offset = 0
     for path in paths:
-        if block[0]:
-            return
-        if offset + _png_bytes(path) > len(block):
+        if offset + png_sample_bytes(path) > len(block):
             return  # not decoded at all: it would not fit
         try:
             stored = read_stored(path)
