@@ -217,9 +217,9 @@ def main(argv=None) -> None:
         return
     t0 = time.perf_counter()
     results = {}
+    noise = SensorNoise(prnu_sigma=args.prnu)
     for a in (float(v) for v in args.angles.split(",")):
         rig = rig_for_angle(a)
-        noise = SensorNoise(prnu_sigma=args.prnu)
         rows = [one(rig, seed, noise) for seed in range(args.first, args.first + args.renders)]
         results[a] = rows
         print("\n".join(summarise(a, rows)), flush=True)

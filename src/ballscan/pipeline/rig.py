@@ -431,10 +431,9 @@ def own_block(e: BallEstimate, recipe: Recipe) -> tuple[EdgeMeasurements, FitSet
     (:attr:`BallEstimate.pixel_limb`: a uniform ball whose sensor's column
     gains scatter, measured with window edges), the block fits those
     edges' windows' pixels in their place (``recipe.pixel_fit``): a window
-    edge keeps of a short, fast ball's pixels less than they hold (each
-    camera's own window-edge fit is 1.6-1.9x its pixel Cramér-Rao bound on
-    the lane rig's balls, its pixel fit 1.1x).  Otherwise the edges and end
-    areas (``recipe.edge_fit``).
+    edge keeps of a short, fast ball's pixels less than they hold
+    (docs/benchmarks.md, "Two cameras against one").  Otherwise the edges
+    and end areas (``recipe.edge_fit``).
 
     A pixel block on a sensor whose column gains scatter (:func:`gain_prior`)
     takes each column's gain as a nuisance parameter with that scatter as
