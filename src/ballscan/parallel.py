@@ -248,6 +248,27 @@ def can_fork() -> bool:
     return "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
 
 
+@contextlib.contextmanager
+def _forking() -> Iterator[None]:
+    """The block in which this process forks: the stop signals held back, the fork's warning silenced.
+
+    A stop signal's handler raising inside the fork's own hooks would be
+    dropped (and the children would inherit it pending); it is delivered
+    when the block ends.  Python >= 3.12 warns of a fork beside the
+    numerical libraries' native threads (no other Python thread runs:
+    :func:`can_fork`).
+    """
+    import warnings
+
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
 def _forked_main(target: Callable[..., Any], args: tuple) -> None:
     _forked_worker_start()
     target(*args)
@@ -264,16 +285,10 @@ def start_forked(target: Callable[..., Any], *args: Any, name: str = "ballscan-f
     this interpreter exits.
     """
     import multiprocessing
-    import warnings
 
     proc = multiprocessing.get_context("fork").Process(target=_forked_main, args=(target, args), name=name, daemon=True)
-    mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", DeprecationWarning)  # as in TaskExecutor._start_pool
-            proc.start()
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    with _forking():
+        proc.start()
     return proc
 
 
@@ -469,24 +484,12 @@ class TaskExecutor:
             self.before_workers()
         if can_fork():
             import multiprocessing
-            import warnings
             from concurrent.futures import ProcessPoolExecutor
 
             pool = ProcessPoolExecutor(n_workers, mp_context=multiprocessing.get_context("fork"), initializer=_forked_worker_start)
             self._pool, self._start_method = pool, "fork"  # close() stops it whatever happens below
-            # A stop signal is held back until the forks are done: its
-            # handler's exception raised inside the fork's own hooks would be
-            # dropped (and the children would inherit it pending).
-            mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
-            try:
-                with warnings.catch_warnings():
-                    # Python >= 3.12 warns of a fork beside the numerical
-                    # libraries' native threads (no other Python thread runs:
-                    # can_fork); the pool forks every worker at its first submit
-                    warnings.simplefilter("ignore", DeprecationWarning)
-                    pool.submit(int).result()
-            finally:
-                signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+            with _forking():
+                pool.submit(int).result()  # the pool forks every worker at its first submit
         else:
             from joblib.externals.loky.process_executor import ProcessPoolExecutor
 

@@ -352,12 +352,9 @@ def load_estimator() -> None:
     as a stream (a raw file, a recording longer than the engine's ring)
     loads them when its engine starts.
     """
-    from ..parallel import collector_paused
-    from ..pipeline.warmup import ensure_warm
+    from .engine import preload_estimator
 
-    with collector_paused():  # modules: objects that live as long as the process
-        from .recording import measure_stored  # noqa: F401 (the estimator's modules)
-    ensure_warm()
+    preload_estimator(stream_kernels=False)
 
 
 def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:

@@ -971,19 +971,27 @@ def estimate_crop(
         return (BallEstimate.undetermined_estimate(recipe.method, radius_m, f"estimate failed: {str(exc)[:200]}"),)
 
 
-def preload_estimator() -> None:
+def preload_estimator(*, stream_kernels: bool = True) -> None:
     """Import the estimator's modules and load its compiled kernels (an ``initializer`` for worker processes).
 
-    The first estimate in a fresh process otherwise carries ~0.3 s of
-    imports and ~0.2 s of loading the kernels (:func:`ballscan.pipeline.warmup.warm_up`).
+    The first estimate in a fresh process otherwise carries the imports and
+    the loading of the kernels (:func:`ballscan.pipeline.warmup.warm_up`).
+    ``stream_kernels``: the engine's own line kernels too (a process that
+    measures stored images only loads them when an engine starts).  The
+    modules are imported with the garbage collector paused: they live as
+    long as the process.
     """
-    from ..measure import edges  # noqa: F401
-    from ..pipeline import estimate  # noqa: F401
+    from ..parallel import collector_paused
     from ..pipeline.warmup import ensure_warm
-    from ..solve import fit  # noqa: F401
 
+    with collector_paused():
+        from ..measure import edges  # noqa: F401
+        from ..pipeline import estimate  # noqa: F401
+        from ..solve import fit  # noqa: F401
+        from .recording import measure_stored  # noqa: F401
     ensure_warm()
-    _line_kernels.warm_up()
+    if stream_kernels:
+        _line_kernels.warm_up()
 
 
 def process_stream(
