@@ -34,6 +34,7 @@ edges, right edges, areas, pixels) and Jacobian rows at fixed selections.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -586,11 +587,11 @@ class _BlockTerms:
         self.gains_key: bytes | None = None
         self.gains: GainElimination | None = None
 
-    def eliminated(self, th: np.ndarray, raw: np.ndarray) -> GainElimination:
-        """The column gains eliminated at ``th``, whose raw pixel residuals are ``raw``."""
+    def eliminated(self, th: np.ndarray, raw_of: Callable[[], np.ndarray]) -> GainElimination:
+        """The column gains eliminated at ``th`` (kept for the next call at the same ``th``); ``raw_of()`` gives its raw pixel residuals."""
         key = th.tobytes()
         if self.gains is None or self.gains_key != key:
-            self.gains, self.gains_key = GainElimination(self.sel.gains, raw), key
+            self.gains, self.gains_key = GainElimination(self.sel.gains, raw_of()), key
         return self.gains
 
 
@@ -657,9 +658,12 @@ class FitProblem:
     def _block_residuals(self, t: _BlockTerms, th: np.ndarray, b: float) -> np.ndarray:
         st = t.state
         me = st.model_at(th)
-        tail = _NO_PIXELS if t.sel.pixels is None else as_arg(self._pixel_res(st, t.sel.pixels, th[None])[0])
-        if t.sel.gains is not None:
-            tail = t.eliminated(th, tail).residuals
+        if t.sel.pixels is None:
+            tail = _NO_PIXELS
+        elif t.sel.gains is None:
+            tail = as_arg(self._pixel_res(st, t.sel.pixels, th[None])[0])
+        else:
+            tail = as_arg(t.eliminated(th, lambda: self._pixel_res(st, t.sel.pixels, th[None])[0]).residuals)
         return fit_residuals(
             me.left_px[0], me.right_px[0], me.area_px[0], t.il, t.ir, t.ia, float(b), t.ml, t.mr, t.ma, t.sl, t.sr, t.sa, tail
         )
@@ -705,7 +709,7 @@ class FitProblem:
         if t.sel.gains is None:
             # the base set's pixel residuals are the tail of r
             return self._assemble(t, dl, dr, da, self._pixel_jac(st, t.sel.pixels, th, r[r.size - t.n_pix :]))
-        g = t.gains if t.gains_key == th.tobytes() else t.eliminated(th, self._pixel_res(st, t.sel.pixels, th[None])[0])
+        g = t.eliminated(th, lambda: self._pixel_res(st, t.sel.pixels, th[None])[0])
         return self._assemble(t, dl, dr, da, g.jacobian(self._pixel_jac(st, t.sel.pixels, th, g.raw)))
 
     def _fd_block(self, t: _BlockTerms, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -721,7 +725,7 @@ class FitProblem:
         pr0 = self._pixel_res(st, sel.pixels, th[None])[0]
         jp = self._pixel_jac(st, sel.pixels, th, pr0)
         if sel.gains is not None:
-            g = t.eliminated(th, pr0)
+            g = t.eliminated(th, lambda: pr0)
             pr0, jp = g.residuals, g.jacobian(jp)
         r = np.concatenate([
             (me.left_px[sel.use_left] - b - t.ml) / t.sl, (me.right_px[sel.use_right] + b - t.mr) / t.sr,
