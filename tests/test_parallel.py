@@ -12,7 +12,7 @@ import time
 import psutil
 import pytest
 
-from ballscan.errors import BallscanError
+from ballscan.errors import BallscanError, interrupt_behind
 from ballscan.parallel import TaskExecutor, TaskResult, collector_paused, run_tasks
 
 #: Set by the warm-up hook in the process it runs in.
@@ -33,6 +33,17 @@ def _interrupt_on_two(x: int) -> int:
     if x == 2:
         raise KeyboardInterrupt
     time.sleep(0.05)
+    return x
+
+
+def _interrupt_through_a_kernel_on_two(x: int) -> int:
+    if x == 2:
+        # what a compiled kernel's return raises when a signal handler raised
+        # meanwhile: the handler's exception is the SystemError's cause
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as stop:
+            raise SystemError("CPUDispatcher(<function kernel>) returned a result with an exception set") from stop
     return x
 
 
@@ -142,6 +153,28 @@ def test_keyboard_interrupt_stops_everything(jobs, cheap_workers):
             seen.append(r.item)
     assert 2 not in seen and len(seen) < 39
     assert {p.pid for p in _children()} - before == set()
+
+
+def test_an_interrupt_behind_an_error_stops_everything_instead_of_failing_the_item():
+    seen = []
+    with pytest.raises(KeyboardInterrupt):
+        for r in run_tasks(_interrupt_through_a_kernel_on_two, range(10), jobs=1):
+            seen.append(r.item)
+    assert seen == [0, 1]
+
+
+def test_interrupt_behind_follows_causes_and_contexts_and_stops_on_a_cycle():
+    stop = KeyboardInterrupt()
+    caused = SystemError("x")
+    caused.__cause__ = stop
+    assert interrupt_behind(caused) is stop
+    outer = ValueError("y")
+    outer.__context__ = caused
+    assert interrupt_behind(outer) is stop
+    a, b = ValueError("a"), ValueError("b")
+    a.__context__, b.__context__ = b, a
+    assert interrupt_behind(a) is None
+    assert interrupt_behind(ValueError("plain")) is None
 
 
 def test_jobs_is_validated():

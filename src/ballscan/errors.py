@@ -33,3 +33,21 @@ class ImageFileError(BallscanError, ValueError):
 
 class GeometryError(BallscanError, ValueError):
     """A geometric configuration the model cannot represent (e.g. camera inside the ball)."""
+
+
+def interrupt_behind(exc: BaseException) -> BaseException | None:
+    """The interrupt (a ``BaseException`` that is no ``Exception``) in ``exc``'s chain of causes, if any.
+
+    A signal handler that raises while compiled code runs (a numba kernel)
+    surfaces when the kernel returns, as the ``SystemError`` "returned a
+    result with an exception set" caused by the handler's exception; the
+    error is that interrupt, not a failure of the work.
+    """
+    seen: set[int] = set()
+    inner: BaseException | None = exc
+    while inner is not None and id(inner) not in seen:
+        if not isinstance(inner, Exception):
+            return inner
+        seen.add(id(inner))
+        inner = inner.__cause__ or inner.__context__
+    return None

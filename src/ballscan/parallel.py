@@ -65,7 +65,7 @@ from concurrent.futures import as_completed
 from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
-from .errors import BallscanError
+from .errors import BallscanError, interrupt_behind
 
 __all__ = ["DASK_CONNECT_TIMEOUT_S", "FORK_START_S", "PARENT_POLL_S", "SPAWN_START_S", "TaskResult", "TaskExecutor", "run_tasks", "available_cores", "can_fork", "collector_paused", "reuse_freed_memory", "start_forked", "worker_start"]
 
@@ -298,10 +298,17 @@ def _one_line(exc: BaseException) -> str:
 
 
 def _call(func: Callable[[Any], Any], item: Any) -> tuple[Any, str | None]:
-    """Run one task where it is scheduled; an ``Exception`` becomes its one-line message."""
+    """Run one task where it is scheduled; an ``Exception`` becomes its one-line message.
+
+    An ``Exception`` caused by an interrupt (see
+    :func:`ballscan.errors.interrupt_behind`) is that interrupt: it stops the run as the interrupt itself would.
+    """
     try:
         return func(item), None
     except Exception as exc:  # the error policy: a failed item is a result, not the end of the run
+        interrupt = interrupt_behind(exc)
+        if interrupt is not None:
+            raise interrupt from None
         return None, _one_line(exc)
 
 

@@ -15,7 +15,7 @@ from typing import Optional
 
 import typer
 
-from ..errors import BallscanError
+from ..errors import BallscanError, interrupt_behind
 
 #: The presets and their ball radii (``ballscan.lab.presets.PRESETS``; written here so that ``--help`` loads no renderer).
 PRESET_HELP = "tennis-serve (R 0.0335 m), table-tennis (0.020 m), golf-drive (0.02135 m), baseball-pitch (0.0366 m), paper-rail (0.0335 m)"
@@ -420,6 +420,10 @@ def main(argv: list[str] | None = None) -> int:
         print("ballscan: aborted", file=sys.stderr)
         return 1
     except Exception as exc:
+        stop = interrupt_behind(exc)
+        if isinstance(stop, Stopped):  # a stop signal surfacing through a compiled kernel's return
+            print(f"ballscan: stopped by {stop}", file=sys.stderr)
+            return stop.exit_code
         # usage errors of the (vendored) click parser: show them the click way
         if hasattr(exc, "show") and hasattr(exc, "exit_code"):
             exc.show()
