@@ -31,8 +31,10 @@ candidates are ``W + delta`` for ``delta`` in :data:`START_OFFSETS` and
 ``2 W`` (lines of twice the width read as two: ``"sheared"`` when ``2 W``
 scores over :data:`DOUBLE_RATIO` times ``W``) over the
 first ``start_lines`` clean lines (every one), then ``W`` and ``W +- 1,2``
-over one block in ``every_blocks`` (a continuous check for about a tenth of
-the engine's time), judged per window of ``window_lines`` sampled lines.
+over one block in ``every_blocks``, judged per window of ``window_lines``
+sampled lines: with the defaults, a verdict every 524,288 lines (3.7 s of a
+140 kHz camera) for about 3 % of the engine's time on a stream without a
+ball (``docs/benchmarks.md``).
 """
 
 from __future__ import annotations
@@ -138,7 +140,7 @@ class WidthCheck:
         Fewest lines for any verdict.
     """
 
-    def __init__(self, width: int, *, start_lines: int = 4096, every_blocks: int = 128, block_lines: int = 512, window_lines: int = 1024, min_lines: int = 128) -> None:
+    def __init__(self, width: int, *, start_lines: int = 4096, every_blocks: int = 512, block_lines: int = 512, window_lines: int = 1024, min_lines: int = 128) -> None:
         if width < 2:
             raise ValueError(f"width: must be at least 2, got {width!r}")
         self.width = int(width)
