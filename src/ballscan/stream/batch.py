@@ -365,18 +365,14 @@ def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: 
     estimator and measures the first inputs, until the workers start
     (:func:`ballscan.stream.prefetch.decoding_ahead`).
     """
-    from ..parallel import available_cores
     from .prefetch import decoding_ahead, stop_decoding
 
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
     task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
-    ahead = scheduler is None and (available_cores() if jobs == -1 else jobs) > 1 and len(todo) > 1
-    with (
-        decoding_ahead(todo if ahead else []),
-        open(side, "a") as side_fh,
-        TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress, before_workers=stop_decoding) as executor,
-    ):
+    executor = TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress, before_workers=stop_decoding)  # no process yet
+    ahead = executor.scheduler is None and executor.jobs > 1 and len(todo) > 1
+    with decoding_ahead(todo if ahead else []), open(side, "a") as side_fh, executor:
         for outcome in executor.map(task, todo, label="batch"):
             # measure_input reports the input's own faults; anything else it raised is the item's error
             res = outcome.value if outcome.ok else InputResult(outcome.item, (), f"{outcome.item}: {outcome.error}")
