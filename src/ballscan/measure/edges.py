@@ -572,6 +572,7 @@ def measure_edges(
     others: Sequence[Any] = (),
     settings: EdgeSettings = EdgeSettings(),
     limb: Callable[[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None,
+    blind_columns: Sequence[int] = (),
 ) -> EdgeMeasurements:
     """Measure both edges and the summed coverage on every line of one ball.
 
@@ -613,14 +614,18 @@ def measure_edges(
         :func:`_limb_levels`), instead of the linear extrapolation of
         ``level_slope``.  :func:`with_limb` gives the same for edges already
         measured, without measuring them again.
+    blind_columns : sequence of int
+        Image columns whose values are not the scene's (a stuck column
+        replaced by its neighbours' interpolation,
+        :mod:`ballscan.measure.defects`): an edge whose window holds one is
+        unusable.
 
     Returns
     -------
     EdgeMeasurements
     """
-    return _finish(
-        _edge_pass(data, region, background_dn, noise_dn, t_lines_s, saturation_dn=saturation_dn, others=others, settings=settings), limb
-    )
+    ps = _edge_pass(data, region, background_dn, noise_dn, t_lines_s, saturation_dn=saturation_dn, others=others, settings=settings, blind_columns=blind_columns)
+    return _finish(ps, limb)
 
 
 def with_limb(
@@ -923,6 +928,15 @@ def _usability(box: _Box, rough: _RoughEdges, ws: _WindowSums, hs4: np.ndarray, 
     return _Usability(usable=usable, spoiled=endL | endR | satL | satR | ovL | ovR, flags=tuple(flags))
 
 
+def _windows_meet(first: np.ndarray, last: np.ndarray, columns: np.ndarray) -> np.ndarray:
+    """Whether each window (its outermost and innermost box columns ``first``, ``last``) holds one of ``columns`` (box columns)."""
+    lo, hi = np.minimum(first, last), np.maximum(first, last)
+    meet = np.zeros(lo.shape, dtype=bool)
+    for c in columns:
+        meet |= (lo <= c) & (c <= hi)
+    return meet
+
+
 def _edge_pass(
     data: np.ndarray,
     region: Any,
@@ -933,6 +947,7 @@ def _edge_pass(
     saturation_dn: float | None,
     others: Sequence[Any],
     settings: EdgeSettings,
+    blind_columns: Sequence[int] = (),
 ) -> _EdgePass:
     """Everything of :func:`measure_edges` that does not depend on ``limb`` (same parameters)."""
     s = settings
@@ -957,6 +972,7 @@ def _edge_pass(
     )
     we = _window_edges(ws, hs4, n_in, s, quarters)
     use = _usability(box, rough, ws, hs4, s, quarters)
+    usable = use.usable & ~_windows_meet(ws.win_first, ws.win_last, np.asarray(blind_columns, dtype=np.int64) - box.c0)
     # texture indicator from pixels the edge does not use (the deep run and
     # the run inside it, pdd and sdd2), so that its noise is independent of
     # the edge's: a weight correlated with the edge's own error would bias the fit
@@ -990,7 +1006,7 @@ def _edge_pass(
         sgn=ws.sgn,
         lines_abs=np.concatenate([box.lines] * nv),
         dlev=np.maximum(dlev, 0.0),
-        usable=use.usable,
+        usable=usable,
         run_ok=ws.L_run > 3.0 * np.sqrt(ws.sl2),
         spoiled=use.spoiled,
         common=_Unchanged(

@@ -29,6 +29,7 @@ from ..errors import ImageFileError
 from ..geometry.camera import LineScanCamera, line_times, load_camera
 from ..geometry.motion import BallMotion
 from ..measure.detection import BallRegion, ColumnModel, Detection, detect
+from ..measure.defects import repaired_columns, repaired_image, stuck_columns
 from ..measure.robust import median
 from ..measure.images import LineImage, as_line_image
 from ..geometry.motion import PARAM_NAMES
@@ -81,12 +82,15 @@ def estimate_region(
     t_lines_s: np.ndarray,
     recipe: Recipe = Recipe(),
     background_dn: np.ndarray | None = None,
+    blind_columns: tuple[int, ...] = (),
 ) -> BallEstimate:
     """Estimate one detected ball's motion with ``recipe`` (see the module docstring).
 
     ``background_dn`` is the image's background at every line and pixel
     (:func:`ballscan.pipeline.stages.shading_background`); pass it when
-    measuring several regions of one image so it is built once.  The fit
+    measuring several regions of one image so it is built once.
+    ``blind_columns``: image columns repaired from their neighbours
+    (:mod:`ballscan.measure.defects`), through which no edge is read.  The fit
     runs the stages of :mod:`ballscan.pipeline.stages`; the estimate's
     ``record`` (:class:`~ballscan.pipeline.stages.StageRecord`) says which
     path they took, and ``extra`` repeats it for the JSON output
@@ -96,7 +100,7 @@ def estimate_region(
     the shading pass's own, ``time_fit_s``: the reported fit's).
     """
     t0 = time.perf_counter()
-    ball = BallInput(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn)
+    ball = BallInput(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn, tuple(blind_columns))
     detected = detect_stage(ball)
     try:
         guess = key_points_stage(ball, detected)
@@ -282,11 +286,11 @@ def _vx_convention(motion: BallMotion, camera: LineScanCamera) -> BallMotion:
     return BallMotion(motion.radius_m, motion.t_c_s, motion.position_m, (vx, *motion.velocity_mps[1:]), motion.acceleration_mps2)
 
 
-def _region_estimate(image: LineImage, detection: Detection, region: BallRegion, camera: LineScanCamera, radius_m: float, t_lines_s: np.ndarray, recipe: Recipe, background_dn: np.ndarray | None) -> BallEstimate:
+def _region_estimate(image: LineImage, detection: Detection, region: BallRegion, camera: LineScanCamera, radius_m: float, t_lines_s: np.ndarray, recipe: Recipe, background_dn: np.ndarray | None, blind_columns: tuple[int, ...] = ()) -> BallEstimate:
     """:func:`estimate_region`, or an undetermined estimate saying why where its numbers fail (a region without contrast, a singular fit)."""
     t0 = time.perf_counter()
     try:
-        return estimate_region(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn=background_dn)
+        return estimate_region(image, detection, region, camera, radius_m, t_lines_s, recipe, background_dn=background_dn, blind_columns=blind_columns)
     except (ValueError, ArithmeticError) as exc:  # numpy's LinAlgError is a ValueError
         return BallEstimate.undetermined_estimate(
             recipe.method,
@@ -358,7 +362,16 @@ def estimate_image(
         period = float(median(np.diff(t)))
         camera = replace(camera, line_rate_hz=1.0 / period, exposure_s=period)
     det = detect(image, columns=columns)
+    stuck = stuck_columns(image, det)
+    if stuck.size:
+        # a dead or hot column hides the ball's pixels it crosses: measured
+        # again with its neighbours' interpolation in its place
+        image = repaired_image(image, stuck)
+        det = detect(image, columns=None if columns is None else repaired_columns(columns, stuck))
     bg = shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
-    balls = [assess(_region_estimate(image, det, r, camera, radius_m, t, recipe, bg), r, image) for r in det.regions]
+    blind = tuple(int(j) for j in stuck)
+    balls = [assess(_region_estimate(image, det, r, camera, radius_m, t, recipe, bg, blind), r, image) for r in det.regions]
+    if stuck.size:
+        balls = [replace(b, extra={**b.extra, "repaired_columns": list(blind)}) for b in balls]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls), recipe=recipe)

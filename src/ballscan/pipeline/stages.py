@@ -84,7 +84,9 @@ class BallInput:
 
     ``background_dn`` is the image's background at every line and pixel
     (:func:`shading_background`); ``t_lines_s`` the image lines' centre
-    times, seconds.
+    times, seconds; ``blind_columns`` the image columns that hold their
+    neighbours' interpolation instead of the scene (stuck columns,
+    :mod:`ballscan.measure.defects`): no edge is read through them.
     """
 
     image: LineImage
@@ -95,6 +97,7 @@ class BallInput:
     t_lines_s: np.ndarray
     recipe: Recipe
     background_dn: np.ndarray | None = None
+    blind_columns: tuple[int, ...] = ()
 
     @property
     def others(self) -> list[BallRegion]:
@@ -230,7 +233,7 @@ def first_fit_stage(ball: BallInput, guess: InitialGuess) -> FirstFit:
     recipe = ball.recipe
     bg = ball.background_dn if ball.background_dn is not None else shading_background(ball.image, ball.detection, recipe)
     d = ball.detection
-    edges = measure_edges(ball.image.data, ball.region, bg, d.noise_dn, ball.t_lines_s, saturation_dn=d.saturation_dn, others=ball.others)
+    edges = measure_edges(ball.image.data, ball.region, bg, d.noise_dn, ball.t_lines_s, saturation_dn=d.saturation_dn, others=ball.others, blind_columns=ball.blind_columns)
     t1 = time.perf_counter()
     start: BallMotion | None = guess.motion
     loose = (recipe.shading or recipe.pixels) and (guess.degenerate or recipe.shading_start == "loose_fit")
@@ -431,7 +434,7 @@ def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool
         if not math.isfinite(gains.prnu_sigma):
             return None
         data = flat_fielded(image.data, bg, gains, region.lines, detection.saturation_dn)
-    edges = measure_edges(data, region, bg, detection.noise_dn, ball.t_lines_s, saturation_dn=detection.saturation_dn, others=ball.others)
+    edges = measure_edges(data, region, bg, detection.noise_dn, ball.t_lines_s, saturation_dn=detection.saturation_dn, others=ball.others, blind_columns=ball.blind_columns)
     limb = ball_limb(ball.camera, start, data, edges, ball.t_lines_s, bg, level_samples=recipe.level_samples)
     if limb is None:
         return None
