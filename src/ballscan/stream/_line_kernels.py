@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import jit
+from ..compiled import jit, select_kth
 
 
 @jit(inline="always")
@@ -60,35 +60,6 @@ def _outside_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out:
     for j in range(row.shape[0]):
         d = np.uint16(np.uint16(row[j] - lo[j]) - o16)
         out[j] = np.uint8(1) if d > span[j] else np.uint8(0)
-
-
-@jit(inline="always")
-def _select_int(buf: np.ndarray, m: int, k: int) -> int:
-    """The ``k``-th smallest (0-based) of ``buf[:m]`` (Hoare's selection; reorders ``buf``)."""
-    lo = 0
-    hi = m - 1
-    while lo < hi:
-        p = buf[(lo + hi) >> 1]
-        i = lo
-        j = hi
-        while i <= j:
-            while buf[i] < p:
-                i += 1
-            while buf[j] > p:
-                j -= 1
-            if i <= j:
-                t = buf[i]
-                buf[i] = buf[j]
-                buf[j] = t
-                i += 1
-                j -= 1
-        if k <= j:
-            hi = j
-        elif k >= i:
-            lo = i
-        else:
-            return buf[k]
-    return buf[k]
 
 
 @jit(inline="always")
@@ -157,7 +128,7 @@ def _line_offset(row: np.ndarray, ocols: np.ndarray, bg16: np.ndarray, max_off: 
             if -T <= v <= T:
                 hist[v + T] = 0
     else:
-        a = _select_int(buf, m, ka)
+        a = select_kth(buf, m, ka)
         b = a
         if kb != ka:
             # the smallest of the values above the ka-th
