@@ -331,14 +331,8 @@ def camera_params(
 
     Parameters
     ----------
-    state : ndarray (6,)
-        ``(P, V)``: the world centre at ``t_ref_s`` (m) and velocity (m/s).
-    camera : LineScanCamera
-        With its pose (``X_cam = R X_world + T``).
-    t_ref_s : float
-        Rig time of ``P`` (s).
-    gravity_mps2 : ndarray (3,)
-        World acceleration (m/s^2).
+    state, camera, t_ref_s, gravity_mps2
+        As for :func:`world_crossing`.
     clock_offset_s : float
         ``t_cam - t_rig`` (s).
 
