@@ -155,6 +155,23 @@ def test_bad_rig_files_name_the_file_and_key(tmp_path, text, key):
         assert key in msg
 
 
+@pytest.mark.parametrize(
+    "content, match",
+    [
+        (b"gravity_mps2 = [0.0, 0.0, -9.81]\n" + b"# padding\n" * 200_000, "not a rig file"),
+        (b"x = " + b"[" * 5000 + b"]" * 5000 + b"\n", "nested too deeply"),
+        (b"\x89PNG\r\n\x1a\n\xff\xfe", "not a TOML text file"),
+        (b"speed = = 3", "not valid TOML"),
+    ],
+)
+def test_unreadable_rig_files_are_refused_as_camera_files_are(tmp_path, content, match):
+    path = tmp_path / "rig.toml"
+    path.write_bytes(content)
+    with pytest.raises(CameraFileError, match=match) as err:
+        load_rig(path)
+    assert str(path) in str(err.value)
+
+
 def test_rig_needs_a_known_clock_and_distinct_names():
     cam = camera_about_lane(CAM, 4.0, 0.0)
     with pytest.raises(CameraFileError, match="known clock"):

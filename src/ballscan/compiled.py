@@ -1,8 +1,10 @@
-"""The project's numba decorator and the conversion of a kernel's array arguments.
+"""The project's numba decorator, the conversion of a kernel's array arguments and the loops several stages' kernels share.
 
 Every compiled loop of the package is decorated with :func:`jit` (compiled
 on first use and cached on disk) and called on arrays passed through
 :func:`as_arg`, so that each kernel holds one compiled signature.
+:func:`pairwise_sum` (numpy's sum) and :func:`select_kth` (a median's
+selection) serve the kernels of more than one stage.
 """
 
 from __future__ import annotations
@@ -126,3 +128,36 @@ def pairwise_sum(a: np.ndarray) -> float:
     n2 = n // 2
     n2 -= n2 % 8
     return pairwise_sum(a[:n2]) + pairwise_sum(a[n2:])
+
+
+@jit(inline="always")
+def select_kth(buf: np.ndarray, m: int, k: int):
+    """The ``k``-th smallest (0-based) of ``buf[:m]``, by Hoare's selection in place: afterwards ``buf[:k] <= buf[k] <= buf[k + 1 : m]``.
+
+    Compiled into each kernel that calls it, for ``buf``'s dtype (floats, or
+    integers for the stream engine's fixed-point offsets).
+    """
+    lo = 0
+    hi = m - 1
+    while lo < hi:
+        pivot = buf[(lo + hi) >> 1]
+        i = lo
+        j = hi
+        while i <= j:
+            while buf[i] < pivot:
+                i += 1
+            while buf[j] > pivot:
+                j -= 1
+            if i <= j:
+                t = buf[i]
+                buf[i] = buf[j]
+                buf[j] = t
+                i += 1
+                j -= 1
+        if k <= j:
+            hi = j
+        elif k >= i:
+            lo = i
+        else:
+            break
+    return buf[k]

@@ -49,6 +49,24 @@ def _command(*parts: str) -> str:
     return " ".join(["ballscan", "experiment", *[shlex.quote(p) for p in parts if p]])
 
 
+def _choices(textures: Optional[str], methods: Optional[str]) -> tuple[Optional[tuple[str, ...]], Optional[tuple[str, ...]]]:
+    """The words of ``--textures`` and ``--methods``, checked (None where an option is not given)."""
+    from ..lab import experiments as ex
+
+    return _words(textures, ex.TEXTURES, "--textures"), _words(methods, ex.METHODS, "--methods")
+
+
+def _run(cfg: ex.ExperimentConfig, out: Path, cmd: str, *, jobs: int, scheduler: Optional[str], progress: bool, fresh: bool, quick: bool, overlays: bool = False) -> None:
+    """Run the experiment ``cfg`` into ``out`` (a stop signal ends it; ``jobs`` -1: all cores) and print its report."""
+    from ..lab import experiments as ex
+
+    with stop_signals(graceful=False):
+        res = ex.run_experiment(
+            cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
+        )
+    _report(res, quick)
+
+
 def _report(res: ex.ExperimentResult, quick: bool) -> None:
     from ..lab import experiments as ex
 
@@ -80,8 +98,7 @@ def fig5(
     """Synthetic sweeps of ball size, speed, direction and line rate (paper Fig. 5)."""
     from ..lab import experiments as ex
 
-    tex = _words(textures, ex.TEXTURES, "--textures")
-    meth = _words(methods, ex.METHODS, "--methods")
+    tex, meth = _choices(textures, methods)
     if quick:
         cfg = ex.fig5_quick_config(seed=seed, textures=tex or ("none",), methods=meth or ("initial", "fit"))
     else:
@@ -91,9 +108,7 @@ def fig5(
     cmd = _command("fig5", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []),
                    *(["--textures", textures] if textures else []), *(["--methods", methods] if methods else []),
                    *(["--points", str(points)] if points != 5 else []), *(["--seed", str(seed)] if seed else []))
-    with stop_signals(graceful=False):
-        res = ex.run_experiment(cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, quick=quick)
-    _report(res, quick)
+    _run(cfg, out, cmd, jobs=jobs, scheduler=scheduler, progress=progress, fresh=fresh, quick=quick)
 
 
 @experiment_app.command()
@@ -113,19 +128,14 @@ def fig8(
     """The laboratory rail: viewing-plane rotation 0/4/10 deg, 100/200 lines/s (paper Fig. 7-8)."""
     from ..lab import experiments as ex
 
-    tex = _words(textures, ex.TEXTURES, "--textures")
-    meth = _words(methods, ex.METHODS, "--methods")
+    tex, meth = _choices(textures, methods)
     cfg = ex.fig8_config(seed=seed, textures=tex or ex.TEXTURES, methods=meth or ex.DEFAULT_METHODS)
     if quick:
         cfg = ex.replace_trials(cfg, 8)
     if trials is not None:
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("fig8", "--out", str(out), "--quick" if quick else "", *(["--trials", str(trials)] if trials else []))
-    with stop_signals(graceful=False):
-        res = ex.run_experiment(
-            cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
-        )
-    _report(res, quick)
+    _run(cfg, out, cmd, jobs=jobs, scheduler=scheduler, progress=progress, fresh=fresh, quick=quick, overlays=overlays)
 
 
 @experiment_app.command()
@@ -149,8 +159,4 @@ def custom(
     if trials is not None:
         cfg = ex.replace_trials(cfg, trials)
     cmd = _command("custom", "--config", str(config), "--out", str(out), "--quick" if quick else "")
-    with stop_signals(graceful=False):
-        res = ex.run_experiment(
-            cfg, out, jobs=None if jobs == -1 else jobs, scheduler=scheduler, progress=progress, fresh=fresh, command=cmd, overlays=overlays, quick=quick
-        )
-    _report(res, quick)
+    _run(cfg, out, cmd, jobs=jobs, scheduler=scheduler, progress=progress, fresh=fresh, quick=quick, overlays=overlays)

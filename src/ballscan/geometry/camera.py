@@ -385,7 +385,7 @@ MIN_EXPOSURE_S = 1e-10
 #: Largest translation of the pose (m) and gravity (m/s^2) taken as real.
 MAX_TRANSLATION_M = 1e6
 MAX_GRAVITY_MPS2 = 1e3
-#: A camera file is a dozen lines; anything beyond this many bytes is not one.
+#: A camera file is a dozen lines, a rig file a few dozen; anything beyond this many bytes is neither.
 MAX_CAMERA_FILE_BYTES = 1 << 20
 
 
@@ -520,6 +520,33 @@ def camera_from_dict(d: dict[str, Any], source: str = "<camera>") -> LineScanCam
     return LineScanCamera(**kw, source=source)
 
 
+def _read_toml(path: Path, kind: str) -> dict[str, Any]:
+    """The table of the TOML file ``path``, read for a ``kind`` file (``"camera"``, ``"rig"``).
+
+    Raises
+    ------
+    CameraFileError
+        With a one-line message naming the file: not found, unreadable, over
+        :data:`MAX_CAMERA_FILE_BYTES`, not UTF-8 text or not valid TOML.
+    """
+    try:
+        if path.is_file() and path.stat().st_size > MAX_CAMERA_FILE_BYTES:
+            raise CameraFileError(str(path), f"{path.stat().st_size} bytes: not a {kind} file (at most {MAX_CAMERA_FILE_BYTES})")
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise CameraFileError(str(path), "file not found") from None
+    except UnicodeDecodeError:
+        raise CameraFileError(str(path), "not a TOML text file (not UTF-8 text)") from None
+    except OSError as exc:
+        raise CameraFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
+    except RecursionError:
+        raise CameraFileError(str(path), f"not a {kind} file (arrays or tables nested too deeply to read)") from None
+
+
 def load_camera(path: str | Path) -> LineScanCamera:
     """Read and validate a camera TOML file (geometry.md).
 
@@ -529,23 +556,7 @@ def load_camera(path: str | Path) -> LineScanCamera:
         With a one-line message naming the file and, where it applies, the key.
     """
     path = Path(path)
-    try:
-        if path.is_file() and path.stat().st_size > MAX_CAMERA_FILE_BYTES:
-            raise CameraFileError(str(path), f"{path.stat().st_size} bytes: not a camera file (at most {MAX_CAMERA_FILE_BYTES})")
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise CameraFileError(str(path), "file not found") from None
-    except UnicodeDecodeError:
-        raise CameraFileError(str(path), "not a TOML text file (not UTF-8 text)") from None
-    except OSError as exc:
-        raise CameraFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
-    try:
-        d = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
-    except RecursionError:
-        raise CameraFileError(str(path), "not a camera file (arrays or tables nested too deeply to read)") from None
-    return camera_from_dict(d, source=str(path))
+    return camera_from_dict(_read_toml(path, "camera"), source=str(path))
 
 
 def save_camera(camera: LineScanCamera, path: str | Path, comment: str | None = None, *, force: bool = False) -> None:

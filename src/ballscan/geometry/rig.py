@@ -26,7 +26,6 @@ to ``(P, V)`` (by the implicit function theorem on ``tau``).
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
@@ -34,7 +33,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CameraFileError
-from .camera import LineScanCamera, camera_from_dict, load_camera
+from .camera import LineScanCamera, _read_toml, camera_from_dict, load_camera
 from .motion import BallMotion
 
 __all__ = [
@@ -332,14 +331,8 @@ def camera_params(
 
     Parameters
     ----------
-    state : ndarray (6,)
-        ``(P, V)``: the world centre at ``t_ref_s`` (m) and velocity (m/s).
-    camera : LineScanCamera
-        With its pose (``X_cam = R X_world + T``).
-    t_ref_s : float
-        Rig time of ``P`` (s).
-    gravity_mps2 : ndarray (3,)
-        World acceleration (m/s^2).
+    state, camera, t_ref_s, gravity_mps2
+        As for :func:`world_crossing`.
     clock_offset_s : float
         ``t_cam - t_rig`` (s).
 
@@ -542,19 +535,7 @@ def load_rig(path: str | Path) -> Rig:
         With a one-line message naming the file and the key.
     """
     path = Path(path)
-    try:
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise CameraFileError(str(path), "file not found") from None
-    except UnicodeDecodeError:
-        raise CameraFileError(str(path), "not a TOML text file (not UTF-8 text)") from None
-    except OSError as exc:
-        raise CameraFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
-    try:
-        d = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
-    return rig_from_dict(d, source=str(path), base=path.parent)
+    return rig_from_dict(_read_toml(path, "rig"), source=str(path), base=path.parent)
 
 
 def save_rig(rig: Rig, path: str | Path, comment: str | None = None) -> None:

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..compiled import jit
+from ..compiled import jit, select_kth
 
 
 @jit()
@@ -147,35 +147,6 @@ def second_level(s: np.ndarray, centre: np.ndarray, half: np.ndarray):
     return tail, dense
 
 
-@jit(inline="always")
-def _select(a: np.ndarray, k: int) -> float:
-    """The ``k``-th smallest value of ``a`` (0-based), by selection in place: afterwards ``a[:k] <= a[k] <= a[k + 1:]``."""
-    lo = 0
-    hi = a.size - 1
-    while lo < hi:
-        pivot = a[(lo + hi) // 2]
-        i = lo
-        j = hi
-        while i <= j:
-            while a[i] < pivot:
-                i += 1
-            while a[j] > pivot:
-                j -= 1
-            if i <= j:
-                t = a[i]
-                a[i] = a[j]
-                a[j] = t
-                i += 1
-                j -= 1
-        if k <= j:
-            hi = j
-        elif k >= i:
-            lo = i
-        else:
-            break
-    return a[k]
-
-
 @jit()
 def pair_offs(xs: np.ndarray, cl: np.ndarray, clip_at: np.ndarray, tol: np.ndarray, use_gain: bool, stride: int, clipped_any: bool) -> np.ndarray:
     """``offs[i, k, j]`` of :func:`ballscan.measure.clear_lines._pair_offs`: pixel ``j`` of line ``i`` off line ``k``'s after their factor (offset).
@@ -207,7 +178,7 @@ def pair_offs(xs: np.ndarray, cl: np.ndarray, clip_at: np.ndarray, tol: np.ndarr
                 # the median by selection in place (numpy's value: the mean
                 # of the middle two of an even count)
                 part = buf[:q]
-                c = _select(part, q // 2)
+                c = select_kth(part, q, q // 2)
                 if q % 2 == 0:
                     c = (part[: q // 2].max() + c) / 2.0
             f = math.sqrt(0.5 * (1.0 + c**2)) if use_gain else 1.0

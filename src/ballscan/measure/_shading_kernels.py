@@ -45,6 +45,25 @@ def _centres(t_row: float, sharp: bool, tk: np.ndarray, pos: np.ndarray, vel: np
 
 
 @jit(inline="always")
+def _ray_normal(h: float, nu: float, cx: float, cy: float, cz: float, c2: float, R2: float):
+    """Whether the ray from the camera along ``(h, nu, 1)`` meets the sphere of centre ``(cx, cy, cz)`` (m; ``c2 = |c|^2``, ``R2`` the radius squared, m^2), and the outward unit normal where it first does (zeros where it misses)."""
+    inv = 1.0 / math.sqrt(h * h + nu * nu + 1.0)
+    dx = h * inv
+    dy = nu * inv
+    dz = inv
+    dc = dx * cx + dy * cy + dz * cz
+    b = dc * dc - c2 + R2
+    if b >= 0.0:
+        s = dc - math.sqrt(b)
+        nx = s * dx - cx
+        ny = s * dy - cy
+        nz = s * dz - cz
+        a = 1.0 / max(math.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+        return True, nx * a, ny * a, nz * a
+    return False, 0.0, 0.0, 0.0
+
+
+@jit(inline="always")
 def _limb_rays(nu: float, bg: float, cen: np.ndarray, nt: int, hs: np.ndarray, nh: int, R2: float, light: np.ndarray, ambient: float, scale: float):
     """One sensor position's mean normalised brightness and coverage over its samples (see :func:`limb_values`).
 
@@ -62,21 +81,9 @@ def _limb_rays(nu: float, bg: float, cen: np.ndarray, nt: int, hs: np.ndarray, n
         cz = cen[i, 2]
         c2 = cen[i, 3]
         for j in range(nh):
-            h = hs[j]
-            inv = 1.0 / math.sqrt(h * h + nu * nu + 1.0)
-            dx = h * inv
-            dy = nu * inv
-            dz = inv
-            dc = dx * cx + dy * cy + dz * cz
-            b = dc * dc - c2 + R2
-            if b >= 0.0:
-                s = dc - math.sqrt(b)
-                nx = s * dx - cx
-                ny = s * dy - cy
-                nz = s * dz - cz
-                a = max(math.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
-                a = 1.0 / a
-                lam = nx * a * light[0] + ny * a * light[1] + nz * a * light[2]
+            hit, nx, ny, nz = _ray_normal(hs[j], nu, cx, cy, cz, c2, R2)
+            if hit:
+                lam = nx * light[0] + ny * light[1] + nz * light[2]
                 s_val += (max(lam, 0.0) + ambient - bg) / scale
                 s_hit += 1.0
     return s_val / n_samples, s_hit / n_samples
@@ -711,24 +718,12 @@ def interior_normals(
         nu, ok = normalised(float(cols[i]), focal, principal, k1, k2)
         rays_ok = rays_ok and ok
         _centres(t_rows[i], True, no_instants, pos, vel, acc, has_acc, t_c, cen)
-        cx, cy, cz, c2 = cen[0, 0], cen[0, 1], cen[0, 2], cen[0, 3]
-        h = 0.0 / focal
-        inv = 1.0 / math.sqrt(h * h + nu * nu + 1.0)
-        dx = h * inv
-        dy = nu * inv
-        dz = inv
-        dc = dx * cx + dy * cy + dz * cz
-        b = dc * dc - c2 + R2
-        if b >= 0.0:
-            s = dc - math.sqrt(b)
-            nx = s * dx - cx
-            ny = s * dy - cy
-            nz = s * dz - cz
-            a = 1.0 / max(math.sqrt(nx * nx + ny * ny + nz * nz), 1e-12)
+        hit_i, nx, ny, nz = _ray_normal(0.0 / focal, nu, cen[0, 0], cen[0, 1], cen[0, 2], cen[0, 3], R2)
+        if hit_i:
             hit[i] = True
-            normals[i, 0] = nx * a
-            normals[i, 1] = ny * a
-            normals[i, 2] = nz * a
+            normals[i, 0] = nx
+            normals[i, 1] = ny
+            normals[i, 2] = nz
     return hit, normals, rays_ok
 
 

@@ -624,11 +624,8 @@ def ball_limb(
 
     Parameters
     ----------
-    camera : LineScanCamera
-    motion : BallMotion
-        The ball's motion, roughly (the key-point guess, or a loose first fit).
-    data_dn : ndarray (n_lines, W)
-        The image, DN.
+    camera, motion, data_dn
+        As for :func:`fit_shading`.
     edges : EdgeMeasurements
         The first (model-free) edges of the ball.
     t_lines_s : ndarray (n_lines,)

@@ -41,6 +41,28 @@ def _line_centre(dt0, y0, z0, vx, vy, vz, ax, ay, az, has_acc):
 
 
 @jit(inline="always")
+def _tangent_terms(xc, yc, zc, d, rho):
+    """The terms of the two tangents to one chord sample's section (:func:`ballscan.model.silhouette.tangent_normalised`, as the averaged model's numpy form).
+
+    The sample's plane ``x = s z`` with ``s = (xc - d) / zc`` (``zc`` 1
+    where not positive) cuts the sphere of centre ``(xc, yc, zc)`` in a
+    circle of radius ``rho`` (m) at in-plane depth ``w = zc + s xc`` (m);
+    its tangents are ``n_pm = (yc w +- rho root) inv_den``.  Returns ``ok``
+    (the tangents exist and point forwards), ``s``, ``w``, ``root = sqrt(yc^2
+    + w^2 - rho^2)`` and ``inv_den = 1 / (w^2 - rho^2)`` (1 and 0 where not
+    ``ok``).
+    """
+    s = (xc - d) / (zc if zc > 0.0 else 1.0)
+    w = zc + s * xc
+    den = w * w - rho * rho
+    disc = yc * yc + den
+    ok = (w > rho) and (disc > 0.0)
+    if ok:
+        return True, s, w, math.sqrt(disc), 1.0 / den
+    return False, s, w, 1.0, 0.0
+
+
+@jit(inline="always")
 def _chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok):
     """One line's chord samples of :func:`averaged_samples`, into ``ulo, uhi, wok`` (3 * n_nodes).
 
@@ -92,20 +114,10 @@ def _chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, 
                 xc = xc + ax * h2s
                 yc = yc + ay * h2s
                 zc = zc + az * h2s
-            s = (xc - d) / (zc if zc > 0.0 else 1.0)
-            w = zc + s * xc
-            den = w * w - rho * rho
-            disc = yc * yc + den
-            ok = (w > rho) and (disc > 0.0)
+            ok, _, w, root, inv_den = _tangent_terms(xc, yc, zc, d, rho)
             j = q * nn + i
-            if ok:
-                root = math.sqrt(disc)
-                inv_den = 1.0 / den
-            else:
-                root = 1.0
-                inv_den = 0.0
-                if wgt > 0.0:
-                    invalid = True
+            if not ok and wgt > 0.0:
+                invalid = True
             a_ = yc * w
             b_ = rho * root
             lo = project((a_ - b_) * inv_den, focal_px, principal_px, k1, k2)
@@ -463,17 +475,7 @@ def _line_samples_jacobian(t_s, th, R, exposure_s, focal_px, principal_px, k1, k
             zc = z0 + vz * dts
             zpos = zc > 0.0
             zz = zc if zpos else 1.0
-            s = (xc - d) / zz
-            ww = zc + s * xc
-            den = ww * ww - rho * rho
-            disc = yc * yc + den
-            ok = (ww > rho) and (disc > 0.0)
-            if ok:
-                root = math.sqrt(disc)
-                inv_den = 1.0 / den
-            else:
-                root = 1.0
-                inv_den = 0.0
+            ok, s, ww, root, inv_den = _tangent_terms(xc, yc, zc, d, rho)
             a_ = yc * ww
             b_ = rho * root
             n_lo = (a_ - b_) * inv_den

@@ -14,81 +14,34 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import jit
+from ..compiled import jit, select_kth
 
 
 @jit(inline="always")
-def _max_excess_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -> int:
-    """Largest ``((x - lo - o) mod 256) - span`` over ``row``, or 0 (no pixel outside the band)."""
-    # every operation in uint8 lanes (the wrap is the modulo) and over the
-    # whole row: LLVM vectorises this loop (~0.1 ns a pixel), which it did
-    # not on int32 / int64 values or over 64-pixel blocks (~3 ns a pixel)
-    o8 = np.uint8(o & 255)
-    mx = np.uint8(0)
+def _max_excess(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -> int:
+    """Largest ``((x - lo - o) mod 2^b) - span`` over ``row``, or 0 (no pixel outside the band); ``b`` the bits of the values (uint8: 8, uint16: 16)."""
+    # every operation in the values' own uint8 / uint16 lanes (the wrap is
+    # the modulo; the cast of o keeps its low b bits) and over the whole
+    # row: LLVM vectorises this loop (~0.1 ns a pixel), which it did not on
+    # int32 / int64 values or over 64-pixel blocks (~3 ns a pixel)
+    lane = row.dtype.type
+    ob = lane(o)
+    mx = lane(0)
     for j in range(row.shape[0]):
-        d = np.uint8(np.uint8(row[j] - lo[j]) - o8)
-        e = np.uint8(d - span[j]) if d > span[j] else np.uint8(0)
+        d = lane(lane(row[j] - lo[j]) - ob)
+        e = lane(d - span[j]) if d > span[j] else lane(0)
         mx = max(mx, e)
     return np.int64(mx)
 
 
 @jit(inline="always")
-def _max_excess_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int) -> int:
-    """:func:`_max_excess_u8` for uint16 values (modulo 65536)."""
-    o16 = np.uint16(o & 65535)
-    mx = np.uint16(0)
+def _outside(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: np.ndarray) -> None:
+    """``out[j] = (x[j] - lo[j] - o) mod 2^b > span[j]`` (1 or 0), vectorised as :func:`_max_excess`."""
+    lane = row.dtype.type
+    ob = lane(o)
     for j in range(row.shape[0]):
-        d = np.uint16(np.uint16(row[j] - lo[j]) - o16)
-        e = np.uint16(d - span[j]) if d > span[j] else np.uint16(0)
-        mx = max(mx, e)
-    return np.int64(mx)
-
-
-@jit(inline="always")
-def _outside_u8(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: np.ndarray) -> None:
-    """``out[j] = (x[j] - lo[j] - o) mod 256 > span[j]`` (1 or 0), vectorised as :func:`_max_excess_u8`."""
-    o8 = np.uint8(o & 255)
-    for j in range(row.shape[0]):
-        d = np.uint8(np.uint8(row[j] - lo[j]) - o8)
+        d = lane(lane(row[j] - lo[j]) - ob)
         out[j] = np.uint8(1) if d > span[j] else np.uint8(0)
-
-
-@jit(inline="always")
-def _outside_u16(row: np.ndarray, lo: np.ndarray, span: np.ndarray, o: int, out: np.ndarray) -> None:
-    """:func:`_outside_u8` for uint16 values (modulo 65536)."""
-    o16 = np.uint16(o & 65535)
-    for j in range(row.shape[0]):
-        d = np.uint16(np.uint16(row[j] - lo[j]) - o16)
-        out[j] = np.uint8(1) if d > span[j] else np.uint8(0)
-
-
-@jit(inline="always")
-def _select_int(buf: np.ndarray, m: int, k: int) -> int:
-    """The ``k``-th smallest (0-based) of ``buf[:m]`` (Hoare's selection; reorders ``buf``)."""
-    lo = 0
-    hi = m - 1
-    while lo < hi:
-        p = buf[(lo + hi) >> 1]
-        i = lo
-        j = hi
-        while i <= j:
-            while buf[i] < p:
-                i += 1
-            while buf[j] > p:
-                j -= 1
-            if i <= j:
-                t = buf[i]
-                buf[i] = buf[j]
-                buf[j] = t
-                i += 1
-                j -= 1
-        if k <= j:
-            hi = j
-        elif k >= i:
-            lo = i
-        else:
-            return buf[k]
-    return buf[k]
 
 
 @jit(inline="always")
@@ -157,7 +110,7 @@ def _line_offset(row: np.ndarray, ocols: np.ndarray, bg16: np.ndarray, max_off: 
             if -T <= v <= T:
                 hist[v + T] = 0
     else:
-        a = _select_int(buf, m, ka)
+        a = select_kth(buf, m, ka)
         b = a
         if kb != ka:
             # the smallest of the values above the ka-th
@@ -172,7 +125,6 @@ def _line_offset(row: np.ndarray, ocols: np.ndarray, bg16: np.ndarray, max_off: 
 def _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets, off_ring, hit_ring):
     """The body of :func:`stream_line_test_u8` / ``_u16`` (see there)."""
     cap, w = ring.shape
-    wide = ring.itemsize > 1
     m = ocols.shape[0]
     buf = np.empty(m, dtype=np.int64)
     T = 16 * (max_off + 1)
@@ -192,14 +144,11 @@ def _band_test(ring, first, n, lo, span, ocols, bg16, max_off, min_run, offsets,
         off_ring[r] = o
         # first pass, vectorised: does the line hold an outside pixel at all
         # (most lines hold none; ~13 % of 2048-pixel lines one by chance)
-        e = _max_excess_u16(row, lo, span, o) if wide else _max_excess_u8(row, lo, span, o)
+        e = _max_excess(row, lo, span, o)
         hit = False
         if e > 0:
             # the outside flags (vectorised), then the run rule over them
-            if wide:
-                _outside_u16(row, lo, span, o, flags)
-            else:
-                _outside_u8(row, lo, span, o, flags)
+            _outside(row, lo, span, o, flags)
             run = 0
             count = 0
             j_first = -1

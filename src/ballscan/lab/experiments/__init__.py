@@ -47,6 +47,7 @@ The names below are the package's interface.
 
 from __future__ import annotations
 
+from . import config, figures, report, run, trials
 from .config import (
     DEFAULT_METHODS,
     FACTORS,
@@ -89,51 +90,4 @@ from .trials import (
     trial_specs,
 )
 
-__all__ = [
-    "ExperimentConfigError",
-    "FACTORS",
-    "METHODS",
-    "DEFAULT_METHODS",
-    "TEXTURES",
-    "Method",
-    "Texture",
-    "MAX_LINES",
-    "EXTRA_FLAGS",
-    "MEDIAN_ABS_NORMAL",
-    "ROW_FIELDS",
-    "BOUND_FIELDS",
-    "FactorSpec",
-    "Scene",
-    "Sweep",
-    "ExperimentConfig",
-    "TrialGeometry",
-    "TrialSpec",
-    "TrialRow",
-    "BoundSpec",
-    "BoundRow",
-    "PointSummary",
-    "ExperimentResult",
-    "validate_config",
-    "scene_geometry",
-    "appearance",
-    "crlb_noise_dn",
-    "fig5_config",
-    "fig8_config",
-    "fig5_quick_config",
-    "quick_config",
-    "replace_trials",
-    "load_config",
-    "config_from_dict",
-    "trial_seed",
-    "trial_specs",
-    "pick_estimate",
-    "run_trial",
-    "run_bound",
-    "run_experiment",
-    "read_rows",
-    "summarise",
-    "trend_checks",
-    "summary_markdown",
-    "plot_sweeps",
-    "plot_fig7_overlays",
-]
+__all__ = [*config.__all__, *trials.__all__, *run.__all__, *figures.__all__, *report.__all__]
