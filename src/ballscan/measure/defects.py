@@ -55,7 +55,7 @@ def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
     column off its neighbours' level never counts as a seeing neighbour.
     On the 306 images of the POV-Ray set, the shared reference scenes and
     the test data (52 with a dead or hot column, most of them away from the
-    ball) this finds 17 defective columns, each at a ball's limb or inside
+    ball) this finds 16 defective columns, each at a ball's limb or inside
     it, and no other column.
 
     Parameters
@@ -76,41 +76,45 @@ def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
     x = image.data
     width = x.shape[1]
     bg, noise = detection.background_dn, detection.noise_dn
-    level_off = _level_outliers(bg, noise)
+    level_off = np.zeros(width, dtype=bool)
+    for r in detection.regions:
+        # (the columns judged and their neighbours)
+        span = np.arange(max(r.col_start - 2, 0), min(r.col_stop + 2, width))
+        level_off[span] = _level_outliers(bg, noise, span)
     found: set[int] = set()
     for r in detection.regions:
         c0, c1 = max(r.col_start - 1, 1), min(r.col_stop + 1, width - 1)
-        if c1 <= c0:
+        # only a column off its neighbours' level can be stuck: most balls have none
+        candidates = c0 + np.flatnonzero(level_off[c0:c1])
+        if candidates.size == 0:
             continue
-        ls, cs = slice(r.line_start, r.line_stop), slice(c0 - 1, c1 + 1)
-        signal = r.polarity * (x[ls, cs] - background_at(detection, ls, cs))
-        # a column off its neighbours' level does not vouch for a ball (a hot
-        # column's signal follows the lines' drift, not the scene)
-        strong = (signal > STRONG_SIGMA * noise[cs][None, :]) & ~level_off[cs][None, :]
-        for k in np.flatnonzero((strong[:, :-2] | strong[:, 2:]).sum(axis=0) >= MIN_LINES):
-            j = c0 + int(k)
-            left, right = strong[:, k], strong[:, k + 2]
+        ls = slice(r.line_start, r.line_stop)
+        for j in candidates:
+            cs = slice(j - 1, j + 2)
+            signal = r.polarity * (x[ls, cs] - background_at(detection, ls, cs))
+            # a column off its neighbours' level does not vouch for a ball (a
+            # hot column's signal follows the lines' drift, not the scene)
+            left, right = ((signal[:, k] > STRONG_SIGMA * noise[j + k - 1]) & ~level_off[j + k - 1] for k in (0, 2))
             on = left | right
-            seen = np.where(left & right, 0.5 * (signal[:, k] + signal[:, k + 2]), np.where(left, signal[:, k], signal[:, k + 2]))[on]
-            if np.median(signal[on, k + 1] / seen) >= STUCK_RESPONSE:
+            if on.sum() < MIN_LINES:
+                continue
+            seen = np.where(left & right, 0.5 * (signal[:, 0] + signal[:, 2]), np.where(left, signal[:, 0], signal[:, 2]))[on]
+            if np.median(signal[on, 1] / seen) >= STUCK_RESPONSE:
                 continue
             raw = x[ls, j][on]
-            if MAD_TO_SIGMA * np.median(np.abs(raw - np.median(raw))) > FLAT_SIGMA * noise[j]:
-                continue
-            if level_off[j]:
-                found.add(j)
+            if MAD_TO_SIGMA * np.median(np.abs(raw - np.median(raw))) <= FLAT_SIGMA * noise[j]:
+                found.add(int(j))
     return np.array(sorted(found), dtype=np.intp)
 
 
-def _level_outliers(bg: np.ndarray, noise: np.ndarray) -> np.ndarray:
-    """Columns whose background level is :data:`LEVEL_SIGMA` noise sigmas off the median of the two columns on each side."""
+def _level_outliers(bg: np.ndarray, noise: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Whether each of ``cols`` has a background level :data:`LEVEL_SIGMA` noise sigmas off the median of the two columns on each side."""
     # the two columns on each side, mirrored at the sensor's ends
-    idx = np.arange(bg.size)[:, None] + np.array([-2, -1, 1, 2])[None, :]
-    idx = np.abs(idx)
+    idx = np.abs(cols[:, None] + np.array([-2, -1, 1, 2])[None, :])
     idx = np.where(idx >= bg.size, 2 * (bg.size - 1) - idx, idx).clip(0, bg.size - 1)
     level = np.median(bg[idx], axis=1)
-    scale = np.maximum(np.median(noise[idx], axis=1), noise)
-    return np.abs(bg - level) > LEVEL_SIGMA * scale
+    scale = np.maximum(np.median(noise[idx], axis=1), noise[cols])
+    return np.abs(bg[cols] - level) > LEVEL_SIGMA * scale
 
 
 def _interpolate(values: np.ndarray, columns: np.ndarray) -> np.ndarray:
