@@ -976,8 +976,9 @@ def preload_estimator(*, stream_kernels: bool = True) -> None:
 
     The first estimate in a fresh process otherwise carries the imports and
     the loading of the kernels (:func:`ballscan.pipeline.warmup.warm_up`).
-    ``stream_kernels``: the engine's own line kernels too (a process that
-    measures stored images only loads them when an engine starts).  The
+    ``stream_kernels``: the engine's own line kernels and the fit's lazily
+    imported ``scipy.special`` too (a process that measures stored images
+    only loads them when an engine starts, or at its first partial end).  The
     modules are imported with the garbage collector paused: they live as
     long as the process.
     """
@@ -992,6 +993,10 @@ def preload_estimator(*, stream_kernels: bool = True) -> None:
     ensure_warm()
     if stream_kernels:
         _line_kernels.warm_up()
+        with collector_paused():
+            # the fit's test of a ball's partial end lines loads it at the
+            # first such ball: not in a stream ball's latency (about 0.1 s)
+            import scipy.special  # noqa: F401
 
 
 def process_stream(
