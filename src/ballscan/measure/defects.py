@@ -9,7 +9,7 @@ inside, changing along the passage), and a ball crossed by it may be split
 in two regions.  Such a column carries no information about the ball.
 
 :func:`stuck_columns` finds the columns whose signal stays near zero on the
-lines where a neighbour sees a detected ball clearly, and whose values
+lines where both neighbours see a detected ball clearly, and whose values
 there are as flat as their own noise (a stuck column does not vary; a dark
 seam or stitch that happens to follow one column over a few lines does),
 and whose background level is off their neighbours';
@@ -30,38 +30,41 @@ from .robust import MAD_TO_SIGMA
 
 __all__ = ["MIN_LINES", "STRONG_SIGMA", "STUCK_RESPONSE", "FLAT_SIGMA", "LEVEL_SIGMA", "stuck_columns", "repaired_image", "repaired_columns"]
 
-#: Lines on which a neighbour must see the ball for a column to be judged.
+#: Lines on which both neighbours must see the ball for a column to be judged.
 MIN_LINES = 8
 #: A neighbour sees the ball clearly: its signal exceeds this many of its noise sigmas.
 STRONG_SIGMA = 5.0
-#: A stuck column's median signal, as a share of its seeing neighbours' mean signal, is below this.
+#: A stuck column's signal over its neighbours' mean, line by line, has a median below this.
 STUCK_RESPONSE = 0.25
 #: A stuck column's values on those lines spread (robust sigma) by at most this many of its noise sigmas.
 FLAT_SIGMA = 3.0
-#: A stuck column's background level lies this many noise sigmas off the median of the two
+#: A stuck column's background level lies this many noise sigmas off the median of the three
 #: columns on each side (a dead column reads the black level, a hot one a fixed bright level).
 LEVEL_SIGMA = 5.0
 
 
 def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
-    """Sensor columns that do not respond where their neighbours see a detected ball.
+    """Sensor columns that do not respond where both their neighbours see a detected ball.
 
     A column is stuck when its background level lies :data:`LEVEL_SIGMA`
-    noise sigmas off the median of the two columns on each side and, on at
-    least :data:`MIN_LINES` lines of a region where a neighbour's signal
-    exceeds :data:`STRONG_SIGMA` noise sigmas, its own signal is a median
-    below :data:`STUCK_RESPONSE` of the seeing neighbours' mean while its
-    values there spread by at most :data:`FLAT_SIGMA` of its noise.  A
-    column off its neighbours' level never counts as a seeing neighbour.
-    On the 306 images of the POV-Ray set, the shared reference scenes and
-    the test data (52 with a dead or hot column, most of them away from the
-    ball) this finds 16 defective columns, each at a ball's limb or inside
-    it, and no other column.
+    noise sigmas off the median of the three columns on each side and, on
+    at least :data:`MIN_LINES` lines of a region where both neighbours'
+    signals exceed :data:`STRONG_SIGMA` noise sigmas (one neighbour at the
+    sensor's ends), the median of its signal over their mean, line by line,
+    is below :data:`STUCK_RESPONSE` while its values there spread by at
+    most :data:`FLAT_SIGMA` of its noise.  The neighbours are the nearest
+    columns on each side (within three) that are on their own neighbours'
+    level: two stuck columns side by side are judged against the healthy
+    ones beyond them.  Requiring the ball on both
+    sides keeps a backdrop's own vertical line or step beside the ball's
+    outline from being taken for a stuck column (it too is off level, flat
+    and without the ball's signal); a stuck column that is the limb's
+    outermost pixel is missed.
 
     Parameters
     ----------
     image : LineImage
-        The image the detection was made on (DN).
+        The image the detection is made on (DN).
     detection : Detection
         Its detection: the regions' boxes and polarities, the per-column
         background and noise.
@@ -71,7 +74,7 @@ def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
     numpy.ndarray
         Column indices (int, sorted, unique); empty when none is stuck.
         Columns one beyond each region's box are judged too (a stuck
-        column may end or split a ball's region).
+        column may split a ball's region).
     """
     x = image.data
     width = x.shape[1]
@@ -83,37 +86,55 @@ def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
         level_off[span] = _level_outliers(bg, noise, span)
     found: set[int] = set()
     for r in detection.regions:
-        c0, c1 = max(r.col_start - 1, 1), min(r.col_stop + 1, width - 1)
+        c0, c1 = max(r.col_start - 1, 0), min(r.col_stop + 1, width)
         # only a column off its neighbours' level can be stuck: most balls have none
         candidates = c0 + np.flatnonzero(level_off[c0:c1])
-        if candidates.size == 0:
-            continue
         ls = slice(r.line_start, r.line_stop)
         for j in candidates:
-            cs = slice(j - 1, j + 2)
-            signal = r.polarity * (x[ls, cs] - background_at(detection, ls, cs))
-            # a column off its neighbours' level does not vouch for a ball (a
-            # hot column's signal follows the lines' drift, not the scene)
-            left, right = ((signal[:, k] > STRONG_SIGMA * noise[j + k - 1]) & ~level_off[j + k - 1] for k in (0, 2))
-            on = left | right
-            if on.sum() < MIN_LINES:
-                continue
-            seen = np.where(left & right, 0.5 * (signal[:, 0] + signal[:, 2]), np.where(left, signal[:, 0], signal[:, 2]))[on]
-            if np.median(signal[on, 1] / seen) >= STUCK_RESPONSE:
-                continue
-            raw = x[ls, j][on]
-            if MAD_TO_SIGMA * np.median(np.abs(raw - np.median(raw))) <= FLAT_SIGMA * noise[j]:
+            if _stuck(x[ls], detection, r.polarity, int(j), level_off, ls):
                 found.add(int(j))
     return np.array(sorted(found), dtype=np.intp)
 
 
+def _stuck(x: np.ndarray, detection: Detection, polarity: int, j: int, level_off: np.ndarray, ls: slice) -> bool:
+    """Whether column ``j`` stays flat without the ball's signal where its neighbours (both, where it has two) see it; ``x`` the region's lines."""
+    width, noise = x.shape[1], detection.noise_dn
+    # the nearest column on each side that is on its neighbours' level (a
+    # column off it does not vouch for a ball: a hot column's signal follows
+    # the lines' drift, not the scene), within three
+    sides = []
+    for step in (-1, 1):
+        k = j + step
+        while 0 <= k < width and abs(k - j) <= 3 and level_off[k]:
+            k += step
+        if 0 <= k < width and abs(k - j) <= 3:
+            sides.append(k)
+        elif 0 <= j + step < width:
+            return False  # a neighbour exists but none on level near it
+    cols = [j, *sides]
+    signal = polarity * (x[:, cols] - background_at(detection, ls, np.array(cols)))
+    seeing = [signal[:, i + 1] > STRONG_SIGMA * noise[k] for i, k in enumerate(sides)]
+    on = np.logical_and.reduce(seeing)
+    if on.sum() < MIN_LINES:
+        return False
+    seen = np.mean(signal[on][:, 1:], axis=1)
+    if np.median(signal[on, 0] / seen) >= STUCK_RESPONSE:
+        return False
+    raw = x[on, j]
+    return bool(MAD_TO_SIGMA * np.median(np.abs(raw - np.median(raw))) <= FLAT_SIGMA * noise[j])
+
+
 def _level_outliers(bg: np.ndarray, noise: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """Whether each of ``cols`` has a background level :data:`LEVEL_SIGMA` noise sigmas off the median of the two columns on each side."""
-    # the two columns on each side, mirrored at the sensor's ends
-    idx = np.abs(cols[:, None] + np.array([-2, -1, 1, 2])[None, :])
-    idx = np.where(idx >= bg.size, 2 * (bg.size - 1) - idx, idx).clip(0, bg.size - 1)
-    level = np.median(bg[idx], axis=1)
-    scale = np.maximum(np.median(noise[idx], axis=1), noise[cols])
+    """Whether each of ``cols`` has a background level :data:`LEVEL_SIGMA` noise sigmas off the median of the three columns on each side.
+
+    Three a side: two stuck columns side by side leave the median to four
+    healthy ones.  At the sensor's ends the columns that exist are used.
+    """
+    idx = cols[:, None] + np.array([-3, -2, -1, 1, 2, 3])[None, :]
+    valid = (idx >= 0) & (idx < bg.size)
+    idx = idx.clip(0, bg.size - 1)
+    level = np.nanmedian(np.where(valid, bg[idx], np.nan), axis=1)
+    scale = np.maximum(np.nanmedian(np.where(valid, noise[idx], np.nan), axis=1), noise[cols])
     return np.abs(bg[cols] - level) > LEVEL_SIGMA * scale
 
 

@@ -617,8 +617,8 @@ def measure_edges(
     blind_columns : sequence of int
         Image columns whose values are not the scene's (a stuck column
         replaced by its neighbours' interpolation,
-        :mod:`ballscan.measure.defects`): an edge whose window holds one is
-        unusable.
+        :mod:`ballscan.measure.defects`): an edge whose window or level run
+        holds one is unusable.
 
     Returns
     -------
@@ -928,9 +928,8 @@ def _usability(box: _Box, rough: _RoughEdges, ws: _WindowSums, hs4: np.ndarray, 
     return _Usability(usable=usable, spoiled=endL | endR | satL | satR | ovL | ovR, flags=tuple(flags))
 
 
-def _windows_meet(first: np.ndarray, last: np.ndarray, columns: np.ndarray) -> np.ndarray:
-    """Whether each window (its outermost and innermost box columns ``first``, ``last``) holds one of ``columns`` (box columns)."""
-    lo, hi = np.minimum(first, last), np.maximum(first, last)
+def _windows_meet(lo: np.ndarray, hi: np.ndarray, columns: np.ndarray) -> np.ndarray:
+    """Whether each estimate's window and level run (box columns ``lo`` to ``hi``) hold one of ``columns`` (box columns)."""
     meet = np.zeros(lo.shape, dtype=bool)
     for c in columns:
         meet |= (lo <= c) & (c <= hi)
@@ -972,7 +971,7 @@ def _edge_pass(
     )
     we = _window_edges(ws, hs4, n_in, s, quarters)
     use = _usability(box, rough, ws, hs4, s, quarters)
-    usable = use.usable & ~_windows_meet(ws.win_first, ws.win_last, np.asarray(blind_columns, dtype=np.int64) - box.c0)
+    usable = use.usable & ~_windows_meet(ws.lo, ws.hi, np.asarray(blind_columns, dtype=np.int64) - box.c0)
     # texture indicator from pixels the edge does not use (the deep run and
     # the run inside it, pdd and sdd2), so that its noise is independent of
     # the edge's: a weight correlated with the edge's own error would bias the fit

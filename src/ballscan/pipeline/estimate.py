@@ -303,6 +303,12 @@ def _region_estimate(image: LineImage, detection: Detection, region: BallRegion,
         )
 
 
+def _with_repaired(ball: BallEstimate, region: BallRegion, columns: tuple[int, ...]) -> BallEstimate:
+    """``ball`` naming in ``extra["repaired_columns"]`` the repaired columns within its region's box (one column beyond it too)."""
+    mine = [j for j in columns if region.col_start - 1 <= j <= region.col_stop]
+    return replace(ball, extra={**ball.extra, "repaired_columns": mine}) if mine else ball
+
+
 def estimate_image(
     image: LineImage | np.ndarray | str | os.PathLike[str],
     camera: LineScanCamera | str | os.PathLike[str],
@@ -372,6 +378,6 @@ def estimate_image(
     blind = tuple(int(j) for j in stuck)
     balls = [assess(_region_estimate(image, det, r, camera, radius_m, t, recipe, bg, blind), r, image) for r in det.regions]
     if stuck.size:
-        balls = [replace(b, extra={**b.extra, "repaired_columns": list(blind)}) for b in balls]
+        balls = [_with_repaired(b, r, blind) for b, r in zip(balls, det.regions)]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls), recipe=recipe)
