@@ -48,7 +48,9 @@ EXTRA_FLAGS = (
     "pixels_no_start",
     "pixels_no_shading_model",
     "pixels_not_converged",
-)#: Median of |N(0, 1)|: the median absolute error of a Gaussian error of
+)
+
+#: Median of |N(0, 1)|: the median absolute error of a Gaussian error of
 #: 1-sigma 1.  Not the bound's median of the speed (see :class:`BoundRow`).
 MEDIAN_ABS_NORMAL = 0.6744897501960817
 
