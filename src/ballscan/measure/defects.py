@@ -80,13 +80,12 @@ def stuck_columns(image: LineImage, detection: Detection) -> np.ndarray:
     width = x.shape[1]
     bg, noise = detection.background_dn, detection.noise_dn
     level_off = np.zeros(width, dtype=bool)
-    for r in detection.regions:
-        # (the columns judged and their neighbours)
-        span = np.arange(max(r.col_start - 2, 0), min(r.col_stop + 2, width))
-        level_off[span] = _level_outliers(bg, noise, span)
     found: set[int] = set()
     for r in detection.regions:
         c0, c1 = max(r.col_start - 1, 0), min(r.col_stop + 1, width)
+        # the columns judged and the neighbours they may be judged against
+        span = np.arange(max(c0 - 3, 0), min(c1 + 3, width))
+        level_off[span] = _level_outliers(bg, noise, span)
         # only a column off its neighbours' level can be stuck: most balls have none
         candidates = c0 + np.flatnonzero(level_off[c0:c1])
         ls = slice(r.line_start, r.line_stop)
@@ -133,27 +132,23 @@ def _level_outliers(bg: np.ndarray, noise: np.ndarray, cols: np.ndarray) -> np.n
     idx = cols[:, None] + np.array([-3, -2, -1, 1, 2, 3])[None, :]
     valid = (idx >= 0) & (idx < bg.size)
     idx = idx.clip(0, bg.size - 1)
-    level = np.nanmedian(np.where(valid, bg[idx], np.nan), axis=1)
-    scale = np.maximum(np.nanmedian(np.where(valid, noise[idx], np.nan), axis=1), noise[cols])
-    return np.abs(bg[cols] - level) > LEVEL_SIGMA * scale
+    level, scale = np.median(bg[idx], axis=1), np.median(noise[idx], axis=1)
+    for i in np.flatnonzero(~valid.all(axis=1)):  # (the sensor's first and last three columns)
+        near = idx[i, valid[i]]
+        level[i], scale[i] = np.median(bg[near]), np.median(noise[near])
+    return np.abs(bg[cols] - level) > LEVEL_SIGMA * np.maximum(scale, noise[cols])
 
 
 def _interpolate(values: np.ndarray, columns: np.ndarray) -> np.ndarray:
-    """``values`` (..., W) with ``columns`` replaced by the linear interpolation of the nearest other columns."""
+    """``values`` (..., W) with ``columns`` replaced by the linear interpolation of the nearest other columns (the nearest one beyond the last)."""
     out = np.array(values, dtype=np.float64, copy=True)
-    good = np.ones(out.shape[-1], dtype=bool)
-    good[columns] = False
-    keep = np.flatnonzero(good)
-    if keep.size == 0:
+    keep = np.setdiff1d(np.arange(out.shape[-1]), columns)
+    if keep.size == 0 or len(columns) == 0:
         return out
-    for j in columns:
-        lo, hi = keep[keep < j], keep[keep > j]
-        if lo.size and hi.size:
-            a, b = int(lo[-1]), int(hi[0])
-            w = (j - a) / (b - a)
-            out[..., j] = (1.0 - w) * out[..., a] + w * out[..., b]
-        else:
-            out[..., j] = out[..., int(lo[-1]) if lo.size else int(hi[0])]
+    pos = np.searchsorted(keep, columns)
+    a, b = keep[np.maximum(pos - 1, 0)], keep[np.minimum(pos, keep.size - 1)]
+    w = np.where(b > a, (columns - a) / np.maximum(b - a, 1), 0.0)
+    out[..., columns] = (1.0 - w) * out[..., a] + w * out[..., b]
     return out
 
 

@@ -377,7 +377,6 @@ def estimate_image(
     bg = shading_background(image, det, recipe) if recipe.method == "fit" and det.regions else None
     blind = tuple(int(j) for j in stuck)
     balls = [assess(_region_estimate(image, det, r, camera, radius_m, t, recipe, bg, blind), r, image) for r in det.regions]
-    if stuck.size:
-        balls = [_with_repaired(b, r, blind) for b, r in zip(balls, det.regions)]
+    balls = [_with_repaired(b, r, blind) for b, r in zip(balls, det.regions)]
     balls.sort(key=lambda b: (b.t_c_s if b.t_c_s is not None else t[min(b.first_line or 0, n_lines - 1)]))
     return EstimateReport(image=image.source, balls=tuple(balls), recipe=recipe)
