@@ -10,10 +10,10 @@ purpose says so and by how much.
 Usage::
 
     python benchmarks/golden.py --write tests/data/golden.json   # record
-    python benchmarks/golden.py --check tests/data/golden.json   # rtol 1e-12
+    python benchmarks/golden.py --check tests/data/golden.json   # rtol 1e-9
     python benchmarks/golden.py --check tests/data/golden.json --exact
 
-``tests/test_golden.py`` runs the check with rtol 1e-12 (numpy's
+``tests/test_golden.py`` runs the check at :data:`RTOL` (numpy's
 CPU-specific paths differ between machines; the paper method's Powell
 search at :data:`PAPER_RTOL`, see :func:`check`); ``benchmarks/golden_compare.sh OLD NEW``
 records two commits on one machine and compares them bit for bit.
@@ -118,6 +118,14 @@ def compare(a, b, rtol: float, path: str = "") -> list[str]:
     return [] if a == b else [f"{path}: {a!r} != {b!r}"]
 
 
+#: rtol of the fit's and the stream's outputs between machines and numpy
+#: releases: numpy's SIMD paths (AVX2 against AVX-512) and older releases
+#: (2.0-2.2) sum in other orders, which moves the covariances' small
+#: off-diagonal terms and the speed correction by up to 1.5e-10 relative
+#: (an AVX-512 EPYC against the record's machine).  A restructuring is held
+#: bit for bit by ``golden_compare.sh`` on one machine instead.
+RTOL = 1e-9
+
 #: rtol of the paper method's outputs across library versions: scipy's Powell
 #: (Brent line searches) stops within its own tolerance, and a scipy release
 #: that changes its path moves the result by up to about 2e-5 relative
@@ -125,7 +133,7 @@ def compare(a, b, rtol: float, path: str = "") -> list[str]:
 PAPER_RTOL = 1e-4
 
 
-def check(recorded: dict, now: dict, rtol: float = 1e-12) -> list[str]:
+def check(recorded: dict, now: dict, rtol: float = RTOL) -> list[str]:
     """Differences of ``now`` from ``recorded``: ``rtol`` everywhere except the paper method's outputs (:data:`PAPER_RTOL`, evaluation counts not compared)."""
 
     def paper_part(v):
@@ -154,7 +162,7 @@ def main(argv: list[str] | None = None) -> int:
     g.add_argument("--write", type=Path, help="record the golden outputs into this JSON file")
     g.add_argument("--check", type=Path, help="compare the outputs with this JSON file")
     ap.add_argument("--root", type=Path, help="measure this checkout's package (default: the installed one)")
-    ap.add_argument("--exact", action="store_true", help="with --check: bit for bit instead of rtol 1e-12")
+    ap.add_argument("--exact", action="store_true", help="with --check: bit for bit instead of rtol 1e-9")
     args = ap.parse_args(argv)
     if args.root:
         use_checkout(args.root)
@@ -167,7 +175,7 @@ def main(argv: list[str] | None = None) -> int:
     diffs = compare(recorded, now, 0.0) if args.exact else check(recorded, now)
     for d in diffs[:50]:
         print(d)
-    print(f"{len(diffs)} differences ({'bit for bit' if args.exact else f'rtol 1e-12, the paper method {PAPER_RTOL:g}'})")
+    print(f"{len(diffs)} differences ({'bit for bit' if args.exact else f'rtol {RTOL:g}, the paper method {PAPER_RTOL:g}'})")
     return 1 if diffs else 0
 
 
