@@ -151,7 +151,7 @@ def _scene(req: SimulationRequest) -> tuple[LineScanCamera, list, int, SensorNoi
     app = replace(app, **changes)
     balls = [(motion, app)] + [(parse_ball_spec(s), app) for s in req.extra_balls]
     for k, (b, _) in enumerate(balls):
-        _check_motion(b, "--position" if k == 0 else f"--add-ball {k}")
+        _check_motion(b, k)
     if req.bits is not None and (isinstance(req.bits, bool) or req.bits not in (8, 12, 16)):
         raise ValueError(f"--bits: expected 8, 12 or 16, got {req.bits!r}")
     if req.noise == "none":
@@ -167,21 +167,32 @@ def _scene(req: SimulationRequest) -> tuple[LineScanCamera, list, int, SensorNoi
     return camera, balls, n_lines, noise
 
 
-def _check_motion(b: BallMotion, what: str) -> None:
-    """A ball the renderer can draw: in front of the camera, crossing the viewing plane, its numbers within reason."""
+def _check_motion(b: BallMotion, k: int) -> None:
+    """A ball the renderer can draw: in front of the camera, crossing the viewing plane, its numbers within reason.
+
+    ``k`` is the ball's place on the command line: 0 for the ball of ``--position``,
+    ``--velocity``, ``--radius`` and ``--t-c``, k for the k-th ``--add-ball``; an error
+    names the option that holds the wrong number.
+    """
+
+    def option(name: str) -> str:
+        return name if k == 0 else f"--add-ball {k}"
+
+    if not b.radius_m <= MAX_DISTANCE_M:
+        raise ValueError(f"{option('--radius')}: a ball {MAX_DISTANCE_M:g} m or more wide is beyond any scene")
     # a ball that reaches the plane z = 0 is behind or beside the camera:
     # nothing of it would image, and an empty picture must not pass for a scene
     if not b.position_m[2] > b.radius_m:
-        raise ValueError(f"{what}: the ball's centre must be in front of the camera by more than its radius (z = {b.position_m[2]!r} m)")
+        raise ValueError(f"{option('--position')}: the ball's centre must be in front of the camera by more than its radius (z = {b.position_m[2]!r} m)")
     if b.velocity_mps[0] == 0.0:
-        raise ValueError(f"{what}: VX must be non-zero: a ball that does not move across the viewing plane never crosses it")
+        raise ValueError(f"{option('--velocity')}: VX must be non-zero: a ball that does not move across the viewing plane never crosses it")
     speed = math.hypot(*b.velocity_mps)
     if not speed <= MAX_SPEED_MPS:
-        raise ValueError(f"{what}: a speed of {speed:.7g} m/s is beyond any scene (at most {MAX_SPEED_MPS:g} m/s)")
-    if not max(abs(v) for v in b.position_m) <= MAX_DISTANCE_M or not b.radius_m <= MAX_DISTANCE_M:
-        raise ValueError(f"{what}: a ball {MAX_DISTANCE_M:g} m or more away (or wide) is beyond any scene")
+        raise ValueError(f"{option('--velocity')}: a speed of {speed:.7g} m/s is beyond any scene (at most {MAX_SPEED_MPS:g} m/s)")
+    if not max(abs(v) for v in b.position_m) <= MAX_DISTANCE_M:
+        raise ValueError(f"{option('--position')}: a ball {MAX_DISTANCE_M:g} m or more away is beyond any scene")
     if not abs(b.t_c_s) <= MAX_TIME_S:
-        raise ValueError(f"{what}: t_c = {b.t_c_s:g} s is beyond any recording ({MAX_TIME_S:g} s)")
+        raise ValueError(f"{option('--t-c')}: t_c = {b.t_c_s:g} s is beyond any recording ({MAX_TIME_S:g} s)")
 
 
 def _check_reaches_image(camera: LineScanCamera, b: BallMotion, rendered, noise: SensorNoise, what: str) -> None:
