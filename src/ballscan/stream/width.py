@@ -104,7 +104,11 @@ class _Accumulator:
             a = (-first_index) % p
             k = (d.size - a) // p
             if k > 0:
-                self.sums[p] += d[a : a + k * p].reshape(k, p).sum(axis=0, dtype=np.float64)
+                # summed in float32, the differences' own type: a block's k <= 512 rows
+                # round to about 1e-6 of the column sums' noise, far below the score's
+                # resolution, at a third of the time of a float64 accumulation (3.3 against
+                # 8.3 ms for a stream's first 512 x 2048 block and its 24 candidates)
+                self.sums[p] += d[a : a + k * p].reshape(k, p).sum(axis=0)
                 self.rows[p] += k
 
     def scores(self) -> dict[int, float]:
