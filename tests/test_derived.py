@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, derive, world_covariance
+from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, derive, derive_transverse, world_covariance
 
 CAM = LineScanCamera(width=2048, focal_px=2500.0, principal_px=1023.5, line_rate_hz=70000.0)
 
@@ -97,3 +97,20 @@ def test_no_pose_no_world_frame():
     d = derive(CAM, (0.0, 0.1, 4.0), (30.0, 3.0, -1.0), np.eye(6) * 1e-4)
     assert d.world_velocity_mps is None and d.elevation_deg is None and d.world_covariance is None
     assert d.direction_deg[0] == pytest.approx(math.degrees(math.atan2(3.0, 30.0)))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(0.05, 60.0), st.floats(-30.0, 30.0), st.floats(-20.0, 20.0), st.integers(0, 2**31 - 1))
+def test_vx_vy_alone_give_what_the_whole_velocity_gives_across_the_axis(vx, vy, vz, seed):
+    """``derive_transverse`` on (vx, vy) and a covariance whose vz row is unknown: the whole velocity's transverse speed and psi_y, with their sigmas."""
+    C = _covariance(np.random.default_rng(seed), [1e-4, 1e-3, 1e-2, 0.1, 0.3, 3.0])
+    whole = derive(CAM, (0.0, 0.1, 4.0), (vx, vy, vz), C)
+    lost = C.copy()
+    lost[5, :] = lost[:, 5] = np.nan
+    part = derive_transverse((vx, vy), lost)
+    assert part.speed_transverse_mps == pytest.approx(whole.speed_transverse_mps, rel=1e-12)
+    assert part.speed_transverse_sigma_mps == pytest.approx(whole.speed_transverse_sigma_mps, rel=1e-9)
+    assert part.direction_deg[0] == pytest.approx(whole.direction_deg[0], abs=1e-12)
+    assert part.direction_sigma_deg[0] == pytest.approx(whole.direction_sigma_deg[0], rel=1e-9)
+    assert math.isnan(part.direction_deg[1]) and math.isnan(part.direction_sigma_deg[1])
+    assert part.world_velocity_mps is None and np.all(np.isnan(part.speed_direction_correlation))

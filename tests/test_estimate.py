@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +13,8 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
-from ballscan.pipeline.results import EstimateReport
+from ballscan.pipeline.report import format_table
+from ballscan.pipeline.results import BallEstimate, EstimateReport
 from ballscan.solve.settings import FitSettings
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
@@ -458,6 +460,28 @@ def test_a_small_visible_part_leaves_the_depth_motion_undetermined(case):
     doc = json.loads(EstimateReport("cut.png", (ball,)).to_json(CUT_CAM))["balls"][0]
     assert doc["speed_mps"] is None and "velocity_mps" in doc["undetermined"]
     assert doc["covariance"]["matrix"][5] == [None] * 6
+
+
+@pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
+def test_with_the_depth_velocity_undetermined_the_transverse_speed_is_still_measured(case):
+    """21 % of the diameter seen, V.z undetermined: (vx, vy), |(vx, vy)| and psi_y reported with sigmas, the truth within 3 sigma; psi_z null."""
+    m, image = BENCH_CUT.cut_scene(case, 0.21, seed=2)
+    (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
+    assert ball.velocity_mps is None and ball.velocity_transverse_mps is not None
+    der = ball.derived(CUT_CAM)
+    vx, vy = abs(m.velocity_mps[0]), m.velocity_mps[1]
+    assert abs(der.speed_transverse_mps - math.hypot(vx, vy)) < 3 * der.speed_transverse_sigma_mps
+    assert abs(der.direction_deg[0] - math.degrees(math.atan2(vy, vx))) < 3 * der.direction_sigma_deg[0]
+    doc = json.loads(EstimateReport("cut.png", (ball,)).to_json(CUT_CAM))["balls"][0]
+    assert doc["velocity_transverse_mps"] == list(ball.velocity_transverse_mps)
+    assert doc["speed_transverse_sigma_mps"] > 0 and doc["direction_deg"][1] is None and doc["direction_sigma_deg"][1] is None
+    table = format_table(EstimateReport("cut.png", (ball,)), CUT_CAM)
+    assert "across axis" in table and "psi_z undetermined" in table
+
+
+def test_a_transverse_velocity_goes_only_with_an_undetermined_velocity():
+    with pytest.raises(ValueError, match="velocity_transverse_mps"):
+        BallEstimate("fit", 0.0335, 0.0, (0.0, 0.0, 3.0), (10.0, 1.0, 0.0), velocity_transverse_mps=(10.0, 1.0))
 
 
 @pytest.mark.slow

@@ -291,6 +291,16 @@ def test_a_cut_ball_is_measured_from_its_visible_part(name, flag, capsys):
     _within_3_sigma(balls[0], truth[0])
 
 
+@pytest.mark.parametrize("name", ["pv0046", "pv0212"])
+def test_a_cut_ball_whose_depth_velocity_is_undetermined_keeps_its_transverse_speed(name, capsys):
+    # pv0046: a tennis ball, pv0212 a baseball, each cut by the last line (44 and 52 lines): V.z is
+    # undetermined, |(vx, vy)| and psi_y are reported and hold the truth within 3 sigma
+    truth, balls = _estimate(name, capsys)
+    assert len(balls) == 1 and "cut_last_line" in balls[0]["flags"] and balls[0]["speed_mps"] is None
+    row = score.compare(balls[0], truth[0])
+    assert row["transverse_only"] and row["z_vt"] < 3.0 and row["z_psi_y"] < 3.0, row
+
+
 def test_a_defocused_ball(capsys):
     # pv0070: a plain ball behind a real aperture's focal blur, moving in depth, 16 bit
     truth, balls = _estimate("pv0070", capsys)

@@ -87,6 +87,8 @@ def compare(est: dict | None, tb: dict) -> dict:
     row = {"measured": False}
     if not est or est.get("speed_mps") is None:
         row["flags"] = est.get("flags", []) if est else ["not_found"]
+        if est and est.get("speed_transverse_mps") is not None:
+            row.update(_transverse_only(est, tb))
         return row
     s_true = tb["speed_mps"]
     err = (est["speed_mps"] - s_true) / s_true
@@ -110,6 +112,19 @@ def compare(est: dict | None, tb: dict) -> dict:
         ok = d is not None and ds is not None and d[k] is not None and ds[k]
         row[f"z_{name}"] = abs(d[k] - true_d[k]) / ds[k] if ok else None
     return row
+
+
+def _transverse_only(est: dict, tb: dict) -> dict:
+    """Errors of what an estimate whose depth velocity is undetermined still reports: ``|(vx, vy)|`` and ``psi_y``."""
+    v = tb["velocity_mps"]
+    vt_true = math.hypot(v[0], v[1])
+    vt, vt_sig = est["speed_transverse_mps"], est.get("speed_transverse_sigma_mps")
+    out = {"transverse_only": True, "transverse_err": (vt - vt_true) / vt_true if vt_true > 0 else None}
+    out["z_vt"] = abs(vt - vt_true) / vt_sig if vt_sig else None
+    d, ds = est.get("direction_deg"), est.get("direction_sigma_deg")
+    ok = d is not None and ds is not None and d[0] is not None and ds[0]
+    out["z_psi_y"] = abs(d[0] - tb["direction_deg"]["psi_y"]) / ds[0] if ok else None
+    return out
 
 
 def score_scene(ballscan: str, scenes: Path, name: str) -> list[dict]:
@@ -210,6 +225,22 @@ def table(rows: list[dict]) -> list[str]:
     return out
 
 
+def transverse_lines(rows: list[dict]) -> list[str]:
+    """The fit's balls with the speed undetermined (one camera's depth velocity) but ``|(vx, vy)|`` and ``psi_y`` reported."""
+    t = [r["fit"] for r in rows if r["fit"].get("transverse_only")]
+    if not t:
+        return []
+    errs = [abs(r["transverse_err"]) * 100 for r in t if r.get("transverse_err") is not None]
+
+    def cover(key: str, k: float) -> str:
+        zs = [r[key] for r in t if r.get(key) is not None]
+        return f"{100 * sum(z <= k for z in zs) / len(zs):.0f}" if zs else "-"
+
+    return ["", f"fit, speed undetermined but the transverse speed reported: {len(t)} balls; |(vx, vy)| error median "
+            f"{_fmt(_med(errs), '.2f')} %, worst {_fmt(max(errs) if errs else None, '.2f')} %; within 1 / 3 sigma: "
+            f"|(vx, vy)| {cover('z_vt', 1)} / {cover('z_vt', 3)} %, psi_y {cover('z_psi_y', 1)} / {cover('z_psi_y', 3)} %"]
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
@@ -239,6 +270,7 @@ def main(argv: list[str] | None = None) -> int:
             a.save.write_text(json.dumps(rows, indent=1) + "\n")
     print(f"{len({r['scene'] for r in rows})} scenes, {len(rows)} balls ({a.split} half)")
     print("\n".join(table(rows)))
+    print("\n".join(transverse_lines(rows)))
     failed = [f"{r['scene']} {m}: {r[m]['error'] or 'not measured'} flags {','.join(r[m].get('flags', []))}"
               for r in rows for m in METHODS if not r[m].get("measured")]
     if failed:

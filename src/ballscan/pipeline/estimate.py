@@ -218,6 +218,12 @@ def _fit_estimate(
     def keep(key: str, value):
         return None if key in undetermined else value
 
+    # the depth velocity alone undetermined (one camera's weak axis): vx and vy are still measured
+    lost = set(fit.undetermined) | set(unfixed)
+    transverse = None
+    if "velocity_mps" in undetermined and lost & {"vx_mps", "vy_mps", "vz_mps"} == {"vz_mps"} and np.all(np.isfinite(np.diag(cov)[3:5])):
+        transverse = tuple(fit.motion.velocity_mps[:2])
+
     law = final.shading
     return BallEstimate(
         method="fit",
@@ -230,6 +236,7 @@ def _fit_estimate(
         position_sigma_m=keep("position_m", unc.position_sigma_m),
         velocity_sigma_mps=keep("velocity_mps", unc.velocity_sigma_mps),
         speed_sigma_mps=keep("speed_mps", unc.speed_sigma_mps),
+        velocity_transverse_mps=transverse,
         initial=initial,
         flags=tuple(flags),
         undetermined=tuple(undetermined),

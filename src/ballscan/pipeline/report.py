@@ -95,7 +95,8 @@ def format_ball(k: int, b: BallEstimate, camera: LineScanCamera | None = None, u
     lines.append(f"  t_c          {_pm(b.t_c_s, b.t_c_sigma_s, '.7f')} s")
     if der is not None:
         sd = der.direction_sigma_deg if has_sigma else (None, None)
-        lines.append(f"  direction    psi_y {_pm(der.direction_deg[0], sd[0], '.2f')} deg, psi_z {_pm(der.direction_deg[1], sd[1], '.2f')} deg  (towards +y, towards +z)")
+        psi = [_pm(der.direction_deg[k], sd[k], ".2f") + (" deg" if _finite(der.direction_deg[k]) else "") for k in (0, 1)]
+        lines.append(f"  direction    psi_y {psi[0]}, psi_z {psi[1]}  (towards +y, towards +z)")
     if der is not None and der.world_velocity_mps is not None:
         ws = (lambda v: v) if has_sigma else (lambda v: None)
         lines.append(f"  world pos    {_pm_vec(der.world_position_m, ws(der.world_position_sigma_m), '.5f')} m")

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
-from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, derive
+from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, derive, derive_transverse
 
 if TYPE_CHECKING:
     from ..measure.edges import EdgeMeasurements
@@ -66,6 +66,11 @@ class BallEstimate:
         The estimate (seconds, metres, m/s); ``None`` where undetermined.
     t_c_sigma_s, position_sigma_m, velocity_sigma_mps, speed_sigma_mps
         1-sigma uncertainties where the method provides them.
+    velocity_transverse_mps : (float, float) or None
+        ``(vx, vy)`` (m/s) where the velocity is undetermined only through its
+        depth component ``vz`` (one camera's weak axis): what the image does
+        determine, with their rows of ``covariance``; None otherwise (the
+        velocity is whole, or ``vx`` or ``vy`` is undetermined too).
     initial : BallEstimate or None
         The key-point initial guess (paper Eq. (3)-(7)).
     flags : tuple of str
@@ -107,6 +112,7 @@ class BallEstimate:
     position_sigma_m: tuple[float, float, float] | None = None
     velocity_sigma_mps: tuple[float, float, float] | None = None
     speed_sigma_mps: float | None = None
+    velocity_transverse_mps: tuple[float, float] | None = None
     initial: "BallEstimate | None" = None
     flags: tuple[str, ...] = ()
     undetermined: tuple[str, ...] = ()
@@ -124,6 +130,11 @@ class BallEstimate:
         object.__setattr__(self, "velocity_mps", _tuple3(self.velocity_mps))
         object.__setattr__(self, "position_sigma_m", _tuple3(self.position_sigma_m))
         object.__setattr__(self, "velocity_sigma_mps", _tuple3(self.velocity_sigma_mps))
+        if self.velocity_transverse_mps is not None:
+            vt = tuple(float(v) for v in self.velocity_transverse_mps)
+            if len(vt) != 2 or self.velocity_mps is not None:
+                raise ValueError(f"velocity_transverse_mps: (vx, vy) of a velocity undetermined in vz only, got {self.velocity_transverse_mps!r} beside velocity_mps {self.velocity_mps!r}")
+            object.__setattr__(self, "velocity_transverse_mps", vt)
         if self.speed_mps is None and self.velocity_mps is not None:
             object.__setattr__(self, "speed_mps", float(np.linalg.norm(self.velocity_mps)))
         unknown = set(self.flags) - set(FLAGS)
@@ -169,10 +180,17 @@ class BallEstimate:
         return BallMotion(self.radius_m, self.t_c_s, self.position_m, self.velocity_mps)
 
     def derived(self, camera: LineScanCamera | None = None) -> Derived | None:
-        """Transverse speed, direction angles, the world frame and their sigmas (:func:`ballscan.solve.derived.derive`); None when the motion is undetermined."""
-        if self.position_m is None or self.velocity_mps is None:
-            return None
-        return derive(camera, self.position_m, self.velocity_mps, self.covariance)
+        """Transverse speed, direction angles, the world frame and their sigmas (:func:`ballscan.solve.derived.derive`).
+
+        Where only the depth velocity is undetermined, the part that ``vx``
+        and ``vy`` give (:func:`ballscan.solve.derived.derive_transverse`);
+        None when the velocity is undetermined otherwise.
+        """
+        if self.position_m is not None and self.velocity_mps is not None:
+            return derive(camera, self.position_m, self.velocity_mps, self.covariance)
+        if self.velocity_transverse_mps is not None:
+            return derive_transverse(self.velocity_transverse_mps, self.covariance)
+        return None
 
     # ---------------------------------------------------------- serialisation
     def to_dict(self, camera: LineScanCamera | None = None) -> dict[str, Any]:
@@ -196,6 +214,8 @@ class BallEstimate:
         if self.covariance is not None:
             d["covariance"] = {"parameters": list(COVARIANCE_PARAMETERS), "matrix": np.asarray(self.covariance, dtype=float)}
         der = self.derived(camera)
+        if self.velocity_transverse_mps is not None:
+            d["velocity_transverse_mps"] = list(self.velocity_transverse_mps)
         if der is not None:
             d["speed_transverse_mps"] = der.speed_transverse_mps
             if self.covariance is not None:
@@ -219,6 +239,8 @@ class BallEstimate:
 
     def _world(self, der: Derived | None) -> dict[str, Any]:
         """The ``"world"`` object from :meth:`derived` of a camera with a pose (None: the motion is undetermined)."""
+        if der is not None and der.world_velocity_mps is None:
+            der = None  # vx and vy alone: no world velocity without vz
         w: dict[str, Any] = {
             "position_m": None if der is None else der.world_position_m,
             "velocity_mps": None if der is None else der.world_velocity_mps,

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 
-__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "direction_jacobian", "launch_angles", "world_covariance"]
+__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "derive_transverse", "direction_jacobian", "launch_angles", "world_covariance"]
 
 #: The order of :attr:`BallEstimate.covariance`'s rows and columns (seconds, metres, m/s).
 COVARIANCE_PARAMETERS = ("t_c_s", "y0_m", "z0_m", "vx_mps", "vy_mps", "vz_mps")
@@ -177,3 +177,33 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
             azimuth_sigma_deg=azim_s,
         )
     return Derived(**out)
+
+
+def derive_transverse(velocity_xy_mps, covariance: np.ndarray | None) -> Derived:
+    """What ``vx`` and ``vy`` alone give, where the depth velocity ``vz`` is undetermined.
+
+    The speed across the optical axis ``|(vx, vy)|`` and ``psi_y = atan2(vy,
+    vx)``, with their sigmas from the ``vx``, ``vy`` block of ``covariance``
+    (the marginal one: it holds ``vz``'s share through the fit's
+    correlations); ``psi_z``, the correlations with the speed and the world
+    frame (which need ``vz``) are NaN or None.
+
+    Parameters
+    ----------
+    velocity_xy_mps : (2,) array-like
+        ``(vx, vy)``, camera frame, m/s.
+    covariance : ndarray (6, 6) or None
+        Of :data:`COVARIANCE_PARAMETERS` (NaN in ``vz``'s row and column), or
+        None for no sigmas.
+    """
+    vx, vy = (float(v) for v in velocity_xy_mps)
+    C = np.full((2, 2), np.nan) if covariance is None else np.asarray(covariance, dtype=float)[3:5, 3:5]
+    vt = math.hypot(vx, vy)
+    gt = np.array([vx, vy]) / vt if vt > 0 else np.full(2, np.nan)
+    return Derived(
+        speed_transverse_mps=vt,
+        speed_transverse_sigma_mps=_linear_sigma(gt, C),
+        direction_deg=np.array([math.degrees(math.atan2(vy, vx)), math.nan]),
+        direction_sigma_deg=np.array([math.degrees(_linear_sigma(_angle_jacobian(vx, vy), C)), math.nan]),
+        speed_direction_correlation=np.full(2, math.nan),
+    )
