@@ -477,6 +477,11 @@ def test_with_the_depth_velocity_undetermined_the_transverse_speed_is_still_meas
     assert doc["speed_transverse_sigma_mps"] > 0 and doc["direction_deg"][1] is None and doc["direction_sigma_deg"][1] is None
     table = format_table(EstimateReport("cut.png", (ball,)), CUT_CAM)
     assert "across axis" in table and "psi_z undetermined" in table
+    from ballscan.cli.stream import format_stream_line
+    from ballscan.stream.engine import StreamResult
+
+    line = format_stream_line(StreamResult(ball, "s", 0, (0, 1), (0, 1)), CUT_CAM)
+    assert "speed undetermined" in line and f"across axis {der.speed_transverse_mps:.2f}" in line and "psi_y" in line
 
 
 def test_a_transverse_velocity_goes_only_with_an_undetermined_velocity():
