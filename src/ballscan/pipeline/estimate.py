@@ -19,6 +19,7 @@ an :class:`~ballscan.pipeline.results.EstimateReport` with one
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from dataclasses import replace
@@ -33,7 +34,8 @@ from ..measure.defects import repaired_columns, repaired_image, stuck_columns
 from ..measure.robust import median
 from ..measure.images import LineImage, as_line_image
 from ..geometry.motion import PARAM_NAMES
-from ..solve.uncertainty import propagate, unfixed_parameters
+from ..solve.prior import ParameterPrior
+from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, propagate, unfixed_parameters
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
 from .plausibility import assess, check_radius
@@ -54,6 +56,7 @@ from .stages import (
     first_fit_stage,
     key_points_stage,
     pixel_fit_stage,
+    refit_with_prior,
     second_measurement_stage,
     shading_background,
     shading_stage,
@@ -178,6 +181,40 @@ def _shading_time(recipe: Recipe, first: FirstFit, shading: Shading | None, pixe
     return measured + pixel.time_s + final.time_attempts_s
 
 
+def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov: np.ndarray) -> tuple[tuple[float, float], np.ndarray]:
+    """``(vx, vy)`` of a fit whose depth velocity alone is undetermined, and the covariance whose ``vx``, ``vy`` block goes with them.
+
+    Along ``vz``'s flat direction the solver may stop anywhere, and ``vx``
+    follows it through their correlation.  The final fit is repeated from
+    its motion with ``vz = 0`` under the prior ``vz ~ N(0, (3 |(vx, vy)|)^2)``
+    (the scale beyond which ``vz`` counts as undetermined,
+    :data:`ballscan.solve.uncertainty.MAX_VELOCITY_SIGMA_RATIO` transverse
+    speeds of the key-point guess): ``vx`` and ``vy`` are taken where the
+    depth motion is plausible.  Their covariance is the wider, in the
+    transverse speed, of that fit's (the prior's range of ``vz`` included)
+    and the unconstrained fit's marginal one (the data's spread along
+    ``vz``'s flat direction).  ``vz`` itself stays undetermined.  Where the
+    repeated fit does not converge, the unconstrained fit's values and
+    covariance.
+    """
+    fit = final.fit
+    vx, vy, _ = guess_motion.velocity_mps
+    prior = ParameterPrior("vz_mps", 0.0, MAX_VELOCITY_SIGMA_RATIO * math.hypot(vx, vy))
+    m = fit.motion
+    start = BallMotion(m.radius_m, m.t_c_s, m.position_m, (m.velocity_mps[0], m.velocity_mps[1], 0.0), m.acceleration_mps2)
+    bound = refit_with_prior(ball, final, start, prior)
+    block = bound.covariance[3:5, 3:5]
+    if not bound.converged or not np.all(np.isfinite(np.diag(block))):
+        return tuple(fit.motion.velocity_mps[:2]), cov
+    v = np.asarray(bound.motion.velocity_mps[:2])
+    g = v / np.linalg.norm(v) if np.any(v) else np.array([1.0, 0.0])
+    out = cov.copy()
+    if g @ block @ g > g @ cov[3:5, 3:5] @ g:
+        out[3:5, :] = out[:, 3:5] = np.nan
+        out[3:5, 3:5] = block
+    return (float(v[0]), float(v[1])), out
+
+
 def _fit_estimate(
     ball: BallInput,
     flags: list[str],
@@ -218,11 +255,10 @@ def _fit_estimate(
     def keep(key: str, value):
         return None if key in undetermined else value
 
-    # the depth velocity alone undetermined (one camera's weak axis): vx and vy are still measured
     lost = set(fit.undetermined) | set(unfixed)
     transverse = None
     if "velocity_mps" in undetermined and lost & {"vx_mps", "vy_mps", "vz_mps"} == {"vz_mps"} and np.all(np.isfinite(np.diag(cov)[3:5])):
-        transverse = tuple(fit.motion.velocity_mps[:2])
+        transverse, cov = _transverse(ball, final, guess_motion, cov)
 
     law = final.shading
     return BallEstimate(

@@ -42,6 +42,7 @@ from ..measure.images import LineImage
 from ..measure.shading import LimbProfile, ShadingModel, ball_limb, shade_profile
 from ..solve.fit import FitResult, fit_motion
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
+from ..solve.prior import ParameterPrior
 from .background import full_background, refine_background
 from .recipe import Recipe
 
@@ -64,6 +65,7 @@ __all__ = [
     "pixel_fit_stage",
     "second_measurement_stage",
     "final_fit_stage",
+    "refit_with_prior",
     "stage_record",
 ]
 
@@ -565,6 +567,20 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
             # the adopted refit's own time is the final fit's (time_fit_s)
             return FinalFit("refit", fit_r, edges_r, limb_r.shading, time_refit_s=time.perf_counter() - t0 - fit_r.run_time_s)
     return FinalFit("edges", fit, edges, limb.shading, time_refit_s=time.perf_counter() - t0)
+
+
+#: The fit settings of each final path (:class:`FinalFit`), by the recipe's field name.
+_PATH_SETTINGS = {"pixels": "pixel_fit", "spread": "spread_fit", "edges": "edge_fit", "refit": "edge_fit", "first_edges": "edge_fit"}
+
+
+def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior: ParameterPrior) -> FitResult:
+    """The final fit again, on its own edges and settings, from ``start`` with a Gaussian ``prior`` on one parameter.
+
+    Where the image leaves a parameter undetermined (one camera's ``vz``),
+    the prior keeps it within a plausible range, so that the others are
+    taken where the motion is plausible (:mod:`ballscan.solve.prior`).
+    """
+    return fit_motion(ball.camera, final.edges, start, getattr(ball.recipe, _PATH_SETTINGS[final.path]), prior)
 
 
 # ------------------------------------------------------------------ the record

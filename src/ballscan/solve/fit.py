@@ -37,6 +37,7 @@ from ..measure.edges import EdgeMeasurements
 from ..model.averaged import ModelEdges
 from .problem import BlockState, FitProblem, ResidualBlock, Selection
 from .settings import FitSettings
+from .prior import ParameterPrior, WithPrior
 from .solver import SolveResult, levenberg_marquardt, scipy_least_squares
 from .uncertainty import covariance_from_jacobian, residual_scale
 
@@ -132,6 +133,7 @@ def fit_motion(
     edges: EdgeMeasurements,
     initial: BallMotion,
     settings: FitSettings = FitSettings(),
+    prior: ParameterPrior | None = None,
 ) -> FitResult:
     """Fit the averaged-silhouette model to one ball's edge measurements (Eq. (7)-(10)).
 
@@ -145,6 +147,9 @@ def fit_motion(
         Starting point (e.g. the paper's key-point guess, Eq. (3)-(7)); its
         radius and known acceleration are kept fixed.
     settings : FitSettings
+    prior : ParameterPrior or None
+        A Gaussian prior on one parameter, one more residual of the fit
+        (:mod:`ballscan.solve.prior`); its covariance holds it too.
 
     Returns
     -------
@@ -153,10 +158,10 @@ def fit_motion(
         parameters the image cannot determine and ``converged`` is False when
         the optimiser did not converge.
     """
-    return fit_blocks((ResidualBlock(camera, edges),), initial, settings)
+    return fit_blocks((ResidualBlock(camera, edges),), initial, settings, prior)
 
 
-def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings()) -> FitResult:
+def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(), prior: ParameterPrior | None = None) -> FitResult:
     """Fit the motion shared by residual blocks (one per camera) to their measurements (Eq. (7)-(10)).
 
     Parameters
@@ -167,6 +172,8 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
     initial : BallMotion
         Starting point; its radius and known acceleration are kept fixed.
     settings : FitSettings
+    prior : ParameterPrior or None
+        As :func:`fit_motion`'s.
 
     Returns
     -------
@@ -192,7 +199,7 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
     if n_pairs < settings.min_edge_lines or sum(s.n_residuals for s in sels) <= 6 + int(fit_b):
         return _degenerate_result(initial, n_pairs, settings, sels, t0)
     x0 = np.concatenate([theta0, [0.0]]) if fit_b else theta0.copy()
-    rounds = _solve_rounds(states, sels, x0, level_partial, settings)
+    rounds = _solve_rounds(states, sels, x0, level_partial, settings, prior)
     sol = rounds.solution
     if level_partial and sol is not None:
         # an unfinished levelled solve (J^T r != 0) would mix its own step into the test's
@@ -201,7 +208,7 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
             # the fit with those lines loose, from the start (its outlier
             # rounds and its path along the weak V.z direction would
             # otherwise depend on the levelled fit's)
-            loose = fit_blocks(blocks, initial, replace(settings, area_partial_check=0.0))
+            loose = fit_blocks(blocks, initial, replace(settings, area_partial_check=0.0), prior)
             n_iter = loose.n_iterations + rounds.n_evaluations
             return replace(loose, n_iterations=n_iter, run_time_s=time.perf_counter() - t0, partial_verdict=verdict)
     if sol is None:
@@ -239,9 +246,11 @@ def _select_all(states, theta: np.ndarray, level_partial: bool) -> tuple[Selecti
     return tuple(st.select(theta, level_partial) for st in states)
 
 
-def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings) -> SolveResult:
-    """One solve of the stacked problem at the selections ``sels`` from ``x``."""
+def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings, prior: ParameterPrior | None) -> SolveResult:
+    """One solve of the stacked problem at the selections ``sels`` from ``x`` (with the prior's residual last)."""
     problem = FitProblem(states, sels, fit_bias=len(x) == 7)
+    if prior is not None:
+        problem = WithPrior(problem, prior)
     if settings.solver == "scipy":
         scale = states[0].scale
         x_scale = np.concatenate([scale, [0.05]]) if len(x) == 7 else scale
@@ -249,12 +258,12 @@ def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings) -> Sol
     return levenberg_marquardt(problem, x, settings, start=problem.start(), loss=loss)
 
 
-def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: FitSettings) -> _Rounds:
+def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: FitSettings, prior: ParameterPrior | None = None) -> _Rounds:
     """(Optionally a robust fit first, then) least squares, rejection of outlying edges, re-selection and refit until nothing changes."""
     n_total = n_rejected = 0
     sol, solved = None, ()
     if settings.robust_first:
-        sol, solved = _solve(states, sels, x, settings.loss, settings), sels
+        sol, solved = _solve(states, sels, x, settings.loss, settings, prior), sels
         x, n_total = sol.x, n_total + sol.n_evaluations
         sels = _select_all(states, x[:6], level_partial)
     for rnd in range(max(settings.max_reject_rounds, 0) + 1):
@@ -262,7 +271,7 @@ def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: Fi
             sels = _select_all(states, x[:6], level_partial)
         if sum(s.n_line_pairs for s in sels) < settings.min_edge_lines:
             break
-        sol, solved = _solve(states, sels, x, "linear", settings), sels
+        sol, solved = _solve(states, sels, x, "linear", settings, prior), sels
         x, n_total = sol.x, n_total + sol.n_evaluations
         if rnd == settings.max_reject_rounds or settings.reject_sigma <= 0:
             break

@@ -1,0 +1,85 @@
+"""A Gaussian prior on one motion parameter, as one more whitened residual of a fitting problem.
+
+A prior ``p ~ N(mean, sigma^2)`` on the parameter ``p`` of
+:data:`ballscan.geometry.motion.PARAM_NAMES` adds the residual ``(p - mean)
+/ sigma`` to the least squares of Eq. (9) and the row ``e_p / sigma`` to its
+Jacobian, so the fit's covariance holds it too.  Its use: keeping a
+parameter that the image leaves undetermined (one camera's depth velocity
+``vz``) within a stated plausible range, so that the others are taken
+where the motion is plausible instead of wherever the flat direction led
+the solver.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry.motion import PARAM_NAMES
+
+__all__ = ["ParameterPrior", "WithPrior"]
+
+
+@dataclass(frozen=True)
+class ParameterPrior:
+    """``name ~ N(mean, sigma^2)``, in the parameter's units (s, m or m/s).
+
+    Attributes
+    ----------
+    name : str
+        One of :data:`ballscan.geometry.motion.PARAM_NAMES`.
+    mean : float
+    sigma : float
+        Positive and finite.
+    """
+
+    name: str
+    mean: float
+    sigma: float
+
+    def __post_init__(self) -> None:
+        if self.name not in PARAM_NAMES:
+            raise ValueError(f"ParameterPrior.name: one of {PARAM_NAMES}, got {self.name!r}")
+        if not (isinstance(self.mean, (int, float)) and math.isfinite(self.mean)):
+            raise ValueError(f"ParameterPrior.mean: a finite number, got {self.mean!r}")
+        if not (isinstance(self.sigma, (int, float)) and math.isfinite(self.sigma) and self.sigma > 0):
+            raise ValueError(f"ParameterPrior.sigma: a finite number > 0, got {self.sigma!r}")
+
+    @property
+    def index(self) -> int:
+        """The parameter's place in the fit's parameter vector."""
+        return PARAM_NAMES.index(self.name)
+
+
+class WithPrior:
+    """A :class:`ballscan.solve.problem.FitProblem` with the prior's residual as its last.
+
+    The problem's own residuals keep their places, so what slices them by
+    block (outlier rejection, the correlated runs) sees them unchanged.
+    """
+
+    def __init__(self, problem, prior: ParameterPrior) -> None:
+        self.problem = problem
+        self.prior = prior
+        self._jac = np.zeros(6 + int(problem.fit_bias))
+        self._jac[prior.index] = 1.0 / prior.sigma
+
+    def _residual(self, x: np.ndarray) -> float:
+        return (float(x[self.prior.index]) - self.prior.mean) / self.prior.sigma
+
+    def residuals(self, x: np.ndarray) -> np.ndarray:
+        return np.append(self.problem.residuals(x), self._residual(x))
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        return self.residuals_and_jacobian(x)[1]
+
+    def residuals_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        r, J = self.problem.residuals_and_jacobian(x)
+        return np.append(r, self._residual(x)), np.vstack([J, self._jac])
+
+    def start(self):
+        """The problem's ``start()`` with the prior's row (None where the problem has none)."""
+        s = self.problem.start()
+        return None if s is None else (None, np.vstack([s[1], self._jac]))

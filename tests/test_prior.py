@@ -1,0 +1,79 @@
+"""A Gaussian prior on one motion parameter (ballscan.solve.prior): its residual and Jacobian row, its pull on the fit, its share in the covariance."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscan.geometry.camera import LineScanCamera
+from ballscan.geometry.motion import BallMotion
+from ballscan.solve.fit import fit_motion
+from ballscan.solve.prior import ParameterPrior, WithPrior
+from ballscan.solve.synthetic import synthetic_edges
+
+CAM = LineScanCamera(2048, 4200.0, 1023.5, 70000.0, 1.2e-5)
+TRUTH = BallMotion(0.0335, 0.0017, (0, -0.08, 4.2), (44.5, 3.9, -5.5))
+
+
+@pytest.mark.parametrize(
+    "kw, word",
+    [(dict(name="vw_mps", mean=0.0, sigma=1.0), "name"), (dict(name="vz_mps", mean=math.nan, sigma=1.0), "mean"),
+     (dict(name="vz_mps", mean=0.0, sigma=0.0), "sigma"), (dict(name="vz_mps", mean=0.0, sigma=math.inf), "sigma")],
+)  # fmt: skip
+def test_a_prior_is_checked_at_construction(kw, word):
+    with pytest.raises(ValueError, match=f"ParameterPrior.{word}"):
+        ParameterPrior(**kw)
+
+
+class _Linear:
+    """``r = A x - b``: a problem whose Jacobian is known."""
+
+    fit_bias = False
+
+    def __init__(self, A, b):
+        self.A, self.b = A, b
+
+    def residuals(self, x):
+        return self.A @ x - self.b
+
+    def residuals_and_jacobian(self, x):
+        return self.residuals(x), self.A.copy()
+
+    def start(self):
+        return None, self.A.copy()
+
+
+def test_the_prior_is_one_more_residual_with_its_jacobian_row():
+    rng = np.random.default_rng(3)
+    inner = _Linear(rng.normal(size=(9, 6)), rng.normal(size=9))
+    p = WithPrior(inner, ParameterPrior("vz_mps", 2.0, 0.5))
+    x = rng.normal(size=6)
+    r, J = p.residuals_and_jacobian(x)
+    np.testing.assert_array_equal(r[:9], inner.residuals(x))
+    assert r[9] == pytest.approx((x[5] - 2.0) / 0.5)
+    h = 1e-6
+    fd = np.array([(p.residuals(x + h * e) - p.residuals(x - h * e)) / (2 * h) for e in np.eye(6)]).T
+    np.testing.assert_allclose(J, fd, atol=1e-8)
+    np.testing.assert_array_equal(p.start()[1], J)
+
+
+def test_a_tight_prior_pins_its_parameter_and_its_sigma():
+    e = synthetic_edges(CAM, TRUTH, 240, edge_sigma_px=0.02, seed=0)
+    start = BallMotion(TRUTH.radius_m, TRUTH.t_c_s, (0, -0.079, 4.25), (44.0, 3.8, -4.0))
+    free = fit_motion(CAM, e, start)
+    pinned = fit_motion(CAM, e, start, prior=ParameterPrior("vz_mps", 0.0, 1e-4))
+    assert abs(pinned.motion.velocity_mps[2]) < 1e-3
+    assert math.sqrt(pinned.covariance[5, 5]) < 1.1e-4
+    # the edges see vz = -5.5 m/s: held at 0 against them, the fit's residuals grow
+    assert abs(free.motion.velocity_mps[2] - TRUTH.velocity_mps[2]) < 3 * math.sqrt(free.covariance[5, 5])
+    assert pinned.chi2_red > free.chi2_red
+
+
+def test_a_wide_prior_leaves_a_determined_fit_as_it_was():
+    e = synthetic_edges(CAM, TRUTH, 240, edge_sigma_px=0.02, seed=1)
+    free = fit_motion(CAM, e, TRUTH)
+    wide = fit_motion(CAM, e, TRUTH, prior=ParameterPrior("vz_mps", 0.0, 1e4))
+    np.testing.assert_allclose(wide.motion.velocity_mps, free.motion.velocity_mps, rtol=1e-6, atol=1e-6)
+    np.testing.assert_allclose(np.sqrt(np.diag(wide.covariance)), np.sqrt(np.diag(free.covariance)), rtol=1e-3)
