@@ -301,6 +301,20 @@ def test_a_cut_ball_whose_depth_velocity_is_undetermined_keeps_its_transverse_sp
     assert row["transverse_only"] and row["z_vt"] < 3.0 and row["z_psi_y"] < 3.0, row
 
 
+@pytest.mark.parametrize("name, z_free", [("pv0066", 2.7), ("pv0210", 0.7)])
+def test_with_vz_undetermined_vx_and_vy_are_taken_under_the_prior_on_vz(name, z_free, capsys):
+    # pv0066: a golf ball cut by the first line, whose unconstrained fit stops with vz at -54 m/s
+    # for a true -0.5 and |(vx, vy)| 2.7 sigma off; pv0210: a defocused tennis ball whose prior
+    # fit's covariance is the wider one, so its vx, vy rows against the others are unknown
+    truth, balls = _estimate(name, capsys)
+    (ball,) = [b for b in balls if b.get("velocity_transverse_mps") is not None]
+    assert ball["transverse_fit"] == "prior" and ball["speed_mps"] is None
+    row = score.compare(ball, truth[0])
+    assert row["z_vt"] < min(1.0, z_free / 2) and row["z_psi_y"] < 3.0, row
+    if name == "pv0210":
+        assert ball["covariance"]["matrix"][3][:3] == [None] * 3 and ball["covariance"]["matrix"][3][3] > 0
+
+
 def test_a_defocused_ball(capsys):
     # pv0070: a plain ball behind a real aperture's focal blur, moving in depth, 16 bit
     truth, balls = _estimate("pv0070", capsys)

@@ -20,11 +20,16 @@ TRUTH = BallMotion(0.0335, 0.0017, (0, -0.08, 4.2), (44.5, 3.9, -5.5))
 @pytest.mark.parametrize(
     "kw, word",
     [(dict(name="vw_mps", mean=0.0, sigma=1.0), "name"), (dict(name="vz_mps", mean=math.nan, sigma=1.0), "mean"),
-     (dict(name="vz_mps", mean=0.0, sigma=0.0), "sigma"), (dict(name="vz_mps", mean=0.0, sigma=math.inf), "sigma")],
+     (dict(name="vz_mps", mean=0.0, sigma=0.0), "sigma"), (dict(name="vz_mps", mean=0.0, sigma=math.inf), "sigma"),
+     (dict(name="vz_mps", mean=True, sigma=1.0), "mean")],
 )  # fmt: skip
 def test_a_prior_is_checked_at_construction(kw, word):
     with pytest.raises(ValueError, match=f"ParameterPrior.{word}"):
         ParameterPrior(**kw)
+
+
+def test_numpy_numbers_make_a_prior():
+    assert ParameterPrior("vz_mps", np.float32(1.5), np.int64(2)).index == 5
 
 
 class _Linear:

@@ -181,8 +181,8 @@ def _shading_time(recipe: Recipe, first: FirstFit, shading: Shading | None, pixe
     return measured + pixel.time_s + final.time_attempts_s
 
 
-def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov: np.ndarray) -> tuple[tuple[float, float], np.ndarray]:
-    """``(vx, vy)`` of a fit whose depth velocity alone is undetermined, and the covariance whose ``vx``, ``vy`` block goes with them.
+def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov: np.ndarray) -> tuple[tuple[float, float], np.ndarray, str]:
+    """``(vx, vy)`` of a fit whose depth velocity alone is undetermined, the covariance that goes with them, and which fit gave them.
 
     Along ``vz``'s flat direction the solver may stop anywhere, and ``vx``
     follows it through their correlation.  The final fit is repeated from
@@ -190,12 +190,13 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov:
     (the scale beyond which ``vz`` counts as undetermined,
     :data:`ballscan.solve.uncertainty.MAX_VELOCITY_SIGMA_RATIO` transverse
     speeds of the key-point guess): ``vx`` and ``vy`` are taken where the
-    depth motion is plausible.  Their covariance is the wider, in the
-    transverse speed, of that fit's (the prior's range of ``vz`` included)
-    and the unconstrained fit's marginal one (the data's spread along
-    ``vz``'s flat direction).  ``vz`` itself stays undetermined.  Where the
-    repeated fit does not converge, the unconstrained fit's values and
-    covariance.
+    depth motion is plausible (``"prior"``).  Their covariance is the wider,
+    in the transverse speed, of that fit's (the prior's range of ``vz``
+    included; its ``vx``, ``vy`` rows against the others then unknown) and
+    the unconstrained fit's marginal one (the data's spread along ``vz``'s
+    flat direction; its rows kept).  ``vz`` itself stays undetermined.
+    Where the repeated fit does not converge, the unconstrained fit's
+    values and covariance (``"unconstrained"``).
     """
     fit = final.fit
     vx, vy, _ = guess_motion.velocity_mps
@@ -205,14 +206,14 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov:
     bound = refit_with_prior(ball, final, start, prior)
     block = bound.covariance[3:5, 3:5]
     if not bound.converged or not np.all(np.isfinite(np.diag(block))):
-        return tuple(fit.motion.velocity_mps[:2]), cov
+        return (float(m.velocity_mps[0]), float(m.velocity_mps[1])), cov, "unconstrained"
     v = np.asarray(bound.motion.velocity_mps[:2])
     g = v / np.linalg.norm(v) if np.any(v) else np.array([1.0, 0.0])
     out = cov.copy()
     if g @ block @ g > g @ cov[3:5, 3:5] @ g:
         out[3:5, :] = out[:, 3:5] = np.nan
         out[3:5, 3:5] = block
-    return (float(v[0]), float(v[1])), out
+    return (float(v[0]), float(v[1])), out, "prior"
 
 
 def _fit_estimate(
@@ -256,9 +257,10 @@ def _fit_estimate(
         return None if key in undetermined else value
 
     lost = set(fit.undetermined) | set(unfixed)
-    transverse = None
+    transverse, transverse_fit = None, {}
     if "velocity_mps" in undetermined and lost & {"vx_mps", "vy_mps", "vz_mps"} == {"vz_mps"} and np.all(np.isfinite(np.diag(cov)[3:5])):
-        transverse, cov = _transverse(ball, final, guess_motion, cov)
+        transverse, cov, source = _transverse(ball, final, guess_motion, cov)
+        transverse_fit = {"transverse_fit": source}
 
     law = final.shading
     return BallEstimate(
@@ -284,6 +286,7 @@ def _fit_estimate(
         fitted_edges=final.edges,
         pixel_limb=final.pixel_limb,
         extra={
+            **transverse_fit,
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,
             "iterations": fit.n_iterations,

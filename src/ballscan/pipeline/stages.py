@@ -569,8 +569,11 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
     return FinalFit("edges", fit, edges, limb.shading, time_refit_s=time.perf_counter() - t0)
 
 
-#: The fit settings of each final path (:class:`FinalFit`), by the recipe's field name.
+#: The fit settings of each final path (:class:`FinalFit`), by the recipe's field name
+#: (as :func:`final_fit_stage` and :func:`pixel_fit_stage` choose them).
 _PATH_SETTINGS = {"pixels": "pixel_fit", "spread": "spread_fit", "edges": "edge_fit", "refit": "edge_fit", "first_edges": "edge_fit"}
+#: Evaluations of the repeated fit of :func:`refit_with_prior`, in multiples of the path's own.
+PRIOR_REFIT_NFEV = 4
 
 
 def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior: ParameterPrior) -> FitResult:
@@ -579,8 +582,27 @@ def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior:
     Where the image leaves a parameter undetermined (one camera's ``vz``),
     the prior keeps it within a plausible range, so that the others are
     taken where the motion is plausible (:mod:`ballscan.solve.prior`).
+
+    Parameters
+    ----------
+    ball : BallInput
+        The ball's camera and recipe.
+    final : FinalFit
+        The fit repeated: its path's settings and its edges.
+    start : BallMotion
+        Where the repeated fit starts (s, m, m/s).
+    prior : ParameterPrior
+
+    Returns
+    -------
+    FitResult
+        Its solver may take :data:`PRIOR_REFIT_NFEV` times the path's
+        evaluations: a start held to the prior's mean lies far along the
+        flat direction from the fitted motion.
     """
-    return fit_motion(ball.camera, final.edges, start, getattr(ball.recipe, _PATH_SETTINGS[final.path]), prior)
+    settings = getattr(ball.recipe, _PATH_SETTINGS[final.path])
+    settings = replace(settings, max_nfev=PRIOR_REFIT_NFEV * settings.max_nfev)
+    return fit_motion(ball.camera, final.edges, start, settings, prior)
 
 
 # ------------------------------------------------------------------ the record

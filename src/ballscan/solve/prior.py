@@ -3,7 +3,9 @@
 A prior ``p ~ N(mean, sigma^2)`` on the parameter ``p`` of
 :data:`ballscan.geometry.motion.PARAM_NAMES` adds the residual ``(p - mean)
 / sigma`` to the least squares of Eq. (9) and the row ``e_p / sigma`` to its
-Jacobian, so the fit's covariance holds it too.  Its use: keeping a
+Jacobian, so the fit's covariance holds it too (scaled, as the data's
+information is, by the fit's covariance scale: a reduced chi-square above 1
+widens the prior's share alike).  Its use: keeping a
 parameter that the image leaves undetermined (one camera's depth velocity
 ``vz``) within a stated plausible range, so that the others are taken
 where the motion is plausible instead of wherever the flat direction led
@@ -13,6 +15,7 @@ the solver.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,8 +34,9 @@ class ParameterPrior:
     name : str
         One of :data:`ballscan.geometry.motion.PARAM_NAMES`.
     mean : float
+        The prior's centre, in the parameter's unit.
     sigma : float
-        Positive and finite.
+        Its standard deviation, same unit; positive and finite.
     """
 
     name: str
@@ -42,9 +46,9 @@ class ParameterPrior:
     def __post_init__(self) -> None:
         if self.name not in PARAM_NAMES:
             raise ValueError(f"ParameterPrior.name: one of {PARAM_NAMES}, got {self.name!r}")
-        if not (isinstance(self.mean, (int, float)) and math.isfinite(self.mean)):
+        if not (_real(self.mean) and math.isfinite(self.mean)):
             raise ValueError(f"ParameterPrior.mean: a finite number, got {self.mean!r}")
-        if not (isinstance(self.sigma, (int, float)) and math.isfinite(self.sigma) and self.sigma > 0):
+        if not (_real(self.sigma) and math.isfinite(self.sigma) and self.sigma > 0):
             raise ValueError(f"ParameterPrior.sigma: a finite number > 0, got {self.sigma!r}")
 
     @property
@@ -53,11 +57,24 @@ class ParameterPrior:
         return PARAM_NAMES.index(self.name)
 
 
+def _real(v) -> bool:
+    """A real number, numpy's included, that is not a bool."""
+    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+
+
 class WithPrior:
     """A :class:`ballscan.solve.problem.FitProblem` with the prior's residual as its last.
 
     The problem's own residuals keep their places, so what slices them by
     block (outlier rejection, the correlated runs) sees them unchanged.
+
+    Parameters
+    ----------
+    problem : FitProblem
+        Its ``residuals``, ``residuals_and_jacobian``, ``start`` and
+        ``fit_bias`` (the parameters: the six of ``PARAM_NAMES``, and the
+        edge bias after them when it is fitted).
+    prior : ParameterPrior
     """
 
     def __init__(self, problem, prior: ParameterPrior) -> None:
@@ -70,12 +87,15 @@ class WithPrior:
         return (float(x[self.prior.index]) - self.prior.mean) / self.prior.sigma
 
     def residuals(self, x: np.ndarray) -> np.ndarray:
+        """The problem's whitened residuals at ``x``, then ``(x_p - mean) / sigma``."""
         return np.append(self.problem.residuals(x), self._residual(x))
 
     def jacobian(self, x: np.ndarray) -> np.ndarray:
+        """Jacobian of :meth:`residuals` at ``x``: the problem's rows, then ``e_p / sigma``."""
         return self.residuals_and_jacobian(x)[1]
 
     def residuals_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`residuals` and :meth:`jacobian` at ``x`` in one call (the problem's own reuse kept)."""
         r, J = self.problem.residuals_and_jacobian(x)
         return np.append(r, self._residual(x)), np.vstack([J, self._jac])
 
