@@ -94,9 +94,7 @@ def compare(est: dict | None, tb: dict) -> dict:
     err = (est["speed_mps"] - s_true) / s_true
     row.update(measured=True, speed_err=err, flags=est.get("flags", []))
     v = tb["velocity_mps"]
-    vt_true = math.hypot(v[0], v[1])
-    vt = est.get("speed_transverse_mps")
-    row["transverse_err"] = (vt - vt_true) / vt_true if vt is not None and vt_true > 0 else None
+    row["transverse_err"] = _transverse_err(est, tb)
     ev, es = est.get("velocity_mps"), est.get("velocity_sigma_mps")
     ok_vz = ev is not None and es is not None and ev[2] is not None and es[2]
     row["z_vz"] = abs(ev[2] - v[2]) / es[2] if ok_vz else None
@@ -106,25 +104,32 @@ def compare(est: dict | None, tb: dict) -> dict:
         row["dir_err_deg"] = angle_deg(est["velocity_mps"], tb["velocity_mps"])
     except (TypeError, KeyError, IndexError):
         row["dir_err_deg"] = None
-    d, ds = est.get("direction_deg"), est.get("direction_sigma_deg")
-    true_d = (tb["direction_deg"]["psi_y"], tb["direction_deg"]["psi_z"])
-    for k, name in enumerate(("psi_y", "psi_z")):
-        ok = d is not None and ds is not None and d[k] is not None and ds[k]
-        row[f"z_{name}"] = abs(d[k] - true_d[k]) / ds[k] if ok else None
+    for name in ("psi_y", "psi_z"):
+        row[f"z_{name}"] = _z_angle(est, tb, name)
     return row
+
+
+def _transverse_err(est: dict, tb: dict) -> float | None:
+    """Relative error of the estimate's ``speed_transverse_mps`` (None where it has none)."""
+    v = tb["velocity_mps"]
+    vt_true, vt = math.hypot(v[0], v[1]), est.get("speed_transverse_mps")
+    return (vt - vt_true) / vt_true if vt is not None and vt_true > 0 else None
+
+
+def _z_angle(est: dict, tb: dict, name: str) -> float | None:
+    """|error| / reported sigma of the direction angle ``name`` (``psi_y`` or ``psi_z``; None where not reported)."""
+    k = ("psi_y", "psi_z").index(name)
+    d, ds = est.get("direction_deg"), est.get("direction_sigma_deg")
+    ok = d is not None and ds is not None and d[k] is not None and ds[k]
+    return abs(d[k] - tb["direction_deg"][name]) / ds[k] if ok else None
 
 
 def _transverse_only(est: dict, tb: dict) -> dict:
     """Errors of what an estimate whose depth velocity is undetermined still reports: ``|(vx, vy)|`` and ``psi_y``."""
     v = tb["velocity_mps"]
-    vt_true = math.hypot(v[0], v[1])
     vt, vt_sig = est["speed_transverse_mps"], est.get("speed_transverse_sigma_mps")
-    out = {"transverse_only": True, "transverse_err": (vt - vt_true) / vt_true if vt_true > 0 else None}
-    out["z_vt"] = abs(vt - vt_true) / vt_sig if vt_sig else None
-    d, ds = est.get("direction_deg"), est.get("direction_sigma_deg")
-    ok = d is not None and ds is not None and d[0] is not None and ds[0]
-    out["z_psi_y"] = abs(d[0] - tb["direction_deg"]["psi_y"]) / ds[0] if ok else None
-    return out
+    z_vt = abs(vt - math.hypot(v[0], v[1])) / vt_sig if vt_sig else None
+    return {"transverse_only": True, "transverse_err": _transverse_err(est, tb), "z_vt": z_vt, "z_psi_y": _z_angle(est, tb, "psi_y")}
 
 
 def score_scene(ballscan: str, scenes: Path, name: str) -> list[dict]:

@@ -256,9 +256,9 @@ def _fit_estimate(
     def keep(key: str, value):
         return None if key in undetermined else value
 
-    lost = set(fit.undetermined) | set(unfixed)
     transverse, transverse_fit = None, {}
-    if "velocity_mps" in undetermined and lost & {"vx_mps", "vy_mps", "vz_mps"} == {"vz_mps"} and np.all(np.isfinite(np.diag(cov)[3:5])):
+    if ({*fit.undetermined, *unfixed} & {"vx_mps", "vy_mps", "vz_mps"}) == {"vz_mps"}:
+        # the depth velocity alone undetermined (one camera's weak axis)
         transverse, cov, source = _transverse(ball, final, guess_motion, cov)
         transverse_fit = {"transverse_fit": source}
 

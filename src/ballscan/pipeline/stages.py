@@ -43,6 +43,7 @@ from ..measure.shading import LimbProfile, ShadingModel, ball_limb, shade_profil
 from ..solve.fit import FitResult, fit_motion
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
 from ..solve.prior import ParameterPrior
+from ..solve.settings import FitSettings
 from .background import full_background, refine_background
 from .recipe import Recipe
 
@@ -506,11 +507,14 @@ class FinalFit:
         (:func:`pixel_fit_refusal` None): the limb model its edges were
         measured with, from which the pixels of their windows can be fitted
         in their place (a rig's joint fit, :mod:`ballscan.pipeline.rig`).
+    settings : FitSettings
+        The settings ``fit`` was made with (the recipe's for its path).
     """
 
     path: FinalPath
     fit: FitResult
     edges: EdgeMeasurements
+    settings: FitSettings
     shading: ShadingModel | None = None
     time_attempts_s: float = 0.0
     time_refit_s: float = 0.0
@@ -531,7 +535,7 @@ def final_fit_stage(
     """
     recipe = ball.recipe
     if pixel.fit is not None and shading is not None:
-        return FinalFit("pixels", pixel.fit, pixel.edges, shading.limb.shading)
+        return FinalFit("pixels", pixel.fit, pixel.edges, recipe.pixel_fit, shading.limb.shading)
     t0 = time.perf_counter()
     shaded = None if second is None else _shaded_fit(ball, first, second)
     attempts_s = time.perf_counter() - t0
@@ -540,7 +544,7 @@ def final_fit_stage(
         return replace(shaded, time_attempts_s=attempts_s, pixel_limb=second.limb if uniform else None)
     start = first.start if recipe.shading and first.start is not None else guess.motion
     fit = fit_motion(ball.camera, first.edges, start, recipe.edge_fit)
-    return FinalFit("first_edges", fit, first.edges, None, attempts_s, 0.0 if shaded is None else shaded.time_refit_s)
+    return FinalFit("first_edges", fit, first.edges, recipe.edge_fit, None, attempts_s, 0.0 if shaded is None else shaded.time_refit_s)
 
 
 def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> FinalFit:
@@ -552,10 +556,10 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
         shaded = replace(edges, profile_shade=shade_profile(limb, edges))
         spread = fit_motion(camera, shaded, first.start, recipe.spread_fit)
         if spread.converged:
-            return FinalFit("spread", spread, shaded, limb.shading)
+            return FinalFit("spread", spread, shaded, recipe.spread_fit, limb.shading)
     fit = fit_motion(camera, edges, first.start, recipe.edge_fit)
     if not (recipe.refit_law and second.kind == "window" and fit.converged):
-        return FinalFit("edges", fit, edges, limb.shading)
+        return FinalFit("edges", fit, edges, recipe.edge_fit, limb.shading)
     # the law and the limb model again at the fitted motion (the guess's
     # normals are a pixel or so off), and the fit
     t0 = time.perf_counter()
@@ -565,13 +569,10 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
         fit_r = fit_motion(camera, edges_r, fit.motion, recipe.edge_fit)
         if fit_r.converged:
             # the adopted refit's own time is the final fit's (time_fit_s)
-            return FinalFit("refit", fit_r, edges_r, limb_r.shading, time_refit_s=time.perf_counter() - t0 - fit_r.run_time_s)
-    return FinalFit("edges", fit, edges, limb.shading, time_refit_s=time.perf_counter() - t0)
+            return FinalFit("refit", fit_r, edges_r, recipe.edge_fit, limb_r.shading, time_refit_s=time.perf_counter() - t0 - fit_r.run_time_s)
+    return FinalFit("edges", fit, edges, recipe.edge_fit, limb.shading, time_refit_s=time.perf_counter() - t0)
 
 
-#: The fit settings of each final path (:class:`FinalFit`), by the recipe's field name
-#: (as :func:`final_fit_stage` and :func:`pixel_fit_stage` choose them).
-_PATH_SETTINGS = {"pixels": "pixel_fit", "spread": "spread_fit", "edges": "edge_fit", "refit": "edge_fit", "first_edges": "edge_fit"}
 #: Evaluations of the repeated fit of :func:`refit_with_prior`, in multiples of the path's own.
 PRIOR_REFIT_NFEV = 4
 
@@ -588,7 +589,7 @@ def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior:
     ball : BallInput
         The ball's camera and recipe.
     final : FinalFit
-        The fit repeated: its path's settings and its edges.
+        The fit repeated: its settings and its edges.
     start : BallMotion
         Where the repeated fit starts (s, m, m/s).
     prior : ParameterPrior
@@ -600,8 +601,7 @@ def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior:
         evaluations: a start held to the prior's mean lies far along the
         flat direction from the fitted motion.
     """
-    settings = getattr(ball.recipe, _PATH_SETTINGS[final.path])
-    settings = replace(settings, max_nfev=PRIOR_REFIT_NFEV * settings.max_nfev)
+    settings = replace(final.settings, max_nfev=PRIOR_REFIT_NFEV * final.settings.max_nfev)
     return fit_motion(ball.camera, final.edges, start, settings, prior)
 
 

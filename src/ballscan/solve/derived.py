@@ -83,6 +83,13 @@ def _sigmas(C: np.ndarray) -> np.ndarray:
     return np.where(d >= 0, np.sqrt(np.abs(d)), np.nan)
 
 
+def _speed_across(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
+    """``|(vx, vy)|`` (m/s) and its 1-sigma from the ``vx``, ``vy`` covariance block ``C``."""
+    vt = math.hypot(vx, vy)
+    g = np.array([vx, vy]) / vt if vt > 0 else np.full(2, np.nan)
+    return vt, _linear_sigma(g, C)
+
+
 def _angle_jacobian(a: float, b: float) -> np.ndarray:
     """d atan2(b, a) / d(a, b), radians per unit."""
     den = a * a + b * b
@@ -146,8 +153,7 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
     V = np.asarray(velocity_mps, dtype=float)
     C = np.full((6, 6), np.nan) if covariance is None else np.asarray(covariance, dtype=float)
     Cv = C[3:, 3:]
-    vt = math.hypot(V[0], V[1])
-    gt = np.array([V[0], V[1], 0.0]) / vt if vt > 0 else np.full(3, np.nan)
+    vt, vt_sigma = _speed_across(V[0], V[1], Cv[:2, :2])
     Jd = direction_jacobian(V)
     Cd = Jd @ Cv @ Jd.T
     speed = float(np.linalg.norm(V))
@@ -156,7 +162,7 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
         corr = (Jd @ Cv @ g) / (np.sqrt(np.diag(Cd)) * _linear_sigma(g, Cv))
     out = dict(
         speed_transverse_mps=vt,
-        speed_transverse_sigma_mps=_linear_sigma(gt, Cv),
+        speed_transverse_sigma_mps=vt_sigma,
         direction_deg=np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])]),
         direction_sigma_deg=np.degrees(_sigmas(Cd)),
         speed_direction_correlation=np.clip(corr, -1.0, 1.0),
@@ -198,11 +204,10 @@ def derive_transverse(velocity_xy_mps, covariance: np.ndarray | None) -> Derived
     """
     vx, vy = (float(v) for v in velocity_xy_mps)
     C = np.full((2, 2), np.nan) if covariance is None else np.asarray(covariance, dtype=float)[3:5, 3:5]
-    vt = math.hypot(vx, vy)
-    gt = np.array([vx, vy]) / vt if vt > 0 else np.full(2, np.nan)
+    vt, vt_sigma = _speed_across(vx, vy, C)
     return Derived(
         speed_transverse_mps=vt,
-        speed_transverse_sigma_mps=_linear_sigma(gt, C),
+        speed_transverse_sigma_mps=vt_sigma,
         direction_deg=np.array([math.degrees(math.atan2(vy, vx)), math.nan]),
         direction_sigma_deg=np.array([math.degrees(_linear_sigma(_angle_jacobian(vx, vy), C)), math.nan]),
         speed_direction_correlation=np.full(2, math.nan),
