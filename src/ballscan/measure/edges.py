@@ -37,7 +37,7 @@ or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Sequence
 
 import numpy as np
@@ -51,7 +51,7 @@ from ._shading_kernels import limb_levels
 from ..errors import GeometryError
 from .robust import median, weighted_median
 
-__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "with_limb"]
+__all__ = ["EdgeMeasurements", "EdgeSettings", "measure_edges", "with_limb", "without_edges"]
 
 
 @dataclass(frozen=True)
@@ -662,6 +662,41 @@ def with_limb(
     if edges._pass is None:
         raise ValueError("edges: not made by measure_edges (no first pass to reuse)")
     return _finish(edges._pass, limb)
+
+
+def without_edges(edges: EdgeMeasurements, left: np.ndarray, right: np.ndarray) -> EdgeMeasurements:
+    """``edges`` with the given lines' left / right edges unusable (both windows), and their lines' areas too.
+
+    For edges known not to be the ball's limb (dark texture at the limb,
+    :func:`ballscan.solve.envelope.inward_edges`): such a line's area is
+    short by the same texture, so it does not become an end line whose
+    area the fit would use.  Later passes of :func:`with_limb` keep the
+    exclusion.
+
+    Parameters
+    ----------
+    edges : EdgeMeasurements
+        Made by :func:`measure_edges` without a ``limb``.
+    left, right : ndarray of bool (N,)
+        One flag per measured line.
+
+    Raises
+    ------
+    ValueError
+        If ``edges`` were not made by :func:`measure_edges`, or the flags
+        do not have one entry per line.
+    """
+    ps = edges._pass
+    if ps is None:
+        raise ValueError("edges: not made by measure_edges (no first pass to reuse)")
+    left, right = np.asarray(left, dtype=bool), np.asarray(right, dtype=bool)
+    n = ps.has_signal.size
+    if left.shape != (n,) or right.shape != (n,):
+        raise ValueError(f"left, right: need one flag per measured line ({n}), got {left.shape} and {right.shape}")
+    usable = ps.usable.copy()
+    for q, side in zip(ps.quarters, (left, right, left, right)):
+        usable[q] &= ~side
+    return _finish(replace(ps, usable=usable, spoiled=ps.spoiled | left | right), None)
 
 
 @dataclass(frozen=True)

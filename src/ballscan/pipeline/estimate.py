@@ -98,7 +98,8 @@ def estimate_region(
     ``record`` (:class:`~ballscan.pipeline.stages.StageRecord`) says which
     path they took, and ``extra`` repeats it for the JSON output
     (``shading_pass``, ``pixels``, ``edges``, ``column_gain_sigma``,
-    ``flat_fielded``, ``background_refined``, ``shading_refit``) with the
+    ``flat_fielded``, ``background_refined``, ``shading_refit``,
+    ``inward_edges``) with the
     run times (``time_initial_s``, ``time_edges_s``, ``time_shading_s``:
     the shading pass's own, ``time_fit_s``: the reported fit's).
     """
@@ -128,9 +129,10 @@ def estimate_region(
     if recipe.shading and shading is not None and shading.state == "built" and pixel.fit is None:
         second = second_measurement_stage(ball, first, shading)
     final = final_fit_stage(ball, guess, first, shading, pixel, second)
-    record = stage_record(recipe, shading, pixel, second, final)
+    record = stage_record(recipe, first, shading, pixel, second, final)
     t_shading = _shading_time(recipe, first, shading, pixel, second, final)
-    return _fit_estimate(ball, _guess_flags(detected, guess), initial, guess.motion, final, record, t0, t_init, first.time_edges_s, t_shading)
+    flags = _guess_flags(detected, guess) + (["texture_at_limb"] if first.n_inward else [])
+    return _fit_estimate(ball, flags, initial, guess.motion, final, record, t0, t_init, first.time_edges_s, t_shading)
 
 
 def _initial_estimate(guess: InitialGuess) -> BallEstimate:
@@ -309,6 +311,7 @@ def _fit_estimate(
             "flat_fielded": record.flat_fielded,
             "background_refined": record.background_refined,
             "shading_refit": record.shading_refit,
+            "inward_edges": record.inward_edges,
             "shading": None
             if law is None
             else {"ambient_dn": law.ambient_dn, "light_dn": list(law.light_dn), "residual_rms_dn": law.residual_rms_dn},

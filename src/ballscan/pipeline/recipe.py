@@ -23,7 +23,7 @@ ShadingStart = Literal["guess", "loose_fit"]
 METHODS: tuple[str, ...] = get_args(Method)
 SHADING_STARTS: tuple[str, ...] = get_args(ShadingStart)
 
-_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law")
+_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law", "limb_envelope")
 #: integer fields and their smallest allowed value
 _INTS = {
     "flat_field_min_columns": 0,
@@ -131,6 +131,11 @@ class Recipe:
         on the ball's interior.  Its ``pixels`` must be True.
     edge_fit : FitSettings
         The final fit of the edges (and end areas) where no pixel fit is used.
+    limb_envelope : bool
+        Leave out the model-free edges that lie inwards of the outer
+        envelope of the ball's edges (dark texture at the limb,
+        :func:`ballscan.solve.envelope.inward_edges`), found about a loose
+        fit of them all.
     """
 
     method: Method = "fit"
@@ -157,6 +162,7 @@ class Recipe:
     pixel_fit: FitSettings = FitSettings(pixels=True)
     spread_fit: FitSettings = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
     edge_fit: FitSettings = FitSettings()
+    limb_envelope: bool = True
 
     def changes(self) -> dict:
         """The fields that differ from ``Recipe()`` (the results' ``recipe`` key: empty for the default)."""

@@ -37,6 +37,7 @@ FLAGS = (
     "initial_degenerate",
     "not_converged",
     "degenerate",
+    "texture_at_limb",
     "not_a_ball",
     "implausible_radius",
     "implausible_speed",

@@ -34,13 +34,14 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 from ..measure.detection import BallRegion, Detection, region_background
-from ..measure.edges import EdgeMeasurements, measure_edges, with_limb
+from ..measure.edges import EdgeMeasurements, measure_edges, with_limb, without_edges
 from ..measure.matched import matched_edges
 from ..measure.robust import median
 from ..measure.flatfield import ColumnGains, column_gains, flat_fielded
 from ..measure.images import LineImage
 from ..measure.shading import LimbProfile, ShadingModel, ball_limb, shade_profile
 from ..solve.fit import FitResult, fit_motion
+from ..solve.envelope import trim_inward
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
 from ..solve.prior import ParameterPrior
 from ..solve.settings import FitSettings
@@ -215,6 +216,9 @@ class FirstFit:
         Whether the loose fit ran.
     time_edges_s, time_s : float
         Seconds of the edge measurement and of the loose fit.
+    n_inward : int
+        Edges left out as lying inwards of the edges' outer envelope
+        (``Recipe.limb_envelope``).
     """
 
     edges: EdgeMeasurements
@@ -223,6 +227,7 @@ class FirstFit:
     loose_fit: bool
     time_edges_s: float
     time_s: float
+    n_inward: int = 0
 
 
 def first_fit_stage(ball: BallInput, guess: InitialGuess) -> FirstFit:
@@ -238,12 +243,21 @@ def first_fit_stage(ball: BallInput, guess: InitialGuess) -> FirstFit:
     d = ball.detection
     edges = measure_edges(ball.image.data, ball.region, bg, d.noise_dn, ball.t_lines_s, saturation_dn=d.saturation_dn, others=ball.others, blind_columns=ball.blind_columns)
     t1 = time.perf_counter()
+    n_inward = 0
+    if recipe.limb_envelope:
+        edges, n_inward = _outer_edges(ball.camera, edges, guess.motion, recipe.loose_fit)
     start: BallMotion | None = guess.motion
     loose = (recipe.shading or recipe.pixels) and (guess.degenerate or recipe.shading_start == "loose_fit")
     if loose:
         first = fit_motion(ball.camera, edges, guess.motion, recipe.loose_fit)
         start = first.motion if first.converged else (None if guess.degenerate else guess.motion)
-    return FirstFit(edges=edges, background_dn=bg, start=start, loose_fit=loose, time_edges_s=t1 - t0, time_s=time.perf_counter() - t1)
+    return FirstFit(edges=edges, background_dn=bg, start=start, loose_fit=loose, time_edges_s=t1 - t0, time_s=time.perf_counter() - t1, n_inward=n_inward)
+
+
+def _outer_edges(camera: LineScanCamera, edges: EdgeMeasurements, guess: BallMotion, settings: FitSettings) -> tuple[EdgeMeasurements, int]:
+    """``edges`` without those inwards of their outer envelope (:func:`ballscan.solve.envelope.trim_inward`), and their number."""
+    inward = trim_inward(camera, edges, guess, settings)
+    return (without_edges(edges, inward.left, inward.right), inward.count) if inward.count else (edges, 0)
 
 
 # ----------------------------------------------------------------- 4. shading
@@ -631,6 +645,9 @@ class StageRecord:
         away from it, or every edge was (``Recipe.refined_background``).
     shading_refit : bool
         The refit at the fitted motion (``Recipe.refit_law``) is reported.
+    inward_edges : int
+        Model-free edges left out as lying inwards of the edges' outer
+        envelope (texture at the limb, :attr:`FirstFit.n_inward`).
     """
 
     shading_pass: ShadingPass
@@ -641,9 +658,12 @@ class StageRecord:
     flat_fielded: bool
     background_refined: bool
     shading_refit: bool
+    inward_edges: int = 0
 
 
-def stage_record(recipe: Recipe, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None, final: FinalFit) -> StageRecord:
+def stage_record(
+    recipe: Recipe, first: FirstFit, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None, final: FinalFit
+) -> StageRecord:
     """The record of a ball's stages (``shading`` None where neither the shading pass nor the pixel fit was asked for)."""
     if final.path == "first_edges":
         if shading is None or not recipe.shading:
@@ -668,4 +688,5 @@ def stage_record(recipe: Recipe, shading: Shading | None, pixel: PixelFit, secon
         flat_fielded=kind == "flat_fielded" and matched,
         background_refined=(kind in ("refined_background", "flat_fielded") and matched) or recipe.refined_background,
         shading_refit=final.path == "refit",
+        inward_edges=first.n_inward,
     )

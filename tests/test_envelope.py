@@ -1,0 +1,130 @@
+"""Edges pulled inside the silhouette by texture at the limb: the outer envelope finds them, and only them."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ballscan.geometry.camera import LineScanCamera, line_times
+from ballscan.geometry.motion import BallMotion
+from ballscan.measure.detection import detect
+from ballscan.measure.edges import measure_edges, without_edges
+from ballscan.measure.images import LineImage
+from ballscan.model.render import Appearance, SensorNoise, render
+from ballscan.pipeline.background import full_background
+from ballscan.solve.envelope import EnvelopeSettings, inward_edges, largest_jump_px, trim_inward
+from ballscan.solve.fit import fit_motion
+from ballscan.solve.synthetic import synthetic_edges
+
+CAMERA = LineScanCamera(width=512, focal_px=2000.0, principal_px=255.5, line_rate_hz=20000.0, exposure_s=2e-5)
+
+
+def _motion(vz: float = 0.0, vy: float = 0.3) -> BallMotion:
+    # a 20-px ball crossing in about 120 lines
+    return BallMotion(0.02, 0.003, (0.0, 0.0, 2.0), (6.5, vy, vz))
+
+
+def _panel(edges, first: int, last: int, depth_px: float, side: str = "left"):
+    """The edges of lines ``first:last`` moved inwards by up to ``depth_px``: a dark panel on the limb.
+
+    Its depth across the lines is a half ellipse, as a round panel's border
+    crossing the limb draws it: the edge jumps where the border meets it.
+    """
+    bump = np.zeros(edges.t_s.size)
+    k = np.arange(last - first) + 0.5
+    half = 0.5 * k.size
+    bump[first:last] = depth_px * np.sqrt(1.0 - ((k - half) / half) ** 2)
+    if side == "left":
+        return replace(edges, left_px=edges.left_px + bump), bump > 0
+    return replace(edges, right_px=edges.right_px - bump), bump > 0
+
+
+def test_a_clean_ball_loses_no_edge():
+    edges = synthetic_edges(CAMERA, _motion(vz=0.8), 160, edge_sigma_px=0.05, seed=1)
+    found = inward_edges(CAMERA, edges, _motion(vz=0.8))
+    assert found.count == 0
+    assert 0.03 < found.sigma_px < 0.08  # the edges' own noise
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_panel_at_the_limb_is_found_though_it_pulled_the_fit(side):
+    truth = _motion(vz=0.5)
+    clean = synthetic_edges(CAMERA, truth, 160, edge_sigma_px=0.05, seed=2)
+    inner = np.flatnonzero(clean.left_ok)
+    first = inner[0] + inner.size // 4
+    edges, bumped = _panel(clean, first, first + 40, 10.0, side)  # a football's panel
+    pulled = fit_motion(CAMERA, edges, truth)
+    assert abs(pulled.motion.velocity_mps[2] - truth.velocity_mps[2]) > 5.0  # the panel moves V.z by 25 sigma
+    # the passes about fits of the edges kept: the panel's deep edges, nothing else
+    found = trim_inward(CAMERA, edges, truth)  # from the key-point guess in the pipeline
+    flagged = found.left if side == "left" else found.right
+    other = found.right if side == "left" else found.left
+    depth = np.abs(edges.left_px - clean.left_px) + np.abs(edges.right_px - clean.right_px)
+    assert np.all(flagged[bumped & (depth > 0.5)]) and not np.any(flagged & ~bumped) and not other.any()
+    kept = replace(edges, left_ok=edges.left_ok & ~found.left, right_ok=edges.right_ok & ~found.right)
+    refit = fit_motion(CAMERA, kept, truth)  # the pipeline starts the later fits from the key-point guess
+    assert abs(refit.motion.velocity_mps[2] - truth.velocity_mps[2]) < 3.0 * np.sqrt(refit.covariance[5, 5])
+
+
+def test_a_stitch_at_the_limb_is_left_to_the_fit():
+    # 1 px over 20 lines: the edges stay within 0.2 px RMS of a fit of them all
+    truth = _motion(vz=0.5)
+    clean = synthetic_edges(CAMERA, truth, 160, edge_sigma_px=0.05, seed=2)
+    inner = np.flatnonzero(clean.left_ok)
+    edges, _ = _panel(clean, inner[0] + 30, inner[0] + 50, 1.0)
+    assert trim_inward(CAMERA, edges, truth).count == 0
+    assert trim_inward(CAMERA, edges, truth, settings=EnvelopeSettings(min_jump_px=0.1, min_rms_px=0.1)).count > 0
+
+
+@settings(max_examples=15, deadline=None)
+@given(vz=st.floats(-2.0, 2.0), vy=st.floats(-2.0, 2.0), seed=st.integers(0, 2**16))
+def test_no_clean_edge_is_flagged_whatever_the_motion(vz, vy, seed):
+    m = _motion(vz=vz, vy=vy)
+    edges = synthetic_edges(CAMERA, m, 200, edge_sigma_px=0.05, seed=seed)
+    assert inward_edges(CAMERA, edges, m).count == 0
+
+
+def test_jumps_of_a_clean_limb_and_of_a_panel():
+    clean = synthetic_edges(CAMERA, _motion(vz=0.8), 160, edge_sigma_px=0.05, seed=1)
+    assert largest_jump_px(clean) < 0.5  # noise and the limb's curvature
+    inner = np.flatnonzero(clean.left_ok)
+    edges, _ = _panel(clean, inner[0] + 30, inner[0] + 70, 10.0, "right")
+    assert largest_jump_px(edges) > 2.0
+
+
+def test_a_short_ball_is_not_checked():
+    fast = BallMotion(0.02, 0.0005, (0.0, 0.0, 2.0), (60.0, 0.0, 0.0))
+    edges = synthetic_edges(CAMERA, fast, 40, edge_sigma_px=0.05, seed=3)
+    found = inward_edges(CAMERA, edges, fast, EnvelopeSettings(min_lines=12))
+    assert found.count == 0 and np.isnan(found.sigma_px)
+
+
+@pytest.mark.parametrize("kw, name", [({"k_sigma": 0}, "k_sigma"), ({"floor_px": float("nan")}, "floor_px"), ({"max_rounds": 0}, "max_rounds"), ({"min_lines": 2.5}, "min_lines")])
+def test_settings_validated_by_name(kw, name):
+    with pytest.raises(ValueError, match=name):
+        EnvelopeSettings(**kw)
+
+
+def test_without_edges_leaves_the_lines_out_of_the_edges_and_the_areas():
+    m = _motion()
+    img = render(CAMERA, (m, Appearance()), 160, noise=SensorNoise(), seed=4).image
+    det = detect(LineImage(img, 1e9, 16, "render"))
+    edges = measure_edges(img, det.regions[0], full_background(det), det.noise_dn, line_times(CAMERA, img.shape[0]))
+    both = np.flatnonzero(edges.left_ok & edges.right_ok)
+    drop_l = np.zeros(edges.t_s.size, dtype=bool)
+    drop_r = np.zeros(edges.t_s.size, dtype=bool)
+    drop_l[both[10:20]] = True
+    drop_r[both[30:35]] = True
+    out = without_edges(edges, drop_l, drop_r)
+    assert not out.left_ok[drop_l].any() and not out.right_ok[drop_r].any()
+    assert not (out.left_wide_ok[drop_l].any() or out.right_wide_ok[drop_r].any())
+    assert not out.end_line[drop_l | drop_r].any()  # a texture-shortened line's area is not the ball's
+    untouched = ~(drop_l | drop_r)
+    np.testing.assert_array_equal(out.left_ok[untouched], edges.left_ok[untouched])
+    np.testing.assert_array_equal(out.left_px[untouched], edges.left_px[untouched])
+    with pytest.raises(ValueError, match="one flag per measured line"):
+        without_edges(edges, drop_l[:-1], drop_r)
