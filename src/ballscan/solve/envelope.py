@@ -63,6 +63,11 @@ class EnvelopeSettings:
         (second differences below a pixel on clean balls, noise included);
         a panel's border moves the edge by pixels at once.  Without a jump
         no fit is made, so a clean ball pays nothing.
+    dilate_lines : int
+        :func:`trim_inward` also leaves out the usable edges within this
+        many lines of one it found on the same side: where a panel's border
+        meets the limb the edge's error ramps up over a line or two, below
+        the trimming's threshold but not the fit's noise.
     min_rms_px : float
         Nor unless the first fit
         of all the edges leaves them this far off its limb (RMS, pixels):
@@ -83,6 +88,7 @@ class EnvelopeSettings:
     min_lines: int = 12
     min_chord: float = 0.5
     min_jump_px: float = 2.0
+    dilate_lines: int = 2
     min_rms_px: float = 2.0
     envelope_weight: float = 0.05
 
@@ -91,7 +97,7 @@ class EnvelopeSettings:
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v) and v > 0):
                 raise ValueError(f"EnvelopeSettings.{name}: must be a finite number > 0, got {v!r}")
-        for name, lo in (("max_rounds", 1), ("min_lines", 3)):
+        for name, lo in (("max_rounds", 1), ("min_lines", 3), ("dilate_lines", 0)):
             v = getattr(self, name)
             if not (isinstance(v, int) and not isinstance(v, bool) and v >= lo):
                 raise ValueError(f"EnvelopeSettings.{name}: must be an integer >= {lo}, got {v!r}")
@@ -227,6 +233,15 @@ def inward_edges(
     return InwardEdges(okL & ~keep[0], okR & ~keep[1], s, depth[0], depth[1])
 
 
+def _dilated(inward: InwardEdges, edges: EdgeMeasurements, lines: int) -> InwardEdges:
+    """``inward`` with the usable edges within ``lines`` lines of a flagged one on its side flagged too."""
+    if lines <= 0 or inward.count == 0:
+        return inward
+    k = np.ones(2 * lines + 1)
+    grow = [np.convolve(f.astype(float), k, mode="same") > 0 for f in (inward.left, inward.right)]
+    return replace(inward, left=grow[0] & edges.left_ok, right=grow[1] & edges.right_ok)
+
+
 def trim_inward(
     camera: LineScanCamera,
     edges: EdgeMeasurements,
@@ -256,7 +271,7 @@ def trim_inward(
         fit = fit_motion(camera, kept, start, fit_settings)
         if fit.undetermined or (k == 0 and not fit.residual_rms_px >= settings.min_rms_px):
             break
-        inward = inward_edges(camera, edges, fit.motion, settings, 2 if k == 0 else 0)
+        inward = _dilated(inward_edges(camera, edges, fit.motion, settings, 2 if k == 0 else 0), edges, settings.dilate_lines)
         if found is not None and np.array_equal(inward.left, found.left) and np.array_equal(inward.right, found.right):
             break
         found = inward
