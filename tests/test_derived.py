@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, derive, derive_transverse, world_covariance
+from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, derive, derive_transverse, direction_jacobian, direction_sigmas, world_covariance
 
 CAM = LineScanCamera(width=2048, focal_px=2500.0, principal_px=1023.5, line_rate_hz=70000.0)
 
@@ -103,7 +103,9 @@ def test_no_pose_no_world_frame():
 @given(st.floats(0.05, 60.0), st.floats(-30.0, 30.0), st.floats(-20.0, 20.0), st.integers(0, 2**31 - 1))
 def test_vx_vy_alone_give_what_the_whole_velocity_gives_across_the_axis(vx, vy, vz, seed):
     """``derive_transverse`` on (vx, vy) and a covariance whose vz row is unknown: the whole velocity's transverse speed and psi_y, with their sigmas."""
-    C = _covariance(np.random.default_rng(seed), [1e-4, 1e-3, 1e-2, 0.1, 0.3, 3.0])
+    # small sigmas: both angle sigmas are linear there (and differ where the weakest direction
+    # saturates an angle, each integrating along its own weakest direction)
+    C = _covariance(np.random.default_rng(seed), [1e-4, 1e-3, 1e-2, 0.1, 0.3, 3.0]) * 1e-8
     whole = derive(CAM, (0.0, 0.1, 4.0), (vx, vy, vz), C)
     lost = C.copy()
     lost[5, :] = lost[:, 5] = np.nan
@@ -111,6 +113,23 @@ def test_vx_vy_alone_give_what_the_whole_velocity_gives_across_the_axis(vx, vy, 
     assert part.speed_transverse_mps == pytest.approx(whole.speed_transverse_mps, rel=1e-12)
     assert part.speed_transverse_sigma_mps == pytest.approx(whole.speed_transverse_sigma_mps, rel=1e-9)
     assert part.direction_deg[0] == pytest.approx(whole.direction_deg[0], abs=1e-12)
-    assert part.direction_sigma_deg[0] == pytest.approx(whole.direction_sigma_deg[0], rel=1e-9)
+    assert part.direction_sigma_deg[0] == pytest.approx(whole.direction_sigma_deg[0], rel=1e-5)
     assert math.isnan(part.direction_deg[1]) and math.isnan(part.direction_sigma_deg[1])
     assert part.world_velocity_mps is None and np.all(np.isnan(part.speed_direction_correlation))
+
+
+@pytest.mark.parametrize("V, sig", [((5.42, 3.59, -30.9), (0.18, 1.8, 15.3)), ((0.5, 0.05, 2.0), (0.01, 0.01, 1.5)), ((30.0, 3.0, -1.0), (0.05, 0.05, 0.5))])
+def test_direction_sigmas_are_the_rms_error_over_the_velocities_the_covariance_allows(V, sig):
+    # pv0189 (report half): vz -30.9 +- 15.3 m/s against vx 5.4 gives psi_z -80 deg, whose linear
+    # sigma (5 deg) held the truth (+5 deg) at 17 sigma; the integrated one against Monte Carlo
+    rng = np.random.default_rng(7)
+    V = np.asarray(V)
+    R = np.diag(sig) @ np.array([[1.0, 0.3, 0.4], [0.3, 1.0, 0.9], [0.4, 0.9, 1.0]]) @ np.diag(sig)
+    draws = rng.multivariate_normal(V, R, 400_000)
+    d = np.stack([np.arctan2(draws[:, 1], draws[:, 0]) - math.atan2(V[1], V[0]), np.arctan2(draws[:, 2], draws[:, 0]) - math.atan2(V[2], V[0])], axis=1)
+    mc = np.sqrt(np.mean(np.angle(np.exp(1j * d)) ** 2, axis=0))
+    got = direction_sigmas(V, R)
+    linear = np.sqrt(np.diag(direction_jacobian(V) @ R @ direction_jacobian(V).T))
+    assert np.allclose(got, mc, rtol=0.15), (got, mc, linear)
+    if sig[2] < 1.0:
+        assert np.allclose(got, linear, rtol=0.02)  # small sigmas: the linear propagation

@@ -3,7 +3,8 @@
 Every quantity here is a function of the fitted parameters ``theta = (t_c,
 y0, z0, vx, vy, vz)`` (the dynamic sphere of Eq. (8), camera frame; the
 centre at ``t_c`` is ``(0, y0, z0)``) and its 6x6 covariance, propagated to
-first order (``J C J^T``).  The speed itself, with its bias correction, is
+first order (``J C J^T``), but the direction angles along the velocity
+covariance's weakest direction (:func:`direction_sigmas`).  The speed itself, with its bias correction, is
 :func:`ballscan.solve.uncertainty.propagate`'s.
 
 One line-scan camera measures ``vx`` and ``vy`` (across the optical axis)
@@ -21,12 +22,19 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 
-__all__ = ["COVARIANCE_PARAMETERS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "derive_transverse", "direction_jacobian", "launch_angles", "world_covariance"]
+__all__ = [
+    "COVARIANCE_PARAMETERS", "GH_NODES", "GH_WEIGHTS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "derive_transverse",
+    "direction_jacobian", "direction_sigmas", "launch_angles", "world_covariance",
+]
 
 #: The order of :attr:`BallEstimate.covariance`'s rows and columns (seconds, metres, m/s).
 COVARIANCE_PARAMETERS = ("t_c_s", "y0_m", "z0_m", "vx_mps", "vy_mps", "vz_mps")
 #: The order of the world frame's 7x7 covariance: the crossing time, the centre at it and the velocity.
 WORLD_COVARIANCE_PARAMETERS = ("t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps")
+#: Gauss-Hermite nodes and weights (24, of a standard normal) along the velocity covariance's weakest
+#: direction, where a quantity's error is not linear in the velocity's (the speed's, the angles').
+GH_NODES, GH_WEIGHTS = np.polynomial.hermite_e.hermegauss(24)
+GH_WEIGHTS = GH_WEIGHTS / GH_WEIGHTS.sum()
 
 
 @dataclass(frozen=True)
@@ -42,7 +50,8 @@ class Derived:
         ``psi_y = atan2(vy, vx)`` (towards the sensor's ``+y``) and
         ``psi_z = atan2(vz, vx)`` (towards the depth ``+z``), degrees.
     speed_direction_correlation : ndarray (2,)
-        Correlation of the speed (linearised, ``|V|``) with ``psi_y`` and ``psi_z``.
+        Correlation of the speed (linearised, ``|V|``) with ``psi_y`` and
+        ``psi_z`` (linearised too).
     world_position_m, world_velocity_mps : ndarray (3,) or None
         The centre at ``t_c`` and the velocity in the world frame (a camera
         with a pose), metres and m/s.
@@ -94,6 +103,41 @@ def _angle_jacobian(a: float, b: float) -> np.ndarray:
     """d atan2(b, a) / d(a, b), radians per unit."""
     den = a * a + b * b
     return np.array([-b / den, a / den]) if den > 0 else np.full(2, np.nan)
+
+
+def direction_sigmas(V: np.ndarray, Cv: np.ndarray) -> np.ndarray:
+    """RMS errors (2,) of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, radians, for a velocity ``V`` of covariance ``Cv`` (m/s).
+
+    Linear (``J C J^T``) in the two well-determined directions of ``Cv``;
+    along the weakest one (chiefly ``vz``) the angles' distance to the
+    reported ones is integrated over the velocities the measurement allows
+    (``V + a q``, ``a ~ N(0, lambda)``, 24 Gauss-Hermite nodes), as the
+    speed's error is (:func:`ballscan.solve.uncertainty.propagate`).  Where
+    that direction's sigma is comparable with ``vx`` an angle saturates
+    towards +-90 degrees and its linear sigma shrinks with ``vx / vz``,
+    while the true angle may lie anywhere down to 0: a linear sigma then
+    claims a few degrees for an angle open by tens.  For small sigmas the
+    two agree.  NaN where ``Cv`` is not finite.
+    """
+    return _angle_rms(np.asarray(V, dtype=float), np.asarray(Cv, dtype=float), ((0, 1), (0, 2)))
+
+
+def _angle_rms(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
+    """RMS errors of the angles ``atan2(V[b], V[a])`` for ``(a, b)`` in ``pairs`` (see :func:`direction_sigmas`), radians."""
+    if not np.all(np.isfinite(Cv)):
+        return np.full(len(pairs), np.nan)
+    lam, Q = np.linalg.eigh(Cv)
+    lam = np.maximum(lam, 0.0)
+    w = int(np.argmax(lam))
+    J = np.zeros((len(pairs), V.size))
+    for k, (a, b) in enumerate(pairs):
+        J[k, [a, b]] = _angle_jacobian(V[a], V[b])
+    along = J @ Q  # the angles' slopes along each eigen-direction
+    var_strong = np.sum(np.delete(along, w, axis=1) ** 2 * np.delete(lam, w), axis=1)
+    pts = V[None, :] + (math.sqrt(lam[w]) * GH_NODES)[:, None] * Q[:, w][None, :]
+    d = np.stack([np.arctan2(pts[:, b], pts[:, a]) - math.atan2(V[b], V[a]) for a, b in pairs], axis=1)
+    d = np.angle(np.exp(1j * d))  # wrapped to (-pi, pi]
+    return np.sqrt(var_strong + GH_WEIGHTS @ (d * d))
 
 
 def direction_jacobian(V: np.ndarray) -> np.ndarray:
@@ -164,7 +208,7 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
         speed_transverse_mps=vt,
         speed_transverse_sigma_mps=vt_sigma,
         direction_deg=np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])]),
-        direction_sigma_deg=np.degrees(_sigmas(Cd)),
+        direction_sigma_deg=np.degrees(direction_sigmas(V, Cv)),
         speed_direction_correlation=np.clip(corr, -1.0, 1.0),
     )
     if camera is not None and camera.has_pose:
@@ -209,6 +253,6 @@ def derive_transverse(velocity_xy_mps, covariance: np.ndarray | None) -> Derived
         speed_transverse_mps=vt,
         speed_transverse_sigma_mps=vt_sigma,
         direction_deg=np.array([math.degrees(math.atan2(vy, vx)), math.nan]),
-        direction_sigma_deg=np.array([math.degrees(_linear_sigma(_angle_jacobian(vx, vy), C)), math.nan]),
+        direction_sigma_deg=np.array([math.degrees(_angle_rms(np.array([vx, vy]), C, ((0, 1),))[0]), math.nan]),
         speed_direction_correlation=np.full(2, math.nan),
     )

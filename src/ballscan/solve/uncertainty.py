@@ -26,7 +26,7 @@ from ..compiled import as_arg
 from ._fit_kernels import block_ratio
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
-from .derived import direction_jacobian
+from .derived import GH_NODES, GH_WEIGHTS, direction_sigmas
 
 __all__ = ["MotionUncertainty", "covariance_from_jacobian", "param_scale", "propagate", "residual_scale", "unfixed_parameters"]
 
@@ -207,7 +207,9 @@ class MotionUncertainty:
         Centre at ``t_c`` and 1-sigma (x is 0 by definition, sigma 0).
     velocity_mps, velocity_sigma_mps : ndarray (3,)
     direction_deg, direction_sigma_deg : ndarray (2,)
-        ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, degrees.
+        ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, degrees;
+        the sigmas integrated along the weakest direction
+        (:func:`ballscan.solve.derived.direction_sigmas`).
     world_position_m, world_position_sigma_m, world_velocity_mps, world_velocity_sigma_mps : ndarray or None
         The same in the world frame (``camera.camera_to_world`` /
         ``vectors_to_world``) when the camera has a pose.
@@ -227,10 +229,6 @@ class MotionUncertainty:
     world_position_sigma_m: np.ndarray | None = None
     world_velocity_mps: np.ndarray | None = None
     world_velocity_sigma_mps: np.ndarray | None = None
-
-
-_GH_X, _GH_W = np.polynomial.hermite_e.hermegauss(24)
-_GH_W = _GH_W / _GH_W.sum()
 
 
 def _debiased_speed(V: np.ndarray, Cv: np.ndarray, at_truth: bool = False) -> tuple[float, float]:
@@ -267,18 +265,18 @@ def _debiased_speed(V: np.ndarray, Cv: np.ndarray, at_truth: bool = False) -> tu
         return speed, float(np.sum(lam))
     var_strong = float(np.sum(a[strong] ** 2 * lam[strong])) / denom
     mu = math.sqrt(sq[w])
-    draws = mu + math.sqrt(lam[w]) * _GH_X
+    draws = mu + math.sqrt(lam[w]) * GH_NODES
     if at_truth:
         # the estimator's error over new measurements of the truth mu
         est = np.sqrt(s_strong2 + np.maximum(draws * draws - lam[w], 0.0))
-        mse_weak = float(_GH_W @ (est - math.sqrt(s_strong2 + mu * mu)) ** 2)
+        mse_weak = float(GH_WEIGHTS @ (est - math.sqrt(s_strong2 + mu * mu)) ** 2)
     else:
         # this estimate's distance to the true speeds that the measurement
         # allows (weak component about mu within its sigma): taken at mu
         # alone, a measured component near 0 would claim the speed to the
         # linear term although the truth may lie a sigma out (a table-tennis
         # scene: errors of 4 sigma in 15 % of the noisy renders)
-        mse_weak = float(_GH_W @ (speed - np.sqrt(s_strong2 + draws * draws)) ** 2)
+        mse_weak = float(GH_WEIGHTS @ (speed - np.sqrt(s_strong2 + draws * draws)) ** 2)
     return speed, var_strong + mse_weak
 
 
@@ -307,8 +305,6 @@ def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray
     # position (0, y0, z0): x is exact by definition of t_c
     Cp = np.zeros((3, 3))
     Cp[1:, 1:] = C[1:3, 1:3]
-    Jd = direction_jacobian(V)
-    Cd = Jd @ Cv @ Jd.T
     out = dict(
         speed_mps=speed,
         speed_sigma_mps=math.sqrt(var_s) if var_s >= 0 else math.nan,
@@ -319,7 +315,7 @@ def propagate(camera: LineScanCamera, motion: BallMotion, covariance: np.ndarray
         velocity_mps=V,
         velocity_sigma_mps=np.sqrt(np.diag(Cv)),
         direction_deg=np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])]),
-        direction_sigma_deg=np.degrees(np.sqrt(np.diag(Cd))),
+        direction_sigma_deg=np.degrees(direction_sigmas(V, Cv)),
     )
     if camera.has_pose:
         Rm = camera.rotation_matrix
