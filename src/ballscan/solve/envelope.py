@@ -37,7 +37,7 @@ __all__ = ["EnvelopeSettings", "InwardEdges", "inward_edges", "largest_jump_px",
 
 @dataclass(frozen=True)
 class EnvelopeSettings:
-    """Tuning of :func:`inward_edges`.
+    """Tuning of :func:`inward_edges` and :func:`trim_inward`.
 
     Attributes
     ----------
@@ -69,17 +69,15 @@ class EnvelopeSettings:
         meets the limb the edge's error ramps up over a line or two, below
         the trimming's threshold but not the fit's noise.
     min_rms_px : float
-        Nor unless the first fit
-        of all the edges leaves them this far off its limb (RMS, pixels):
-        a sphere's edges lie within tenths of a pixel of it, shaded and
-        textured ones included, and a panel at the limb puts them pixels
-        away.  Below it the fit's own outlier rejection handles the odd
-        stitch or seam, and trimming its shallower neighbours would only
-        take information away.
+        Nor unless the first fit of all the edges leaves them this far off
+        its limb (RMS, pixels): a sphere's edges lie within tenths of a
+        pixel of it, shaded and textured ones included, and a panel at the
+        limb puts them pixels away.  Below it the fit's own outlier
+        rejection handles the odd stitch or seam, and trimming its
+        shallower neighbours would only take information away.
     envelope_weight : float
         Weight of the points inside the outer curve in its asymmetric
         least squares (the others weigh ``1 - envelope_weight``).
-
     """
 
     k_sigma: float = 3.0
@@ -113,16 +111,11 @@ class InwardEdges:
         Usable edges lying inwards of the envelope.
     sigma_px : float
         Robust sigma of the kept edges about the envelope, pixels (NaN where not checked).
-    left_depth_px, right_depth_px : ndarray (N,) or None
-        How far each checked edge lies inwards of the envelope, pixels (NaN
-        where not checked; None where nothing was).
     """
 
     left: np.ndarray
     right: np.ndarray
     sigma_px: float
-    left_depth_px: np.ndarray | None = None
-    right_depth_px: np.ndarray | None = None
 
     @property
     def count(self) -> int:
@@ -229,8 +222,7 @@ def inward_edges(
         if all(np.array_equal(a, b) for a, b in zip(new, keep)):
             break
         keep = new
-    depth = [np.where(ok[k], dev[k], np.nan) for k in range(2)]
-    return InwardEdges(okL & ~keep[0], okR & ~keep[1], s, depth[0], depth[1])
+    return InwardEdges(okL & ~keep[0], okR & ~keep[1], s)
 
 
 def _dilated(inward: InwardEdges, edges: EdgeMeasurements, lines: int) -> InwardEdges:
@@ -263,10 +255,12 @@ def trim_inward(
     are looked for where no edge jumps (``settings.min_jump_px``) or the
     first fit leaves the edges within ``settings.min_rms_px`` of its limb.
     """
+    n = edges.t_s.size
+    none = InwardEdges(np.zeros(n, dtype=bool), np.zeros(n, dtype=bool), float("nan"))
+    if largest_jump_px(edges, settings.min_chord) < settings.min_jump_px:
+        return none
     found = None
     kept = edges
-    if largest_jump_px(edges, settings.min_chord) < settings.min_jump_px:
-        passes = 0
     for k in range(passes):
         fit = fit_motion(camera, kept, start, fit_settings)
         if fit.undetermined or (k == 0 and not fit.residual_rms_px >= settings.min_rms_px):
@@ -276,7 +270,4 @@ def trim_inward(
             break
         found = inward
         kept = replace(edges, left_ok=edges.left_ok & ~inward.left, right_ok=edges.right_ok & ~inward.right)
-    if found is None:
-        n = edges.t_s.size
-        return InwardEdges(np.zeros(n, dtype=bool), np.zeros(n, dtype=bool), float("nan"))
-    return found
+    return found if found is not None else none
