@@ -131,3 +131,25 @@ def test_without_edges_leaves_the_lines_out_of_the_edges_and_the_areas():
     np.testing.assert_array_equal(out.left_px[untouched], edges.left_px[untouched])
     with pytest.raises(ValueError, match="one flag per measured line"):
         without_edges(edges, drop_l[:-1], drop_r)
+
+
+def test_the_recipe_switch_on_a_panelled_football():
+    # pv0192 (POV-Ray set): with the envelope off, the panels' edges are fitted and the speed is
+    # 805 % off; on, they are left out and flagged (the default; tests/test_povray_set.py scores it)
+    import json
+    from pathlib import Path
+
+    from ballscan.geometry.camera import load_camera
+    from ballscan.measure.images import load_image
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.pipeline.recipe import Recipe
+
+    scenes = Path(__file__).resolve().parents[1] / "benchmarks" / "povray_set" / "scenes"
+    truth = json.loads((scenes / "pv0192.truth.json").read_text())
+    img, cam = load_image(scenes / "pv0192.png"), load_camera(scenes / "pv0192.camera.toml")
+    speeds = {}
+    for on in (False, True):
+        (ball,) = [b for b in estimate_image(img, cam, truth["radius_m"], recipe=Recipe(limb_envelope=on)).balls if b.speed_mps is not None]
+        assert ("texture_at_limb" in ball.flags) == on and (ball.extra["inward_edges"] > 0) == on
+        speeds[on] = ball.speed_mps
+    assert speeds[False] > 5 * truth["speed_mps"] and abs(speeds[True] / truth["speed_mps"] - 1) < 0.05
