@@ -99,6 +99,21 @@ def test_jumps_of_a_clean_limb_and_of_a_panel():
     assert largest_jump_px(edges) > 2.0
 
 
+def test_found_edges_grow_by_their_border_lines_even_on_few_lines():
+    from ballscan.solve.envelope import InwardEdges, _dilated
+
+    edges = synthetic_edges(CAMERA, _motion(), 160, edge_sigma_px=0.05, seed=1)
+    n = edges.t_s.size
+    found = np.zeros(n, dtype=bool)
+    i = int(np.flatnonzero(edges.left_ok)[20])
+    found[i] = True
+    grown = _dilated(InwardEdges(found, np.zeros(n, dtype=bool), 0.1), edges, 2)
+    assert np.flatnonzero(grown.left).tolist() == [i - 2, i - 1, i, i + 1, i + 2] and not grown.right.any()
+    few = replace(edges, t_s=edges.t_s[:5], left_ok=np.ones(5, dtype=bool), right_ok=np.ones(5, dtype=bool))
+    one = np.array([False, False, True, False, False])
+    assert _dilated(InwardEdges(one, np.zeros(5, dtype=bool), 0.1), few, 6).left.all()  # a kernel longer than the lines
+
+
 def test_a_short_ball_is_not_checked():
     fast = BallMotion(0.02, 0.0005, (0.0, 0.0, 2.0), (60.0, 0.0, 0.0))
     edges = synthetic_edges(CAMERA, fast, 40, edge_sigma_px=0.05, seed=3)
@@ -126,6 +141,17 @@ def test_without_edges_leaves_the_lines_out_of_the_edges_and_the_areas():
     assert not out.left_ok[drop_l].any() and not out.right_ok[drop_r].any()
     assert not (out.left_wide_ok[drop_l].any() or out.right_wide_ok[drop_r].any())
     assert not out.end_line[drop_l | drop_r].any()  # a texture-shortened line's area is not the ball's
+    # nor does the fit take it as a line beside the ball, where both its edges are out
+    from ballscan.model.averaged import ModelEdges, averaged_model
+    from ballscan.solve.problem import select_lines_of
+    from ballscan.solve.settings import FitSettings
+
+    both = without_edges(edges, drop_l, drop_l | drop_r)
+    me = averaged_model(CAMERA, m.to_params()[None, :], m.radius_m, both.t_s)
+    me = ModelEdges(me.left_px[0], me.right_px[0], me.presence[0], me.area_px[0], me.spread_px[0], me.valid[0])
+    use_area = select_lines_of(both, me, FitSettings())[2]
+    assert both.area_excluded[drop_l | drop_r].all() and not use_area[drop_l | drop_r].any()
+    assert use_area[~(drop_l | drop_r)].any()  # the lines beside the ball still count
     untouched = ~(drop_l | drop_r)
     np.testing.assert_array_equal(out.left_ok[untouched], edges.left_ok[untouched])
     np.testing.assert_array_equal(out.left_px[untouched], edges.left_px[untouched])

@@ -282,6 +282,9 @@ class EdgeMeasurements:
         The narrow-window edges that :func:`ballscan.measure.matched.matched_edges` measured (the fit
         gives them ``FitSettings.matched_floor_px`` instead of
         ``edge_floor_px``); None: none (see :attr:`edges_method`).
+    area_excluded : ndarray of bool or None
+        Lines whose area the fit must not use although the ball is on them
+        (their edges left out by :func:`without_edges`); None: none.
     """
 
     lines: np.ndarray
@@ -317,6 +320,7 @@ class EdgeMeasurements:
     profile_shade: np.ndarray | None = None
     left_matched: np.ndarray | None = None
     right_matched: np.ndarray | None = None
+    area_excluded: np.ndarray | None = None
     # the first pass's intermediates, for with_limb (None: not made by measure_edges)
     _pass: _EdgePass | None = field(default=None, compare=False, repr=False)
 
@@ -380,6 +384,7 @@ class _EdgePass:
     run_ok: np.ndarray
     spoiled: np.ndarray
     common: _Unchanged
+    excluded: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -665,18 +670,19 @@ def with_limb(
 
 
 def without_edges(edges: EdgeMeasurements, left: np.ndarray, right: np.ndarray) -> EdgeMeasurements:
-    """``edges`` with the given lines' left / right edges unusable (both windows), and their lines' areas too.
+    """``edges`` with the given lines' left / right edges unusable (both windows), and those lines' areas kept out of the fit.
 
     For edges known not to be the ball's limb (dark texture at the limb,
-    :func:`ballscan.solve.envelope.inward_edges`): such a line's area is
-    short by the same texture, so it does not become an end line whose
-    area the fit would use.  Later passes of :func:`with_limb` keep the
-    exclusion.
+    :func:`ballscan.solve.envelope.trim_inward`): such a line's area is
+    short by the same texture, so it neither becomes an end line nor counts
+    as a line beside the ball (:attr:`EdgeMeasurements.area_excluded`).
+    Later passes of :func:`with_limb` keep the exclusion.
 
     Parameters
     ----------
     edges : EdgeMeasurements
-        Made by :func:`measure_edges` without a ``limb``.
+        Made by :func:`measure_edges` without a ``limb`` (a limb's levels
+        are not kept: pass :func:`with_limb` the result instead).
     left, right : ndarray of bool (N,)
         One flag per measured line.
 
@@ -696,7 +702,8 @@ def without_edges(edges: EdgeMeasurements, left: np.ndarray, right: np.ndarray) 
     usable = ps.usable.copy()
     for q, side in zip(ps.quarters, (left, right, left, right)):
         usable[q] &= ~side
-    return _finish(replace(ps, usable=usable, spoiled=ps.spoiled | left | right), None)
+    before = ps.excluded if ps.excluded is not None else np.zeros(n, dtype=bool)
+    return _finish(replace(ps, usable=usable, spoiled=ps.spoiled | left | right, excluded=before | left | right), None)
 
 
 @dataclass(frozen=True)
@@ -1119,6 +1126,7 @@ def _finish(ps: _EdgePass, limb: Callable[..., tuple[np.ndarray, np.ndarray]] | 
         right_wide_ok=okRw,
         area_level=area_level,
         area_level_sigma=area_level_sigma,
+        area_excluded=ps.excluded,
         _pass=ps,
         **vars(ps.common),
     )

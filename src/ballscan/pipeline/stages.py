@@ -41,7 +41,7 @@ from ..measure.flatfield import ColumnGains, column_gains, flat_fielded
 from ..measure.images import LineImage
 from ..measure.shading import LimbProfile, ShadingModel, ball_limb, shade_profile
 from ..solve.fit import FitResult, fit_motion
-from ..solve.envelope import trim_inward
+from ..solve.envelope import InwardEdges, trim_inward
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
 from ..solve.prior import ParameterPrior
 from ..solve.settings import FitSettings
@@ -216,9 +216,9 @@ class FirstFit:
         Whether the loose fit ran.
     time_edges_s, time_s : float
         Seconds of the edge measurement and of the loose fit.
-    n_inward : int
-        Edges left out as lying inwards of the edges' outer envelope
-        (``Recipe.limb_envelope``).
+    inward : InwardEdges or None
+        The edges left out as lying inwards of the edges' outer envelope
+        (``Recipe.limb_envelope``; None: not looked for).
     """
 
     edges: EdgeMeasurements
@@ -227,7 +227,12 @@ class FirstFit:
     loose_fit: bool
     time_edges_s: float
     time_s: float
-    n_inward: int = 0
+    inward: InwardEdges | None = None
+
+    @property
+    def n_inward(self) -> int:
+        """Edges left out as lying inwards of the outer envelope (0 where none)."""
+        return 0 if self.inward is None else self.inward.count
 
 
 def first_fit_stage(ball: BallInput, guess: InitialGuess) -> FirstFit:
@@ -243,21 +248,19 @@ def first_fit_stage(ball: BallInput, guess: InitialGuess) -> FirstFit:
     d = ball.detection
     edges = measure_edges(ball.image.data, ball.region, bg, d.noise_dn, ball.t_lines_s, saturation_dn=d.saturation_dn, others=ball.others, blind_columns=ball.blind_columns)
     t1 = time.perf_counter()
-    n_inward = 0
-    if recipe.limb_envelope:
-        edges, n_inward = _outer_edges(ball.camera, edges, guess.motion, recipe.loose_fit)
+    inward = trim_inward(ball.camera, edges, guess.motion, recipe.loose_fit) if recipe.limb_envelope else None
+    edges = _without_inward(edges, inward)
     start: BallMotion | None = guess.motion
     loose = (recipe.shading or recipe.pixels) and (guess.degenerate or recipe.shading_start == "loose_fit")
     if loose:
         first = fit_motion(ball.camera, edges, guess.motion, recipe.loose_fit)
         start = first.motion if first.converged else (None if guess.degenerate else guess.motion)
-    return FirstFit(edges=edges, background_dn=bg, start=start, loose_fit=loose, time_edges_s=t1 - t0, time_s=time.perf_counter() - t1, n_inward=n_inward)
+    return FirstFit(edges=edges, background_dn=bg, start=start, loose_fit=loose, time_edges_s=t1 - t0, time_s=time.perf_counter() - t1, inward=inward)
 
 
-def _outer_edges(camera: LineScanCamera, edges: EdgeMeasurements, guess: BallMotion, settings: FitSettings) -> tuple[EdgeMeasurements, int]:
-    """``edges`` without those inwards of their outer envelope (:func:`ballscan.solve.envelope.trim_inward`), and their number."""
-    inward = trim_inward(camera, edges, guess, settings)
-    return (without_edges(edges, inward.left, inward.right), inward.count) if inward.count else (edges, 0)
+def _without_inward(edges: EdgeMeasurements, inward: InwardEdges | None) -> EdgeMeasurements:
+    """``edges`` (measured on the ball's lines) without the edges ``inward`` found (:func:`ballscan.solve.envelope.trim_inward`)."""
+    return without_edges(edges, inward.left, inward.right) if inward is not None and inward.count else edges
 
 
 # ----------------------------------------------------------------- 4. shading
@@ -419,16 +422,16 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
     # NaN (a ball too small to tell) is not flat-fielded
     if math.isfinite(sigma) and sigma <= recipe.matched_max_gain_sigma:
         if long_ball:
-            found = _flat_fielded_matched(ball, first.start, divide_gains=False)
+            found = _flat_fielded_matched(ball, first, divide_gains=False)
         if found is None:
             m = matched_edges(edges, shading.limb)
             found = SecondMeasurement("matched", m, shading.limb) if m is not edges else None
     elif recipe.flat_field and math.isfinite(sigma) and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
-        found = _flat_fielded_matched(ball, first.start, divide_gains=True)
+        found = _flat_fielded_matched(ball, first, divide_gains=True)
     return replace(found or window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
 
 
-def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool) -> SecondMeasurement | None:
+def _flat_fielded_matched(ball: BallInput, first: FirstFit, divide_gains: bool) -> SecondMeasurement | None:
     """Matched edges measured on the ball's columns' background away from it, with its measured column gains divided out, or None.
 
     Both on the background of the ball's columns measured away from it
@@ -438,9 +441,11 @@ def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool
     background are divided out of the ball's lines
     (:func:`ballscan.measure.flatfield.flat_fielded`), and each matched
     edge's sigma gets the gain error that remains in its edge pixel
-    (:func:`_with_gain_errors`).  The edges, the shading model and the
-    matched edges are measured again on that image.  None where the ball
-    then fails the pixel model's condition or no edge matched.
+    (:func:`_with_gain_errors`).  The edges (without those ``first`` left
+    out as texture at the limb), the shading model and the matched edges
+    are measured again on that image, the shading at ``first.start``.
+    None where the ball then fails the pixel model's condition or no edge
+    matched.
     """
     image, detection, region, recipe = ball.image, ball.detection, ball.region, ball.recipe
     bg = full_background(refine_background(image.data, detection, region, recipe=recipe))
@@ -452,6 +457,8 @@ def _flat_fielded_matched(ball: BallInput, start: BallMotion, divide_gains: bool
             return None
         data = flat_fielded(image.data, bg, gains, region.lines, detection.saturation_dn)
     edges = measure_edges(data, region, bg, detection.noise_dn, ball.t_lines_s, saturation_dn=detection.saturation_dn, others=ball.others, blind_columns=ball.blind_columns)
+    edges = _without_inward(edges, first.inward)
+    start = first.start
     limb = ball_limb(ball.camera, start, data, edges, ball.t_lines_s, bg, level_samples=recipe.level_samples)
     if limb is None:
         return None

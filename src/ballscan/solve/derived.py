@@ -35,6 +35,12 @@ WORLD_COVARIANCE_PARAMETERS = ("t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps",
 #: direction, where a quantity's error is not linear in the velocity's (the speed's, the angles').
 GH_NODES, GH_WEIGHTS = np.polynomial.hermite_e.hermegauss(24)
 GH_WEIGHTS = GH_WEIGHTS / GH_WEIGHTS.sum()
+#: Gauss-Hermite nodes per eigen-direction of the angles' product grid (:func:`direction_sigmas`).
+ANGLE_NODES = 10
+_ANGLE_X, _ANGLE_W = np.polynomial.hermite_e.hermegauss(ANGLE_NODES)
+_ANGLE_W = _ANGLE_W / _ANGLE_W.sum()
+for _a in (GH_NODES, GH_WEIGHTS, _ANGLE_X, _ANGLE_W):
+    _a.flags.writeable = False
 
 
 @dataclass(frozen=True)
@@ -108,12 +114,11 @@ def _angle_jacobian(a: float, b: float) -> np.ndarray:
 def direction_sigmas(V: np.ndarray, Cv: np.ndarray) -> np.ndarray:
     """RMS errors (2,) of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, radians, for a velocity ``V`` of covariance ``Cv`` (m/s).
 
-    Linear (``J C J^T``) in the two well-determined directions of ``Cv``;
-    along the weakest one (chiefly ``vz``) the angles' distance to the
-    reported ones is integrated over the velocities the measurement allows
-    (``V + a q``, ``a ~ N(0, lambda)``, 24 Gauss-Hermite nodes), as the
-    speed's error is (:func:`ballscan.solve.uncertainty.propagate`).  Where
-    that direction's sigma is comparable with ``vx`` an angle saturates
+    The angles' distance to the reported ones integrated over the
+    velocities the measurement allows (``V ~ N(V, Cv)``, a Gauss-Hermite
+    product grid), as the speed's error is along its weakest direction
+    (:func:`ballscan.solve.uncertainty.propagate`).  Where the weakest
+    direction's sigma (chiefly ``vz``'s) is comparable with ``vx`` an angle saturates
     towards +-90 degrees and its linear sigma shrinks with ``vx / vz``,
     while the true angle may lie anywhere down to 0: a linear sigma then
     claims a few degrees for an angle open by tens.  For small sigmas the
@@ -123,21 +128,23 @@ def direction_sigmas(V: np.ndarray, Cv: np.ndarray) -> np.ndarray:
 
 
 def _angle_rms(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
-    """RMS errors of the angles ``atan2(V[b], V[a])`` for ``(a, b)`` in ``pairs`` (see :func:`direction_sigmas`), radians."""
+    """RMS errors of the angles ``atan2(V[b], V[a])`` for ``(a, b)`` in ``pairs`` (see :func:`direction_sigmas`), radians.
+
+    A Gauss-Hermite product grid (:data:`ANGLE_NODES` per eigen-direction of
+    ``Cv``) over the whole normal distribution: no direction is singled out,
+    so the result is continuous where two eigenvalues cross.
+    """
     if not np.all(np.isfinite(Cv)):
         return np.full(len(pairs), np.nan)
     lam, Q = np.linalg.eigh(Cv)
-    lam = np.maximum(lam, 0.0)
-    w = int(np.argmax(lam))
-    J = np.zeros((len(pairs), V.size))
-    for k, (a, b) in enumerate(pairs):
-        J[k, [a, b]] = _angle_jacobian(V[a], V[b])
-    along = J @ Q  # the angles' slopes along each eigen-direction
-    var_strong = np.sum(np.delete(along, w, axis=1) ** 2 * np.delete(lam, w), axis=1)
-    pts = V[None, :] + (math.sqrt(lam[w]) * GH_NODES)[:, None] * Q[:, w][None, :]
+    scale = Q * np.sqrt(np.maximum(lam, 0.0))  # columns: one sigma along each eigen-direction
+    n = V.size
+    grids = np.meshgrid(*([_ANGLE_X] * n), indexing="ij")
+    weights = np.prod(np.meshgrid(*([_ANGLE_W] * n), indexing="ij"), axis=0).ravel()
+    pts = V[None, :] + np.stack([g.ravel() for g in grids], axis=1) @ scale.T
     d = np.stack([np.arctan2(pts[:, b], pts[:, a]) - math.atan2(V[b], V[a]) for a, b in pairs], axis=1)
     d = np.angle(np.exp(1j * d))  # wrapped to (-pi, pi]
-    return np.sqrt(var_strong + GH_WEIGHTS @ (d * d))
+    return np.sqrt(weights @ (d * d))
 
 
 def direction_jacobian(V: np.ndarray) -> np.ndarray:

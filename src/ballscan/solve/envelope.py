@@ -152,7 +152,7 @@ def _outer_curve(tt: np.ndarray, y: np.ndarray, use: np.ndarray, weight: float, 
     """
     x, v = tt[use], y[use]
     w = np.ones(x.size)
-    c = np.polyfit(x, v, degree)
+    c = np.zeros(degree + 1)
     for _ in range(rounds):
         c = np.polyfit(x, v, degree, w=np.sqrt(w))
         new = np.where(v > np.polyval(c, x), weight, 1.0 - weight)
@@ -210,12 +210,14 @@ def inward_edges(
         keep.append(ok[k] & ~(dev > 2.0 * settings.floor_px + settings.k_sigma * sig[k]))
     s = float("nan")
     for _ in range(settings.max_rounds):
-        dev = []
-        for k in range(2):
-            if keep[k].sum() < 3:
-                return none
-            dev.append(resid[k] - np.polyval(np.polyfit(tt[keep[k]], resid[k][keep[k]], degree), tt))
-        kept_dev = np.concatenate([dev[0][keep[0]], dev[1][keep[1]]])
+        # a side with too few edges left keeps them (no curve to trim about)
+        dev = [
+            resid[k] - np.polyval(np.polyfit(tt[keep[k]], resid[k][keep[k]], degree), tt) if keep[k].sum() > degree + 2 else np.full(tt.size, -np.inf)
+            for k in range(2)
+        ]
+        kept_dev = np.concatenate([dev[k][keep[k] & np.isfinite(dev[k])] for k in range(2)])
+        if kept_dev.size < 3:
+            break
         s = 1.4826 * float(median(np.abs(kept_dev - median(kept_dev))))
         limit = [np.maximum(max(settings.k_sigma * s, settings.floor_px), settings.k_sigma * sig[k]) for k in range(2)]
         new = [keep[k] & ~(dev[k] > limit[k]) for k in range(2)]
@@ -230,7 +232,8 @@ def _dilated(inward: InwardEdges, edges: EdgeMeasurements, lines: int) -> Inward
     if lines <= 0 or inward.count == 0:
         return inward
     k = np.ones(2 * lines + 1)
-    grow = [np.convolve(f.astype(float), k, mode="same") > 0 for f in (inward.left, inward.right)]
+    n = inward.left.size
+    grow = [np.convolve(f.astype(float), k)[lines : lines + n] > 0 for f in (inward.left, inward.right)]
     return replace(inward, left=grow[0] & edges.left_ok, right=grow[1] & edges.right_ok)
 
 
@@ -269,5 +272,7 @@ def trim_inward(
         if found is not None and np.array_equal(inward.left, found.left) and np.array_equal(inward.right, found.right):
             break
         found = inward
-        kept = replace(edges, left_ok=edges.left_ok & ~inward.left, right_ok=edges.right_ok & ~inward.right)
+        out = inward.left | inward.right
+        area_out = out if edges.area_excluded is None else edges.area_excluded | out
+        kept = replace(edges, left_ok=edges.left_ok & ~inward.left, right_ok=edges.right_ok & ~inward.right, area_excluded=area_out)
     return found if found is not None else none

@@ -313,8 +313,8 @@ def select_lines_of(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettin
     ``max_spread_px`` (the narrow window's edges) or up to
     ``max_spread_wide_px`` (the wide window's); area lines: no usable edge,
     and the line's area is not spoiled (``edges.end_line``), or no signal at
-    all (lines around the ball).  Returns ``(use_l, use_r, use_a, wide_l,
-    wide_r)``; one compiled pass (:func:`ballscan.solve._fit_kernels.select_lines`).
+    all (lines around the ball), never ``edges.area_excluded``.  Returns
+    ``(use_l, use_r, use_a, wide_l, wide_r)``; one compiled pass (:func:`ballscan.solve._fit_kernels.select_lines`).
     """
     wide = edges.left_wide_px is not None and settings.max_spread_wide_px > settings.max_spread_px
     e = edges
@@ -324,11 +324,14 @@ def select_lines_of(edges: EdgeMeasurements, me: ModelEdges, settings: FitSettin
         wl_ok, wr_ok, wl, wr = e.left_wide_ok, e.right_wide_ok, e.left_wide_px, e.right_wide_px
     else:
         wl_ok, wr_ok, wl, wr = e.left_ok, e.right_ok, e.left_px, e.right_px
-    return select_lines(
+    use_l, use_r, use_a, wide_l, wide_r = select_lines(
         as_arg(me.presence), masks[0], as_arg(me.spread_px), masks[1], masks[2], as_arg(e.left_px), as_arg(e.right_px), masks[3],
         wide, as_arg(wl_ok, np.bool_), as_arg(wr_ok, np.bool_), as_arg(wl), as_arg(wr),
         float(settings.max_spread_px), float(settings.max_spread_wide_px), bool(settings.end_line_areas),
     )
+    if e.area_excluded is not None:
+        use_a &= ~e.area_excluded
+    return use_l, use_r, use_a, wide_l, wide_r
 
 
 def beyond_sensor(me: ModelEdges, width_px: int, margin_px: float = 1.0) -> np.ndarray:
