@@ -639,7 +639,8 @@ def with_limb(
     """The edges of :func:`measure_edges` measured again with another profile model.
 
     Equal to calling :func:`measure_edges` with the same arguments as for
-    ``edges`` and ``limb=limb`` (bit for bit), but only the inner levels and
+    ``edges`` and ``limb=limb`` (bit for bit; edges that :func:`without_edges`
+    left out stay out), but only the inner levels and
     what follows from them are recomputed: the profile, the rough edges, the
     windows' sums, the level runs and the noise model of ``edges`` are
     reused (the fields that do not depend on ``limb``, e.g. ``profile``,

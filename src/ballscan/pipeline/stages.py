@@ -215,7 +215,8 @@ class FirstFit:
     loose_fit : bool
         Whether the loose fit ran.
     time_edges_s, time_s : float
-        Seconds of the edge measurement and of the loose fit.
+        Seconds of the edge measurement, and of the loose fits (the
+        envelope's and the shading start's).
     inward : InwardEdges or None
         The edges left out as lying inwards of the edges' outer envelope
         (``Recipe.limb_envelope``; None: not looked for).
