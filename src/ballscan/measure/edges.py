@@ -683,28 +683,31 @@ def without_edges(edges: EdgeMeasurements, left: np.ndarray, right: np.ndarray) 
     ----------
     edges : EdgeMeasurements
         Made by :func:`measure_edges` without a ``limb`` (a limb's levels
-        are not kept: pass :func:`with_limb` the result instead).
+        are not kept: pass :func:`with_limb` the result instead), or built
+        directly (e.g. :func:`ballscan.solve.synthetic.synthetic_edges`:
+        then only the usability flags and the lines' areas change).
     left, right : ndarray of bool (N,)
         One flag per measured line.
 
     Raises
     ------
     ValueError
-        If ``edges`` were not made by :func:`measure_edges`, or the flags
-        do not have one entry per line.
+        If the flags do not have one entry per line.
     """
-    ps = edges._pass
-    if ps is None:
-        raise ValueError("edges: not made by measure_edges (no first pass to reuse)")
     left, right = np.asarray(left, dtype=bool), np.asarray(right, dtype=bool)
-    n = ps.has_signal.size
+    n = edges.t_s.size
     if left.shape != (n,) or right.shape != (n,):
         raise ValueError(f"left, right: need one flag per measured line ({n}), got {left.shape} and {right.shape}")
+    out = left | right
+    excluded = out if edges.area_excluded is None else edges.area_excluded | out
+    ps = edges._pass
+    if ps is None:
+        wide = {} if edges.left_wide_ok is None else {"left_wide_ok": edges.left_wide_ok & ~left, "right_wide_ok": edges.right_wide_ok & ~right}
+        return replace(edges, left_ok=edges.left_ok & ~left, right_ok=edges.right_ok & ~right, end_line=edges.end_line & ~out, area_excluded=excluded, **wide)
     usable = ps.usable.copy()
     for q, side in zip(ps.quarters, (left, right, left, right)):
         usable[q] &= ~side
-    before = ps.excluded if ps.excluded is not None else np.zeros(n, dtype=bool)
-    return _finish(replace(ps, usable=usable, spoiled=ps.spoiled | left | right, excluded=before | left | right), None)
+    return _finish(replace(ps, usable=usable, spoiled=ps.spoiled | out, excluded=excluded), None)
 
 
 @dataclass(frozen=True)

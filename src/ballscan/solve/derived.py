@@ -3,8 +3,9 @@
 Every quantity here is a function of the fitted parameters ``theta = (t_c,
 y0, z0, vx, vy, vz)`` (the dynamic sphere of Eq. (8), camera frame; the
 centre at ``t_c`` is ``(0, y0, z0)``) and its 6x6 covariance, propagated to
-first order (``J C J^T``), but the direction angles along the velocity
-covariance's weakest direction (:func:`direction_sigmas`).  The speed itself, with its bias correction, is
+first order (``J C J^T``), but the direction angles' sigmas, integrated
+over the velocity's whole covariance (:func:`direction_sigmas`).  The speed
+itself, with its bias correction, is
 :func:`ballscan.solve.uncertainty.propagate`'s.
 
 One line-scan camera measures ``vx`` and ``vy`` (across the optical axis)
@@ -37,9 +38,19 @@ GH_NODES, GH_WEIGHTS = np.polynomial.hermite_e.hermegauss(24)
 GH_WEIGHTS = GH_WEIGHTS / GH_WEIGHTS.sum()
 #: Gauss-Hermite nodes per eigen-direction of the angles' product grid (:func:`direction_sigmas`).
 ANGLE_NODES = 10
-_ANGLE_X, _ANGLE_W = np.polynomial.hermite_e.hermegauss(ANGLE_NODES)
-_ANGLE_W = _ANGLE_W / _ANGLE_W.sum()
-for _a in (GH_NODES, GH_WEIGHTS, _ANGLE_X, _ANGLE_W):
+
+
+def _product_grid(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The ``ANGLE_NODES ** n`` points (rows) and weights of the standard normal's Gauss-Hermite product grid in ``n`` dimensions."""
+    x, w = np.polynomial.hermite_e.hermegauss(ANGLE_NODES)
+    points = np.stack([g.ravel() for g in np.meshgrid(*([x] * n), indexing="ij")], axis=1)
+    weights = np.prod(np.meshgrid(*([w / w.sum()] * n), indexing="ij"), axis=0).ravel()
+    return points, weights
+
+
+# made once: (vx, vy) and (vx, vy, vz)
+_GRIDS = {n: _product_grid(n) for n in (2, 3)}
+for _a in (GH_NODES, GH_WEIGHTS, *_GRIDS[2], *_GRIDS[3]):
     _a.flags.writeable = False
 
 
@@ -138,12 +149,10 @@ def _angle_rms(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
         return np.full(len(pairs), np.nan)
     lam, Q = np.linalg.eigh(Cv)
     scale = Q * np.sqrt(np.maximum(lam, 0.0))  # columns: one sigma along each eigen-direction
-    n = V.size
-    grids = np.meshgrid(*([_ANGLE_X] * n), indexing="ij")
-    weights = np.prod(np.meshgrid(*([_ANGLE_W] * n), indexing="ij"), axis=0).ravel()
-    pts = V[None, :] + np.stack([g.ravel() for g in grids], axis=1) @ scale.T
+    points, weights = _GRIDS[V.size]
+    pts = V[None, :] + points @ scale.T
     d = np.stack([np.arctan2(pts[:, b], pts[:, a]) - math.atan2(V[b], V[a]) for a, b in pairs], axis=1)
-    d = np.angle(np.exp(1j * d))  # wrapped to (-pi, pi]
+    d = (d + math.pi) % (2.0 * math.pi) - math.pi  # wrapped to [-pi, pi)
     return np.sqrt(weights @ (d * d))
 
 

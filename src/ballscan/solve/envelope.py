@@ -26,7 +26,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
-from ..measure.edges import EdgeMeasurements
+from ..measure.edges import EdgeMeasurements, without_edges
 from ..measure.robust import median
 from ..model.averaged import averaged_model
 from .fit import fit_motion
@@ -203,7 +203,10 @@ def inward_edges(
     tt = (edges.t_s - edges.t_s[okL | okR].mean()) / span
     sig = (np.nan_to_num(edges.left_sigma_px), np.nan_to_num(edges.right_sigma_px))
     # the outer envelope first: the runs far inside it go before the
-    # symmetric trimming, whose robust sigma they would otherwise widen
+    # symmetric trimming, whose robust sigma they would otherwise widen;
+    # the curve hugs the outer edges, so a clean edge lies up to its noise
+    # (k_sigma of its sigma) and the model's error (a floor) inside it, and
+    # twice the floor keeps those
     keep = []
     for k in range(2):
         dev = resid[k] - _outer_curve(tt, resid[k], ok[k], settings.envelope_weight, degree)
@@ -268,11 +271,11 @@ def trim_inward(
         fit = fit_motion(camera, kept, start, fit_settings)
         if fit.undetermined or (k == 0 and not fit.residual_rms_px >= settings.min_rms_px):
             break
-        inward = _dilated(inward_edges(camera, edges, fit.motion, settings, 2 if k == 0 else 0), edges, settings.dilate_lines)
+        # the first fit is pulled by the texture (a quadratic takes it up), the later ones are not
+        degree = 2 if k == 0 else 0
+        inward = _dilated(inward_edges(camera, edges, fit.motion, settings, degree), edges, settings.dilate_lines)
         if found is not None and np.array_equal(inward.left, found.left) and np.array_equal(inward.right, found.right):
             break
         found = inward
-        out = inward.left | inward.right
-        area_out = out if edges.area_excluded is None else edges.area_excluded | out
-        kept = replace(edges, left_ok=edges.left_ok & ~inward.left, right_ok=edges.right_ok & ~inward.right, area_excluded=area_out)
+        kept = without_edges(edges, inward.left, inward.right)
     return found if found is not None else none

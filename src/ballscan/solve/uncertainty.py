@@ -208,7 +208,7 @@ class MotionUncertainty:
     velocity_mps, velocity_sigma_mps : ndarray (3,)
     direction_deg, direction_sigma_deg : ndarray (2,)
         ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, degrees;
-        the sigmas integrated along the weakest direction
+        the sigmas integrated over the velocity's covariance
         (:func:`ballscan.solve.derived.direction_sigmas`).
     world_position_m, world_position_sigma_m, world_velocity_mps, world_velocity_sigma_mps : ndarray or None
         The same in the world frame (``camera.camera_to_world`` /
