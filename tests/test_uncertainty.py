@@ -53,3 +53,75 @@ def test_nan_rows_count_as_unfixed():
     cov = _cov(SMALL)
     cov[4, :] = cov[:, 4] = np.nan
     assert unfixed_parameters(cov, GUESS) == ("vy_mps",)
+
+
+# ------------------------------------------------------------- the limb model's error
+
+
+def _serve_edges():
+    from ballscan.geometry.camera import LineScanCamera
+    from ballscan.solve.synthetic import synthetic_edges
+
+    cam = LineScanCamera(2048, 4200.0, 1023.5, 70000.0, 1.2e-5, k1=-0.05)
+    m = BallMotion(0.0335, 0.0017, (0, -0.08, 4.2), (44.5, 3.9, -5.5))
+    return cam, m, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False)
+
+
+def _displaced(e, side: str, offset_px: float, trend_px: float):
+    """``e`` with one side's edges displaced by ``offset + trend * tau``, ``tau`` from -1 to 1 over that side's lines."""
+    from dataclasses import replace
+
+    x = getattr(e, f"{side}_px")
+    ok = np.isfinite(x)
+    t = e.t_s
+    tau = 2.0 * (t - t[ok].min()) / (t[ok].max() - t[ok].min()) - 1.0
+    return replace(e, **{f"{side}_px": np.where(ok, x + offset_px + trend_px * tau, np.nan)})
+
+
+@pytest.mark.parametrize("offset_px, trend_px", [(0.0, 0.05), (0.04, 0.0), (0.03, 0.05)])
+def test_limb_covariance_equals_the_fits_moved_by_displaced_limbs(offset_px, trend_px):
+    """Analytic against brute force: the added covariance is the sum of the outer products of the fits' moves
+    when each side's edges are displaced by one sigma of the offset and of the trend in turn (noise-free edges,
+    so the residuals add nothing)."""
+    from ballscan.solve.fit import fit_motion
+    from ballscan.solve.settings import FitSettings
+
+    cam, m, e = _serve_edges()
+    s = FitSettings(limb_offset_sigma_px=offset_px, limb_trend_sigma_px=trend_px, limb_residual_gain=1.0, cost_tol=1e-12, stall_tol=0.0)
+    base = fit_motion(cam, e, m, s)
+    assert base.converged
+    brute = np.zeros((6, 6))
+    for side in ("left", "right"):
+        for a, b in ((offset_px, 0.0), (0.0, trend_px)):
+            if a == b == 0.0:
+                continue
+            d = fit_motion(cam, _displaced(e, side, a, b), m, s).motion.to_params() - base.motion.to_params()
+            brute += np.outer(d, d)
+    limb = base.limb_covariance
+    # to within 5 %, or 1 % of the parameter's whole sigma where the move is second order (z0, t_c)
+    sig, total = np.sqrt(np.diag(brute)), np.sqrt(np.diag(base.covariance))
+    assert np.all(np.abs(np.sqrt(np.diag(limb)) - sig) <= 0.05 * sig + 0.01 * total)
+    assert np.all(np.abs(limb - brute) <= 0.01 * np.outer(total, total))
+    assert np.allclose(base.statistical_covariance + limb, base.covariance)
+
+
+def test_limb_covariance_is_zero_when_left_out():
+    from ballscan.solve.fit import fit_motion
+    from ballscan.solve.settings import FitSettings
+
+    cam, m, e = _serve_edges()
+    r = fit_motion(cam, e, m, FitSettings(limb_offset_sigma_px=0.0, limb_trend_sigma_px=0.0, limb_residual_gain=0.0))
+    assert np.all(r.limb_covariance == 0.0)
+    assert np.array_equal(r.statistical_covariance, r.covariance)
+
+
+def test_smooth_residual_of_white_noise_is_small_and_of_a_slow_wave_its_rms():
+    from ballscan.solve.uncertainty import smooth_residual_px
+
+    rng = np.random.default_rng(3)
+    sig = np.full(4000, 0.05)
+    white = rng.normal(size=4000)
+    assert smooth_residual_px(white, sig) < 0.1 * 0.05
+    wave = 0.02 * np.sqrt(2.0) * np.sin(np.arange(4000) / 200.0)  # 0.02 px RMS over 1,257-line periods
+    assert smooth_residual_px(white + wave / 0.05, sig) == pytest.approx(0.02, rel=0.1)
+    assert smooth_residual_px(white[:15], sig[:15]) == 0.0  # fewer than two blocks

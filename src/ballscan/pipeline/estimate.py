@@ -242,9 +242,10 @@ def _fit_estimate(
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
     cov = fit.covariance
-    # full rank, yet not fixed: a sigma beyond the parameter's scale in the
-    # image (a cut ball's small visible part); its rows are then unknown too
-    unfixed = [p for p in unfixed_parameters(cov, guess_motion) if p not in fit.undetermined]
+    # full rank, yet not fixed by the measurements: a sigma beyond the
+    # parameter's scale in the image (a cut ball's small visible part); its
+    # rows are then unknown too
+    unfixed = [p for p in unfixed_parameters(fit.statistical_covariance, guess_motion) if p not in fit.undetermined]
     if unfixed:
         cov = cov.copy()
         for p in unfixed:

@@ -39,7 +39,7 @@ from .problem import BlockState, FitProblem, ResidualBlock, Selection
 from .settings import FitSettings
 from .prior import ParameterPrior, WithPrior
 from .solver import SolveResult, levenberg_marquardt, scipy_least_squares
-from .uncertainty import covariance_from_jacobian, residual_scale
+from .uncertainty import covariance_from_jacobian, limb_covariance, residual_scale
 
 __all__ = ["FitResult", "fit_blocks", "fit_motion"]
 
@@ -54,9 +54,14 @@ class FitResult:
         The fitted motion (camera frame; ``V.x >= 0`` unless the camera
         states the crossing direction).
     covariance : ndarray (6, 6)
-        Covariance of ``(t_c, y0, z0, vx, vy, vz)`` (s, m, m/s), scaled by
-        ``max(1, chi2_red)`` and the residuals' correlation (:mod:`ballscan.solve.uncertainty`); NaN rows/columns for
-        undetermined parameters.
+        Covariance of ``(t_c, y0, z0, vx, vy, vz)`` (s, m, m/s): the
+        statistical part, scaled by ``max(1, chi2_red)`` and the residuals'
+        correlation (:mod:`ballscan.solve.uncertainty`), plus
+        ``limb_covariance``; NaN rows/columns for undetermined parameters.
+    limb_covariance : ndarray (6, 6) or None
+        The part of ``covariance`` due to the limb model's error
+        (:func:`ballscan.solve.uncertainty.limb_covariance`), which more
+        lines do not shrink; None where no fit was made.
     chi2_red : float
         Robust cost ``2 * cost / (m - p)`` (equal to the reduced chi-square
         when no residual exceeds the loss scale).
@@ -116,11 +121,17 @@ class FitResult:
     inflation: float = 1.0
     partial_levelled: bool = False
     partial_verdict: str = "off"
+    limb_covariance: np.ndarray | None = None
 
     @property
     def sigmas(self) -> np.ndarray:
         """1-sigma of the six parameters (s, m, m, m/s, m/s, m/s)."""
         return np.sqrt(np.diag(self.covariance))
+
+    @property
+    def statistical_covariance(self) -> np.ndarray:
+        """``covariance`` without the limb model's part: what the image's measurements fix."""
+        return self.covariance if self.limb_covariance is None else self.covariance - self.limb_covariance
 
     @property
     def degenerate(self) -> bool:
@@ -306,6 +317,18 @@ def _correlated_runs(sels, r: np.ndarray) -> list[tuple[np.ndarray, ...]]:
     return [sel.correlated_runs(r[a:b]) for sel, a, b in zip(sels, ends[:-1], ends[1:])]
 
 
+def _edge_sides(states, sels) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Each block's left and right edge rows in the stacked residuals: their indices, lines' times (s) and 1-sigma (px)."""
+    sides = []
+    o = 0
+    for st, sel in zip(states, sels):
+        t = st.block.edges.t_s
+        sides.append((np.arange(o, o + sel.n_left), t[sel.use_left], sel.sigma_left))
+        sides.append((np.arange(o + sel.n_left, o + sel.n_left + sel.n_right), t[sel.use_right], sel.sigma_right))
+        o += sel.n_residuals
+    return sides
+
+
 def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, verdict: str, settings: FitSettings, t0: float) -> FitResult:
     """The :class:`FitResult` of the last solve: chi-square, covariance (:mod:`ballscan.solve.uncertainty`), the reported sign of ``V.x``."""
     sol, sels = rounds.solution, rounds.solved
@@ -322,11 +345,15 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     sides = [block[:2] for block in runs]
     total_scale, inflation = residual_scale(chi2_red, tuple(a for block in runs for a in block), settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
-    cov = cov_full[:6, :6].copy()
+    limb = limb_covariance(
+        sol.jacobian, cov_full / total_scale, r, _edge_sides(states, sels),
+        settings.limb_offset_sigma_px, settings.limb_trend_sigma_px, settings.limb_residual_gain,
+    )[:6, :6]
+    cov = cov_full[:6, :6] + limb
     for name in undetermined:
         k = PARAM_NAMES.index(name)
-        cov[k, :] = np.nan
-        cov[:, k] = np.nan
+        cov[k, :] = limb[k, :] = np.nan
+        cov[:, k] = limb[:, k] = np.nan
     edge_res = np.concatenate([a * s for (rl, rr), sel in zip(sides, sels) for a, s in ((rl, sel.sigma_left), (rr, sel.sigma_right))])
     rms = float(np.sqrt(np.mean(edge_res**2))) if edge_res.size else math.nan
     # report V.x >= 0 unless the crossing is known (the image cannot tell; geometry.md)
@@ -335,12 +362,14 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     sign = camera.crossing_sign if camera.crossing is not None else 1.0
     if np.sign(th[3]) != sign and not np.any(initial.acceleration_mps2):
         th[3] = -th[3]
-        cov[3, :] *= -1
-        cov[:, 3] *= -1
+        for c in (cov, limb):
+            c[3, :] *= -1
+            c[:, 3] *= -1
     flags = (("not_converged",) if not sol.converged else ()) + (("degenerate",) if undetermined else ())
     return FitResult(
         motion=BallMotion.from_params(th, initial.radius_m, initial.acceleration_mps2),
         covariance=cov,
+        limb_covariance=limb,
         chi2_red=chi2_red,
         residual_rms_px=rms,
         n_iterations=rounds.n_evaluations,

@@ -118,6 +118,19 @@ class FitSettings:
         means of the edge residuals: shading and seam biases are correlated
         over many lines, and treating them as independent would report too
         small a sigma.
+    limb_offset_sigma_px, limb_trend_sigma_px : float
+        1-sigma of a limb model error that the fit cannot see in its
+        residuals, pixels: each side's edges displaced by an unknown
+        constant and by an unknown straight line over the passage (its value
+        at the passage's ends).  A displacement of this shape is absorbed by
+        the motion (a common trend is a ``vy``, a differing one a change of
+        size, a ``vz``), so no residual-based scale reveals it; its effect on
+        the parameters is added to their covariance
+        (:func:`ballscan.solve.uncertainty.limb_covariance`).  0 leaves it out.
+    limb_residual_gain : float
+        The trend's 1-sigma grows by this many times the side's slowly
+        varying residual (pixels, :func:`ballscan.solve.uncertainty.smooth_residual_px`):
+        a limb whose model error shows in the residuals hides more in the motion.
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area without a
         brightness level (the lit or shaded cap's brightness is unknown);
@@ -208,6 +221,9 @@ class FitSettings:
     reject_sigma: float = 3.5
     max_reject_rounds: int = 3
     correlation_inflation: bool = True
+    limb_offset_sigma_px: float = 0.0
+    limb_trend_sigma_px: float = 0.0
+    limb_residual_gain: float = 0.0
     area_rel_sigma: float = 3.0
     area_floor_px: float = 0.1
     area_level_floor: float = 0.002

@@ -28,7 +28,10 @@ from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from .derived import GH_NODES, GH_WEIGHTS, direction_sigmas
 
-__all__ = ["MotionUncertainty", "covariance_from_jacobian", "param_scale", "propagate", "residual_scale", "unfixed_parameters"]
+__all__ = [
+    "MotionUncertainty", "covariance_from_jacobian", "limb_covariance", "param_scale", "propagate", "residual_scale",
+    "smooth_residual_px", "unfixed_parameters",
+]
 
 #: a velocity component whose 1-sigma exceeds this many times the speed
 #: across the viewing plane leaves the flight's direction open by more than
@@ -74,6 +77,76 @@ def covariance_from_jacobian(J: np.ndarray, scale: float) -> tuple[np.ndarray, t
     inv_evals = np.where(tiny, 0.0, 1.0 / np.where(tiny, 1.0, evals))
     cov_s = (evecs * inv_evals) @ evecs.T
     return cov_s / np.outer(cn, cn) * scale, tuple(undetermined)
+
+
+def limb_covariance(
+    J: np.ndarray, cov_unit: np.ndarray, r: np.ndarray, sides, offset_sigma_px: float, trend_sigma_px: float, residual_gain: float
+) -> np.ndarray:
+    """Covariance of the parameters due to a limb model error of each side that the residuals cannot show.
+
+    Each side's measured edges are taken as displaced by ``a + b tau``
+    (pixels), ``tau`` running from -1 to 1 over that side's lines, with
+    ``a ~ N(0, offset_sigma_px^2)`` and ``b ~ N(0, s_b^2)`` independent per
+    side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * rms)^2`` with
+    ``rms`` the side's slowly varying residual (:func:`smooth_residual_px`):
+    a limb whose model error shows in the residuals hides a larger part in
+    the motion.  The fit moves by ``dx = -(J^T J)^-1 J^T D c`` (``D`` the
+    whitened residuals' change per unit of ``c = (a, b)``), so the added
+    covariance is ``G diag(sigma^2) G^T`` with ``G = (J^T J)^-1 J^T D``.
+    Rows not named by a side (areas, pixels) see no displacement.
+
+    Parameters
+    ----------
+    J : ndarray (M, p)
+        Whitened Jacobian of the residuals at the solution, per parameter unit.
+    cov_unit : ndarray (p, p)
+        ``(J^T J)^-1`` (pseudo-inverse), unscaled.
+    r : ndarray (M,)
+        Whitened residuals at the solution.
+    sides : sequence of (rows, t_s, sigma_px)
+        For each side of each block: the indices of its edge rows in ``J``
+        (line order), the lines' times (s) and the edges' 1-sigma (pixels).
+    offset_sigma_px, trend_sigma_px : float
+        1-sigma of ``a`` and the least of ``b``, pixels.
+    residual_gain : float
+        ``b``'s sigma per pixel of the side's slowly varying residual.
+
+    Returns
+    -------
+    ndarray (p, p)
+    """
+    p = J.shape[1]
+    cols, sig2 = [], []
+    for rows, t, sig in sides:
+        if len(rows) == 0:
+            continue
+        span = float(t.max() - t.min())
+        d = np.zeros((J.shape[0], 2))
+        d[rows, 0] = -1.0 / sig
+        if span > 0:
+            d[rows, 1] = -(2.0 * (t - t.min()) / span - 1.0) / sig
+        cols.append(d)
+        trend2 = trend_sigma_px**2 + (residual_gain * smooth_residual_px(r[rows], sig)) ** 2
+        sig2 += [offset_sigma_px**2, trend2]
+    if not cols or not any(sig2):
+        return np.zeros((p, p))
+    G = cov_unit @ (J.T @ np.hstack(cols))
+    return (G * np.asarray(sig2)) @ G.T
+
+
+def smooth_residual_px(r: np.ndarray, sigma_px: np.ndarray, block: int = 8) -> float:
+    """RMS of one side's residual over runs of ``block`` lines beyond what its noise gives, pixels.
+
+    ``r`` are the whitened residuals in line order and ``sigma_px`` their
+    1-sigma: the block means' mean square less ``1 / block`` (white noise's),
+    in pixels by the sides' median sigma; 0 for fewer than 2 blocks.
+    """
+    nb = r.size // block
+    if nb < 2:
+        return 0.0
+    m = r[: nb * block].reshape(nb, block).mean(axis=1)
+    excess = float(np.mean(m * m)) - 1.0 / block
+    return math.sqrt(max(excess, 0.0)) * float(np.median(sigma_px))
 
 
 def unfixed_parameters(cov: np.ndarray, scale_motion: BallMotion) -> tuple[str, ...]:
