@@ -125,3 +125,25 @@ def test_smooth_residual_of_white_noise_is_small_and_of_a_slow_wave_its_rms():
     wave = 0.02 * np.sqrt(2.0) * np.sin(np.arange(4000) / 200.0)  # 0.02 px RMS over 1,257-line periods
     assert smooth_residual_px(white + wave / 0.05, sig) == pytest.approx(0.02, rel=0.1)
     assert smooth_residual_px(white[:15], sig[:15]) == 0.0  # fewer than two blocks
+
+
+def test_a_clean_limb_adds_nothing_and_a_wavy_one_widens_the_velocity():
+    """White edge noise leaves the limb term at 0 (its block means within white noise's spread); a 0.1 px
+    wave along the left limb (texture, a 38-line period) adds it, chiefly to vz and t_c, beyond the
+    residuals' own correlation scale (7-10x here)."""
+    from dataclasses import replace
+
+    from ballscan.geometry.camera import LineScanCamera
+    from ballscan.solve.fit import fit_motion
+    from ballscan.solve.synthetic import synthetic_edges
+
+    cam = LineScanCamera(2048, 4200.0, 1023.5, 70000.0, 1.2e-5, k1=-0.05)
+    m = BallMotion(0.0335, 0.0017, (0, -0.08, 4.2), (44.5, 3.9, -5.5))
+    e = synthetic_edges(cam, m, 240, edge_sigma_px=0.05, seed=4)
+    clean = fit_motion(cam, e, m)
+    assert np.all(clean.limb_covariance == 0.0)
+    wave = 0.1 * np.sin(np.arange(e.t_s.size) / 6.0)
+    wavy = fit_motion(cam, replace(e, left_px=e.left_px + wave), m)
+    assert wavy.inflation > 5.0
+    grow = np.sqrt(np.diag(wavy.covariance) / np.diag(wavy.statistical_covariance))
+    assert grow[5] > 1.04 and grow[0] > 1.04

@@ -127,10 +127,16 @@ class FitSettings:
         size, a ``vz``), so no residual-based scale reveals it; its effect on
         the parameters is added to their covariance
         (:func:`ballscan.solve.uncertainty.limb_covariance`).  0 leaves it out.
+        Both are 0 by default: an error that no residual shows would widen
+        the sigmas of balls whose limb the model describes exactly
+        (ballscan's own renders) as much as any other's.
     limb_residual_gain : float
         The trend's 1-sigma grows by this many times the side's slowly
         varying residual (pixels, :func:`ballscan.solve.uncertainty.smooth_residual_px`):
-        a limb whose model error shows in the residuals hides more in the motion.
+        a limb whose model error shows in the residuals hides more in the
+        motion.  5 calibrates the direction angles' sigmas on the
+        independent validation set's tuning half (docs/benchmarks.md); a
+        clean limb's residual is white and adds nothing.
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area without a
         brightness level (the lit or shaded cap's brightness is unknown);
@@ -223,7 +229,7 @@ class FitSettings:
     correlation_inflation: bool = True
     limb_offset_sigma_px: float = 0.0
     limb_trend_sigma_px: float = 0.0
-    limb_residual_gain: float = 0.0
+    limb_residual_gain: float = 5.0
     area_rel_sigma: float = 3.0
     area_floor_px: float = 0.1
     area_level_floor: float = 0.002

@@ -9,7 +9,10 @@ chi-square when it exceeds 1, the lag-one autocorrelation ``rho`` of the
 edge residuals along each side when it is significant, and the variance
 ratio of block means of the residuals.  Texture and shading errors are
 correlated over many lines; a fit that treated them as independent would
-report too small a sigma.  :func:`propagate` carries the covariance to the
+report too small a sigma.  The part of such an error that the motion
+absorbs leaves no residual at all (a trend of the edges along the passage
+is a ``vy`` or a ``vz``): :func:`limb_covariance` adds it from a model of
+the limb's error.  :func:`propagate` carries the covariance to the
 speed (with the second-order term of ``|V|``: ``vz`` of a ball crossing the
 viewing plane is its weakest parameter, and its uncertainty biases ``|V|``
 upwards), the direction and the world frame.
@@ -138,14 +141,16 @@ def smooth_residual_px(r: np.ndarray, sigma_px: np.ndarray, block: int = 8) -> f
     """RMS of one side's residual over runs of ``block`` lines beyond what its noise gives, pixels.
 
     ``r`` are the whitened residuals in line order and ``sigma_px`` their
-    1-sigma: the block means' mean square less ``1 / block`` (white noise's),
-    in pixels by the sides' median sigma; 0 for fewer than 2 blocks.
+    1-sigma: the block means' mean square less what white noise reaches
+    (``1 / block``, plus 3 of its standard deviations ``sqrt(2 / n) /
+    block`` over ``n`` blocks, as :func:`block_scale` counts a ratio), in
+    pixels by the side's median sigma; 0 for fewer than 2 blocks.
     """
     nb = r.size // block
     if nb < 2:
         return 0.0
     m = r[: nb * block].reshape(nb, block).mean(axis=1)
-    excess = float(np.mean(m * m)) - 1.0 / block
+    excess = float(np.mean(m * m)) - (1.0 + 3.0 * math.sqrt(2.0 / nb)) / block
     return math.sqrt(max(excess, 0.0)) * float(np.median(sigma_px))
 
 
