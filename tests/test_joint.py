@@ -349,3 +349,25 @@ def test_two_povray_views_crossing_time_within_3_sigma(povray_pair):
 
 def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
     return math.degrees(math.acos(min(1.0, float(a @ b / (np.linalg.norm(a) * np.linalg.norm(b))))))
+
+
+def test_the_joint_covariance_holds_each_cameras_limb_error():
+    """White edge noise adds no limb term (the same covariance with the term off); a 0.3 px wave along
+    one camera's left limb widens the joint velocity's covariance (solve.uncertainty.limb_covariance)."""
+    from dataclasses import replace
+
+    m = LANE.motion
+    start = WorldMotion(m.radius_m, m.t_ref_s, m.position_m, m.velocity_mps, m.gravity_mps2)
+
+    def fit(cams, gain):
+        return fit_joint([replace(c, settings=replace(c.settings, limb_residual_gain=gain)) for c in cams], start, [2e-6])
+
+    cams = _synthetic_cameras(0.1, 5)
+    assert np.array_equal(fit(cams, 5.0).covariance, fit(cams, 0.0).covariance)
+    e = cams[0].edges
+    wave = 0.3 * np.sin(np.arange(e.t_s.size) / 4.0)
+    wavy = [replace(cams[0], edges=replace(e, left_px=e.left_px + wave)), cams[1]]
+    on, off = fit(wavy, 5.0), fit(wavy, 0.0)
+    assert np.all(on.motion.velocity_mps == off.motion.velocity_mps)
+    grow = np.sqrt(np.diag(on.covariance)[4:] / np.diag(off.covariance)[4:])
+    assert np.all(grow >= 1.0) and grow.max() > 1.05, grow

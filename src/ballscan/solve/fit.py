@@ -39,7 +39,7 @@ from .problem import BlockState, FitProblem, ResidualBlock, Selection
 from .settings import FitSettings
 from .prior import ParameterPrior, WithPrior
 from .solver import SolveResult, levenberg_marquardt, scipy_least_squares
-from .uncertainty import covariance_from_jacobian, limb_covariance, residual_scale
+from .uncertainty import covariance_from_jacobian, edge_sides, limb_covariance, residual_scale
 
 __all__ = ["FitResult", "fit_blocks", "fit_motion"]
 
@@ -317,18 +317,6 @@ def _correlated_runs(sels, r: np.ndarray) -> list[tuple[np.ndarray, ...]]:
     return [sel.correlated_runs(r[a:b]) for sel, a, b in zip(sels, ends[:-1], ends[1:])]
 
 
-def _edge_sides(states, sels) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-    """Each block's left and right edge rows in the stacked residuals: their indices, lines' times (s) and 1-sigma (px)."""
-    sides = []
-    o = 0
-    for st, sel in zip(states, sels):
-        t = st.block.edges.t_s
-        sides.append((np.arange(o, o + sel.n_left), t[sel.use_left], sel.sigma_left))
-        sides.append((np.arange(o + sel.n_left, o + sel.n_left + sel.n_right), t[sel.use_right], sel.sigma_right))
-        o += sel.n_residuals
-    return sides
-
-
 def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, verdict: str, settings: FitSettings, t0: float) -> FitResult:
     """The :class:`FitResult` of the last solve: chi-square, covariance (:mod:`ballscan.solve.uncertainty`), the reported sign of ``V.x``."""
     sol, sels = rounds.solution, rounds.solved
@@ -345,9 +333,10 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     sides = [block[:2] for block in runs]
     total_scale, inflation = residual_scale(chi2_red, tuple(a for block in runs for a in block), settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
+    limb_sides = edge_sides(sels, [st.block.edges.t_s for st in states], r)
     limb = limb_covariance(
-        sol.jacobian, cov_full / total_scale, r, _edge_sides(states, sels),
-        settings.limb_offset_sigma_px, settings.limb_trend_sigma_px, settings.limb_residual_gain,
+        sol.jacobian, cov_full / total_scale, limb_sides, settings.limb_offset_sigma_px, settings.limb_trend_sigma_px,
+        settings.limb_residual_gain,
     )[:6, :6]
     cov = cov_full[:6, :6] + limb
     for name in undetermined:

@@ -35,7 +35,7 @@ from .fit import _reject
 from .problem import BlockState, FitProblem, ResidualBlock
 from .settings import FitSettings
 from .solver import levenberg_marquardt
-from .uncertainty import covariance_from_jacobian, residual_scale
+from .uncertainty import covariance_from_jacobian, edge_sides, limb_covariance, residual_scale
 
 __all__ = ["CONSISTENCY_P", "JointCamera", "JointCameraFit", "JointLayout", "JointProblem", "JointResult", "STATE_NAMES", "fit_joint"]
 
@@ -348,6 +348,18 @@ def _camera_fits(problem: JointProblem, sol, states) -> tuple[list[JointCameraFi
     return fits, scales
 
 
+def _limb(problem: JointProblem, states, scales, J: np.ndarray, cov: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """Each camera's limb error that the joint motion absorbs (:func:`ballscan.solve.uncertainty.limb_covariance`).
+
+    ``J`` and ``cov`` are whitened further by each camera's covariance
+    scale (``scales``); ``r`` are the solution's residuals.
+    """
+    sels = [p.selections[0] for p in problem.problems]
+    sides = edge_sides(sels, [st.block.edges.t_s for st in states], r, [math.sqrt(sc) for sc in scales])
+    s = states[0].settings
+    return limb_covariance(J, cov, sides, s.limb_offset_sigma_px, s.limb_trend_sigma_px, s.limb_residual_gain)
+
+
 def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constraint, n_eval: int, t0: float) -> JointResult:
     """Covariance (each camera's rows whitened by its own scale), the reference crossing and the per-camera reports."""
     fits, scales = _camera_fits(problem, sol, states)
@@ -359,6 +371,7 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         J[o : o + n] /= math.sqrt(sc)
         o += n
     cov, undet6 = covariance_from_jacobian(J, 1.0)
+    cov = cov + _limb(problem, states, scales, J, cov, sol.residuals)
     undetermined = tuple(STATE_NAMES[PARAM_NAMES.index(u)] for u in undet6)
     names = list(STATE_NAMES) + [f"clock_offset_s:{c.name}" for c, i in zip(lay.cameras, lay.offset_index) if i is not None]
     names += [f"edge_bias_px:{c.name}" for c, i in zip(lay.cameras, lay.bias_index) if i is not None]

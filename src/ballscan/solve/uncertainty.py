@@ -32,8 +32,8 @@ from ..geometry.motion import PARAM_NAMES, BallMotion
 from .derived import GH_NODES, GH_WEIGHTS, direction_sigmas
 
 __all__ = [
-    "MotionUncertainty", "covariance_from_jacobian", "limb_covariance", "param_scale", "propagate", "residual_scale",
-    "smooth_residual_px", "unfixed_parameters",
+    "LimbSide", "MotionUncertainty", "covariance_from_jacobian", "edge_sides", "limb_covariance", "param_scale", "propagate",
+    "residual_scale", "smooth_residual_px", "unfixed_parameters",
 ]
 
 #: a velocity component whose 1-sigma exceeds this many times the speed
@@ -82,17 +82,38 @@ def covariance_from_jacobian(J: np.ndarray, scale: float) -> tuple[np.ndarray, t
     return cov_s / np.outer(cn, cn) * scale, tuple(undetermined)
 
 
+@dataclass(frozen=True)
+class LimbSide:
+    """One side's edges in a fit, for :func:`limb_covariance`.
+
+    Attributes
+    ----------
+    rows : ndarray of int
+        Indices of its edge rows in the fit's stacked residuals (line order).
+    t_s : ndarray
+        Their lines' times, s.
+    sigma_px : ndarray
+        The 1-sigma that whitens those rows of the Jacobian, pixels.
+    smooth_px : float
+        The side's slowly varying residual, pixels (:func:`smooth_residual_px`).
+    """
+
+    rows: np.ndarray
+    t_s: np.ndarray
+    sigma_px: np.ndarray
+    smooth_px: float
+
+
 def limb_covariance(
-    J: np.ndarray, cov_unit: np.ndarray, r: np.ndarray, sides, offset_sigma_px: float, trend_sigma_px: float, residual_gain: float
+    J: np.ndarray, cov_unit: np.ndarray, sides, offset_sigma_px: float, trend_sigma_px: float, residual_gain: float
 ) -> np.ndarray:
     """Covariance of the parameters due to a limb model error of each side that the residuals cannot show.
 
     Each side's measured edges are taken as displaced by ``a + b tau``
     (pixels), ``tau`` running from -1 to 1 over that side's lines, with
     ``a ~ N(0, offset_sigma_px^2)`` and ``b ~ N(0, s_b^2)`` independent per
-    side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * rms)^2`` with
-    ``rms`` the side's slowly varying residual (:func:`smooth_residual_px`):
-    a limb whose model error shows in the residuals hides a larger part in
+    side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * smooth_px)^2``: a
+    limb whose model error shows in the residuals hides a larger part in
     the motion.  The fit moves by ``dx = -(J^T J)^-1 J^T D c`` (``D`` the
     whitened residuals' change per unit of ``c = (a, b)``), so the added
     covariance is ``G diag(sigma^2) G^T`` with ``G = (J^T J)^-1 J^T D``.
@@ -103,12 +124,9 @@ def limb_covariance(
     J : ndarray (M, p)
         Whitened Jacobian of the residuals at the solution, per parameter unit.
     cov_unit : ndarray (p, p)
-        ``(J^T J)^-1`` (pseudo-inverse), unscaled.
-    r : ndarray (M,)
-        Whitened residuals at the solution.
-    sides : sequence of (rows, t_s, sigma_px)
-        For each side of each block: the indices of its edge rows in ``J``
-        (line order), the lines' times (s) and the edges' 1-sigma (pixels).
+        ``(J^T J)^-1`` (pseudo-inverse) of that ``J``.
+    sides : sequence of LimbSide
+        Each side of each block (camera).
     offset_sigma_px, trend_sigma_px : float
         1-sigma of ``a`` and the least of ``b``, pixels.
     residual_gain : float
@@ -120,21 +138,42 @@ def limb_covariance(
     """
     p = J.shape[1]
     cols, sig2 = [], []
-    for rows, t, sig in sides:
-        if len(rows) == 0:
+    for side in sides:
+        if len(side.rows) == 0:
             continue
+        t, sig = side.t_s, side.sigma_px
         span = float(t.max() - t.min())
         d = np.zeros((J.shape[0], 2))
-        d[rows, 0] = -1.0 / sig
+        d[side.rows, 0] = -1.0 / sig
         if span > 0:
-            d[rows, 1] = -(2.0 * (t - t.min()) / span - 1.0) / sig
+            d[side.rows, 1] = -(2.0 * (t - t.min()) / span - 1.0) / sig
         cols.append(d)
-        trend2 = trend_sigma_px**2 + (residual_gain * smooth_residual_px(r[rows], sig)) ** 2
-        sig2 += [offset_sigma_px**2, trend2]
+        sig2 += [offset_sigma_px**2, trend_sigma_px**2 + (residual_gain * side.smooth_px) ** 2]
     if not cols or not any(sig2):
         return np.zeros((p, p))
     G = cov_unit @ (J.T @ np.hstack(cols))
     return (G * np.asarray(sig2)) @ G.T
+
+
+def edge_sides(sels, t_s, r: np.ndarray, row_scales=None) -> list[LimbSide]:
+    """The :class:`LimbSide` of each block's left and right edges in a fit's stacked residuals ``r`` (whitened).
+
+    ``sels`` are the blocks' :class:`~ballscan.solve.problem.Selection` in
+    stacking order and ``t_s`` their lines' times (s); ``row_scales``, where
+    given, the factor (one per block) by which the Jacobian's rows of that
+    block were further divided: the displacements' rows are divided alike,
+    while the slowly varying residual is measured on the block's own
+    whitening.
+    """
+    sides = []
+    o = 0
+    for k, (sel, t) in enumerate(zip(sels, t_s)):
+        f = 1.0 if row_scales is None else row_scales[k]
+        for use, sig, n, at in ((sel.use_left, sel.sigma_left, sel.n_left, o), (sel.use_right, sel.sigma_right, sel.n_right, o + sel.n_left)):
+            rows = np.arange(at, at + n)
+            sides.append(LimbSide(rows, t[use], sig * f, smooth_residual_px(r[rows], sig)))
+        o += sel.n_residuals
+    return sides
 
 
 def smooth_residual_px(r: np.ndarray, sigma_px: np.ndarray, block: int = 8) -> float:
