@@ -352,7 +352,8 @@ def _limb(problem: JointProblem, states, scales, J: np.ndarray, cov: np.ndarray,
     """Each camera's limb error that the joint motion absorbs (:func:`ballscan.solve.uncertainty.limb_covariance`).
 
     ``J`` and ``cov`` are whitened further by each camera's covariance
-    scale (``scales``); ``r`` are the solution's residuals.
+    scale (``scales``); ``r`` are the solution's residuals.  The limb
+    settings are the first camera's (a rig's cameras share them).
     """
     sels = [p.selections[0] for p in problem.problems]
     sides = edge_sides(sels, [st.block.edges.t_s for st in states], r, [math.sqrt(sc) for sc in scales])
