@@ -125,7 +125,7 @@ def test_noisy_textured_tennis_ball_is_never_wildly_wrong(seed):
     assert 1000 * np.linalg.norm(np.asarray(b.position_m) - m.position_m) < 8.0
     assert sv[2] < 15.0  # vz is weak but bounded; vx, vy are sharp
     # vy's sigma holds the seam's limb error that the motion absorbs
-    # (FitSettings.limb_residual_gain): up to 0.12 m/s on seeds 0-3, below 0.05 without it
+    # (FitSettings.limb_residual_gain): up to 0.12 m/s on seeds 0-3, of which the measurements give below 0.05
     assert sv[0] < 0.05 and sv[1] < 0.15
 
 

@@ -334,10 +334,11 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
     total_scale, inflation = residual_scale(chi2_red, tuple(a for block in runs for a in block), settings.correlation_inflation)
     cov_full, undetermined = covariance_from_jacobian(sol.jacobian, total_scale)
     limb_sides = edge_sides(sels, [st.block.edges.t_s for st in states], r)
-    limb = limb_covariance(
+    limb_full = limb_covariance(
         sol.jacobian, cov_full / total_scale, limb_sides, settings.limb_offset_sigma_px, settings.limb_trend_sigma_px,
         settings.limb_residual_gain,
-    )[:6, :6]
+    )
+    limb = limb_full[:6, :6].copy()
     cov = cov_full[:6, :6] + limb
     for name in undetermined:
         k = PARAM_NAMES.index(name)
@@ -367,7 +368,7 @@ def _result(states, initial: BallMotion, rounds: _Rounds, level_partial: bool, v
         converged=sol.converged,
         undetermined=undetermined,
         edge_bias_px=float(b),
-        edge_bias_sigma_px=float(math.sqrt(cov_full[6, 6])) if fit_b else 0.0,
+        edge_bias_sigma_px=float(math.sqrt(cov_full[6, 6] + limb_full[6, 6])) if fit_b else 0.0,
         n_edges=sum(s.n_left + s.n_right for s in sels),
         n_area_lines=sum(s.n_area for s in sels),
         run_time_s=time.perf_counter() - t0,

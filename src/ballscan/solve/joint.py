@@ -348,17 +348,19 @@ def _camera_fits(problem: JointProblem, sol, states) -> tuple[list[JointCameraFi
     return fits, scales
 
 
-def _limb(problem: JointProblem, states, scales, J: np.ndarray, cov: np.ndarray, r: np.ndarray) -> np.ndarray:
+def _limb(problem: JointProblem, sol, states) -> np.ndarray:
     """Each camera's limb error that the joint motion absorbs (:func:`ballscan.solve.uncertainty.limb_covariance`).
 
-    ``J`` and ``cov`` are whitened further by each camera's covariance
-    scale (``scales``); ``r`` are the solution's residuals.  The limb
-    settings are the first camera's (a rig's cameras share them).
+    The joint solve weighs each camera's residuals by their own sigmas
+    alone, so its response to a displaced limb is that of the unscaled
+    Jacobian ``sol.jacobian``.  The limb settings are the first camera's (a
+    rig's cameras share them).
     """
     sels = [p.selections[0] for p in problem.problems]
-    sides = edge_sides(sels, [st.block.edges.t_s for st in states], r, [math.sqrt(sc) for sc in scales])
+    sides = edge_sides(sels, [st.block.edges.t_s for st in states], sol.residuals)
+    cov_unit, _ = covariance_from_jacobian(sol.jacobian, 1.0)
     s = states[0].settings
-    return limb_covariance(J, cov, sides, s.limb_offset_sigma_px, s.limb_trend_sigma_px, s.limb_residual_gain)
+    return limb_covariance(sol.jacobian, cov_unit, sides, s.limb_offset_sigma_px, s.limb_trend_sigma_px, s.limb_residual_gain)
 
 
 def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constraint, n_eval: int, t0: float) -> JointResult:
@@ -372,7 +374,7 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         J[o : o + n] /= math.sqrt(sc)
         o += n
     cov, undet6 = covariance_from_jacobian(J, 1.0)
-    cov = cov + _limb(problem, states, scales, J, cov, sol.residuals)
+    cov = cov + _limb(problem, sol, states)
     undetermined = tuple(STATE_NAMES[PARAM_NAMES.index(u)] for u in undet6)
     names = list(STATE_NAMES) + [f"clock_offset_s:{c.name}" for c, i in zip(lay.cameras, lay.offset_index) if i is not None]
     names += [f"edge_bias_px:{c.name}" for c, i in zip(lay.cameras, lay.bias_index) if i is not None]

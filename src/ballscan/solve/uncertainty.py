@@ -155,41 +155,52 @@ def limb_covariance(
     return (G * np.asarray(sig2)) @ G.T
 
 
-def edge_sides(sels, t_s, r: np.ndarray, row_scales=None) -> list[LimbSide]:
-    """The :class:`LimbSide` of each block's left and right edges in a fit's stacked residuals ``r`` (whitened).
+def edge_sides(sels, t_s, r: np.ndarray) -> list[LimbSide]:
+    """The :class:`LimbSide` of each block's left and right edges in a fit's stacked residuals.
 
-    ``sels`` are the blocks' :class:`~ballscan.solve.problem.Selection` in
-    stacking order and ``t_s`` their lines' times (s); ``row_scales``, where
-    given, the factor (one per block) by which the Jacobian's rows of that
-    block were further divided: the displacements' rows are divided alike,
-    while the slowly varying residual is measured on the block's own
-    whitening.
+    Parameters
+    ----------
+    sels : sequence of Selection
+        The blocks' selections (:class:`ballscan.solve.problem.Selection`),
+        in the order their residuals are stacked (each: left edges, right
+        edges, areas, pixels, gains).
+    t_s : sequence of ndarray
+        Each block's line times, s.
+    r : ndarray (M,)
+        The fit's whitened residuals at its solution.
+
+    Returns
+    -------
+    list of LimbSide
+        Left then right side of each block.
     """
     sides = []
     o = 0
-    for k, (sel, t) in enumerate(zip(sels, t_s)):
-        f = 1.0 if row_scales is None else row_scales[k]
+    for sel, t in zip(sels, t_s):
         for use, sig, n, at in ((sel.use_left, sel.sigma_left, sel.n_left, o), (sel.use_right, sel.sigma_right, sel.n_right, o + sel.n_left)):
             rows = np.arange(at, at + n)
-            sides.append(LimbSide(rows, t[use], sig * f, smooth_residual_px(r[rows], sig)))
+            sides.append(LimbSide(rows, t[use], sig, smooth_residual_px(r[rows], sig)))
         o += sel.n_residuals
     return sides
 
 
 def smooth_residual_px(r: np.ndarray, sigma_px: np.ndarray, block: int = 8) -> float:
-    """RMS of one side's residual over runs of ``block`` lines beyond what its noise gives, pixels.
+    """RMS of one side's residual over runs of ``block`` residuals beyond what its noise gives, pixels.
 
-    ``r`` are the whitened residuals in line order and ``sigma_px`` their
-    1-sigma: the block means' mean square less what white noise reaches
-    (``1 / block``, plus 3 of its standard deviations ``sqrt(2 / n) /
-    block`` over ``n`` blocks, as :func:`block_scale` counts a ratio), in
-    pixels by the side's median sigma; 0 for fewer than 2 blocks.
+    ``r`` are the side's whitened residuals in line order (lines left out
+    of the fit leave no gap) and ``sigma_px`` their 1-sigma.  White noise of
+    the side's variance ``v = max(1, mean(r^2))`` gives block means of mean
+    square ``v / block``, which reaches ``(1 + 3 sqrt(2 / n)) v / block``
+    over ``n`` blocks at 3 of its standard deviations (as :func:`block_scale`
+    counts a ratio); the excess over that, in pixels by the side's median
+    sigma.  0 for fewer than 2 blocks.
     """
     nb = r.size // block
     if nb < 2:
         return 0.0
     m = r[: nb * block].reshape(nb, block).mean(axis=1)
-    excess = float(np.mean(m * m)) - (1.0 + 3.0 * math.sqrt(2.0 / nb)) / block
+    v = max(1.0, float(np.mean(r * r)))
+    excess = float(np.mean(m * m)) - (1.0 + 3.0 * math.sqrt(2.0 / nb)) * v / block
     return math.sqrt(max(excess, 0.0)) * float(np.median(sigma_px))
 
 
