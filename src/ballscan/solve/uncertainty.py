@@ -141,17 +141,16 @@ def limb_covariance(
     for side in sides:
         if len(side.rows) == 0:
             continue
-        t, sig = side.t_s, side.sigma_px
+        t = side.t_s
         span = float(t.max() - t.min())
-        d = np.zeros((J.shape[0], 2))
-        d[side.rows, 0] = -1.0 / sig
-        if span > 0:
-            d[side.rows, 1] = -(2.0 * (t - t.min()) / span - 1.0) / sig
-        cols.append(d)
+        tau = 2.0 * (t - t.min()) / span - 1.0 if span > 0 else np.zeros_like(t)
+        # J^T D for this side's two columns of D (-1 / sigma and -tau / sigma on its rows)
+        Jw = J[side.rows] / side.sigma_px[:, None]
+        cols += [-Jw.sum(axis=0), -(tau @ Jw)]
         sig2 += [offset_sigma_px**2, trend_sigma_px**2 + (residual_gain * side.smooth_px) ** 2]
     if not cols or not any(sig2):
         return np.zeros((p, p))
-    G = cov_unit @ (J.T @ np.hstack(cols))
+    G = cov_unit @ np.column_stack(cols)
     return (G * np.asarray(sig2)) @ G.T
 
 
