@@ -67,6 +67,10 @@ class LineScanCamera:
         World -> camera translation in metres.
     gravity_mps2 : tuple of float or None
         Known constant acceleration in the world frame (needs a pose).
+    defocus_px : float or None
+        Diameter of the lens's blur circle on the sensor for the balls'
+        distances, pixels (:mod:`ballscan.measure.defocus`); ``None``: not
+        known, measured on each ball's edges.
     """
 
     width: int
@@ -80,6 +84,7 @@ class LineScanCamera:
     rotation: tuple[tuple[float, float, float], ...] | None = None
     translation_m: tuple[float, float, float] | None = None
     gravity_mps2: tuple[float, float, float] | None = None
+    defocus_px: float | None = None
     source: str = field(default="<camera>", compare=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -254,6 +259,8 @@ class LineScanCamera:
             d["crossing"] = self.crossing
         if self.gravity_mps2 is not None:
             d["gravity_mps2"] = [float(v) for v in self.gravity_mps2]
+        if self.defocus_px is not None:
+            d["defocus_px"] = float(self.defocus_px)
         if self.rotation is not None:
             d["pose"] = {
                 "rotation": [[float(v) for v in row] for row in self.rotation],
@@ -366,7 +373,9 @@ def line_times(camera: LineScanCamera, n_lines: int, timestamps_s: np.ndarray | 
 
 # --------------------------------------------------------------------- I/O
 
-_KNOWN_KEYS = {"width", "focal_px", "principal_px", "line_rate_hz", "exposure_s", "k1", "k2", "crossing", "gravity_mps2", "pose"}
+_KNOWN_KEYS = {"width", "focal_px", "principal_px", "line_rate_hz", "exposure_s", "k1", "k2", "crossing", "gravity_mps2", "pose", "defocus_px"}
+#: Largest blur circle taken as a real lens's, pixels.
+MAX_DEFOCUS_PX = 100.0
 
 #: The ranges a real line-scan rig lies in, far wider than any camera sold:
 #: a value outside is a typing or unit error, refused at load (it would make
@@ -426,6 +435,12 @@ def _validate(cam: LineScanCamera) -> None:
             raise bad("exposure_s", f"{e!r} s is shorter than any camera's exposure ({MIN_EXPOSURE_S:g} s)")
         if e > (1.0 / cam.line_rate_hz) * (1 + 1e-9):
             raise bad("exposure_s", f"{e!r} s exceeds the line period 1/line_rate_hz = {1.0 / cam.line_rate_hz!r} s")
+    if cam.defocus_px is not None:
+        b = cam.defocus_px
+        if isinstance(b, bool) or not isinstance(b, (int, float, np.floating)) or not math.isfinite(float(b)):
+            raise bad("defocus_px", f"must be a finite number, got {b!r}")
+        if not 0 <= b <= MAX_DEFOCUS_PX:
+            raise bad("defocus_px", f"{b!r} is outside 0 to {MAX_DEFOCUS_PX:g} pixels")
     if cam.crossing not in (None, "+x", "-x"):
         raise bad("crossing", f"must be \"+x\" or \"-x\", got {cam.crossing!r}")
     # Distortion must stay monotonic across the sensor, or pixels map to two rays.
@@ -496,6 +511,7 @@ def camera_from_dict(d: dict[str, Any], source: str = "<camera>") -> LineScanCam
         "exposure_s": _number(d, "exposure_s", source, required=False),
         "k1": _number(d, "k1", source, required=False) or 0.0,
         "k2": _number(d, "k2", source, required=False) or 0.0,
+        "defocus_px": _number(d, "defocus_px", source, required=False),
     }
     if "crossing" in d:
         if not isinstance(d["crossing"], str):

@@ -286,6 +286,7 @@ def limb_levels(
     t_rows: np.ndarray, edge_m: np.ndarray, sharp: np.ndarray, line_rows: np.ndarray, background: np.ndarray,
     tk: np.ndarray, hk: np.ndarray, focal: float, principal: float, k1: float, k2: float,
     pos: np.ndarray, vel: np.ndarray, acc: np.ndarray, t_c: float, radius_m: float, light: np.ndarray, ambient: float, scale: float,
+    blur_shift: np.ndarray, blur_w: np.ndarray,
 ):
     """The edges' inner levels and edges from the shading model (:func:`ballscan.measure.edges._limb_levels`).
 
@@ -314,7 +315,11 @@ def limb_levels(
     texture test compares ``q_data`` with the model's ratio at the new edge
     (within ``q_lim``).  Rows
     that fail keep ``e0, var0, L0``.  ``n_points`` point samples per partly
-    covered pixel.
+    covered pixel.  A lens's blur along the sensor (``blur_shift`` pixels,
+    weights ``blur_w``: :func:`ballscan.measure.defocus.blur_nodes`; one
+    shift 0 of weight 1 for none) averages each pixel's value and coverage
+    over the profile moved by those shifts, the brightness at each shift
+    the surface's there.
 
     Returns
     -------
@@ -323,6 +328,8 @@ def limb_levels(
         False when the inverse distortion of a ray did not converge.
     """
     R, K = px.shape
+    nb = blur_shift.shape[0]
+    blurred = np.empty((2, K))
     nd = K - kw - n_level
     edge = e0.copy()
     var = var0.copy()
@@ -362,13 +369,24 @@ def limb_levels(
             at = er
             # the window's and the level run's values, then the runs' (the texture test)
             n_use, run_hi = (n_win[r], kw + n_level) if rnd < 2 else (0, K)
-            fine, ok = _limb_row_profile(
-                r, at, sg[r], px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0, point, wk, n_use, kw, run_hi,
-                edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
-            )
-            rays_ok = rays_ok and ok
+            blurred[:] = 0.0
+            for j in range(nb):
+                # the profile moved by the blur's shift (its partly covered pixels' brightness there)
+                fine, ok = _limb_row_profile(
+                    r, at - sg[r] * blur_shift[j], sg[r], px, c_lo, c_hi, c_w, span, hwb, frac, rnd == 0 or nb > 1, point, wk, n_use, kw,
+                    run_hi, edge_m[r], bg_row, width, cen_pt, nt_pt, hs_pt, nh_pt, cen_c, hs_c, law, light,
+                )
+                rays_ok = rays_ok and ok
+                if not fine:
+                    break
+                for k in range(K):
+                    blurred[0, k] += blur_w[j] * cov[k]
+                    blurred[1, k] += blur_w[j] * val[k]
             if not fine:
                 break
+            if nb > 1:
+                cov[:] = blurred[0]
+                val[:] = blurred[1]
             if rnd == 2:
                 break
             s_model = 0.0
@@ -826,7 +844,7 @@ def warm_up() -> None:
     limb_levels(
         np.ones(1), np.zeros((1, 3)), np.ones(1, dtype=np.int64), 1, 1, z1, z1, z1, z1, np.ones(1), z1, np.zeros((1, 1)), z1, z1, 1,
         np.zeros((1, 1)), np.ones((1, 1)), np.ones((1, 1)), z1, z1, yes, k0, np.zeros((1, 1)), z1, z1,
-        3000.0, 0.0, 0.0, 0.0, th[:3].copy(), th[3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0,
+        3000.0, 0.0, 0.0, 0.0, th[:3].copy(), th[3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0, z1, np.ones(1),
     )
     shading_fit(np.arange(8.0), np.tile(np.array([0.6, 0.0, -0.8]), (8, 1)), 1.5, 1, 1.5, 0.01)
     law = (3000.0, 0.0, 0.0, 0.0, th[:3].copy(), th[3:].copy(), np.zeros(3), 0.0, 0.03, np.ones(3), 0.0, 1.0)

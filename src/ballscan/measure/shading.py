@@ -35,6 +35,7 @@ import numpy as np
 from ..compiled import as_arg
 from ._shading_kernels import chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from ..geometry.camera import LineScanCamera
+from .defocus import blur_nodes
 from .edges import EdgeMeasurements
 from ..errors import GeometryError
 from ..model.averaged import averaged_model
@@ -283,6 +284,13 @@ class LimbProfile:
     level_n_time, level_n_height : int
         Samples over the exposure and across the pixel's height for the
         ends' mean brightness (:meth:`line_levels`).
+
+    The camera's blur circle (``camera.defocus_px``, :mod:`ballscan.measure.defocus`)
+    is in the profile: across the sensor in the averaged silhouette's chord
+    samples, along it by averaging the profile's values and coverage over
+    its marginal (:func:`ballscan.measure.defocus.blur_nodes`); the
+    surface's brightness (:meth:`surface`) and the ends' levels
+    (:meth:`line_levels`, whose integral the blur keeps) are not blurred.
     """
 
     shading: ShadingModel
@@ -320,6 +328,15 @@ class LimbProfile:
             raise ValueError(f"LimbProfile.level_rel_sigma: must be >= 0 and finite, or NaN, got {self.level_rel_sigma!r}")
         if not (math.isfinite(self.level_ref_px) and self.level_ref_px > 0):
             raise ValueError(f"LimbProfile.level_ref_px: must be a finite number > 0, got {self.level_ref_px!r}")
+
+    @property
+    def blur_px(self) -> float:
+        """The camera's blur-circle diameter, pixels (0: in focus)."""
+        return float(self.camera.defocus_px or 0.0)
+
+    def sharp(self) -> "LimbProfile":
+        """This profile without the blur along the sensor (its chords keep the blur across it)."""
+        return replace(self, camera=replace(self.camera, defocus_px=None)) if self.blur_px > 0 else self
 
     def line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
         """The model's mean brightness over the part of each line the ball covers.
@@ -415,13 +432,14 @@ class LimbProfile:
         bad = ~np.isfinite(np.where(sg > 0, self.left_px[lines], self.right_px[lines]))[:, None]
         return np.where(bad, np.nan, cov)
 
-    def _chords(self, lines: np.ndarray, sg: np.ndarray, n_nodes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _chords(self, lines: np.ndarray, sg: np.ndarray, n_nodes: int, blurred: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The averaged silhouette's chord samples of each row as intervals of offsets inwards from its edge, pixels, and their weights (R, 3, n).
 
-        Computed once per line (a line's two edges and windows share them)
+        With a blur (``blur_px``) and ``blurred`` each sample is repeated at
+        the blur's nodes along the sensor, (R, 3, n * 12).  Computed once per line (a line's two edges and windows share them)
         and kept for the next call on the same rows.
         """
-        key = (int(n_nodes), lines.tobytes(), sg.tobytes())
+        key = (int(n_nodes), bool(blurred), lines.tobytes(), sg.tobytes())
         if key not in self._samples:
             uniq, inv = _unique_lines(lines)
             me = averaged_model(
@@ -434,8 +452,15 @@ class LimbProfile:
                 *(as_arg(a[0].reshape(shape[0], shape[1] * shape[2])) for a in me.samples), as_arg(me.left_px[0]), as_arg(me.right_px[0]),
                 as_arg(inv, np.int64), as_arg(sg),
             )
+            lo, hi, wgt = (a.reshape((lines.size,) + shape[1:]) for a in (lo, hi, wgt))
+            if blurred and self.blur_px > 0:
+                # the blur's marginal along the sensor: each chord shifted by its nodes
+                # (both ends alike, so either side's inward offsets), weights multiplied
+                shift, w = blur_nodes(self.blur_px)
+                lo, hi = ((a[..., None] + shift).reshape(lines.size, a.shape[1], -1) for a in (lo, hi))
+                wgt = (wgt[..., None] * w).reshape(lines.size, wgt.shape[1], -1)
             self._samples.clear()
-            self._samples[key] = tuple(a.reshape((lines.size,) + shape[1:]) for a in (lo, hi, wgt))
+            self._samples[key] = (lo, hi, wgt)
         return self._samples[key]
 
     def rows(self, lines: np.ndarray, sides: np.ndarray, n_nodes: int = 4) -> tuple:
@@ -447,14 +472,17 @@ class LimbProfile:
         see the attributes), its line, the background, the samples over the
         exposure and the pixel's height, the camera's focal length,
         principal point and distortion and the shading law (the arguments
-        of :func:`ballscan.measure._shading_kernels.limb_values` from ``pos`` on).
+        of :func:`ballscan.measure._shading_kernels.limb_values` from ``pos`` on),
+        and the blur's shifts and weights along the sensor (the kernel moves
+        the profile itself: its surface's brightness moves with it).
         """
         lines = np.asarray(lines, dtype=int)
         sg = np.asarray(sides, dtype=float)
-        lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes))
+        lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes, blurred=False))
+        shift, w = blur_nodes(self.blur_px) if self.blur_px > 0 else (np.zeros(1), np.ones(1))
         return (
             lo, hi, wgt, as_arg(self.t_lines_s[lines]), as_arg(np.where(sg > 0, self.left_px[lines], self.right_px[lines])),
-            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(),
+            as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(), as_arg(shift), as_arg(w),
         )
 
     def _model(self, n_time: int | None = None, n_height: int | None = None) -> tuple:
@@ -498,6 +526,14 @@ class LimbProfile:
         return np.where(hit > 0, val, np.nan)
 
     def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, average: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        if self.blur_px > 0:
+            # the blur's marginal along the sensor: the sharp profile averaged over its nodes
+            off = np.asarray(offsets, dtype=float)
+            shift, w = blur_nodes(self.blur_px)
+            val, cov = self.sharp()(lines, sides, (off[..., None] + shift).reshape(off.shape[0], -1), average)
+            val, cov = (np.nan_to_num(a).reshape(off.shape + (w.size,)) @ w for a in (val, cov))
+            bad = ~np.isfinite(np.where(np.asarray(sides) > 0, self.left_px[np.asarray(lines, dtype=int)], self.right_px[np.asarray(lines, dtype=int)]))[:, None]
+            return np.where(bad, np.nan, val), np.where(bad, np.nan, cov)
         lines = np.asarray(lines, dtype=int)
         sides = np.asarray(sides)
         width = self.background_dn.shape[1]
@@ -655,6 +691,8 @@ def ball_limb(
     usable = None if edges.profile is None else np.isfinite(edges.profile)
     shading = fit_shading(
         camera, motion, data_dn, edges.lines[both], edges.t_s[both], left, right,
+        # the blur circle's rim of blurred pixels is not the surface's shading
+        inset_px=1.5 + 0.5 * float(camera.defocus_px or 0.0),
         usable=usable, usable_origin=(int(edges.lines[0]), int(edges.profile_col0)),
     )
     if shading is None:

@@ -133,6 +133,34 @@ def _chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, 
 
 
 @jit()
+def _blurred_chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok, blur_px, blur_w, m_per_px):
+    """:func:`_chord_samples` over the blur's offsets across the sensor (the viewing plane moved by ``blur_px * m_per_px`` metres), each weighed by ``blur_w``: the samples of offset ``b`` at ``b * 3 n_nodes`` on."""
+    S1 = 3 * g.shape[0]
+    lo1 = np.empty(S1)
+    hi1 = np.empty(S1)
+    w1 = np.empty(S1)
+    mass = 0.0
+    sum_lo = 0.0
+    sum_hi = 0.0
+    invalid = False
+    for b in range(blur_px.shape[0]):
+        m_b, lo_b, hi_b, bad = _chord_samples(
+            te, g, gw, R, x0 - blur_px[b] * m_per_px, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2,
+            lo1, hi1, w1,
+        )
+        wb = blur_w[b]
+        mass += wb * m_b
+        sum_lo += wb * lo_b
+        sum_hi += wb * hi_b
+        invalid = invalid or bad
+        for j in range(S1):
+            ulo[b * S1 + j] = lo1[j]
+            uhi[b * S1 + j] = hi1[j]
+            wok[b * S1 + j] = wb * w1[j]
+    return mass, sum_lo, sum_hi, invalid
+
+
+@jit()
 def averaged_samples(
     th: np.ndarray,
     t: np.ndarray,
@@ -147,18 +175,29 @@ def averaged_samples(
     gw: np.ndarray,
     full: bool,
     want_samples: bool,
+    blur_px: np.ndarray,
+    blur_w: np.ndarray,
 ):
     """The averaged silhouette of parameter sets ``th`` (P, 6) at line times ``t`` (1 or P, N).
 
     Returns ``(left, right, presence, area, spread, valid, u_lo, u_hi,
-    wgt)``: per line (P, N), and per sample (P, N, 3 * n_nodes) when
+    wgt)``: per line (P, N), and per sample (P, N, 3 * n_nodes * B) when
     ``want_samples`` (else arrays of size 0).  ``spread`` and ``valid``
-    are computed only with ``full`` (else 0 and True).
+    are computed only with ``full`` (else 0 and True).  A lens's blur
+    across the sensor (the B offsets ``blur_px``, pixels, and weights
+    ``blur_w`` of its marginal: :func:`ballscan.measure.defocus.blur_nodes`;
+    one offset 0 of weight 1 for none) widens the pixel's height: each of
+    its offsets moves the viewing plane by as much at the line's depth.
     """
     P = th.shape[0]
     N = t.shape[1]
     nn = g.shape[0]
-    S = 3 * nn
+    nb = blur_px.shape[0]
+    S1 = 3 * nn
+    S = S1 * nb
+    reach_px = 0.0
+    for b in range(nb):
+        reach_px = max(reach_px, abs(blur_px[b]))
     R = radius_m
     ax, ay, az = acc[0], acc[1], acc[2]
     has_acc = ax != 0.0 or ay != 0.0 or az != 0.0
@@ -188,7 +227,8 @@ def averaged_samples(
             x0, y_line, z_line, a1 = _line_centre(dt0, y0, z0, vx, vy, vz, ax, ay, az, has_acc)
             A = abs(a1) * (exposure_s / 2.0)
             B = max(z_line, 0.0) / (2.0 * focal_px)
-            ApB = A + B
+            m_per_px = max(z_line, 0.0) / focal_px
+            ApB = A + B + reach_px * m_per_px
             if not want_samples and (x0 - ApB >= R or x0 + ApB <= -R):
                 # the line misses the ball: every kink clips to the same pole,
                 # every sample weighs 0 (the loop below gives these values)
@@ -201,9 +241,16 @@ def averaged_samples(
                     spread[p, n] = 0.0
                     valid[p, n] = z_line > 0.0
                 continue
-            mass, sum_lo, sum_hi, invalid = _chord_samples(
-                te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok,
-            )
+            if nb == 1:
+                mass, sum_lo, sum_hi, invalid = _chord_samples(
+                    te, g, gw, R, x0 - blur_px[0] * m_per_px, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px,
+                    k1, k2, ulo, uhi, wok,
+                )
+            else:
+                mass, sum_lo, sum_hi, invalid = _blurred_chord_samples(
+                    te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok,
+                    blur_px, blur_w, m_per_px,
+                )
             present = mass > 0.0
             inv_m = 1.0 / mass if present else 1.0
             lft = sum_lo * inv_m
@@ -924,7 +971,8 @@ def warm_up() -> None:
     t = np.zeros((1, 1))
     g = np.zeros(1)
     gw = np.full(1, 2.0)
-    _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True)
+    _, _, _, _, _, _, lo, hi, w = averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True, np.zeros(1), np.ones(1))
+    averaged_samples(th, t, 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, np.zeros(3), g, gw, True, True, np.zeros(2), np.full(2, 0.5))
     one = np.ones((1, 1))
     pixel_residuals(lo, hi, w, np.zeros((1, 1)), np.ones((1, 1), dtype=np.bool_), one, one, one, np.zeros((1, 1), dtype=np.int64), 1, 1)
     averaged_edges_jacobian(th[0].copy(), np.zeros(1), 0.03, 1e-5, 3000.0, 0.0, 0.0, 0.0, g, gw)

@@ -105,7 +105,7 @@ def averaged_model(
     m0 = BallMotion.from_params(th[0], float(radius_m), acceleration_mps2)
     c = m0.centre(t_all)
     vx = np.abs(m0.velocity_at(t_all)[:, 0])
-    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) / (2 * camera.focal_px)
+    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) * (0.5 + 0.5 * (camera.defocus_px or 0.0)) / camera.focal_px
     inner = reach < 0.9 * float(radius_m)
     if not inner.any() or inner.all():
         return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes if not inner.all() else 2, False)
@@ -148,12 +148,13 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
     if th.shape[1] != 6 or t.shape[0] not in (1, th.shape[0]):
         raise ValueError(f"_model_core: parameter sets {th.shape} and line times {t.shape} do not match")
+    blur = blur_offsets(camera)
     left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
-        th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples)
+        th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples), *blur
     )
     samples = None
     if return_samples:
-        shp = left.shape + (3, n_nodes)
+        shp = left.shape + (3 * blur[0].size, n_nodes)
         samples = (u_lo.reshape(shp), u_hi.reshape(shp), wgt.reshape(shp))
     return ModelEdges(
         left_px=left,
@@ -164,6 +165,30 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
         valid=valid if full else None,
         samples=samples,
     )
+
+
+#: Nodes of the lens's blur across the sensor (:func:`blur_offsets`).
+BLUR_NODES = 8
+_SHARP = (np.zeros(1), np.ones(1))
+
+
+def blur_offsets(camera: LineScanCamera) -> tuple[np.ndarray, np.ndarray]:
+    """The offsets across the sensor (pixels) and weights that carry the camera's blur circle (``defocus_px``) into the model; ``([0], [1])`` in focus.
+
+    The blur circle's marginal across the sensor is a semicircle of radius
+    ``defocus_px / 2``: Gauss-Chebyshev nodes of the second kind
+    (:data:`BLUR_NODES`), as for its marginal along the sensor
+    (:func:`ballscan.measure.defocus.blur_nodes`).  Across the sensor it
+    widens the pixel's height, which the averaged silhouette integrates in
+    closed form between kinks; each offset is one such pixel, its viewing
+    plane moved by the offset.
+    """
+    d = camera.defocus_px
+    if not d:
+        return _SHARP
+    j = np.arange(1, BLUR_NODES + 1)
+    w = np.sin(j * np.pi / (BLUR_NODES + 1)) ** 2
+    return 0.5 * float(d) * np.cos(j * np.pi / (BLUR_NODES + 1)), w / w.sum()
 
 
 def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
@@ -208,7 +233,7 @@ class ModelEvaluator:
         """The model (with edge spread and validity) at the parameter sets ``th`` (P, 6)."""
         if self._t is None:
             return averaged_model(self.camera, th, self.radius_m, self.t_lines_s, self.acceleration_mps2, self.n_nodes)
-        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), self._t, *self._args, True, False)
+        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), self._t, *self._args, True, False, *blur_offsets(self.camera))
         return ModelEdges(left, right, presence, area, spread, valid)
 
 
@@ -492,7 +517,7 @@ def hybrid_jacobian(
     dl, dr = J[0], J[1]
     ax = float(acceleration_mps2[0])
     vxt = np.abs(theta[3] + ax * tau) if ax else abs(float(theta[3]))
-    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) / (2.0 * camera.focal_px)
+    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) * (0.5 + 0.5 * (camera.defocus_px or 0.0)) / camera.focal_px
     fd = ~chord_ok | (reach > reach_limit * R)
     if fd_lines is not None:
         fd |= fd_lines

@@ -34,6 +34,7 @@ from ..measure.defects import repaired_columns, repaired_image, stuck_columns
 from ..measure.robust import median
 from ..measure.images import LineImage, as_line_image
 from ..geometry.motion import PARAM_NAMES
+from ..measure.defocus import Defocus
 from ..solve.prior import ParameterPrior
 from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, propagate, unfixed_parameters
 from ..solve.initial import InitialGuess
@@ -124,6 +125,9 @@ def estimate_region(
         return _paper_estimate(ball, detected, guess, initial, t0, t_init)
     first = first_fit_stage(ball, guess)
     shading = shading_stage(ball, first) if recipe.shading or recipe.pixels else None
+    if shading is not None and shading.limb is not None:
+        # a blur circle measured on the ball's edges is its camera's from here on
+        ball = replace(ball, camera=shading.limb.camera)
     pixel = pixel_fit_stage(ball, first, shading) if shading is not None else PixelFit("off")
     second = None
     if recipe.shading and shading is not None and shading.state == "built" and pixel.fit is None:
@@ -241,6 +245,8 @@ def _fit_estimate(
     """
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
+    if record.defocus is not None and record.defocus.diameter_px > 0:
+        flags.append("defocus")
     cov = fit.covariance
     # full rank, yet not fixed by the measurements: a sigma beyond the
     # parameter's scale in the image (a cut ball's small visible part); its
@@ -313,11 +319,19 @@ def _fit_estimate(
             "background_refined": record.background_refined,
             "shading_refit": record.shading_refit,
             "inward_edges": record.inward_edges,
+            **_defocus_keys(record.defocus),
             "shading": None
             if law is None
             else {"ambient_dn": law.ambient_dn, "light_dn": list(law.light_dn), "residual_rms_dn": law.residual_rms_dn},
         },
     )
+
+
+def _defocus_keys(defocus: Defocus | None) -> dict:
+    """The result's blur-circle keys (docs/geometry.md): diameter, 1-sigma (pixels) and source, None where not known."""
+    if defocus is None:
+        return {"defocus_px": None, "defocus_sigma_px": None, "defocus_source": None}
+    return {"defocus_px": defocus.diameter_px, "defocus_sigma_px": defocus.sigma_px, "defocus_source": defocus.source}
 
 
 def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:

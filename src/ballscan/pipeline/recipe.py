@@ -23,7 +23,7 @@ ShadingStart = Literal["guess", "loose_fit"]
 METHODS: tuple[str, ...] = get_args(Method)
 SHADING_STARTS: tuple[str, ...] = get_args(ShadingStart)
 
-_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law", "limb_envelope")
+_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law", "limb_envelope", "defocus")
 #: integer fields and their smallest allowed value
 _INTS = {
     "flat_field_min_columns": 0,
@@ -34,7 +34,10 @@ _INTS = {
     "background_min_lines": 1,
 }
 #: non-negative real fields
-_REALS = ("matched_max_gain_sigma", "uniform_max_light", "uniform_max_level_rel_sigma", "max_lateral_px", "background_window_sigma")
+_REALS = (
+    "matched_max_gain_sigma", "uniform_max_light", "uniform_max_level_rel_sigma", "max_lateral_px", "background_window_sigma",
+    "defocus_min_px", "defocus_min_sigmas",
+)
 _FITS = ("loose_fit", "pixel_fit", "spread_fit", "edge_fit")
 
 
@@ -136,6 +139,14 @@ class Recipe:
         envelope of the ball's edges (dark texture at the limb,
         :func:`ballscan.solve.envelope.inward_edges`), found about a loose
         fit of them all.
+    defocus : bool
+        Where the camera file gives no ``defocus_px``, measure the lens's
+        blur circle on the ball's sharp edges
+        (:func:`ballscan.measure.defocus.estimate_defocus`) and let the
+        shading pass's limb model carry it.
+    defocus_min_px, defocus_min_sigmas : float
+        A measured blur circle is taken only from this diameter (pixels)
+        and this many of its sigmas on.
     """
 
     method: Method = "fit"
@@ -163,6 +174,9 @@ class Recipe:
     spread_fit: FitSettings = FitSettings(pixels=True, pixel_min_spread_px=0.3, pixel_nodes=32, pixel_window_px=20.0)
     edge_fit: FitSettings = FitSettings()
     limb_envelope: bool = True
+    defocus: bool = True
+    defocus_min_px: float = 1.0
+    defocus_min_sigmas: float = 4.0
 
     def changes(self) -> dict:
         """The fields that differ from ``Recipe()`` (the results' ``recipe`` key: empty for the default)."""

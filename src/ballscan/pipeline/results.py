@@ -38,6 +38,7 @@ FLAGS = (
     "not_converged",
     "degenerate",
     "texture_at_limb",
+    "defocus",
     "not_a_ball",
     "implausible_radius",
     "implausible_speed",

@@ -33,6 +33,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
+from ..measure.defocus import Defocus, estimate_defocus
 from ..measure.detection import BallRegion, Detection, region_background
 from ..measure.edges import EdgeMeasurements, measure_edges, with_limb, without_edges
 from ..measure.matched import matched_edges
@@ -75,7 +76,7 @@ __all__ = [
 ShadingPass = Literal["off", "used", "no_start", "too_few_pixels", "not_converged"]
 #: what became of the pixel fit: "off" (not asked for), "used", "spread" (the
 #: spread lines' pixels after matched edges), or why the asked-for fit was not used
-PixelsState = Literal["off", "used", "spread", "not_uniform", "lateral_motion", "no_start", "no_shading_model", "not_converged"]
+PixelsState = Literal["off", "used", "spread", "not_uniform", "lateral_motion", "defocus", "no_start", "no_shading_model", "not_converged"]
 #: the edges the shading path's final fit takes
 SecondKind = Literal["none", "window", "matched", "refined_background", "flat_fielded"]
 #: the fit the estimate reports
@@ -280,6 +281,9 @@ class Shading:
         (its profile, windows and noise model reused).
     refusal : str or None
         Why the pixel model may not describe the ball (:func:`pixel_fit_refusal`), None where it does.
+    defocus : Defocus or None
+        The lens's blur circle the limb model carries: the camera file's, or
+        measured on the ball's edges (``Recipe.defocus``); None where neither.
     time_s : float
     """
 
@@ -287,6 +291,7 @@ class Shading:
     limb: LimbProfile | None = None
     edges: EdgeMeasurements | None = None
     refusal: str | None = None
+    defocus: Defocus | None = None
     time_s: float = 0.0
 
 
@@ -303,9 +308,42 @@ def shading_stage(ball: BallInput, first: FirstFit) -> Shading:
     limb = ball_limb(ball.camera, first.start, ball.image.data, first.edges, ball.t_lines_s, first.background_dn, level_samples=recipe.level_samples)
     if limb is None:
         return Shading("too_few_pixels", time_s=time.perf_counter() - t0)
+    defocus = ball_defocus(ball, limb, first.edges)
+    if defocus is not None and defocus.source == "image" and defocus.diameter_px > 0:
+        limb = _blurred_limb(ball, first, defocus) or limb
     edges = with_limb(first.edges, limb)
     refusal = pixel_fit_refusal(limb, edges, first.start, ball.camera, recipe)
-    return Shading("built", limb, edges, refusal, time.perf_counter() - t0)
+    return Shading("built", limb, edges, refusal, defocus, time.perf_counter() - t0)
+
+
+def _blurred_limb(ball: BallInput, first: FirstFit, defocus: Defocus) -> LimbProfile | None:
+    """The limb model again with the blur circle measured on the ball: its shading law fitted away from the blurred rim (:func:`ballscan.measure.shading.ball_limb`); the later stages take the ball's camera, with the blur, from it."""
+    return ball_limb(
+        replace(ball.camera, defocus_px=defocus.diameter_px), first.start, ball.image.data, first.edges, ball.t_lines_s,
+        first.background_dn, level_samples=ball.recipe.level_samples,
+    )
+
+
+def ball_defocus(ball: BallInput, limb: LimbProfile, edges: EdgeMeasurements) -> Defocus | None:
+    """The blur circle the ball's limb model takes: the camera file's ``defocus_px``, else measured on its edges where ``Recipe.defocus`` asks.
+
+    A measured blur is kept only where it stands out of its own noise
+    (``Recipe.defocus_min_sigmas`` of its sigma) and reaches
+    ``Recipe.defocus_min_px``: below, the blur's effect on the edges is
+    below the model's other errors, and a blur that is not there would bias
+    them.
+    """
+    if ball.camera.defocus_px is not None:
+        return Defocus(float(ball.camera.defocus_px), 0.0, 0, "camera")
+    recipe = ball.recipe
+    if not recipe.defocus:
+        return None
+    found = estimate_defocus(limb, edges)
+    if found is None:
+        return None
+    if not (found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.sigma_px):
+        return replace(found, diameter_px=0.0)
+    return found
 
 
 def pixel_fit_refusal(limb: LimbProfile, edges: EdgeMeasurements, motion: BallMotion, camera: LineScanCamera, recipe: Recipe) -> str | None:
@@ -317,6 +355,9 @@ def pixel_fit_refusal(limb: LimbProfile, edges: EdgeMeasurements, motion: BallMo
     light must stay within ``recipe.uniform_max_light`` of the contrast and
     the lines' brightness within ``recipe.uniform_max_level_rel_sigma`` of
     the law (a scatter that could not be measured, NaN, refuses).
+
+    ``"defocus"``: the pixel model and the matched edges' profile have no
+    blur along the sensor (the window edges' limb levels have it).
 
     ``"lateral_motion"``: the model takes each chord position at one mean
     time of the exposure, right for the edges' mean positions and the areas
@@ -330,6 +371,8 @@ def pixel_fit_refusal(limb: LimbProfile, edges: EdgeMeasurements, motion: BallMo
     lateral_px = camera.focal_px * abs(motion.velocity_mps[1]) * camera.exposure / max(motion.position_m[2], 1e-9)
     if lateral_px > recipe.max_lateral_px:
         return "lateral_motion"
+    if limb.blur_px > 0:
+        return "defocus"
     return None
 
 
@@ -637,7 +680,7 @@ class StageRecord:
     shading_pass : {"off", "used", "no_start", "too_few_pixels", "not_converged"}
         The shading-aware pass: off, its fit reported, or why not (no start
         motion, too few pixels for the shading model, its fit did not converge).
-    pixels : {"off", "used", "spread", "not_uniform", "lateral_motion", "no_start", "no_shading_model", "not_converged"}
+    pixels : {"off", "used", "spread", "not_uniform", "lateral_motion", "defocus", "no_start", "no_shading_model", "not_converged"}
         The pixel fit (:class:`PixelFit`); "spread" where the spread lines'
         pixels were fitted after matched edges without ``Recipe.pixels``.
     second_measurement : {"none", "window", "matched", "refined_background", "flat_fielded"}
@@ -656,6 +699,10 @@ class StageRecord:
     inward_edges : int
         Model-free edges left out as lying inwards of the edges' outer
         envelope (texture at the limb, :attr:`FirstFit.n_inward`).
+    defocus : Defocus or None
+        The lens's blur circle: the camera file's, or the one measured on
+        the ball's edges (:attr:`Shading.defocus`; its diameter 0 where it
+        was not taken); None where neither.
     """
 
     shading_pass: ShadingPass
@@ -667,6 +714,7 @@ class StageRecord:
     background_refined: bool
     shading_refit: bool
     inward_edges: int = 0
+    defocus: Defocus | None = None
 
 
 def stage_record(
@@ -697,4 +745,5 @@ def stage_record(
         background_refined=(kind in ("refined_background", "flat_fielded") and matched) or recipe.refined_background,
         shading_refit=final.path == "refit",
         inward_edges=first.n_inward,
+        defocus=None if shading is None else shading.defocus,
     )

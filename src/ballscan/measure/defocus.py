@@ -1,0 +1,284 @@
+"""Defocus: the blur circle of a lens focused at another distance than the ball's, measured on the ball's edges.
+
+A real aperture images each point of a ball it is not focused on as a
+uniform disc, the blur circle, of diameter ``b`` pixels.  Along the sensor
+its marginal is the semicircle density of radius ``b / 2`` (variance
+``b^2 / 16``): a sharp limb becomes a ramp some ``b`` pixels wide.  The
+edges' windows and level runs (:mod:`ballscan.measure.edges`) are a pixel
+or two wide, so the blur moves their limb level and the edge outwards by
+tenths of a pixel (half a pixel on a 26-pixel ball with a 3.8-pixel blur
+circle), the more the smaller the ball: a pattern the depth velocity
+absorbs.  :class:`ballscan.measure.shading.LimbProfile` carries the blur
+into the edges' profile model once it is known (its camera's ``defocus_px``).
+
+The camera file may give it (``defocus_px``, docs/geometry.md); otherwise
+:func:`estimate_defocus` measures it on the ball's own edges: on the lines
+where the exposure hardly spreads the edge, each edge's pixels are compared
+with the brightness model's profile (the shading law, the pixel's width and
+the exposure: :class:`ballscan.measure.shading.LimbProfile` without blur)
+blurred by circles of a range of diameters, each edge with its own level
+and position, and the diameter of least weighted squares over all of them
+is taken.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Literal
+
+import numpy as np
+
+from .edges import EdgeMeasurements
+
+if TYPE_CHECKING:  # the shading module imports this one's kernel
+    from .shading import LimbProfile
+
+__all__ = ["Defocus", "DefocusSettings", "blur_kernel", "blur_nodes", "estimate_defocus"]
+
+
+@dataclass(frozen=True)
+class DefocusSettings:
+    """Tuning of :func:`estimate_defocus` (pixels).
+
+    Attributes
+    ----------
+    max_spread_px : float
+        Edges of the lines whose model edge spread over the exposure is below
+        this: there the edge's width is the blur's and the pixel's.
+    half_window_px : int
+        Pixels compared on either side of each edge.
+    max_edges : int
+        Edges used at most (evenly spaced over the passage and both sides).
+    min_edges : int
+        Fewest edges for an estimate.
+    max_diameter_px : float
+        Largest blur circle tried.
+    step_px : float
+        Spacing of the diameters tried (refined between them by a parabola).
+    samples_per_px : int
+        Model samples per pixel (the blur's and the pixel's quadrature).
+    max_shift_px : float
+        Each edge's position may move this far from its measured value (the
+        window edges of a blurred limb lie up to half a pixel out).
+    """
+
+    max_spread_px: float = 0.2
+    half_window_px: int = 6
+    max_edges: int = 120
+    min_edges: int = 12
+    max_diameter_px: float = 8.0
+    step_px: float = 0.5
+    samples_per_px: int = 10
+    max_shift_px: float = 1.0
+
+    def __post_init__(self) -> None:
+        for name in ("max_spread_px", "max_diameter_px", "step_px", "max_shift_px"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"DefocusSettings.{name}: expected a finite number > 0, got {v!r}")
+        for name, low in (("half_window_px", 2), ("max_edges", 1), ("min_edges", 1), ("samples_per_px", 2)):
+            v = getattr(self, name)
+            if not (isinstance(v, int) and not isinstance(v, bool) and v >= low):
+                raise ValueError(f"DefocusSettings.{name}: expected an integer >= {low}, got {v!r}")
+
+
+@dataclass(frozen=True)
+class Defocus:
+    """The blur circle a ball's edges are measured with.
+
+    Attributes
+    ----------
+    diameter_px : float
+        Diameter of the blur circle on the sensor, pixels (0: in focus).
+    sigma_px : float
+        Its 1-sigma, pixels (0 where the camera file gives it).
+    n_edges : int
+        Edges it was measured on (0: from the camera file).
+    source : {"camera", "image"}
+    """
+
+    diameter_px: float
+    sigma_px: float
+    n_edges: int
+    source: Literal["camera", "image"]
+
+
+def blur_kernel(diameter_px: float, step_px: float) -> np.ndarray:
+    """The blur circle's marginal along the sensor on cells of ``step_px`` pixels centred on 0: each cell's exact share (sums to 1).
+
+    The semicircle density ``2 sqrt(a^2 - x^2) / (pi a^2)``, ``a`` the
+    radius, integrated over each cell; ``[1.0]`` for a blur below half a cell.
+    """
+    a = 0.5 * float(diameter_px)
+    if a < 0.5 * step_px:
+        return np.ones(1)
+    n = int(math.ceil(a / step_px - 0.5))
+    x = np.arange(-n, n + 1) * step_px
+
+    def primitive(u: np.ndarray) -> np.ndarray:
+        u = np.clip(u, -a, a)
+        return u * np.sqrt(a * a - u * u) + a * a * np.arcsin(u / a)
+
+    w = primitive(x + 0.5 * step_px) - primitive(x - 0.5 * step_px)
+    return w / w.sum()
+
+
+def blur_nodes(diameter_px: float, n: int = 12) -> tuple[np.ndarray, np.ndarray]:
+    """Shifts along the sensor (pixels) and weights of the blur circle's marginal: Gauss-Chebyshev nodes of the second kind.
+
+    ``sum w_j f(s_j)`` integrates ``f`` against the semicircle density of
+    radius ``diameter_px / 2`` exactly for polynomials of degree below
+    ``2 n``; the coverage of a pixel by a shifted chord is piecewise linear
+    in the shift, and 12 nodes take a blurred edge's pixel values within
+    about 1e-3 of its exact convolution (tests/test_defocus.py).
+    """
+    j = np.arange(1, n + 1)
+    s = np.cos(j * np.pi / (n + 1))
+    w = np.sin(j * np.pi / (n + 1)) ** 2
+    return 0.5 * float(diameter_px) * s, w / w.sum()
+
+
+def _selected_edges(edges: EdgeMeasurements, limb: "LimbProfile", s: DefocusSettings) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows of ``edges`` (line index), sides (+1 left, -1 right) and measured edges (px) of the sharp lines' usable edges, at most ``s.max_edges``."""
+    rows, sides, at = [], [], []
+    sharp = limb.spread_px[edges.lines] < s.max_spread_px
+    for sg, e, ok in ((1.0, edges.left_px, edges.left_ok), (-1.0, edges.right_px, edges.right_ok)):
+        i = np.flatnonzero(ok & np.isfinite(e) & sharp)
+        rows.append(i)
+        sides.append(np.full(i.size, sg))
+        at.append(e[i])
+    r, sg, e = (np.concatenate(a) for a in (rows, sides, at))
+    if r.size > s.max_edges:
+        pick = np.linspace(0, r.size - 1, s.max_edges).astype(int)
+        r, sg, e = r[pick], sg[pick], e[pick]
+    return r, sg, e
+
+
+def _edge_pixels(edges: EdgeMeasurements, rows: np.ndarray, sides: np.ndarray, at: np.ndarray, half: int) -> tuple[np.ndarray, ...]:
+    """Each edge's pixels: offsets inwards from its measured edge (px), normalised values and their weights (0: unusable)."""
+    k = np.arange(-half, half + 1)
+    cols = np.rint(at)[:, None] + sides[:, None] * k[None, :]
+    j = cols.astype(int) - int(edges.profile_col0)
+    inside = (j >= 0) & (j < edges.profile.shape[1])
+    jc = np.clip(j, 0, edges.profile.shape[1] - 1)
+    y = edges.profile[rows[:, None], jc]
+    sy = edges.profile_sigma[rows[:, None], jc] if edges.profile_sigma is not None else np.ones_like(y)
+    w = np.where(inside & np.isfinite(y) & np.isfinite(sy) & (sy > 0), 1.0 / np.where(sy > 0, sy, 1.0) ** 2, 0.0)
+    offsets = sides[:, None] * (cols - at[:, None])
+    return offsets, np.where(w > 0, y, 0.0), w
+
+
+@dataclass(frozen=True)
+class _Lookup:
+    """Where each edge's pixels fall on the model's fine grid at each shift: flat indices of the sample below and the fraction towards the next (S, E, K)."""
+
+    index: np.ndarray
+    fraction: np.ndarray
+
+
+def _lookup(n_grid: int, grid0: float, step: float, offsets: np.ndarray, shifts: np.ndarray) -> _Lookup:
+    """The data's pixel at offset ``o`` (inwards from the measured edge) is compared with the model at ``o + shift`` (grid ``grid0 + step * f``)."""
+    x = (offsets[None] + shifts[:, None, None] - grid0) / step
+    i0 = np.clip(np.floor(x).astype(int), 0, n_grid - 2)
+    rows = np.arange(offsets.shape[0])[None, :, None] * n_grid
+    return _Lookup(rows + i0, np.clip(x - i0, 0.0, 1.0))
+
+
+def _profile_sse(model: np.ndarray, at: _Lookup, y: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """Each edge's least weighted squares over its shifts, its level fitted at each: (E,).
+
+    ``model`` (E, F) is the pixel-averaged model on the fine grid of
+    :func:`_lookup`, ``y`` and ``w`` (E, K) the pixels' values and weights.
+    """
+    flat = model.ravel()
+    m = flat[at.index] + (flat[at.index + 1] - flat[at.index]) * at.fraction
+    mw = m * w
+    level = np.einsum("sek,ek->se", mw, y) / np.maximum(np.einsum("sek,sek->se", mw, m), 1e-300)
+    r = y - level[..., None] * m
+    return np.einsum("ek,sek->se", w, r * r).min(axis=0)
+
+
+def _parabola_min(x: np.ndarray, f: np.ndarray) -> float:
+    """The minimum of ``f`` over the grid ``x``, refined by the parabola through it and its neighbours (kept within them)."""
+    i = int(np.argmin(f))
+    if i == 0 or i == x.size - 1:
+        return float(x[i])
+    f0, f1, f2 = f[i - 1], f[i], f[i + 1]
+    den = f0 - 2.0 * f1 + f2
+    if not den > 0:
+        return float(x[i])
+    h = x[1] - x[0]
+    return float(x[i] + 0.5 * h * (f0 - f2) / den)
+
+
+def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: DefocusSettings = DefocusSettings()) -> Defocus | None:
+    """The blur circle's diameter measured on the ball's sharp edges (see the module's notes).
+
+    Parameters
+    ----------
+    limb : LimbProfile
+        The ball's brightness model (its shading law, edge spread and mean
+        edges at a rough motion), without a blur along the sensor (its
+        camera's, if any, is left out of the profile).
+    edges : EdgeMeasurements
+        The ball's edges, with their normalised ``profile``.
+    settings : DefocusSettings
+
+    Returns
+    -------
+    Defocus or None
+        ``source="image"``.  Its sigma is the spread of the estimates from
+        the four quarters of the edges (each side, each half of the
+        passage), which holds the texture's and the shading law's errors
+        as well as the noise's.  None where fewer than
+        ``settings.min_edges`` sharp edges, or no profile, are available,
+        or where the best diameter lies at the end of the range tried.
+    """
+    s = settings
+    if edges.profile is None:
+        return None
+    rows, sides, at = _selected_edges(edges, limb, s)
+    if rows.size < s.min_edges:
+        return None
+    lines = edges.lines[rows]
+    offsets, y, w = _edge_pixels(edges, rows, sides, at, s.half_window_px)
+    # the model's point profile, inwards from its own mean edge, on a fine grid
+    # wide enough for the pixels, their shifts and the largest blur
+    step = 1.0 / s.samples_per_px
+    reach = s.half_window_px + 1.0 + s.max_shift_px + 0.5 * s.max_diameter_px + 1.0
+    grid = np.arange(-reach, reach + 0.5 * step, step)
+    point, _ = limb.sharp()(lines, sides, np.broadcast_to(grid, (lines.size, grid.size)))
+    point = np.nan_to_num(point)
+    # the data's edge against the model's: the model is compared at the data's offsets moved by this
+    model_edge = np.where(sides > 0, limb.left_px[lines], limb.right_px[lines])
+    base = sides * (at - model_edge)
+    ok = np.isfinite(base)
+    if ok.sum() < s.min_edges:
+        return None
+    offsets, y, w, point, sides, lines, base = offsets[ok], y[ok], w[ok], point[ok], sides[ok], lines[ok], base[ok]
+    offsets = offsets + base[:, None]
+    at_grid = _lookup(grid.size, grid[0], step, offsets, np.arange(-s.max_shift_px, s.max_shift_px + 1e-9, 0.1))
+    diameters = np.arange(0.0, s.max_diameter_px + 1e-9, s.step_px)
+    spectrum = np.fft.rfft(point, n=2 * grid.size, axis=1)
+    pixel = np.ones(s.samples_per_px) / s.samples_per_px
+    sse = np.empty((diameters.size, lines.size))
+    for i, d in enumerate(diameters):
+        kernel = np.convolve(blur_kernel(d, step), pixel)
+        # centred ('same') convolution of each row with the blur and the pixel's width
+        full = np.fft.irfft(spectrum * np.fft.rfft(kernel, n=2 * grid.size), n=2 * grid.size, axis=1)
+        c = (kernel.size - 1) // 2
+        model = full[:, c:c + grid.size]
+        if kernel.size % 2 == 0:  # an even kernel's centre lies between two samples
+            model = 0.5 * (model + full[:, c + 1:c + 1 + grid.size])
+        sse[i] = _profile_sse(model, at_grid, y, w)
+    diameter = max(_parabola_min(diameters, sse.sum(axis=1)), 0.0)
+    if diameter >= diameters[-1] - s.step_px:
+        # at the end of the range tried: no blur circle describes these edges
+        return None
+    # the quarters: each side, each half of the passage
+    early = lines < np.median(lines)
+    quarters = [(sides == sg) & (early == e) for sg in (1.0, -1.0) for e in (True, False)]
+    parts = [max(_parabola_min(diameters, sse[:, q].sum(axis=1)), 0.0) for q in quarters if q.sum() >= 2]
+    sigma = float(np.std(parts, ddof=1) / math.sqrt(len(parts))) if len(parts) >= 2 else math.nan
+    return Defocus(diameter_px=float(diameter), sigma_px=sigma, n_edges=int(lines.size), source="image")
