@@ -96,12 +96,17 @@ class Defocus:
     n_edges : int
         Edges it was measured on (0: from the camera file).
     source : {"camera", "image"}
+    used : bool
+        Whether the edges' model carries it: always from the camera file; a
+        measured one where it stands out of its noise (see
+        :func:`ballscan.pipeline.stages.ball_defocus`).
     """
 
     diameter_px: float
     sigma_px: float
     n_edges: int
     source: Literal["camera", "image"]
+    used: bool = True
 
 
 def blur_kernel(diameter_px: float, step_px: float) -> np.ndarray:
@@ -231,7 +236,8 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
         ``source="image"``.  Its sigma is the spread of the estimates from
         the four quarters of the edges (each side, each half of the
         passage), which holds the texture's and the shading law's errors
-        as well as the noise's.  None where fewer than
+        as well as the noise's, and at least the noise's alone (the
+        curvature of the weighted squares).  None where fewer than
         ``settings.min_edges`` sharp edges, or no profile, are available,
         or where the best diameter lies at the end of the range tried.
     """
@@ -280,5 +286,14 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     early = lines < np.median(lines)
     quarters = [(sides == sg) & (early == e) for sg in (1.0, -1.0) for e in (True, False)]
     parts = [max(_parabola_min(diameters, sse[:, q].sum(axis=1)), 0.0) for q in quarters if q.sum() >= 2]
-    sigma = float(np.std(parts, ddof=1) / math.sqrt(len(parts))) if len(parts) >= 2 else math.nan
-    return Defocus(diameter_px=float(diameter), sigma_px=sigma, n_edges=int(lines.size), source="image")
+    spread = float(np.std(parts, ddof=1) / math.sqrt(len(parts))) if len(parts) >= 2 else math.nan
+    noise = _noise_sigma(diameters, sse.sum(axis=1), int((w > 0).sum()) - 3 * lines.size)
+    return Defocus(diameter_px=float(diameter), sigma_px=float(np.fmax(spread, noise)), n_edges=int(lines.size), source="image")
+
+
+def _noise_sigma(x: np.ndarray, f: np.ndarray, dof: int) -> float:
+    """The 1-sigma of the minimum of the weighted squares ``f`` over the grid ``x`` from their curvature there (the residuals' variance from ``dof``)."""
+    i = min(max(int(np.argmin(f)), 1), x.size - 2)
+    scale = f.min() / max(dof, 1)
+    curvature = (f[i - 1] - 2.0 * f[i] + f[i + 1]) / (x[1] - x[0]) ** 2 / max(scale, 1e-300)
+    return float(math.sqrt(2.0 / curvature)) if curvature > 0 else math.nan

@@ -245,7 +245,7 @@ def _fit_estimate(
     """
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
-    if record.defocus is not None and record.defocus.diameter_px > 0:
+    if record.defocus is not None and record.defocus.used and record.defocus.diameter_px > 0:
         flags.append("defocus")
     cov = fit.covariance
     # full rank, yet not fixed by the measurements: a sigma beyond the
@@ -328,10 +328,13 @@ def _fit_estimate(
 
 
 def _defocus_keys(defocus: Defocus | None) -> dict:
-    """The result's blur-circle keys (docs/geometry.md): diameter, 1-sigma (pixels) and source, None where not known."""
+    """The result's blur-circle keys (docs/geometry.md): diameter, 1-sigma (pixels), source and whether the model carries it; None where not known."""
     if defocus is None:
-        return {"defocus_px": None, "defocus_sigma_px": None, "defocus_source": None}
-    return {"defocus_px": defocus.diameter_px, "defocus_sigma_px": defocus.sigma_px, "defocus_source": defocus.source}
+        return {"defocus_px": None, "defocus_sigma_px": None, "defocus_source": None, "defocus_used": False}
+    return {
+        "defocus_px": defocus.diameter_px, "defocus_sigma_px": defocus.sigma_px, "defocus_source": defocus.source,
+        "defocus_used": defocus.used,
+    }
 
 
 def _cov_block(cov: np.ndarray, idx: list[int | None]) -> np.ndarray:

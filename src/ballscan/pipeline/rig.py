@@ -462,6 +462,14 @@ def own_block(e: BallEstimate, recipe: Recipe) -> tuple[EdgeMeasurements, FitSet
     return edges, recipe.edge_fit
 
 
+def _with_blur(camera: LineScanCamera, e: BallEstimate) -> LineScanCamera:
+    """The camera with the blur circle its estimate's edges were measured with (measured on the ball where the camera file gives none)."""
+    d = None if e.record is None else e.record.defocus
+    if d is None or not d.used or camera.defocus_px is not None:
+        return camera
+    return replace(camera, defocus_px=d.diameter_px)
+
+
 def gain_prior(e: BallEstimate, recipe: Recipe) -> float:
     """The relative 1-sigma of the column gains in a camera's pixels, 0 where they count as known.
 
@@ -523,7 +531,7 @@ def measure_group(
     motion0, offsets = start
     order = sorted(usable)
     cams = [
-        JointCamera(rig.cameras[k].name, cameras.get(k, rig.cameras[k].camera), *_block(usable[k], recipe, rig.cameras[k].clock_offset_s))
+        JointCamera(rig.cameras[k].name, _with_blur(cameras.get(k, rig.cameras[k].camera), usable[k]), *_block(usable[k], recipe, rig.cameras[k].clock_offset_s))
         for k in order
     ]
     offs = [offsets[rig.unknown_clocks.index(k)] for k in order if not rig.cameras[k].clock_known]

@@ -308,8 +308,8 @@ def shading_stage(ball: BallInput, first: FirstFit) -> Shading:
     limb = ball_limb(ball.camera, first.start, ball.image.data, first.edges, ball.t_lines_s, first.background_dn, level_samples=recipe.level_samples)
     if limb is None:
         return Shading("too_few_pixels", time_s=time.perf_counter() - t0)
-    defocus = ball_defocus(ball, limb, first.edges)
-    if defocus is not None and defocus.source == "image" and defocus.diameter_px > 0:
+    defocus = ball_defocus(ball, limb, first)
+    if defocus is not None and defocus.source == "image" and defocus.used:
         limb = _blurred_limb(ball, first, defocus) or limb
     edges = with_limb(first.edges, limb)
     refusal = pixel_fit_refusal(limb, edges, first.start, ball.camera, recipe)
@@ -324,26 +324,26 @@ def _blurred_limb(ball: BallInput, first: FirstFit, defocus: Defocus) -> LimbPro
     )
 
 
-def ball_defocus(ball: BallInput, limb: LimbProfile, edges: EdgeMeasurements) -> Defocus | None:
-    """The blur circle the ball's limb model takes: the camera file's ``defocus_px``, else measured on its edges where ``Recipe.defocus`` asks.
+def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus | None:
+    """The blur circle of the ball's limb model: the camera file's ``defocus_px``, else measured on its edges where ``Recipe.defocus`` asks.
 
-    A measured blur is kept only where it stands out of its own noise
+    A measured blur is used only where it stands out of its own noise
     (``Recipe.defocus_min_sigmas`` of its sigma) and reaches
     ``Recipe.defocus_min_px``: below, the blur's effect on the edges is
     below the model's other errors, and a blur that is not there would bias
-    them.
+    them.  None where texture at the limb was found (a panel's border widens
+    the edges it crosses like a blur).
     """
     if ball.camera.defocus_px is not None:
         return Defocus(float(ball.camera.defocus_px), 0.0, 0, "camera")
     recipe = ball.recipe
-    if not recipe.defocus:
+    if not recipe.defocus or first.n_inward:
         return None
-    found = estimate_defocus(limb, edges)
+    found = estimate_defocus(limb, first.edges)
     if found is None:
         return None
-    if not (found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.sigma_px):
-        return replace(found, diameter_px=0.0)
-    return found
+    used = found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.sigma_px
+    return replace(found, used=bool(used))
 
 
 def pixel_fit_refusal(limb: LimbProfile, edges: EdgeMeasurements, motion: BallMotion, camera: LineScanCamera, recipe: Recipe) -> str | None:
@@ -701,8 +701,8 @@ class StageRecord:
         envelope (texture at the limb, :attr:`FirstFit.n_inward`).
     defocus : Defocus or None
         The lens's blur circle: the camera file's, or the one measured on
-        the ball's edges (:attr:`Shading.defocus`; its diameter 0 where it
-        was not taken); None where neither.
+        the ball's edges (:attr:`Shading.defocus`, ``used`` where the model
+        carries it); None where neither.
     """
 
     shading_pass: ShadingPass

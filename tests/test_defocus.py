@@ -1,0 +1,118 @@
+"""The lens's blur circle: its marginals, its measurement on a ball's edges and its place in the limb and silhouette models."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscan.geometry.camera import LineScanCamera, camera_from_dict
+from ballscan.geometry.motion import BallMotion
+from ballscan.errors import CameraFileError
+from ballscan.measure.defocus import DefocusSettings, blur_kernel, blur_nodes
+from ballscan.model.averaged import averaged_model, blur_offsets
+from ballscan.model.render import Appearance, render
+from ballscan.pipeline.estimate import estimate_image
+
+ROOT = Path(__file__).resolve().parents[1]
+CAM = LineScanCamera(width=400, focal_px=2500.0, principal_px=200.0, line_rate_hz=20000.0, exposure_s=2e-5)
+
+
+# ------------------------------------------------------------------ the blur circle's marginal
+@pytest.mark.parametrize("diameter", [0.6, 1.0, 2.5, 4.0])
+def test_kernel_is_the_semicircle_with_its_variance(diameter):
+    step = 0.01
+    k = blur_kernel(diameter, step)
+    x = (np.arange(k.size) - (k.size - 1) / 2) * step
+    assert k.sum() == pytest.approx(1.0) and np.allclose(k, k[::-1])
+    # a uniform disc of radius a has the variance a^2 / 4 along either axis
+    assert (k * x * x).sum() == pytest.approx((diameter / 2) ** 2 / 4, rel=2e-3)
+
+
+def test_kernel_below_half_a_cell_is_the_identity():
+    assert np.array_equal(blur_kernel(0.04, 0.1), [1.0])
+
+
+@pytest.mark.parametrize("n", [4, 8, 12])
+def test_nodes_integrate_the_semicircles_moments(n):
+    s, w = blur_nodes(3.0, n)
+    a = 1.5
+    assert w.sum() == pytest.approx(1.0) and (w @ s) == pytest.approx(0.0, abs=1e-12)
+    assert (w @ s**2) == pytest.approx(a**2 / 4)
+    assert (w @ s**4) == pytest.approx(a**4 / 8)
+
+
+def test_settings_are_checked():
+    with pytest.raises(ValueError, match="step_px"):
+        DefocusSettings(step_px=0.0)
+    with pytest.raises(ValueError, match="min_edges"):
+        DefocusSettings(min_edges=0)
+
+
+# ------------------------------------------------------------------ the camera key
+def test_camera_key_round_trip_and_checks():
+    d = {"width": 400, "focal_px": 2500.0, "principal_px": 200.0, "line_rate_hz": 2e4, "defocus_px": 2.5}
+    cam = camera_from_dict(d)
+    assert cam.defocus_px == 2.5 and camera_from_dict(cam.to_dict()) == cam
+    assert "defocus_px" not in CAM.to_dict()
+    for bad in (-1.0, 1e3, "2"):
+        with pytest.raises(CameraFileError, match="defocus_px"):
+            camera_from_dict({**d, "defocus_px": bad})
+
+
+# ------------------------------------------------------------------ across the sensor: the averaged silhouette
+def test_blur_across_the_sensor_is_the_mean_over_moved_viewing_planes():
+    # without motion along y and z a viewing plane moved by c pixels (c z / f metres) is the
+    # same plane at the line time moved by c z / (f vx): the blurred model is the mean of the
+    # sharp one at those times, weighted by the blur's marginal (edges weighted by presence)
+    m = BallMotion(0.03, 0.004, (0.0, 0.05, 2.5), (20.0, 0.0, 0.0))
+    blurred = replace(CAM, defocus_px=3.0)
+    t = np.arange(40, 120) / CAM.line_rate_hz
+    me = averaged_model(blurred, m.to_params()[None], m.radius_m, t, n_nodes=8)
+    c, w = blur_offsets(blurred)
+    dt = c * m.position_m[2] / (CAM.focal_px * m.velocity_mps[0])
+    parts = [averaged_model(CAM, m.to_params()[None], m.radius_m, t + d, n_nodes=8) for d in dt]
+    pres = sum(wk * p.presence[0] for wk, p in zip(w, parts))
+    area = sum(wk * p.area_px[0] for wk, p in zip(w, parts))
+    left = sum(wk * p.presence[0] * p.left_px[0] for wk, p in zip(w, parts)) / np.where(pres > 0, pres, 1)
+    seen = pres > 1e-3
+    assert np.allclose(me.presence[0], pres, atol=1e-9)
+    assert np.allclose(me.area_px[0], area, atol=1e-6)
+    assert np.allclose(me.left_px[0][seen], left[seen], atol=1e-6)
+    # and it reaches further than the sharp model: the ball's ends spread over more lines
+    sharp = averaged_model(CAM, m.to_params()[None], m.radius_m, t, n_nodes=8)
+    assert (me.presence[0] > 0).sum() > (sharp.presence[0] > 0).sum()
+
+
+# ------------------------------------------------------------------ along the sensor: measured on a render
+def _blurred_render(diameter_px: float, m: BallMotion, seed: int, oversample: int = 8) -> np.ndarray:
+    """A noisy 12-bit image of a uniform ball, blurred along the sensor by a blur circle's marginal.
+
+    Rendered on a sensor ``oversample`` times finer (its pixels' centres at
+    the coarse pixels' sub-positions), blurred there and binned: the blur's
+    convolution and the pixel's width commute.
+    """
+    k = oversample
+    fine = replace(CAM, width=CAM.width * k, focal_px=CAM.focal_px * k, principal_px=CAM.principal_px * k + (k - 1) / 2)
+    clean = render(fine, (m, Appearance.flat(0.8)), 160, background_level=0.1, noise=None).clean
+    if diameter_px > 0:
+        ker = blur_kernel(diameter_px * k, 1.0)
+        clean = np.stack([np.convolve(row, ker, mode="same") for row in clean])
+    coarse = clean.reshape(clean.shape[0], CAM.width, k).mean(axis=2)
+    rng = np.random.default_rng(seed)
+    return np.clip(np.rint((coarse + rng.normal(0, 0.004, coarse.shape)) * 4095), 0, 4095).astype(np.uint16)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("diameter", [0.0, 1.5, 3.0])
+def test_blur_measured_on_a_renders_edges(diameter):
+    m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))
+    img = _blurred_render(diameter, m, seed=1)
+    (ball,) = estimate_image(img, CAM, m.radius_m, bits=12).balls
+    d = ball.extra
+    assert d["defocus_source"] == "image" and d["defocus_px"] == pytest.approx(diameter, abs=0.1)
+    # in focus the model takes none (nor flags one)
+    assert d["defocus_used"] == (diameter > 0) and ("defocus" in ball.flags) == (diameter > 0)
