@@ -323,6 +323,44 @@ def test_a_defocused_ball(capsys):
     _within_3_sigma(balls[0], truth[0])
 
 
+def test_a_defocused_balls_blur_is_measured_and_its_edges_lie_on_the_limb():
+    # pv0070 (truth: a blur circle of 2.56 px on a 26-px radius): the blur measured on the ball's
+    # sharp edges (2.45 +- 0.03 px), and the fitted edges' median offset from the truth's limb
+    # (the averaged silhouette at the true motion, blurred alike) inwards: with the blur in the
+    # model +0.07 / -0.01 px (left / right), without it -0.08 / -0.23 px (outwards)
+    import edge_bias
+    from dataclasses import replace
+
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.pipeline.recipe import Recipe
+
+    truth = json.loads((SCENES / "pv0070.truth.json").read_text())
+    cam = load_camera(SCENES / "pv0070.camera.toml")
+    img = load_image(SCENES / "pv0070.png")
+    motion = edge_bias.truth_motion(truth)
+    medians = {}
+    for blur in (True, False):
+        (ball,) = estimate_image(img, cam, truth["radius_m"], recipe=Recipe(defocus=blur)).balls
+        d = ball.extra
+        if blur:
+            assert d["defocus_used"] and "defocus" in ball.flags and d["defocus_px"] == pytest.approx(2.56, abs=0.2)
+        o = edge_bias.offsets(ball.fitted_edges, replace(cam, defocus_px=d["defocus_px"] if blur else None), motion)
+        medians[blur] = [float(np.nanmedian(o[side])) for side in ("left", "right")]
+    assert max(abs(m) for m in medians[True]) < 0.1, medians
+    assert min(medians[False]) < -0.15, medians
+
+
+def test_a_camera_file_blur_is_taken_as_it_is(tmp_path, capsys):
+    # the camera file's defocus_px (the truth's 2.56 px) is used as given, with sigma 0
+    cam = (SCENES / "pv0070.camera.toml").read_text() + "defocus_px = 2.56\n"
+    (tmp_path / "cam.toml").write_text(cam)
+    truth = score.truth_balls(json.loads((SCENES / "pv0070.truth.json").read_text()))
+    code = main(["estimate", str(SCENES / "pv0070.png"), "--camera", str(tmp_path / "cam.toml"), "--radius", repr(truth[0]["radius_m"]), "--json"])
+    (ball,) = json.loads(capsys.readouterr().out)["balls"]
+    assert code == 0 and ball["defocus_source"] == "camera" and ball["defocus_px"] == 2.56 and ball["defocus_sigma_px"] == 0.0
+    _within_3_sigma(ball, truth[0])
+
+
 def test_a_ball_under_a_flickering_lamp(capsys):
     # pv0144: a plain ball under a 100/120 Hz lamp's flicker, a hot column, moving in depth
     truth, balls = _estimate("pv0144", capsys)
