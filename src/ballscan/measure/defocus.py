@@ -64,8 +64,8 @@ class DefocusSettings:
     """
 
     max_spread_px: float = 0.2
-    half_window_px: int = 6
-    max_edges: int = 120
+    half_window_px: int = 5
+    max_edges: int = 48
     min_edges: int = 12
     max_diameter_px: float = 8.0
     step_px: float = 0.5
@@ -268,8 +268,8 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     diameters = np.arange(0.0, s.max_diameter_px + 1e-9, s.step_px)
     spectrum = np.fft.rfft(point, n=2 * grid.size, axis=1)
     pixel = np.ones(s.samples_per_px) / s.samples_per_px
-    sse = np.empty((diameters.size, lines.size))
-    for i, d in enumerate(diameters):
+    rows = []
+    for d in diameters:
         kernel = np.convolve(blur_kernel(d, step), pixel)
         # centred ('same') convolution of each row with the blur and the pixel's width
         full = np.fft.irfft(spectrum * np.fft.rfft(kernel, n=2 * grid.size), n=2 * grid.size, axis=1)
@@ -277,9 +277,15 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
         model = full[:, c:c + grid.size]
         if kernel.size % 2 == 0:  # an even kernel's centre lies between two samples
             model = 0.5 * (model + full[:, c + 1:c + 1 + grid.size])
-        sse[i] = _profile_sse(model, at_grid, y, w)
+        rows.append(_profile_sse(model, at_grid, y, w))
+        total = [r.sum() for r in rows]
+        if len(total) >= 3 and total[-1] > total[-2] > min(total):
+            # past the minimum (the squares rise on both of its sides): the larger blurs fit worse still
+            break
+    sse = np.array(rows)
+    diameters = diameters[: sse.shape[0]]
     diameter = max(_parabola_min(diameters, sse.sum(axis=1)), 0.0)
-    if diameter >= diameters[-1] - s.step_px:
+    if diameter >= s.max_diameter_px - s.step_px:
         # at the end of the range tried: no blur circle describes these edges
         return None
     # the quarters: each side, each half of the passage
