@@ -107,12 +107,45 @@ def _blurred_render(diameter_px: float, m: BallMotion, seed: int, oversample: in
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("diameter", [0.0, 1.5, 3.0])
+@pytest.mark.parametrize("diameter", [1.25, 1.5, 1.75, 3.0, 4.0])
 def test_blur_measured_on_a_renders_edges(diameter):
+    # measured 1.33, 1.55, 1.76, 3.06, 4.04 px (between the diameters tried, every 0.5 px)
     m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))
     img = _blurred_render(diameter, m, seed=1)
     (ball,) = estimate_image(img, CAM, m.radius_m, bits=12).balls
     d = ball.extra
     assert d["defocus_source"] == "image" and d["defocus_px"] == pytest.approx(diameter, abs=0.1)
-    # in focus the model takes none (nor flags one)
-    assert d["defocus_used"] == (diameter > 0) and ("defocus" in ball.flags) == (diameter > 0)
+    assert d["defocus_used"] and "defocus" in ball.flags
+
+
+@pytest.mark.slow
+def test_no_blur_taken_on_a_sharp_render():
+    # in focus the estimate reads 0.48 px (below the 1 px the recipe takes): neither used nor flagged
+    m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))
+    (ball,) = estimate_image(_blurred_render(0.0, m, seed=1), CAM, m.radius_m, bits=12).balls
+    d = ball.extra
+    assert d["defocus_px"] < 0.6 and not d["defocus_used"] and "defocus" not in ball.flags
+
+
+def test_limb_profile_blur_along_the_sensor_is_the_convolution_of_its_coverage():
+    # the blurred profile's pixel coverage against the coverage of its chords (blurred across
+    # the sensor only) at finely spaced shifts, weighted by the blur circle's marginal (a
+    # brute-force convolution): 12 nodes hold it within 2e-3
+    from ballscan.measure.shading import LimbProfile, ShadingModel
+    from ballscan.model.pixels import pixel_coverage
+
+    m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))
+    t = np.arange(200) / CAM.line_rate_hz
+    me = averaged_model(CAM, m.to_params()[None], m.radius_m, t)
+    law = ShadingModel(1.0, (0.0, 0.0, 0.0), 0.0, 0)
+    blurred = LimbProfile(law, replace(CAM, defocus_px=2.5), m, t, np.zeros((200, CAM.width)), 1, 1.0, me.spread_px[0], me.left_px[0], me.right_px[0])
+    lines = np.array([70, 80, 90])
+    off = np.tile(np.arange(-4.0, 5.0), (3, 1))
+    got = blurred.pixel_coverage(lines, np.ones(3), off)
+    k = blur_kernel(2.5, 0.01)
+    x = (np.arange(k.size) - (k.size - 1) / 2) * 0.01
+    lo, hi, wgt = blurred._chords(lines, np.ones(3), 4, blurred=False)
+    want = sum(wk * pixel_coverage(lo[None], hi[None], wgt[None], off + xk)[0] for wk, xk in zip(k, x))
+    assert np.allclose(got, want, atol=2e-3)
+    assert not np.allclose(got, pixel_coverage(lo[None], hi[None], wgt[None], off)[0], atol=2e-2)
+

@@ -369,7 +369,8 @@ def limb_levels(
             at = er
             # the window's and the level run's values, then the runs' (the texture test)
             n_use, run_hi = (n_win[r], kw + n_level) if rnd < 2 else (0, K)
-            blurred[:] = 0.0
+            if nb > 1:
+                blurred[:] = 0.0
             for j in range(nb):
                 # the profile moved by the blur's shift (its partly covered pixels' brightness there)
                 fine, ok = _limb_row_profile(
@@ -379,9 +380,10 @@ def limb_levels(
                 rays_ok = rays_ok and ok
                 if not fine:
                     break
-                for k in range(K):
-                    blurred[0, k] += blur_w[j] * cov[k]
-                    blurred[1, k] += blur_w[j] * val[k]
+                if nb > 1:
+                    for k in range(K):
+                        blurred[0, k] += blur_w[j] * cov[k]
+                        blurred[1, k] += blur_w[j] * val[k]
             if not fine:
                 break
             if nb > 1:

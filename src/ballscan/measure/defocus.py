@@ -29,12 +29,17 @@ from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 
+from ..model.blur import semicircle_nodes
 from .edges import EdgeMeasurements
 
 if TYPE_CHECKING:  # the shading module imports this one's kernel
     from .shading import LimbProfile
 
-__all__ = ["Defocus", "DefocusSettings", "blur_kernel", "blur_nodes", "estimate_defocus"]
+__all__ = ["Defocus", "DefocusSettings", "MAX_LEAN", "blur_kernel", "blur_nodes", "estimate_defocus"]
+
+#: Steepest edge measured (its change along the sensor per pixel across it, :func:`_steep`): the
+#: blur circle's width across it is then within 4 % of its marginal along the sensor.
+MAX_LEAN = 0.3
 
 
 @dataclass(frozen=True)
@@ -130,26 +135,41 @@ def blur_kernel(diameter_px: float, step_px: float) -> np.ndarray:
 
 
 def blur_nodes(diameter_px: float, n: int = 12) -> tuple[np.ndarray, np.ndarray]:
-    """Shifts along the sensor (pixels) and weights of the blur circle's marginal: Gauss-Chebyshev nodes of the second kind.
+    """Shifts along the sensor (pixels) and weights of the blur circle's marginal (:func:`ballscan.model.blur.semicircle_nodes`).
 
-    ``sum w_j f(s_j)`` integrates ``f`` against the semicircle density of
-    radius ``diameter_px / 2`` exactly for polynomials of degree below
-    ``2 n``; the coverage of a pixel by a shifted chord is piecewise linear
-    in the shift, and 12 nodes take a blurred edge's pixel values within
-    about 1e-3 of its exact convolution (tests/test_defocus.py).
+    The coverage of a pixel by a shifted chord is piecewise linear in the
+    shift; 12 nodes take a blurred edge's pixel coverage within 2e-3 of its
+    exact convolution (tests/test_defocus.py).
     """
-    j = np.arange(1, n + 1)
-    s = np.cos(j * np.pi / (n + 1))
-    w = np.sin(j * np.pi / (n + 1)) ** 2
-    return 0.5 * float(diameter_px) * s, w / w.sum()
+    return semicircle_nodes(diameter_px, n)
+
+
+def _steep(limb: "LimbProfile", lines: np.ndarray, edge_px: np.ndarray) -> np.ndarray:
+    """Whether each line's model edge leans, in the image, more than :data:`MAX_LEAN` from square to the sensor.
+
+    The blur circle is round: across a leaning edge it is wider than its
+    marginal along the sensor (by ``sqrt(1 + k^2)``, ``k`` the edge's
+    change along the sensor per pixel of the image's other axis), which
+    the estimate takes for the whole blur.  That axis advances by the
+    ball's image speed, ``f |vx| / (z line_rate)`` pixels a line.
+    """
+    cam, m = limb.camera, limb.motion
+    per_line = cam.focal_px * abs(m.velocity_mps[0]) / (max(m.position_m[2], 1e-9) * cam.line_rate_hz)
+    with np.errstate(invalid="ignore"):
+        lean = np.abs(np.gradient(edge_px)) / max(per_line, 1e-300) if edge_px.size > 1 else np.zeros(edge_px.size)
+    return ~(lean <= MAX_LEAN)
 
 
 def _selected_edges(edges: EdgeMeasurements, limb: "LimbProfile", s: DefocusSettings) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Rows of ``edges`` (line index), sides (+1 left, -1 right) and measured edges (px) of the sharp lines' usable edges, at most ``s.max_edges``."""
+    """Rows of ``edges`` (line index), sides (+1 left, -1 right) and measured edges (px) of the sharp lines' usable edges, at most ``s.max_edges``.
+
+    Sharp: the exposure spreads the model's edge by less than
+    ``s.max_spread_px`` and the edge does not lean (:func:`_steep`).
+    """
     rows, sides, at = [], [], []
     sharp = limb.spread_px[edges.lines] < s.max_spread_px
-    for sg, e, ok in ((1.0, edges.left_px, edges.left_ok), (-1.0, edges.right_px, edges.right_ok)):
-        i = np.flatnonzero(ok & np.isfinite(e) & sharp)
+    for sg, e, ok, model in ((1.0, edges.left_px, edges.left_ok, limb.left_px), (-1.0, edges.right_px, edges.right_ok, limb.right_px)):
+        i = np.flatnonzero(ok & np.isfinite(e) & sharp & ~_steep(limb, edges.lines, model[edges.lines]))
         rows.append(i)
         sides.append(np.full(i.size, sg))
         at.append(e[i])
@@ -204,17 +224,21 @@ def _profile_sse(model: np.ndarray, at: _Lookup, y: np.ndarray, w: np.ndarray) -
     return np.einsum("ek,sek->se", w, r * r).min(axis=0)
 
 
-def _parabola_min(x: np.ndarray, f: np.ndarray) -> float:
-    """The minimum of ``f`` over the grid ``x``, refined by the parabola through it and its neighbours (kept within them)."""
+def _parabola_min(d: np.ndarray, f: np.ndarray) -> float:
+    """The diameter of least ``f`` over the grid ``d``, refined by the parabola in ``d^2`` through the least and its neighbours (kept within them).
+
+    The squares depend on the blur through its variance (``d^2 / 16``):
+    a parabola in ``d`` itself would pull a minimum between grid points
+    towards the smaller one.
+    """
     i = int(np.argmin(f))
-    if i == 0 or i == x.size - 1:
-        return float(x[i])
-    f0, f1, f2 = f[i - 1], f[i], f[i + 1]
-    den = f0 - 2.0 * f1 + f2
-    if not den > 0:
-        return float(x[i])
-    h = x[1] - x[0]
-    return float(x[i] + 0.5 * h * (f0 - f2) / den)
+    if i == 0 or i == d.size - 1:
+        return float(d[i])
+    v = d[i - 1:i + 2] ** 2
+    a, b, _ = np.polyfit(v, f[i - 1:i + 2], 2)
+    if not a > 0:
+        return float(d[i])
+    return float(math.sqrt(min(max(-b / (2.0 * a), v[0]), v[2])))
 
 
 def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: DefocusSettings = DefocusSettings()) -> Defocus | None:
@@ -293,7 +317,8 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     quarters = [(sides == sg) & (early == e) for sg in (1.0, -1.0) for e in (True, False)]
     parts = [max(_parabola_min(diameters, sse[:, q].sum(axis=1)), 0.0) for q in quarters if q.sum() >= 2]
     spread = float(np.std(parts, ddof=1) / math.sqrt(len(parts))) if len(parts) >= 2 else math.nan
-    noise = _noise_sigma(diameters, sse.sum(axis=1), int((w > 0).sum()) - 3 * lines.size)
+    # the residuals' degrees of freedom: a level and a shift per edge, one diameter
+    noise = _noise_sigma(diameters, sse.sum(axis=1), int((w > 0).sum()) - 2 * lines.size - 1)
     return Defocus(diameter_px=float(diameter), sigma_px=float(np.fmax(spread, noise)), n_edges=int(lines.size), source="image")
 
 

@@ -39,6 +39,7 @@ from .defocus import blur_nodes
 from .edges import EdgeMeasurements
 from ..errors import GeometryError
 from ..model.averaged import averaged_model
+from ..model.blur import blur_diameter
 from ..model.pixels import pixel_coverage
 from ..geometry.motion import BallMotion
 
@@ -312,6 +313,8 @@ class LimbProfile:
     level_n_height: int = 2
     # the chord samples of the last rows pixel_coverage was asked for
     _samples: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+    # the profile without the blur (sharp())
+    _sharp: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if self.polarity not in (1, -1):
@@ -331,12 +334,16 @@ class LimbProfile:
 
     @property
     def blur_px(self) -> float:
-        """The camera's blur-circle diameter, pixels (0: in focus)."""
-        return float(self.camera.defocus_px or 0.0)
+        """The camera's blur-circle diameter that the profile carries, pixels (0: in focus; :func:`ballscan.model.blur.blur_diameter`)."""
+        return blur_diameter(self.camera)
 
     def sharp(self) -> "LimbProfile":
-        """This profile without the blur along the sensor (its chords keep the blur across it)."""
-        return replace(self, camera=replace(self.camera, defocus_px=None)) if self.blur_px > 0 else self
+        """This profile without the blur, along the sensor and across it (the averaged silhouette of a camera in focus); made once."""
+        if self.blur_px == 0:
+            return self
+        if "sharp" not in self._sharp:
+            self._sharp["sharp"] = replace(self, camera=replace(self.camera, defocus_px=None))
+        return self._sharp["sharp"]
 
     def line_levels(self, lines: np.ndarray, samples_per_px: int = 2) -> tuple[np.ndarray, np.ndarray]:
         """The model's mean brightness over the part of each line the ball covers.
@@ -435,11 +442,13 @@ class LimbProfile:
     def _chords(self, lines: np.ndarray, sg: np.ndarray, n_nodes: int, blurred: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The averaged silhouette's chord samples of each row as intervals of offsets inwards from its edge, pixels, and their weights (R, 3, n).
 
-        With a blur (``blur_px``) and ``blurred`` each sample is repeated at
-        the blur's nodes along the sensor, (R, 3, n * 12).  Computed once per line (a line's two edges and windows share them)
+        With a blur (``blur_px``: the averaged silhouette's 3 B pieces, B
+        offsets across the sensor) and ``blurred`` each sample is repeated
+        at the blur's 12 nodes along the sensor, (R, 3 B, 12 n).  Computed once per line (a line's two edges and windows share them)
         and kept for the next call on the same rows.
         """
-        key = (int(n_nodes), bool(blurred), lines.tobytes(), sg.tobytes())
+        blurred = blurred and self.blur_px > 0
+        key = (int(n_nodes), blurred, lines.tobytes(), sg.tobytes())
         if key not in self._samples:
             uniq, inv = _unique_lines(lines)
             me = averaged_model(
@@ -453,7 +462,7 @@ class LimbProfile:
                 as_arg(inv, np.int64), as_arg(sg),
             )
             lo, hi, wgt = (a.reshape((lines.size,) + shape[1:]) for a in (lo, hi, wgt))
-            if blurred and self.blur_px > 0:
+            if blurred:
                 # the blur's marginal along the sensor: each chord shifted by its nodes
                 # (both ends alike, so either side's inward offsets), weights multiplied
                 shift, w = blur_nodes(self.blur_px)
@@ -522,7 +531,7 @@ class LimbProfile:
         Arguments as for :meth:`__call__`; one sample per position at the
         line's centre time; NaN where the model does not see the ball there.
         """
-        val, hit = self(lines, sides, np.maximum(np.asarray(offsets, dtype=float), 0.25), average=False)
+        val, hit = self.sharp()(lines, sides, np.maximum(np.asarray(offsets, dtype=float), 0.25), average=False)
         return np.where(hit > 0, val, np.nan)
 
     def __call__(self, lines: np.ndarray, sides: np.ndarray, offsets: np.ndarray, average: bool = True) -> tuple[np.ndarray, np.ndarray]:
@@ -531,8 +540,8 @@ class LimbProfile:
             off = np.asarray(offsets, dtype=float)
             shift, w = blur_nodes(self.blur_px)
             val, cov = self.sharp()(lines, sides, (off[..., None] + shift).reshape(off.shape[0], -1), average)
+            bad = np.isnan(val).all(axis=1)[:, None]  # the rows where the model has no edge
             val, cov = (np.nan_to_num(a).reshape(off.shape + (w.size,)) @ w for a in (val, cov))
-            bad = ~np.isfinite(np.where(np.asarray(sides) > 0, self.left_px[np.asarray(lines, dtype=int)], self.right_px[np.asarray(lines, dtype=int)]))[:, None]
             return np.where(bad, np.nan, val), np.where(bad, np.nan, cov)
         lines = np.asarray(lines, dtype=int)
         sides = np.asarray(sides)
@@ -692,7 +701,7 @@ def ball_limb(
     shading = fit_shading(
         camera, motion, data_dn, edges.lines[both], edges.t_s[both], left, right,
         # the blur circle's rim of blurred pixels is not the surface's shading
-        inset_px=1.5 + 0.5 * float(camera.defocus_px or 0.0),
+        inset_px=1.5 + 0.5 * blur_diameter(camera),
         usable=usable, usable_origin=(int(edges.lines[0]), int(edges.profile_col0)),
     )
     if shading is None:

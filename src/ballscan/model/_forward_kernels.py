@@ -185,7 +185,7 @@ def averaged_samples(
     ``want_samples`` (else arrays of size 0).  ``spread`` and ``valid``
     are computed only with ``full`` (else 0 and True).  A lens's blur
     across the sensor (the B offsets ``blur_px``, pixels, and weights
-    ``blur_w`` of its marginal: :func:`ballscan.measure.defocus.blur_nodes`;
+    ``blur_w`` of its marginal: :func:`ballscan.model.averaged.blur_offsets`;
     one offset 0 of weight 1 for none) widens the pixel's height: each of
     its offsets moves the viewing plane by as much at the line's depth.
     """

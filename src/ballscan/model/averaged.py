@@ -30,6 +30,7 @@ from ..compiled import as_arg
 from ._forward_kernels import averaged_samples, chord_edges, hybrid_rows
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
+from .blur import blur_diameter, semicircle_nodes
 from .silhouette import _gauss
 
 __all__ = [
@@ -63,7 +64,8 @@ class ModelEdges:
     valid : ndarray (P, N) of bool
         False where an edge ray would point backwards / the camera is inside.
     samples : tuple or None
-        ``(u_lo, u_hi, weight)`` per sample, each (P, N, 3, n), when asked for.
+        ``(u_lo, u_hi, weight)`` per sample, each (P, N, 3 B, n), when asked
+        for (B the blur's offsets across the sensor, :func:`blur_offsets`).
     """
 
     left_px: np.ndarray
@@ -105,7 +107,7 @@ def averaged_model(
     m0 = BallMotion.from_params(th[0], float(radius_m), acceleration_mps2)
     c = m0.centre(t_all)
     vx = np.abs(m0.velocity_at(t_all)[:, 0])
-    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) * (0.5 + 0.5 * (camera.defocus_px or 0.0)) / camera.focal_px
+    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) * (0.5 + 0.5 * blur_diameter(camera)) / camera.focal_px
     inner = reach < 0.9 * float(radius_m)
     if not inner.any() or inner.all():
         return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes if not inner.all() else 2, False)
@@ -135,7 +137,8 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     """The averaged model for parameter sets ``th`` (P, 6) and line times ``t_all`` (N,) or (P, N).
 
     Per-line quantities are (P, N); the samples (``return_samples``) are
-    (P, N, 3, n_nodes): three pieces of ``n_nodes`` Gauss-Legendre nodes
+    (P, N, 3 B, n_nodes) (B the blur's offsets, :func:`blur_offsets`): for
+    each, three pieces of ``n_nodes`` Gauss-Legendre nodes
     over the quadrature angle between the kinks of the exposure-and-height
     density.  ``full=False`` skips the edge spread and the validity test
     (``spread_px`` and ``valid`` are then None).  The fit calls it some ten
@@ -148,7 +151,7 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     t = as_arg(t if t.ndim == 2 else t.reshape(1, -1))
     if th.shape[1] != 6 or t.shape[0] not in (1, th.shape[0]):
         raise ValueError(f"_model_core: parameter sets {th.shape} and line times {t.shape} do not match")
-    blur = blur_offsets(camera)
+    blur = _blur_args(camera)
     left, right, presence, area, spread, valid, u_lo, u_hi, wgt = averaged_samples(
         th, t, *_kernel_args(camera, R, acceleration_mps2, n_nodes), bool(full), bool(return_samples), *blur
     )
@@ -169,26 +172,21 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
 
 #: Nodes of the lens's blur across the sensor (:func:`blur_offsets`).
 BLUR_NODES = 8
-_SHARP = (np.zeros(1), np.ones(1))
 
 
 def blur_offsets(camera: LineScanCamera) -> tuple[np.ndarray, np.ndarray]:
-    """The offsets across the sensor (pixels) and weights that carry the camera's blur circle (``defocus_px``) into the model; ``([0], [1])`` in focus.
+    """The offsets across the sensor (pixels) and weights that carry the camera's blur circle into the model; ``([0], [1])`` in focus.
 
-    The blur circle's marginal across the sensor is a semicircle of radius
-    ``defocus_px / 2``: Gauss-Chebyshev nodes of the second kind
-    (:data:`BLUR_NODES`), as for its marginal along the sensor
-    (:func:`ballscan.measure.defocus.blur_nodes`).  Across the sensor it
+    The blur circle's marginal across the sensor
+    (:func:`ballscan.model.blur.semicircle_nodes`, :data:`BLUR_NODES`)
     widens the pixel's height, which the averaged silhouette integrates in
     closed form between kinks; each offset is one such pixel, its viewing
-    plane moved by the offset.
+    plane moved by the offset at the line's depth.
     """
-    d = camera.defocus_px
-    if not d:
-        return _SHARP
-    j = np.arange(1, BLUR_NODES + 1)
-    w = np.sin(j * np.pi / (BLUR_NODES + 1)) ** 2
-    return 0.5 * float(d) * np.cos(j * np.pi / (BLUR_NODES + 1)), w / w.sum()
+    d = blur_diameter(camera)
+    if d == 0:
+        return np.zeros(1), np.ones(1)
+    return semicircle_nodes(d, BLUR_NODES)
 
 
 def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
@@ -198,6 +196,11 @@ def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
         float(R), float(camera.exposure), float(camera.focal_px), float(camera.principal_px), float(camera.k1), float(camera.k2),
         np.array([float(a) for a in acceleration_mps2]), as_arg(g), as_arg(gw),
     )
+
+
+def _blur_args(camera) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ballscan.model._forward_kernels.averaged_samples`' last arguments: the blur's offsets and weights (:func:`blur_offsets`)."""
+    return tuple(as_arg(a) for a in blur_offsets(camera))
 
 
 class ModelEvaluator:
@@ -227,13 +230,13 @@ class ModelEvaluator:
         self.acceleration_mps2, self.n_nodes = acceleration_mps2, n_nodes
         # the kernel's arguments (only the direct path of n_nodes <= 3 uses them)
         self._t = as_arg(np.asarray(t_lines_s, dtype=float).reshape(1, -1)) if n_nodes <= 3 else None
-        self._args = _kernel_args(camera, radius_m, acceleration_mps2, n_nodes) if n_nodes <= 3 else None
+        self._args = (*_kernel_args(camera, radius_m, acceleration_mps2, n_nodes), True, False, *_blur_args(camera)) if n_nodes <= 3 else None
 
     def __call__(self, th: np.ndarray) -> ModelEdges:
         """The model (with edge spread and validity) at the parameter sets ``th`` (P, 6)."""
         if self._t is None:
             return averaged_model(self.camera, th, self.radius_m, self.t_lines_s, self.acceleration_mps2, self.n_nodes)
-        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), self._t, *self._args, True, False, *blur_offsets(self.camera))
+        left, right, presence, area, spread, valid, _, _, _ = averaged_samples(as_arg(th), self._t, *self._args)
         return ModelEdges(left, right, presence, area, spread, valid)
 
 
@@ -517,7 +520,7 @@ def hybrid_jacobian(
     dl, dr = J[0], J[1]
     ax = float(acceleration_mps2[0])
     vxt = np.abs(theta[3] + ax * tau) if ax else abs(float(theta[3]))
-    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) * (0.5 + 0.5 * (camera.defocus_px or 0.0)) / camera.focal_px
+    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) * (0.5 + 0.5 * blur_diameter(camera)) / camera.focal_px
     fd = ~chord_ok | (reach > reach_limit * R)
     if fd_lines is not None:
         fd |= fd_lines

@@ -133,7 +133,7 @@ def estimate_region(
     if recipe.shading and shading is not None and shading.state == "built" and pixel.fit is None:
         second = second_measurement_stage(ball, first, shading)
     final = final_fit_stage(ball, guess, first, shading, pixel, second)
-    record = stage_record(recipe, first, shading, pixel, second, final)
+    record = stage_record(recipe, ball.camera, first, shading, pixel, second, final)
     t_shading = _shading_time(recipe, first, shading, pixel, second, final)
     flags = _guess_flags(detected, guess) + (["texture_at_limb"] if first.n_inward else [])
     return _fit_estimate(ball, flags, initial, guess.motion, final, record, t0, t_init, first.time_edges_s, t_shading)

@@ -34,6 +34,7 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 from ..measure.defocus import Defocus, estimate_defocus
+from ..model.blur import blur_diameter
 from ..measure.detection import BallRegion, Detection, region_background
 from ..measure.edges import EdgeMeasurements, measure_edges, with_limb, without_edges
 from ..measure.matched import matched_edges
@@ -310,7 +311,11 @@ def shading_stage(ball: BallInput, first: FirstFit) -> Shading:
         return Shading("too_few_pixels", time_s=time.perf_counter() - t0)
     defocus = ball_defocus(ball, limb, first)
     if defocus is not None and defocus.source == "image" and defocus.used:
-        limb = _blurred_limb(ball, first, defocus) or limb
+        blurred = _blurred_limb(ball, first, defocus)
+        if blurred is None:
+            # too few pixels inside the blurred rim for the shading law: the sharp model stands
+            defocus = replace(defocus, used=False)
+        limb = blurred or limb
     edges = with_limb(first.edges, limb)
     refusal = pixel_fit_refusal(limb, edges, first.start, ball.camera, recipe)
     return Shading("built", limb, edges, refusal, defocus, time.perf_counter() - t0)
@@ -324,6 +329,13 @@ def _blurred_limb(ball: BallInput, first: FirstFit, defocus: Defocus) -> LimbPro
     )
 
 
+def camera_defocus(camera: LineScanCamera) -> Defocus | None:
+    """The camera file's blur circle (``defocus_px``) as a :class:`Defocus` (used where it is at least :data:`ballscan.model.blur.MIN_BLUR_PX`), None without one."""
+    if camera.defocus_px is None:
+        return None
+    return Defocus(float(camera.defocus_px), 0.0, 0, "camera", used=blur_diameter(camera) > 0)
+
+
 def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus | None:
     """The blur circle of the ball's limb model: the camera file's ``defocus_px``, else measured on its edges where ``Recipe.defocus`` asks.
 
@@ -332,12 +344,13 @@ def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus
     ``Recipe.defocus_min_px``: below, the blur's effect on the edges is
     below the model's other errors, and a blur that is not there would bias
     them.  None where texture at the limb was found (a panel's border widens
-    the edges it crosses like a blur).
+    the edges it crosses like a blur) or the ball is cut by the sensor's end
+    (its cut side's edges are the sensor's).
     """
     if ball.camera.defocus_px is not None:
-        return Defocus(float(ball.camera.defocus_px), 0.0, 0, "camera")
+        return camera_defocus(ball.camera)
     recipe = ball.recipe
-    if not recipe.defocus or first.n_inward:
+    if not recipe.defocus or first.n_inward or "cut_sensor_end" in first.edges.flags:
         return None
     found = estimate_defocus(limb, first.edges)
     if found is None:
@@ -356,8 +369,10 @@ def pixel_fit_refusal(limb: LimbProfile, edges: EdgeMeasurements, motion: BallMo
     the lines' brightness within ``recipe.uniform_max_level_rel_sigma`` of
     the law (a scatter that could not be measured, NaN, refuses).
 
-    ``"defocus"``: the pixel model and the matched edges' profile have no
-    blur along the sensor (the window edges' limb levels have it).
+    ``"defocus"``: the pixel model multiplies each pixel's coverage by the
+    surface's brightness at the pixel, which the blur along the sensor
+    mixes with its neighbours' (the window edges' limb levels move the
+    whole profile, brightness and all).
 
     ``"lateral_motion"``: the model takes each chord position at one mean
     time of the exposure, right for the edges' mean positions and the areas
@@ -718,9 +733,10 @@ class StageRecord:
 
 
 def stage_record(
-    recipe: Recipe, first: FirstFit, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None, final: FinalFit
+    recipe: Recipe, camera: LineScanCamera, first: FirstFit, shading: Shading | None, pixel: PixelFit, second: SecondMeasurement | None,
+    final: FinalFit,
 ) -> StageRecord:
-    """The record of a ball's stages (``shading`` None where neither the shading pass nor the pixel fit was asked for)."""
+    """The record of a ball's stages (``shading`` None where neither the shading pass nor the pixel fit was asked for; ``camera`` the ball's)."""
     if final.path == "first_edges":
         if shading is None or not recipe.shading:
             passed: ShadingPass = "off"
@@ -745,5 +761,5 @@ def stage_record(
         background_refined=(kind in ("refined_background", "flat_fielded") and matched) or recipe.refined_background,
         shading_refit=final.path == "refit",
         inward_edges=first.n_inward,
-        defocus=None if shading is None else shading.defocus,
+        defocus=shading.defocus if shading is not None and shading.defocus is not None else camera_defocus(camera),
     )

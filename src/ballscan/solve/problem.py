@@ -45,6 +45,7 @@ from ..geometry.camera import LineScanCamera
 from ..geometry.motion import PARAM_NAMES, BallMotion
 from ..measure.robust import median as _median
 from ..measure.edges import EdgeMeasurements
+from ..model.blur import blur_diameter
 from ..model.averaged import JacobianMemo, ModelEdges, ModelEvaluator, averaged_model, hybrid_jacobian, model_jacobian
 from ..model.pixels import PixelWindows, pixel_residuals, pixel_residuals_jacobian
 from .gains import GainColumns, GainElimination, gain_columns, interior_levels
@@ -705,7 +706,7 @@ class FitProblem:
             needed=t.used, reach_limit=s.jacobian_reach, rel_step=_REL_STEP, n_nodes=s.jacobian_nodes,
             memo=st.memo, reuse_px=s.jacobian_reuse_px, base=base,
             # the forward-mode ends know no lens blur: the model's differences where the camera has one
-            analytic=s.edge_jacobian == "analytic" and not st.block.camera.defocus_px,
+            analytic=s.edge_jacobian == "analytic" and blur_diameter(st.block.camera) == 0,
         )
         if t.sel.pixels is None:
             st.line_derivatives = LineDerivatives(dl, dr, da, t.used, t.sel.use_area | st.memo.last_fd)
@@ -757,7 +758,8 @@ class FitProblem:
         if pix is None:
             return _NO_PIXEL_ROWS
         s = self.settings
-        if s.pixel_jacobian == "analytic" and not np.any(st.acceleration_mps2):
+        # the forward-mode pixels know no lens blur: their differences where the camera has one
+        if s.pixel_jacobian == "analytic" and not np.any(st.acceleration_mps2) and blur_diameter(st.block.camera) == 0:
             return pixel_residuals_jacobian(st.block.camera, th, st.radius_m, pix, s.n_nodes)
         h = _REL_STEP * st.scale
         return ((self._pixel_res(st, pix, th + np.diag(h)) - base_r) / h[:, None]).T
