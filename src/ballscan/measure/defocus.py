@@ -35,7 +35,12 @@ from .edges import EdgeMeasurements
 if TYPE_CHECKING:  # the shading module imports this one's kernel
     from .shading import LimbProfile
 
-__all__ = ["Defocus", "DefocusSettings", "MAX_LEAN", "blur_kernel", "blur_nodes", "estimate_defocus"]
+__all__ = ["Defocus", "DefocusSettings", "MAX_LEAN", "SYSTEMATIC", "blur_kernel", "blur_nodes", "estimate_defocus"]
+
+#: Relative 1-sigma of a measured blur circle beyond its noise: the lens's disc is not quite
+#: uniform, nor the shading law exact at the limb (ballscan's renders of a uniform disc read
+#: 1-6 % long, the POV-Ray set's focal blur 6-13 % short in median, docs/benchmarks.md).
+SYSTEMATIC = 0.1
 
 #: Steepest edge measured (its change along the sensor per pixel across it, :func:`_steep`): the
 #: blur circle's width across it is then within 4 % of its marginal along the sensor.
@@ -98,6 +103,9 @@ class Defocus:
         Diameter of the blur circle on the sensor, pixels (0: in focus).
     sigma_px : float
         Its 1-sigma, pixels (0 where the camera file gives it).
+    noise_px : float
+        The part of ``sigma_px`` the edges' scatter shows (without the
+        :data:`SYSTEMATIC` part), pixels.
     n_edges : int
         Edges it was measured on (0: from the camera file).
     source : {"camera", "image"}
@@ -112,6 +120,7 @@ class Defocus:
     n_edges: int
     source: Literal["camera", "image"]
     used: bool = True
+    noise_px: float = 0.0
 
 
 def blur_kernel(diameter_px: float, step_px: float) -> np.ndarray:
@@ -261,7 +270,8 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
         the four quarters of the edges (each side, each half of the
         passage), which holds the texture's and the shading law's errors
         as well as the noise's, and at least the noise's alone (the
-        curvature of the weighted squares).  None where fewer than
+        curvature of the weighted squares), with :data:`SYSTEMATIC` of the
+        diameter added.  None where fewer than
         ``settings.min_edges`` sharp edges, or no profile, are available,
         or where the best diameter lies at the end of the range tried.
     """
@@ -319,7 +329,11 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     spread = float(np.std(parts, ddof=1) / math.sqrt(len(parts))) if len(parts) >= 2 else math.nan
     # the residuals' degrees of freedom: a level and a shift per edge, one diameter
     noise = _noise_sigma(diameters, sse.sum(axis=1), int((w > 0).sum()) - 2 * lines.size - 1)
-    return Defocus(diameter_px=float(diameter), sigma_px=float(np.fmax(spread, noise)), n_edges=int(lines.size), source="image")
+    scatter = float(np.fmax(spread, noise))
+    return Defocus(
+        diameter_px=float(diameter), sigma_px=math.hypot(scatter, SYSTEMATIC * diameter), n_edges=int(lines.size), source="image",
+        noise_px=scatter,
+    )
 
 
 def _noise_sigma(x: np.ndarray, f: np.ndarray, dof: int) -> float:

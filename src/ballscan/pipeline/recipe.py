@@ -146,7 +146,7 @@ class Recipe:
         shading pass's limb model carry it.
     defocus_min_px, defocus_min_sigmas : float
         A measured blur circle is taken only from this diameter (pixels)
-        and this many of its sigmas on.
+        and this many of its scatter's sigmas on (``Defocus.noise_px``).
     """
 
     method: Method = "fit"

@@ -340,7 +340,7 @@ def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus
     """The blur circle of the ball's limb model: the camera file's ``defocus_px``, else measured on its edges where ``Recipe.defocus`` asks.
 
     A measured blur is used only where it stands out of its own noise
-    (``Recipe.defocus_min_sigmas`` of its sigma) and reaches
+    (``Recipe.defocus_min_sigmas`` of its scatter, ``Defocus.noise_px``) and reaches
     ``Recipe.defocus_min_px``: below, the blur's effect on the edges is
     below the model's other errors, and a blur that is not there would bias
     them.  None where texture at the limb was found (a panel's border widens
@@ -355,7 +355,7 @@ def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus
     found = estimate_defocus(limb, first.edges)
     if found is None:
         return None
-    used = found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.sigma_px
+    used = found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.noise_px
     return replace(found, used=bool(used))
 
 
