@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 
 from ..model.blur import semicircle_nodes
 from .edges import EdgeMeasurements
@@ -233,6 +234,23 @@ def _profile_sse(model: np.ndarray, at: _Lookup, y: np.ndarray, w: np.ndarray) -
     return np.einsum("ek,sek->se", w, r * r).min(axis=0)
 
 
+def _centred_convolution(rows: np.ndarray, kernel: np.ndarray) -> np.ndarray:
+    """Each row convolved with ``kernel``, centred on its middle (zeros beyond the rows' ends); an even kernel's centre, between two samples, by their mean.
+
+    A sliding window's dot product (exact; on a ball's 48 edges of 240
+    samples 0.2-0.5 ms for the kernels of 0-4 px blur circles, as long as
+    numpy's FFT of the same rows).
+    """
+    n, k = rows.shape[1], kernel.size
+    padded = np.pad(rows, ((0, 0), (k - 1, k - 1)))
+    full = sliding_window_view(padded, k, axis=1) @ kernel[::-1]
+    c = (k - 1) // 2
+    out = full[:, c:c + n]
+    if k % 2 == 0:
+        out = 0.5 * (out + full[:, c + 1:c + 1 + n])
+    return out
+
+
 def _parabola_min(d: np.ndarray, f: np.ndarray) -> float:
     """The diameter of least ``f`` over the grid ``d``, refined by the parabola in ``d^2`` through the least and its neighbours (kept within them).
 
@@ -243,11 +261,14 @@ def _parabola_min(d: np.ndarray, f: np.ndarray) -> float:
     i = int(np.argmin(f))
     if i == 0 or i == d.size - 1:
         return float(d[i])
-    v = d[i - 1:i + 2] ** 2
-    a, b, _ = np.polyfit(v, f[i - 1:i + 2], 2)
+    (v0, v1, v2), (f0, f1, f2) = d[i - 1:i + 2] ** 2, f[i - 1:i + 2]
+    # the parabola through the three points: its second and first divided differences
+    s01, s12 = (f1 - f0) / (v1 - v0), (f2 - f1) / (v2 - v1)
+    a = (s12 - s01) / (v2 - v0)
     if not a > 0:
         return float(d[i])
-    return float(math.sqrt(min(max(-b / (2.0 * a), v[0]), v[2])))
+    vertex = 0.5 * (v0 + v1) - s01 / (2.0 * a)
+    return float(math.sqrt(min(max(vertex, v0), v2)))
 
 
 def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: DefocusSettings = DefocusSettings()) -> Defocus | None:
@@ -300,18 +321,11 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     offsets = offsets + base[:, None]
     at_grid = _lookup(grid.size, grid[0], step, offsets, np.arange(-s.max_shift_px, s.max_shift_px + 1e-9, 0.1))
     diameters = np.arange(0.0, s.max_diameter_px + 1e-9, s.step_px)
-    spectrum = np.fft.rfft(point, n=2 * grid.size, axis=1)
     pixel = np.ones(s.samples_per_px) / s.samples_per_px
     rows = []
     for d in diameters:
-        kernel = np.convolve(blur_kernel(d, step), pixel)
-        # centred ('same') convolution of each row with the blur and the pixel's width
-        full = np.fft.irfft(spectrum * np.fft.rfft(kernel, n=2 * grid.size), n=2 * grid.size, axis=1)
-        c = (kernel.size - 1) // 2
-        model = full[:, c:c + grid.size]
-        if kernel.size % 2 == 0:  # an even kernel's centre lies between two samples
-            model = 0.5 * (model + full[:, c + 1:c + 1 + grid.size])
-        rows.append(_profile_sse(model, at_grid, y, w))
+        # the model blurred by the circle and averaged over the pixel's width
+        rows.append(_profile_sse(_centred_convolution(point, np.convolve(blur_kernel(d, step), pixel)), at_grid, y, w))
         total = [r.sum() for r in rows]
         if len(total) >= 3 and total[-1] > total[-2] > min(total):
             # past the minimum (the squares rise on both of its sides): the larger blurs fit worse still
