@@ -133,8 +133,17 @@ def _chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, 
 
 
 @jit()
-def _blurred_chord_samples(te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok, blur_px, blur_w, m_per_px):
-    """:func:`_chord_samples` over the blur's offsets across the sensor (the viewing plane moved by ``blur_px * m_per_px`` metres), each weighed by ``blur_w``: the samples of offset ``b`` at ``b * 3 n_nodes`` on."""
+def _blurred_chord_samples(
+    te, g, gw, R, x0, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2, ulo, uhi, wok, blur_px, blur_w,
+    m_per_px,
+):
+    """:func:`_chord_samples` over the blur's offsets across the sensor, each weighed by ``blur_w``.
+
+    Offset ``b`` moves the viewing plane by ``blur_px[b] * m_per_px``
+    metres (the line's depth over the focal length); its samples are at
+    ``b * 3 n_nodes`` on.  Returns the total weight, the weighted edge sums
+    (pixels) and whether a weighted sample missed the ball's tangent.
+    """
     S1 = 3 * g.shape[0]
     lo1 = np.empty(S1)
     hi1 = np.empty(S1)

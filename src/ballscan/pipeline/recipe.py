@@ -176,7 +176,7 @@ class Recipe:
     limb_envelope: bool = True
     defocus: bool = True
     defocus_min_px: float = 1.0
-    defocus_min_sigmas: float = 4.0
+    defocus_min_sigmas: float = 5.0
 
     def changes(self) -> dict:
         """The fields that differ from ``Recipe()`` (the results' ``recipe`` key: empty for the default)."""
