@@ -149,3 +149,27 @@ def test_limb_profile_blur_along_the_sensor_is_the_convolution_of_its_coverage()
     assert np.allclose(got, want, atol=2e-3)
     assert not np.allclose(got, pixel_coverage(lo[None], hi[None], wgt[None], off)[0], atol=2e-2)
 
+
+
+def test_limb_profile_values_are_the_sharp_profile_averaged_along_the_sensor():
+    # a shaded ball's point values with a blur against the in-focus profile at finely spaced
+    # shifts weighted by the blur circle's marginal (a point's value steps at the edge: 12
+    # nodes hold the convolution within 0.012, whole pixels' coverage within 2e-3 above); the
+    # surface's brightness stays unblurred
+    from ballscan.measure.shading import LimbProfile, ShadingModel
+
+    m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))
+    t = np.arange(200) / CAM.line_rate_hz
+    me = averaged_model(CAM, m.to_params()[None], m.radius_m, t)
+    law = ShadingModel(0.3, (0.2, -0.3, -0.6), 0.0, 0)
+    blurred = LimbProfile(law, replace(CAM, defocus_px=2.0), m, t, np.zeros((200, CAM.width)), 1, 1.0, me.spread_px[0], me.left_px[0], me.right_px[0])
+    lines, sides = np.array([75, 80, 85]), np.array([1.0, -1.0, 1.0])
+    off = np.tile(np.linspace(-2.0, 3.0, 11), (3, 1))
+    got, _ = blurred(lines, sides, off)
+    k = blur_kernel(2.0, 0.005)
+    x = (np.arange(k.size) - (k.size - 1) / 2) * 0.005
+    sharp = blurred.sharp()
+    want = sum(wk * np.nan_to_num(sharp(lines, sides, off + xk)[0]) for wk, xk in zip(k, x))
+    assert np.allclose(got, want, atol=0.015) and not np.allclose(got, sharp(lines, sides, off)[0], atol=0.05)
+    inside = np.full((3, 1), 1.0)
+    assert np.allclose(blurred.surface(lines, sides, inside), sharp.surface(lines, sides, inside))

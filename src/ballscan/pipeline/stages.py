@@ -34,7 +34,6 @@ import numpy as np
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
 from ..measure.defocus import Defocus, estimate_defocus
-from ..model.blur import blur_diameter
 from ..measure.detection import BallRegion, Detection, region_background
 from ..measure.edges import EdgeMeasurements, measure_edges, with_limb, without_edges
 from ..measure.matched import matched_edges
@@ -42,6 +41,7 @@ from ..measure.robust import median
 from ..measure.flatfield import ColumnGains, column_gains, flat_fielded
 from ..measure.images import LineImage
 from ..measure.shading import LimbProfile, ShadingModel, ball_limb, shade_profile
+from ..model.blur import blur_diameter
 from ..solve.fit import FitResult, fit_motion
 from ..solve.envelope import InwardEdges, trim_inward
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
