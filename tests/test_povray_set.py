@@ -359,6 +359,9 @@ def test_a_camera_file_blur_is_taken_as_it_is(tmp_path, capsys):
     (ball,) = json.loads(capsys.readouterr().out)["balls"]
     assert code == 0 and ball["defocus_source"] == "camera" and ball["defocus_px"] == 2.56 and ball["defocus_sigma_px"] == 0.0
     _within_3_sigma(ball, truth[0])
+    # the table says it too
+    main(["estimate", str(SCENES / "pv0070.png"), "--camera", str(tmp_path / "cam.toml"), "--radius", repr(truth[0]["radius_m"])])
+    assert "blur circle  2.56 ± 0.00 px  (the camera file's)" in capsys.readouterr().out
 
 
 def test_a_ball_under_a_flickering_lamp(capsys):

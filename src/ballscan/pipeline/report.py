@@ -109,6 +109,9 @@ def format_ball(k: int, b: BallEstimate, camera: LineScanCamera | None = None, u
         )
     if b.initial is not None:
         lines.append(f"  initial      speed {_pm(b.initial.speed_mps, None, '.4f', u)} {units}")
+    if b.extra.get("defocus_used"):
+        src = "the camera file's" if b.extra["defocus_source"] == "camera" else "measured on its edges"
+        lines.append(f"  blur circle  {_pm(b.extra['defocus_px'], b.extra['defocus_sigma_px'], '.2f')} px  ({src})")
     for flag in b.flags:
         lines.append(f"  flag         {flag}: {FLAG_TEXT[flag]}")
     if b.undetermined:
