@@ -157,19 +157,16 @@ def blur_nodes(diameter_px: float, n: int = 12) -> tuple[np.ndarray, np.ndarray]
 def _steep(limb: "LimbProfile", lines: np.ndarray, edge_px: np.ndarray) -> np.ndarray:
     """Whether each line's model edge leans, in the image, more than :data:`MAX_LEAN` from square to the sensor.
 
-    The blur circle is round: across a leaning edge of the ball's image
-    it is wider than its marginal along the sensor (by ``sqrt(1 + k^2)``,
-    ``k`` the edge's change along the sensor per pixel of the image's other
-    axis), which the estimate takes for the whole blur.  From one line to
-    the next the image moves by ``f (vy, |vx|) / (z line_rate)`` pixels
-    (along the sensor, across it); the edge's change less the image's own
-    along the sensor is the lean of the image's edge.
+    The blur circle is round: across a leaning edge it is wider than its
+    marginal along the sensor (by ``sqrt(1 + k^2)``, ``k`` the edge's
+    change along the sensor per pixel of the image's other axis), which
+    the estimate takes for the whole blur.  That axis advances by the
+    ball's image speed, ``f |vx| / (z line_rate)`` pixels a line.
     """
     cam, m = limb.camera, limb.motion
-    scale = cam.focal_px / (max(m.position_m[2], 1e-9) * cam.line_rate_hz)
-    across, along = scale * abs(m.velocity_mps[0]), scale * m.velocity_mps[1]
+    per_line = cam.focal_px * abs(m.velocity_mps[0]) / (max(m.position_m[2], 1e-9) * cam.line_rate_hz)
     with np.errstate(invalid="ignore"):
-        lean = np.abs(np.gradient(edge_px) - along) / max(across, 1e-300) if edge_px.size > 1 else np.zeros(edge_px.size)
+        lean = np.abs(np.gradient(edge_px)) / max(per_line, 1e-300) if edge_px.size > 1 else np.zeros(edge_px.size)
     return ~(lean <= MAX_LEAN)
 
 
