@@ -161,7 +161,12 @@ def _steep(limb: "LimbProfile", lines: np.ndarray, edge_px: np.ndarray) -> np.nd
     marginal along the sensor (by ``sqrt(1 + k^2)``, ``k`` the edge's
     change along the sensor per pixel of the image's other axis), which
     the estimate takes for the whole blur.  That axis advances by the
-    ball's image speed, ``f |vx| / (z line_rate)`` pixels a line.
+    ball's image speed, ``f |vx| / (z line_rate)`` pixels a line.  The
+    edge's change per line holds the image's own motion along the sensor
+    too, so an oblique ball's edges count as leaning and it gets no
+    estimate: measured on the image's edge alone (that motion taken off),
+    those balls got one, and their fits came out worse on the POV-Ray set
+    (docs/benchmarks.md, "POV-Ray set: defocus").
     """
     cam, m = limb.camera, limb.motion
     per_line = cam.focal_px * abs(m.velocity_mps[0]) / (max(m.position_m[2], 1e-9) * cam.line_rate_hz)
