@@ -12,7 +12,8 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, camera_from_dict
 from ballscan.geometry.motion import BallMotion
 from ballscan.errors import CameraFileError
-from ballscan.measure.defocus import DefocusSettings, blur_kernel, blur_nodes
+from ballscan.measure.defocus import DefocusSettings, blur_kernel
+from ballscan.model.blur import semicircle_nodes
 from ballscan.model.averaged import averaged_model, blur_offsets
 from ballscan.model.render import Appearance, render
 from ballscan.pipeline.estimate import estimate_image
@@ -38,11 +39,13 @@ def test_kernel_below_half_a_cell_is_the_identity():
 
 @pytest.mark.parametrize("n", [4, 8, 12])
 def test_nodes_integrate_the_semicircles_moments(n):
-    s, w = blur_nodes(3.0, n)
+    s, w = semicircle_nodes(3.0, n)
     a = 1.5
     assert w.sum() == pytest.approx(1.0) and (w @ s) == pytest.approx(0.0, abs=1e-12)
     assert (w @ s**2) == pytest.approx(a**2 / 4)
     assert (w @ s**4) == pytest.approx(a**4 / 8)
+    # in focus: one offset 0 of weight 1
+    assert [list(v) for v in semicircle_nodes(0.0, n)] == [[0.0], [1.0]]
 
 
 def test_settings_are_checked():

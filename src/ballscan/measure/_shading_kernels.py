@@ -316,7 +316,7 @@ def limb_levels(
     (within ``q_lim``).  Rows
     that fail keep ``e0, var0, L0``.  ``n_points`` point samples per partly
     covered pixel.  A lens's blur along the sensor (``blur_shift`` pixels,
-    weights ``blur_w``: :func:`ballscan.measure.defocus.blur_nodes`; one
+    weights ``blur_w``: :func:`ballscan.model.blur.semicircle_nodes`; one
     shift 0 of weight 1 for none) averages each pixel's value and coverage
     over the profile moved by those shifts, the brightness at each shift
     the surface's there.

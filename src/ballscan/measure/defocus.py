@@ -30,13 +30,12 @@ from typing import TYPE_CHECKING, Literal
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 
-from ..model.blur import semicircle_nodes
 from .edges import EdgeMeasurements
 
 if TYPE_CHECKING:  # the shading module imports this one's kernel
     from .shading import LimbProfile
 
-__all__ = ["Defocus", "DefocusSettings", "MAX_LEAN", "SYSTEMATIC", "blur_kernel", "blur_nodes", "estimate_defocus"]
+__all__ = ["Defocus", "DefocusSettings", "MAX_LEAN", "SYSTEMATIC", "blur_kernel", "estimate_defocus"]
 
 #: Relative 1-sigma of a measured blur circle beyond its noise: the lens's disc is not quite
 #: uniform, nor the shading law exact at the limb (ballscan's renders of a uniform disc read
@@ -144,17 +143,7 @@ def blur_kernel(diameter_px: float, step_px: float) -> np.ndarray:
     return w / w.sum()
 
 
-def blur_nodes(diameter_px: float, n: int = 12) -> tuple[np.ndarray, np.ndarray]:
-    """Shifts along the sensor (pixels) and weights of the blur circle's marginal (:func:`ballscan.model.blur.semicircle_nodes`).
-
-    The coverage of a pixel by a shifted chord is piecewise linear in the
-    shift; 12 nodes take a blurred edge's pixel coverage within 2e-3 of its
-    exact convolution (tests/test_defocus.py).
-    """
-    return semicircle_nodes(diameter_px, n)
-
-
-def _steep(limb: "LimbProfile", lines: np.ndarray, edge_px: np.ndarray) -> np.ndarray:
+def _steep(limb: "LimbProfile", edge_px: np.ndarray) -> np.ndarray:
     """Whether each line's model edge leans, in the image, more than :data:`MAX_LEAN` from square to the sensor.
 
     The blur circle is round: across a leaning edge it is wider than its
@@ -184,7 +173,7 @@ def _selected_edges(edges: EdgeMeasurements, limb: "LimbProfile", s: DefocusSett
     rows, sides, at = [], [], []
     sharp = limb.spread_px[edges.lines] < s.max_spread_px
     for sg, e, ok, model in ((1.0, edges.left_px, edges.left_ok, limb.left_px), (-1.0, edges.right_px, edges.right_ok, limb.right_px)):
-        i = np.flatnonzero(ok & np.isfinite(e) & sharp & ~_steep(limb, edges.lines, model[edges.lines]))
+        i = np.flatnonzero(ok & np.isfinite(e) & sharp & ~_steep(limb, model[edges.lines]))
         rows.append(i)
         sides.append(np.full(i.size, sg))
         at.append(e[i])
@@ -327,15 +316,15 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     at_grid = _lookup(grid.size, grid[0], step, offsets, np.arange(-s.max_shift_px, s.max_shift_px + 1e-9, 0.1))
     diameters = np.arange(0.0, s.max_diameter_px + 1e-9, s.step_px)
     pixel = np.ones(s.samples_per_px) / s.samples_per_px
-    rows = []
+    per_edge, total = [], []
     for d in diameters:
         # the model blurred by the circle and averaged over the pixel's width
-        rows.append(_profile_sse(_centred_convolution(point, np.convolve(blur_kernel(d, step), pixel)), at_grid, y, w))
-        total = [r.sum() for r in rows]
+        per_edge.append(_profile_sse(_centred_convolution(point, np.convolve(blur_kernel(d, step), pixel)), at_grid, y, w))
+        total.append(per_edge[-1].sum())
         if len(total) >= 3 and total[-1] > total[-2] > min(total):
             # past the minimum (the squares rise on both of its sides): the larger blurs fit worse still
             break
-    sse = np.array(rows)
+    sse = np.array(per_edge)
     diameters = diameters[: sse.shape[0]]
     diameter = max(_parabola_min(diameters, sse.sum(axis=1)), 0.0)
     if diameter >= s.max_diameter_px - s.step_px:

@@ -35,11 +35,10 @@ import numpy as np
 from ..compiled import as_arg
 from ._shading_kernels import chord_rows, interior_normals, level_scatter, limb_values, level_spans, line_level_sums, shading_fit, unique_lines
 from ..geometry.camera import LineScanCamera
-from .defocus import blur_nodes
 from .edges import EdgeMeasurements
 from ..errors import GeometryError
 from ..model.averaged import averaged_model
-from ..model.blur import blur_diameter
+from ..model.blur import ALONG_NODES, blur_diameter, semicircle_nodes
 from ..model.pixels import pixel_coverage
 from ..geometry.motion import BallMotion
 
@@ -289,7 +288,7 @@ class LimbProfile:
     The camera's blur circle (``camera.defocus_px``, :mod:`ballscan.measure.defocus`)
     is in the profile: across the sensor in the averaged silhouette's chord
     samples, along it by averaging the profile's values and coverage over
-    its marginal (:func:`ballscan.measure.defocus.blur_nodes`); the
+    its marginal (:func:`ballscan.model.blur.semicircle_nodes`); the
     surface's brightness (:meth:`surface`) and the ends' levels
     (:meth:`line_levels`, whose integral the blur keeps) are not blurred.
     """
@@ -465,7 +464,7 @@ class LimbProfile:
             if blurred:
                 # the blur's marginal along the sensor: each chord shifted by its nodes
                 # (both ends alike, so either side's inward offsets), weights multiplied
-                shift, w = blur_nodes(self.blur_px)
+                shift, w = semicircle_nodes(self.blur_px, ALONG_NODES)
                 lo, hi = ((a[..., None] + shift).reshape(lines.size, a.shape[1], -1) for a in (lo, hi))
                 wgt = (wgt[..., None] * w).reshape(lines.size, wgt.shape[1], -1)
             self._samples.clear()
@@ -488,7 +487,7 @@ class LimbProfile:
         lines = np.asarray(lines, dtype=int)
         sg = np.asarray(sides, dtype=float)
         lo, hi, wgt = (as_arg(a.reshape(lines.size, -1)) for a in self._chords(lines, sg, n_nodes, blurred=False))
-        shift, w = blur_nodes(self.blur_px) if self.blur_px > 0 else (np.zeros(1), np.ones(1))
+        shift, w = semicircle_nodes(self.blur_px, ALONG_NODES)
         return (
             lo, hi, wgt, as_arg(self.t_lines_s[lines]), as_arg(np.where(sg > 0, self.left_px[lines], self.right_px[lines])),
             as_arg(~(self.spread_px[lines] >= self.sharp_px), np.bool_), as_arg(lines, np.int64), *self._model(), as_arg(shift), as_arg(w),
@@ -538,7 +537,7 @@ class LimbProfile:
         if self.blur_px > 0:
             # the blur's marginal along the sensor: the sharp profile averaged over its nodes
             off = np.asarray(offsets, dtype=float)
-            shift, w = blur_nodes(self.blur_px)
+            shift, w = semicircle_nodes(self.blur_px, ALONG_NODES)
             val, cov = self.sharp()(lines, sides, (off[..., None] + shift).reshape(off.shape[0], -1), average)
             bad = np.isnan(val).all(axis=1)[:, None]  # the rows where the model has no edge
             val, cov = (np.nan_to_num(a).reshape(off.shape + (w.size,)) @ w for a in (val, cov))

@@ -145,27 +145,22 @@ def _blurred_chord_samples(
     (pixels) and whether a weighted sample missed the ball's tangent.
     """
     S1 = 3 * g.shape[0]
-    lo1 = np.empty(S1)
-    hi1 = np.empty(S1)
-    w1 = np.empty(S1)
     mass = 0.0
     sum_lo = 0.0
     sum_hi = 0.0
     invalid = False
     for b in range(blur_px.shape[0]):
+        part = slice(b * S1, (b + 1) * S1)
         m_b, lo_b, hi_b, bad = _chord_samples(
             te, g, gw, R, x0 - blur_px[b] * m_per_px, dt0, A, B, a1, y0, z0, vx, vy, vz, ax, ay, az, has_acc, focal_px, principal_px, k1, k2,
-            lo1, hi1, w1,
+            ulo[part], uhi[part], wok[part],
         )
         wb = blur_w[b]
         mass += wb * m_b
         sum_lo += wb * lo_b
         sum_hi += wb * hi_b
         invalid = invalid or bad
-        for j in range(S1):
-            ulo[b * S1 + j] = lo1[j]
-            uhi[b * S1 + j] = hi1[j]
-            wok[b * S1 + j] = wb * w1[j]
+        wok[part] *= wb
     return mass, sum_lo, sum_hi, invalid
 
 

@@ -30,7 +30,7 @@ from ..compiled import as_arg
 from ._forward_kernels import averaged_samples, chord_edges, hybrid_rows
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
-from .blur import blur_diameter, semicircle_nodes
+from .blur import ACROSS_NODES, blur_diameter, semicircle_nodes
 from .silhouette import _gauss
 
 __all__ = [
@@ -107,7 +107,7 @@ def averaged_model(
     m0 = BallMotion.from_params(th[0], float(radius_m), acceleration_mps2)
     c = m0.centre(t_all)
     vx = np.abs(m0.velocity_at(t_all)[:, 0])
-    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) * (0.5 + 0.5 * blur_diameter(camera)) / camera.focal_px
+    reach = np.abs(c[:, 0]) + vx * camera.exposure / 2 + np.maximum(c[:, 2], 0.0) * _height_reach(camera)
     inner = reach < 0.9 * float(radius_m)
     if not inner.any() or inner.all():
         return _model_core(camera, th, float(radius_m), t_all, acceleration_mps2, n_nodes if not inner.all() else 2, False)
@@ -170,23 +170,21 @@ def _model_core(camera, th, R, t_all, acceleration_mps2, n_nodes, return_samples
     )
 
 
-#: Nodes of the lens's blur across the sensor (:func:`blur_offsets`).
-BLUR_NODES = 8
-
-
 def blur_offsets(camera: LineScanCamera) -> tuple[np.ndarray, np.ndarray]:
     """The offsets across the sensor (pixels) and weights that carry the camera's blur circle into the model; ``([0], [1])`` in focus.
 
     The blur circle's marginal across the sensor
-    (:func:`ballscan.model.blur.semicircle_nodes`, :data:`BLUR_NODES`)
+    (:func:`ballscan.model.blur.semicircle_nodes`, :data:`ballscan.model.blur.ACROSS_NODES`)
     widens the pixel's height, which the averaged silhouette integrates in
     closed form between kinks; each offset is one such pixel, its viewing
     plane moved by the offset at the line's depth.
     """
-    d = blur_diameter(camera)
-    if d == 0:
-        return np.zeros(1), np.ones(1)
-    return semicircle_nodes(d, BLUR_NODES)
+    return semicircle_nodes(blur_diameter(camera), ACROSS_NODES)
+
+
+def _height_reach(camera: LineScanCamera) -> float:
+    """How far a line sees across the sensor, per metre of depth (m/m): the pixel's half height and the blur circle's radius."""
+    return (0.5 + 0.5 * blur_diameter(camera)) / camera.focal_px
 
 
 def _kernel_args(camera, R, acceleration_mps2, n_nodes) -> tuple:
@@ -498,7 +496,8 @@ def hybrid_jacobian(
     analytic : bool
         The averaged model's exact derivatives instead of finite differences
         (:func:`ballscan.model._forward_kernels.averaged_edges_jacobian`; without a known
-        acceleration; one compiled call with the chord's,
+        acceleration or a lens blur, which its forward mode does not know; one
+        compiled call with the chord's,
         :func:`ballscan.model._forward_kernels.hybrid_rows`); ``memo`` is then only told
         the lines.
 
@@ -511,7 +510,7 @@ def hybrid_jacobian(
     theta = np.asarray(theta, dtype=float)
     t = np.asarray(t_lines_s, dtype=float).reshape(-1)
     R = float(radius_m)
-    if analytic and not any(acceleration_mps2):
+    if analytic and not any(acceleration_mps2) and blur_diameter(camera) == 0:
         dl, dr, da, fd = _analytic_rows(camera, theta, t, R, n_nodes, reach_limit, fd_lines, needed)
         if memo is not None:
             memo.last_fd = fd
@@ -520,7 +519,7 @@ def hybrid_jacobian(
     dl, dr = J[0], J[1]
     ax = float(acceleration_mps2[0])
     vxt = np.abs(theta[3] + ax * tau) if ax else abs(float(theta[3]))
-    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) * (0.5 + 0.5 * blur_diameter(camera)) / camera.focal_px
+    reach = np.abs(x0) + vxt * (camera.exposure / 2.0) + np.maximum(z, 0.0) * _height_reach(camera)
     fd = ~chord_ok | (reach > reach_limit * R)
     if fd_lines is not None:
         fd |= fd_lines

@@ -245,7 +245,7 @@ def _fit_estimate(
     """
     fit = final.fit
     flags = flags + list(fit.flags) + ([] if fit.converged else ["not_converged"])
-    if record.defocus is not None and record.defocus.used and record.defocus.diameter_px > 0:
+    if record.defocus is not None and record.defocus.used:
         flags.append("defocus")
     cov = fit.covariance
     # full rank, yet not fixed by the measurements: a sigma beyond the

@@ -355,7 +355,7 @@ def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus
     found = estimate_defocus(limb, first.edges)
     if found is None:
         return None
-    used = found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.noise_px
+    used = found.diameter_px > 0 and found.diameter_px >= recipe.defocus_min_px and found.diameter_px > recipe.defocus_min_sigmas * found.noise_px
     return replace(found, used=bool(used))
 
 

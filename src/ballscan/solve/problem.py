@@ -704,9 +704,7 @@ class FitProblem:
         dl, dr, da = hybrid_jacobian(
             st.block.camera, th, st.radius_m, st.block.edges.t_s, st.scale, st.acceleration_mps2, fd_lines=t.sel.use_area,
             needed=t.used, reach_limit=s.jacobian_reach, rel_step=_REL_STEP, n_nodes=s.jacobian_nodes,
-            memo=st.memo, reuse_px=s.jacobian_reuse_px, base=base,
-            # the forward-mode ends know no lens blur: the model's differences where the camera has one
-            analytic=s.edge_jacobian == "analytic" and blur_diameter(st.block.camera) == 0,
+            memo=st.memo, reuse_px=s.jacobian_reuse_px, base=base, analytic=s.edge_jacobian == "analytic",
         )
         if t.sel.pixels is None:
             st.line_derivatives = LineDerivatives(dl, dr, da, t.used, t.sel.use_area | st.memo.last_fd)
