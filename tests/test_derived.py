@@ -11,7 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ballscan.geometry.camera import LineScanCamera
-from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, derive, derive_transverse, direction_jacobian, direction_sigmas, world_covariance
+from ballscan.solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Transverse, derive, derive_transverse, direction_jacobian, direction_sigmas, psi_y, world_covariance
+from ballscan.solve.uncertainty import sight_axes
 
 CAM = LineScanCamera(width=2048, focal_px=2500.0, principal_px=1023.5, line_rate_hz=70000.0)
 
@@ -102,20 +103,34 @@ def test_no_pose_no_world_frame():
 @settings(max_examples=40, deadline=None)
 @given(st.floats(0.05, 60.0), st.floats(-30.0, 30.0), st.floats(-20.0, 20.0), st.integers(0, 2**31 - 1))
 def test_vx_vy_alone_give_what_the_whole_velocity_gives_across_the_axis(vx, vy, vz, seed):
-    """``derive_transverse`` on (vx, vy) and a covariance whose vz row is unknown: the whole velocity's transverse speed and psi_y, with their sigmas."""
+    """``derive_transverse`` on the axis, from (vx, vy) and their marginal covariance: the whole velocity's transverse speed and psi_y, with their sigmas."""
     # small sigmas: both angle sigmas are linear there (and differ where the weakest direction
     # saturates an angle, each integrating along its own weakest direction)
     C = _covariance(np.random.default_rng(seed), [1e-4, 1e-3, 1e-2, 0.1, 0.3, 3.0]) * 1e-8
-    whole = derive(CAM, (0.0, 0.1, 4.0), (vx, vy, vz), C)
-    lost = C.copy()
-    lost[5, :] = lost[:, 5] = np.nan
-    part = derive_transverse((vx, vy), lost)
+    whole = derive(CAM, (0.0, 0.0, 4.0), (vx, vy, vz), C)
+    part = derive_transverse(Transverse((vx, vy), (0.0, 1.0, 0.0), C[3:5, 3:5], *psi_y(vx, vy, C[3:5, 3:5]), "prior"))
     assert part.speed_transverse_mps == pytest.approx(whole.speed_transverse_mps, rel=1e-12)
     assert part.speed_transverse_sigma_mps == pytest.approx(whole.speed_transverse_sigma_mps, rel=1e-9)
     assert part.direction_deg[0] == pytest.approx(whole.direction_deg[0], abs=1e-12)
     assert part.direction_sigma_deg[0] == pytest.approx(whole.direction_sigma_deg[0], rel=1e-5)
     assert math.isnan(part.direction_deg[1]) and math.isnan(part.direction_sigma_deg[1])
     assert part.world_velocity_mps is None and np.all(np.isnan(part.speed_direction_correlation))
+
+
+@given(st.floats(-0.6, 0.6), st.floats(0.05, 60.0), st.floats(-30.0, 30.0), st.floats(-20.0, 20.0))
+def test_the_speed_across_the_line_of_sight_is_the_velocitys_part_there(slope, vx, vy, vz):
+    """Off the axis, |(vx, v . axis)| with ``sight_axes``' across axis: the speed with the line of sight's component taken out."""
+    across, along = sight_axes((0.0, slope * 5.0, 5.0))
+    v = np.array([vx, vy, vz])
+    part = derive_transverse(Transverse((vx, v @ across), across, np.eye(2) * 1e-6, 0.0, 0.0, "prior"))
+    assert part.speed_transverse_mps == pytest.approx(math.sqrt(max(v @ v - (v @ along) ** 2, 0.0)), rel=1e-9, abs=1e-12)
+
+
+@pytest.mark.parametrize("kw, word", [(dict(axis=(0.0, 0.8, 0.8)), "unit"), (dict(axis=(1.0, 0.0, 0.0)), "unit"), (dict(source="free"), "source")])
+def test_a_transverse_velocity_is_checked_at_construction(kw, word):
+    args = dict(velocity_mps=(1.0, 0.0), axis=(0.0, 1.0, 0.0), covariance=np.eye(2), psi_y_deg=0.0, psi_y_sigma_deg=1.0, source="prior") | kw
+    with pytest.raises(ValueError, match="Transverse"):
+        Transverse(**args)
 
 
 @pytest.mark.parametrize("V, sig", [((5.42, 3.59, -30.9), (0.18, 1.8, 15.3)), ((0.5, 0.05, 2.0), (0.01, 0.01, 1.5)), ((30.0, 3.0, -1.0), (0.05, 0.05, 0.5))])

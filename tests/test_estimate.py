@@ -16,6 +16,7 @@ from ballscan.pipeline.recipe import Recipe
 from ballscan.pipeline.report import format_table
 from ballscan.pipeline.results import BallEstimate, EstimateReport
 from ballscan.solve.settings import FitSettings
+from ballscan.solve.derived import Transverse
 from ballscan.measure.images import LineImage, load_image
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.render import Appearance, SensorNoise, render
@@ -464,29 +465,32 @@ def test_a_small_visible_part_leaves_the_depth_motion_undetermined(case):
 
 @pytest.mark.parametrize("case", ["col0", "colW", "first", "last"])
 def test_with_the_depth_velocity_undetermined_the_transverse_speed_is_still_measured(case):
-    """21 % of the diameter seen, V.z undetermined: (vx, vy), |(vx, vy)| and psi_y reported with sigmas, the truth within 3 sigma; psi_z null."""
+    """21 % of the diameter seen, the velocity along the line of sight undetermined: (vx, v_across), their speed and psi_y reported with sigmas, the truth within 3 sigma; psi_z null."""
     m, image = BENCH_CUT.cut_scene(case, 0.21, seed=2)
     (ball,) = estimate_image(image, CUT_CAM, CUT_R).balls
-    assert ball.velocity_mps is None and ball.velocity_transverse_mps is not None
+    assert ball.velocity_mps is None and ball.transverse is not None
     der = ball.derived(CUT_CAM)
+    across = np.dot(m.velocity_mps, ball.transverse.axis)
     vx, vy = abs(m.velocity_mps[0]), m.velocity_mps[1]
-    assert abs(der.speed_transverse_mps - math.hypot(vx, vy)) < 3 * der.speed_transverse_sigma_mps
+    assert abs(der.speed_transverse_mps - math.hypot(vx, across)) < 3 * der.speed_transverse_sigma_mps
     assert abs(der.direction_deg[0] - math.degrees(math.atan2(vy, vx))) < 3 * der.direction_sigma_deg[0]
     doc = json.loads(EstimateReport("cut.png", (ball,)).to_json(CUT_CAM))["balls"][0]
-    assert doc["velocity_transverse_mps"] == list(ball.velocity_transverse_mps)
+    assert doc["velocity_transverse_mps"] == list(ball.transverse.velocity_mps)
+    assert doc["transverse_axis"] == list(ball.transverse.axis) and len(doc["velocity_transverse_cov_m2ps2"]) == 2
     assert doc["speed_transverse_sigma_mps"] > 0 and doc["direction_deg"][1] is None and doc["direction_sigma_deg"][1] is None
     table = format_table(EstimateReport("cut.png", (ball,)), CUT_CAM)
-    assert "across axis" in table and "psi_z undetermined" in table
+    assert "across sight" in table and "psi_z undetermined" in table
     from ballscan.cli.stream import format_stream_line
     from ballscan.stream.engine import StreamResult
 
     line = format_stream_line(StreamResult(ball, "s", 0, (0, 1), (0, 1)), CUT_CAM)
-    assert "speed undetermined" in line and f"across axis {der.speed_transverse_mps:.2f}" in line and "psi_y" in line
+    assert "speed undetermined" in line and f"across sight {der.speed_transverse_mps:.2f}" in line and "psi_y" in line
 
 
 def test_a_transverse_velocity_goes_only_with_an_undetermined_velocity():
-    with pytest.raises(ValueError, match="velocity_transverse_mps"):
-        BallEstimate("fit", 0.0335, 0.0, (0.0, 0.0, 3.0), (10.0, 1.0, 0.0), velocity_transverse_mps=(10.0, 1.0))
+    t = Transverse((10.0, 1.0), (0.0, 1.0, 0.0), np.eye(2), 5.7, 0.1, "prior")
+    with pytest.raises(ValueError, match="transverse"):
+        BallEstimate("fit", 0.0335, 0.0, (0.0, 0.0, 3.0), (10.0, 1.0, 0.0), transverse=t)
 
 
 @pytest.mark.slow

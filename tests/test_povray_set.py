@@ -302,17 +302,29 @@ def test_a_cut_ball_whose_depth_velocity_is_undetermined_keeps_its_transverse_sp
 
 
 @pytest.mark.parametrize("name, z_free", [("pv0066", 2.7), ("pv0210", 0.7)])
-def test_with_vz_undetermined_vx_and_vy_are_taken_under_the_prior_on_vz(name, z_free, capsys):
+def test_with_vz_undetermined_vx_and_vy_are_taken_under_the_prior_on_the_line_of_sight(name, z_free, capsys):
     # pv0066: a golf ball cut by the first line, whose unconstrained fit stops with vz at -54 m/s
-    # for a true -0.5 and |(vx, vy)| 2.7 sigma off; pv0210: a defocused tennis ball whose prior
-    # fit's covariance is the wider one, so its vx, vy rows against the others are unknown
+    # for a true -0.5 and |(vx, vy)| 2.7 sigma off; pv0210: a defocused tennis ball
     truth, balls = _estimate(name, capsys)
     (ball,) = [b for b in balls if b.get("velocity_transverse_mps") is not None]
     assert ball["transverse_fit"] == "prior" and ball["speed_mps"] is None
     row = score.compare(ball, truth[0])
     assert row["z_vt"] < min(1.0, z_free / 2) and row["z_psi_y"] < 3.0, row
-    if name == "pv0210":
-        assert ball["covariance"]["matrix"][3][:3] == [None] * 3 and ball["covariance"]["matrix"][3][3] > 0
+
+
+@pytest.mark.parametrize("name", ["pv0006", "pv0160"])
+def test_off_the_axis_the_velocity_across_the_line_of_sight_is_measured(name, capsys):
+    # pv0006: a golf ball at 0.05 m/s a third of its distance off the axis; pv0160: a dark table
+    # tennis ball moving in depth, 0.16 of its distance off. The line of sight's flat direction
+    # leaves vy and vz both undetermined; the speed across it holds the truth within 3 sigma
+    truth, balls = _estimate(name, capsys)
+    (ball,) = balls
+    assert ball["speed_mps"] is None and {"vy_mps", "vz_mps"} <= set(ball["covariance"]["parameters"])
+    assert ball["covariance"]["matrix"][4][4] is None and ball["covariance"]["matrix"][5][5] is None
+    axis = ball["transverse_axis"]
+    assert axis[0] == 0.0 and abs(axis[2]) > 0.15
+    row = score.compare(ball, truth[0])
+    assert row["transverse_only"] and row["z_vt"] < 3.0 and row["z_psi_y"] < 3.0, row
 
 
 def test_a_defocused_ball(capsys):

@@ -1,4 +1,4 @@
-"""A Gaussian prior on one motion parameter (ballscan.solve.prior): its residual and Jacobian row, its pull on the fit, its share in the covariance."""
+"""A Gaussian prior on one motion parameter or velocity component (ballscan.solve.prior): its residual and Jacobian row, its pull on the fit, its share in the covariance."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera
 from ballscan.geometry.motion import BallMotion
 from ballscan.solve.fit import fit_motion
-from ballscan.solve.prior import ParameterPrior, WithPrior
+from ballscan.solve.prior import ParameterPrior, VelocityPrior, WithPrior
 from ballscan.solve.synthetic import synthetic_edges
 
 CAM = LineScanCamera(2048, 4200.0, 1023.5, 70000.0, 1.2e-5)
@@ -30,6 +30,28 @@ def test_a_prior_is_checked_at_construction(kw, word):
 
 def test_numpy_numbers_make_a_prior():
     assert ParameterPrior("vz_mps", np.float32(1.5), np.int64(2)).index == 5
+
+
+@pytest.mark.parametrize(
+    "kw, word",
+    [(dict(direction=(0.0, 0.0, 0.0), mean=0.0, sigma=1.0), "direction"), (dict(direction=(0.0, 1.0), mean=0.0, sigma=1.0), "direction"),
+     (dict(direction=(0.0, np.nan, 1.0), mean=0.0, sigma=1.0), "direction"), (dict(direction=(0.0, 0.0, 1.0), mean=math.inf, sigma=1.0), "mean"),
+     (dict(direction=(0.0, 0.0, 1.0), mean=0.0, sigma=-1.0), "sigma")],
+)  # fmt: skip
+def test_a_velocity_prior_is_checked_at_construction(kw, word):
+    with pytest.raises(ValueError, match=f"VelocityPrior.{word}"):
+        VelocityPrior(**kw)
+
+
+def test_a_velocity_prior_along_z_is_the_prior_on_vz():
+    rng = np.random.default_rng(5)
+    inner = _Linear(rng.normal(size=(9, 7)), rng.normal(size=9))
+    inner.fit_bias = True
+    x = rng.normal(size=7)
+    along = WithPrior(inner, VelocityPrior((0.0, 0.0, 2.0), 0.3, 0.5)).residuals_and_jacobian(x)
+    on = WithPrior(inner, ParameterPrior("vz_mps", 0.3, 0.5)).residuals_and_jacobian(x)
+    np.testing.assert_array_equal(along[0], on[0])
+    np.testing.assert_array_equal(along[1], on[1])
 
 
 class _Linear:
@@ -74,6 +96,16 @@ def test_a_tight_prior_pins_its_parameter_and_its_sigma():
     # the edges see vz = -5.5 m/s: held at 0 against them, the fit's residuals grow
     assert abs(free.motion.velocity_mps[2] - TRUTH.velocity_mps[2]) < 3 * math.sqrt(free.covariance[5, 5])
     assert pinned.chi2_red > free.chi2_red
+
+
+def test_a_tight_velocity_prior_pins_its_component_and_leaves_the_one_across_it_free():
+    e = synthetic_edges(CAM, TRUTH, 240, edge_sigma_px=0.02, seed=0)
+    start = BallMotion(TRUTH.radius_m, TRUTH.t_c_s, (0, -0.079, 4.25), (44.0, 3.8, -4.0))
+    d = np.array([0.0, 0.6, 0.8])
+    pinned = fit_motion(CAM, e, start, prior=VelocityPrior(tuple(d), 1.0, 1e-4))
+    v = np.asarray(pinned.motion.velocity_mps)
+    assert abs(v @ d - 1.0) < 1e-3
+    assert math.sqrt(d @ pinned.covariance[3:6, 3:6] @ d) < 1.1e-4
 
 
 def test_a_wide_prior_leaves_a_determined_fit_as_it_was():

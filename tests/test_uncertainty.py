@@ -1,4 +1,4 @@
-"""The fit's covariance: parameters that a full-rank fit still does not fix (solve.uncertainty.unfixed_parameters)."""
+"""The fit's covariance: parameters that a full-rank fit still does not fix (solve.uncertainty.unfixed_parameters, unfixed_across_sight)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from ballscan.geometry.motion import BallMotion
-from ballscan.solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, unfixed_parameters
+from ballscan.solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, sight_axes, unfixed_across_sight, unfixed_parameters
 
 #: the scales' motion (e.g. the key-point guess): 2 m away, 10 m/s across the plane and 1 m/s along the sensor
 GUESS = BallMotion(0.0335, 1e-3, (0.0, 0.05, 2.0), (10.0, 1.0, 0.0))
@@ -38,6 +38,30 @@ def test_a_sigma_beyond_its_scale_leaves_that_parameter_unfixed(k, limit):
     assert unfixed_parameters(_cov(sig), GUESS) == ()
     sig[k] = 1.01 * limit
     assert unfixed_parameters(_cov(sig), GUESS) == (NAMES[k],)
+
+
+@pytest.mark.parametrize("y0", [-2.5, -0.4, 0.0, 0.3, 3.0])
+def test_the_line_of_sights_axes_are_orthonormal_in_the_viewing_plane(y0):
+    across, along = sight_axes((0.0, y0, 5.0))
+    np.testing.assert_allclose([across @ across, along @ along, across @ along], [1.0, 1.0, 0.0], atol=1e-15)
+    np.testing.assert_allclose(along * np.hypot(y0, 5.0), [0.0, y0, 5.0], rtol=1e-14)
+    assert across[0] == along[0] == 0.0 and across[1] > 0.0
+
+
+@pytest.mark.parametrize("y0", [-1.2, 0.8])
+def test_off_the_axis_a_flat_direction_along_the_line_of_sight_leaves_vy_and_vz_unfixed_and_the_velocity_across_it_fixed(y0):
+    """The weak direction along the sight line has parts in vy and vz: both exceed their scale, vx and v_across do not."""
+    centre = (0.0, y0, 2.0)
+    across, along = sight_axes(centre)
+    C = _cov(SMALL)
+    C[3:6, 3:6] += 100.0**2 * np.outer(along, along)
+    guess = BallMotion(0.0335, 1e-3, centre, (10.0, 1.0, 0.0))
+    assert unfixed_parameters(C, guess) == ("vy_mps", "vz_mps")
+    assert unfixed_across_sight(C, guess, centre) == ()
+    C[3:6, 3:6] += 100.0**2 * np.outer(across, across)
+    assert unfixed_across_sight(C, guess, centre) == ("v_across_mps",)
+    C[3, 3] = np.nan
+    assert unfixed_across_sight(C, guess, centre) == ("vx_mps", "v_across_mps")
 
 
 def test_the_scales_are_the_given_motions_not_the_fits():

@@ -109,10 +109,16 @@ def compare(est: dict | None, tb: dict) -> dict:
     return row
 
 
+def _true_transverse(est: dict, tb: dict) -> float:
+    """The true ball's speed across the estimate's transverse axis: ``hypot(V.x, V . axis)``, ``axis`` (0, 1, 0) unless the estimate gives one."""
+    v = tb["velocity_mps"]
+    axis = est.get("transverse_axis") or (0.0, 1.0, 0.0)
+    return math.hypot(v[0], sum(a * b for a, b in zip(v, axis)))
+
+
 def _transverse_err(est: dict, tb: dict) -> float | None:
     """Relative error of the estimate's ``speed_transverse_mps`` (None where it has none)."""
-    v = tb["velocity_mps"]
-    vt_true, vt = math.hypot(v[0], v[1]), est.get("speed_transverse_mps")
+    vt_true, vt = _true_transverse(est, tb), est.get("speed_transverse_mps")
     return (vt - vt_true) / vt_true if vt is not None and vt_true > 0 else None
 
 
@@ -125,10 +131,9 @@ def _z_angle(est: dict, tb: dict, name: str) -> float | None:
 
 
 def _transverse_only(est: dict, tb: dict) -> dict:
-    """Errors of what an estimate whose depth velocity is undetermined still reports: ``|(vx, vy)|`` and ``psi_y``."""
-    v = tb["velocity_mps"]
+    """Errors of what an estimate whose velocity along the line of sight is undetermined still reports: the speed across it and ``psi_y``."""
     vt, vt_sig = est["speed_transverse_mps"], est.get("speed_transverse_sigma_mps")
-    z_vt = abs(vt - math.hypot(v[0], v[1])) / vt_sig if vt_sig else None
+    z_vt = abs(vt - _true_transverse(est, tb)) / vt_sig if vt_sig else None
     return {"transverse_only": True, "transverse_err": _transverse_err(est, tb), "z_vt": z_vt, "z_psi_y": _z_angle(est, tb, "psi_y")}
 
 

@@ -376,10 +376,11 @@ def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str 
         sig = f" ± {b.speed_sigma_mps * u:.2f}" if b.speed_sigma_mps is not None else ""
         mark = " (UNRELIABLE)" if unreliable else ""
         parts.append(f"{b.speed_mps * u:.2f}{sig} {units}{mark}")
-    # (with the depth velocity undetermined, what vx and vy give)
+    # (with the velocity along the line of sight undetermined, what the velocity across it gives)
     der = b.derived(camera)
     if der is not None and b.covariance is not None:
-        parts.append(f"across axis {der.speed_transverse_mps * u:.2f} ± {der.speed_transverse_sigma_mps * u:.2f}")
+        across = "across axis" if b.transverse is None else "across sight"
+        parts.append(f"{across} {der.speed_transverse_mps * u:.2f} ± {der.speed_transverse_sigma_mps * u:.2f}")
         parts.append(f"psi_y {der.direction_deg[0]:.1f} ± {der.direction_sigma_deg[0]:.1f} deg")
         if der.elevation_deg is not None:
             parts.append(f"elevation {der.elevation_deg:.1f} ± {der.elevation_sigma_deg:.1f} deg")

@@ -35,8 +35,10 @@ from ..measure.robust import median
 from ..measure.images import LineImage, as_line_image
 from ..geometry.motion import PARAM_NAMES
 from ..measure.defocus import Defocus
-from ..solve.prior import ParameterPrior
-from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, propagate, unfixed_parameters
+from ..solve.derived import Transverse, psi_y
+from ..solve.fit import FitResult
+from ..solve.prior import VelocityPrior
+from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, propagate, sight_axes, unfixed_across_sight, unfixed_parameters
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
 from .plausibility import assess, check_radius
@@ -187,39 +189,76 @@ def _shading_time(recipe: Recipe, first: FirstFit, shading: Shading | None, pixe
     return measured + pixel.time_s + final.time_attempts_s
 
 
-def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, cov: np.ndarray) -> tuple[tuple[float, float], np.ndarray, str]:
-    """``(vx, vy)`` of a fit whose depth velocity alone is undetermined, the covariance that goes with them, and which fit gave them.
+def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, unfixed: list[str]) -> Transverse:
+    """The velocity across the line of sight of a fit whose component along it alone is undetermined.
 
-    Along ``vz``'s flat direction the solver may stop anywhere, and ``vx``
-    follows it through their correlation.  The final fit is repeated from
-    its motion with ``vz = 0`` under the prior ``vz ~ N(0, (3 |(vx, vy)|)^2)``
-    (the scale beyond which ``vz`` counts as undetermined,
+    Along the line of sight's flat direction (:func:`ballscan.solve.uncertainty.sight_axes`)
+    the solver may stop anywhere, and ``vx`` follows it through their
+    correlation.  The final fit is repeated, from its motion with that
+    component removed and from its motion with ``vz = 0`` (the flat valley
+    may hold more than one minimum; the lower is kept), under the prior ``v_sight ~ N(0, (3 |(vx, vy)|)^2)``
+    (the scale beyond which a velocity component counts as undetermined,
     :data:`ballscan.solve.uncertainty.MAX_VELOCITY_SIGMA_RATIO` transverse
-    speeds of the key-point guess): ``vx`` and ``vy`` are taken where the
-    depth motion is plausible (``"prior"``).  Their covariance is the wider,
-    in the transverse speed, of that fit's (the prior's range of ``vz``
-    included; its ``vx``, ``vy`` rows against the others then unknown) and
-    the unconstrained fit's marginal one (the data's spread along ``vz``'s
-    flat direction; its rows kept).  ``vz`` itself stays undetermined.
+    speeds of the key-point guess): ``vx`` and ``v_across`` are taken where
+    the depth motion is plausible (``"prior"``).  Their covariance is the
+    wider, in the speed across the line of sight, of that fit's and the
+    unconstrained fit's marginal one (the data's spread along the flat
+    direction).  ``psi_y`` is the repeated fit's, its sigma the wider of
+    the two fits' where the unconstrained one fixes ``vy`` (off the axis
+    ``vy`` holds part of the flat direction, within the prior's range).
     Where the repeated fit does not converge, the unconstrained fit's
-    values and covariance (``"unconstrained"``).
+    ``vx``, ``v_across`` and their covariance, and its ``psi_y`` where it
+    fixes ``vy`` (``"unconstrained"``).
     """
     fit = final.fit
-    vx, vy, _ = guess_motion.velocity_mps
-    prior = ParameterPrior("vz_mps", 0.0, MAX_VELOCITY_SIGMA_RATIO * math.hypot(vx, vy))
     m = fit.motion
-    start = BallMotion(m.radius_m, m.t_c_s, m.position_m, (m.velocity_mps[0], m.velocity_mps[1], 0.0), m.acceleration_mps2)
-    bound = refit_with_prior(ball, final, start, prior)
-    block = bound.covariance[3:5, 3:5]
-    if not bound.converged or not np.all(np.isfinite(np.diag(block))):
-        return (float(m.velocity_mps[0]), float(m.velocity_mps[1])), cov, "unconstrained"
-    v = np.asarray(bound.motion.velocity_mps[:2])
-    g = v / np.linalg.norm(v) if np.any(v) else np.array([1.0, 0.0])
-    out = cov.copy()
-    if g @ block @ g > g @ cov[3:5, 3:5] @ g:
-        out[3:5, :] = out[:, 3:5] = np.nan
-        out[3:5, 3:5] = block
-    return (float(v[0]), float(v[1])), out, "prior"
+    across, along = sight_axes(m.position_m)
+    to_pair = np.array([[1.0, 0.0, 0.0], across])
+    v = np.asarray(m.velocity_mps, dtype=float)
+    free = fit.covariance[3:6, 3:6]
+    vx, vy, _ = guess_motion.velocity_mps
+    prior = VelocityPrior(tuple(along), 0.0, MAX_VELOCITY_SIGMA_RATIO * math.hypot(vx, vy))
+    fits = [refit_with_prior(ball, final, BallMotion(m.radius_m, m.t_c_s, m.position_m, tuple(u), m.acceleration_mps2), prior) for u in _prior_starts(v, along)]
+    fits = [f for f in fits if f.converged and np.all(np.isfinite(f.covariance[3:6, 3:6]))]
+    vy_fixed = "vy_mps" not in unfixed and np.all(np.isfinite(free[:2, :2]))
+    if not fits:
+        angle = psi_y(v[0], v[1], free[:2, :2]) if vy_fixed else (math.nan, math.nan)
+        return Transverse(to_pair @ v, across, to_pair @ free @ to_pair.T, *angle, "unconstrained")
+    bound = min(fits, key=lambda f: f.chi2_red)
+    held = bound.covariance[3:6, 3:6]
+    vb = np.asarray(bound.motion.velocity_mps, dtype=float)
+    pair, block, wide = to_pair @ vb, to_pair @ held @ to_pair.T, to_pair @ free @ to_pair.T
+    g = pair / np.linalg.norm(pair)
+    if g @ wide @ g > g @ block @ g:
+        block = wide
+    angle, angle_sigma = psi_y(vb[0], vb[1], held[:2, :2])
+    if vy_fixed:
+        angle_sigma = max(angle_sigma, psi_y(v[0], v[1], free[:2, :2])[1])
+    return Transverse(pair, across, block, angle, angle_sigma, "prior")
+
+
+def _prior_starts(v: np.ndarray, along: np.ndarray) -> list[np.ndarray]:
+    """The velocities the prior's fit starts from: ``v`` less its component ``along`` the line of sight, and ``v`` with ``vz = 0`` where that differs."""
+    starts = [v - (v @ along) * along]
+    flat = np.array([v[0], v[1], 0.0])
+    if not np.allclose(flat, starts[0]):
+        starts.append(flat)
+    return starts
+
+
+def _along_sight_only(fit: FitResult, unfixed: list[str], guess_motion: BallMotion) -> bool:
+    """Whether the velocity along the line of sight is all the fit leaves undetermined of the velocity (one camera's weak axis).
+
+    ``vz`` is undetermined, by rank or by its sigma; ``vx`` is fixed, and
+    ``vy`` is fixed too or its sigma is the line of sight's share
+    (:func:`ballscan.solve.uncertainty.unfixed_across_sight`).
+    """
+    velocity = {"vx_mps", "vy_mps", "vz_mps"}
+    by_rank = set(fit.undetermined) & velocity
+    by_sigma = set(unfixed) & velocity
+    if "vz_mps" not in by_rank | by_sigma or by_rank - {"vz_mps"} or "vx_mps" in by_sigma:
+        return False
+    return "vy_mps" not in by_sigma or not unfixed_across_sight(fit.statistical_covariance, guess_motion, fit.motion.position_m)
 
 
 def _fit_estimate(
@@ -265,11 +304,9 @@ def _fit_estimate(
     def keep(key: str, value):
         return None if key in undetermined else value
 
-    transverse, transverse_fit = None, {}
-    if ({*fit.undetermined, *unfixed} & {"vx_mps", "vy_mps", "vz_mps"}) == {"vz_mps"}:
-        # the depth velocity alone undetermined (one camera's weak axis)
-        transverse, cov, source = _transverse(ball, final, guess_motion, cov)
-        transverse_fit = {"transverse_fit": source}
+    transverse = None
+    if _along_sight_only(fit, unfixed, guess_motion):
+        transverse = _transverse(ball, final, guess_motion, unfixed)
 
     law = final.shading
     return BallEstimate(
@@ -283,7 +320,7 @@ def _fit_estimate(
         position_sigma_m=keep("position_m", unc.position_sigma_m),
         velocity_sigma_mps=keep("velocity_mps", unc.velocity_sigma_mps),
         speed_sigma_mps=keep("speed_mps", unc.speed_sigma_mps),
-        velocity_transverse_mps=transverse,
+        transverse=transverse,
         initial=initial,
         flags=tuple(flags),
         undetermined=tuple(undetermined),
@@ -295,7 +332,6 @@ def _fit_estimate(
         fitted_edges=final.edges,
         pixel_limb=final.pixel_limb,
         extra={
-            **transverse_fit,
             "chi2_red": fit.chi2_red,
             "residual_rms_px": fit.residual_rms_px,
             "iterations": fit.n_iterations,

@@ -91,7 +91,12 @@ def format_ball(k: int, b: BallEstimate, camera: LineScanCamera | None = None, u
     der = b.derived(camera)
     has_sigma = b.covariance is not None
     if der is not None:
-        lines.append(f"  across axis  {_pm(der.speed_transverse_mps, der.speed_transverse_sigma_mps if has_sigma else None, '.4f', u)} {units}  (|(vx, vy)|, the well-measured part)")
+        sigma = der.speed_transverse_sigma_mps if has_sigma else None
+        if b.transverse is None:
+            lines.append(f"  across axis  {_pm(der.speed_transverse_mps, sigma, '.4f', u)} {units}  (|(vx, vy)|, the well-measured part)")
+        else:
+            axis = ", ".join(f"{c:.3f}" for c in b.transverse.axis)
+            lines.append(f"  across sight {_pm(der.speed_transverse_mps, sigma, '.4f', u)} {units}  (|(vx, v along ({axis}))|, the well-measured part; the speed is at least this)")
     lines.append(f"  velocity     {_pm_vec(b.velocity_mps, b.velocity_sigma_mps, '.4f', u)} {units}")
     lines.append(f"  position     {_pm_vec(b.position_m, b.position_sigma_m, '.5f')} m")
     lines.append(f"  t_c          {_pm(b.t_c_s, b.t_c_sigma_s, '.7f')} s")

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..geometry.motion import BallMotion
-from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, derive, derive_transverse
+from ..solve.derived import COVARIANCE_PARAMETERS, WORLD_COVARIANCE_PARAMETERS, Derived, Transverse, derive, derive_transverse
 
 if TYPE_CHECKING:
     from ..measure.edges import EdgeMeasurements
@@ -68,11 +68,12 @@ class BallEstimate:
         The estimate (seconds, metres, m/s); ``None`` where undetermined.
     t_c_sigma_s, position_sigma_m, velocity_sigma_mps, speed_sigma_mps
         1-sigma uncertainties where the method provides them.
-    velocity_transverse_mps : (float, float) or None
-        ``(vx, vy)`` (m/s) where the velocity is undetermined only through its
-        depth component ``vz`` (one camera's weak axis): what the image does
-        determine, with their rows of ``covariance``; None otherwise (the
-        velocity is whole, or ``vx`` or ``vy`` is undetermined too).
+    transverse : Transverse or None
+        Where the velocity is undetermined only through its component along
+        the camera's line of sight (one camera's weak axis): the velocity
+        across it, what the image does determine
+        (:class:`ballscan.solve.derived.Transverse`); None otherwise (the
+        velocity is whole, or undetermined across the line of sight too).
     initial : BallEstimate or None
         The key-point initial guess (paper Eq. (3)-(7)).
     flags : tuple of str
@@ -114,7 +115,7 @@ class BallEstimate:
     position_sigma_m: tuple[float, float, float] | None = None
     velocity_sigma_mps: tuple[float, float, float] | None = None
     speed_sigma_mps: float | None = None
-    velocity_transverse_mps: tuple[float, float] | None = None
+    transverse: Transverse | None = None
     initial: "BallEstimate | None" = None
     flags: tuple[str, ...] = ()
     undetermined: tuple[str, ...] = ()
@@ -132,11 +133,8 @@ class BallEstimate:
         object.__setattr__(self, "velocity_mps", _tuple3(self.velocity_mps))
         object.__setattr__(self, "position_sigma_m", _tuple3(self.position_sigma_m))
         object.__setattr__(self, "velocity_sigma_mps", _tuple3(self.velocity_sigma_mps))
-        if self.velocity_transverse_mps is not None:
-            vt = tuple(float(v) for v in self.velocity_transverse_mps)
-            if len(vt) != 2 or self.velocity_mps is not None:
-                raise ValueError(f"velocity_transverse_mps: (vx, vy) of a velocity undetermined in vz only, got {self.velocity_transverse_mps!r} beside velocity_mps {self.velocity_mps!r}")
-            object.__setattr__(self, "velocity_transverse_mps", vt)
+        if self.transverse is not None and self.velocity_mps is not None:
+            raise ValueError(f"transverse: the velocity across the line of sight of a velocity undetermined along it, got one beside velocity_mps {self.velocity_mps!r}")
         if self.speed_mps is None and self.velocity_mps is not None:
             object.__setattr__(self, "speed_mps", float(np.linalg.norm(self.velocity_mps)))
         unknown = set(self.flags) - set(FLAGS)
@@ -184,14 +182,14 @@ class BallEstimate:
     def derived(self, camera: LineScanCamera | None = None) -> Derived | None:
         """Transverse speed, direction angles, the world frame and their sigmas (:func:`ballscan.solve.derived.derive`).
 
-        Where only the depth velocity is undetermined, the part that ``vx``
-        and ``vy`` give (:func:`ballscan.solve.derived.derive_transverse`);
+        Where only the velocity along the line of sight is undetermined, the
+        part across it (:func:`ballscan.solve.derived.derive_transverse`);
         None when the velocity is undetermined otherwise.
         """
         if self.position_m is not None and self.velocity_mps is not None:
             return derive(camera, self.position_m, self.velocity_mps, self.covariance)
-        if self.velocity_transverse_mps is not None:
-            return derive_transverse(self.velocity_transverse_mps, self.covariance)
+        if self.transverse is not None:
+            return derive_transverse(self.transverse)
         return None
 
     # ---------------------------------------------------------- serialisation
@@ -216,8 +214,12 @@ class BallEstimate:
         if self.covariance is not None:
             d["covariance"] = {"parameters": list(COVARIANCE_PARAMETERS), "matrix": np.asarray(self.covariance, dtype=float)}
         der = self.derived(camera)
-        if self.velocity_transverse_mps is not None:
-            d["velocity_transverse_mps"] = list(self.velocity_transverse_mps)
+        if self.transverse is not None:
+            t = self.transverse
+            d["velocity_transverse_mps"] = list(t.velocity_mps)
+            d["transverse_axis"] = list(t.axis)
+            d["velocity_transverse_cov_m2ps2"] = t.covariance
+            d["transverse_fit"] = t.source
         if der is not None:
             d["speed_transverse_mps"] = der.speed_transverse_mps
             if self.covariance is not None:

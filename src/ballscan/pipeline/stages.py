@@ -45,7 +45,7 @@ from ..model.blur import blur_diameter
 from ..solve.fit import FitResult, fit_motion
 from ..solve.envelope import InwardEdges, trim_inward
 from ..solve.initial import InitialGuess, find_keypoints, initial_guess
-from ..solve.prior import ParameterPrior
+from ..solve.prior import Prior
 from ..solve.settings import FitSettings
 from .background import full_background, refine_background
 from .recipe import Recipe
@@ -657,8 +657,8 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
 PRIOR_REFIT_NFEV = 4
 
 
-def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior: ParameterPrior) -> FitResult:
-    """The final fit again, on its own edges and settings, from ``start`` with a Gaussian ``prior`` on one parameter.
+def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior: Prior) -> FitResult:
+    """The final fit again, on its own edges and settings, from ``start`` with a Gaussian ``prior`` on one parameter or velocity component.
 
     Where the image leaves a parameter undetermined (one camera's ``vz``),
     the prior keeps it within a plausible range, so that the others are
@@ -672,7 +672,7 @@ def refit_with_prior(ball: BallInput, final: FinalFit, start: BallMotion, prior:
         The fit repeated: its settings and its edges.
     start : BallMotion
         Where the repeated fit starts (s, m, m/s).
-    prior : ParameterPrior
+    prior : ParameterPrior or VelocityPrior
 
     Returns
     -------

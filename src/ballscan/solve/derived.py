@@ -8,24 +8,27 @@ over the velocity's whole covariance (:func:`direction_sigmas`).  The speed
 itself, with its bias correction, is
 :func:`ballscan.solve.uncertainty.propagate`'s.
 
-One line-scan camera measures ``vx`` and ``vy`` (across the optical axis)
-well and ``vz`` (along it) poorly: the speed across the optical axis,
-``|(vx, vy)|``, is typically hundreds of times more precise than the total
-speed, and the depth angle's sigma is correspondingly wide.
+One line-scan camera measures ``vx`` and the velocity across its line of
+sight well and the velocity along it poorly: on the optical axis
+(``y0 = 0``) these are ``vy`` and ``vz``, and the speed across the optical
+axis, ``|(vx, vy)|``, is typically hundreds of times more precise than the
+total speed, with the depth angle's sigma correspondingly wide.  Where the
+component along the line of sight is undetermined, :class:`Transverse`
+holds what remains.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..geometry.camera import LineScanCamera
 
 __all__ = [
-    "COVARIANCE_PARAMETERS", "GH_NODES", "GH_WEIGHTS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "derive", "derive_transverse",
-    "direction_jacobian", "direction_sigmas", "launch_angles", "world_covariance",
+    "COVARIANCE_PARAMETERS", "GH_NODES", "GH_WEIGHTS", "WORLD_COVARIANCE_PARAMETERS", "Derived", "Transverse", "derive", "derive_transverse",
+    "direction_jacobian", "psi_y", "direction_sigmas", "launch_angles", "world_covariance",
 ]
 
 #: The order of :attr:`BallEstimate.covariance`'s rows and columns (seconds, metres, m/s).
@@ -62,7 +65,9 @@ class Derived:
     ----------
     speed_transverse_mps, speed_transverse_sigma_mps : float
         ``|(vx, vy)|``, the speed across the optical axis (in the plane of the
-        sensor line and the crossing direction), m/s.
+        sensor line and the crossing direction), m/s; for a
+        :class:`Transverse` estimate ``|(vx, v_across)|``, across the line of
+        sight.
     direction_deg, direction_sigma_deg : ndarray (2,)
         ``psi_y = atan2(vy, vx)`` (towards the sensor's ``+y``) and
         ``psi_z = atan2(vz, vx)`` (towards the depth ``+z``), degrees.
@@ -96,6 +101,56 @@ class Derived:
     elevation_sigma_deg: float | None = None
     azimuth_deg: float | None = None
     azimuth_sigma_deg: float | None = None
+
+
+@dataclass(frozen=True)
+class Transverse:
+    """The velocity across one camera's line of sight, where its component along the line of sight is undetermined.
+
+    The ball's centre at ``t_c`` is ``(0, y0, z0)``: the camera sees it
+    along ``(0, y0, z0) / r`` and across it, in the viewing plane, along
+    ``axis = (0, z0, -y0) / r`` (``r = |(y0, z0)|``).  The image fixes
+    ``vx`` and the velocity along ``axis`` (the centre's angular rate times
+    ``r``); the component along the line of sight only changes the ball's
+    size, which one camera sees weakly.  On the optical axis ``axis`` is
+    ``(0, 1, 0)`` and the pair is ``(vx, vy)``.
+
+    Attributes
+    ----------
+    velocity_mps : (float, float)
+        ``(vx, v_across)``: along the camera's ``x`` and along ``axis``, m/s.
+    axis : (float, float, float)
+        Unit vector of ``v_across``, camera frame.
+    covariance : ndarray (2, 2)
+        Of ``velocity_mps``, m^2/s^2.
+    psi_y_deg, psi_y_sigma_deg : float
+        ``atan2(vy, vx)`` and its 1-sigma, degrees; off the optical axis
+        ``vy`` holds part of the undetermined component, within the range
+        the fit allowed it (NaN where no fit bounded it).
+    source : {"prior", "unconstrained"}
+        The fit that gave them (:func:`ballscan.pipeline.estimate.estimate_region`).
+    """
+
+    velocity_mps: tuple[float, float]
+    axis: tuple[float, float, float]
+    covariance: np.ndarray = field(repr=False, compare=False)
+    psi_y_deg: float
+    psi_y_sigma_deg: float
+    source: str
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "velocity_mps", tuple(float(v) for v in self.velocity_mps))
+        object.__setattr__(self, "axis", tuple(float(v) for v in self.axis))
+        object.__setattr__(self, "covariance", np.asarray(self.covariance, dtype=float).reshape(2, 2))
+        if len(self.velocity_mps) != 2 or len(self.axis) != 3 or abs(math.hypot(*self.axis) - 1.0) > 1e-9 or self.axis[0] != 0.0:
+            raise ValueError(f"Transverse: (vx, v_across) and a unit axis in the viewing plane, got {self.velocity_mps!r}, {self.axis!r}")
+        if self.source not in ("prior", "unconstrained"):
+            raise ValueError(f"Transverse.source: 'prior' or 'unconstrained', got {self.source!r}")
+
+
+def psi_y(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
+    """``psi_y = atan2(vy, vx)`` and its RMS error (:func:`direction_sigmas`) from the ``vx``, ``vy`` covariance ``C``, degrees."""
+    return math.degrees(math.atan2(vy, vx)), math.degrees(_angle_rms(np.array([vx, vy], dtype=float), np.asarray(C, dtype=float), ((0, 1),))[0])
 
 
 def _linear_sigma(g: np.ndarray, C: np.ndarray) -> float:
@@ -245,30 +300,19 @@ def derive(camera: LineScanCamera | None, position_m, velocity_mps, covariance: 
     return Derived(**out)
 
 
-def derive_transverse(velocity_xy_mps, covariance: np.ndarray | None) -> Derived:
-    """What ``vx`` and ``vy`` alone give, where the depth velocity ``vz`` is undetermined.
+def derive_transverse(transverse: Transverse) -> Derived:
+    """What the velocity across the line of sight gives, where its component along it is undetermined.
 
-    The speed across the optical axis ``|(vx, vy)|`` and ``psi_y = atan2(vy,
-    vx)``, with their sigmas from the ``vx``, ``vy`` block of ``covariance``
-    (the marginal one: it holds ``vz``'s share through the fit's
-    correlations); ``psi_z``, the correlations with the speed and the world
-    frame (which need ``vz``) are NaN or None.
-
-    Parameters
-    ----------
-    velocity_xy_mps : (2,) array-like
-        ``(vx, vy)``, camera frame, m/s.
-    covariance : ndarray (6, 6) or None
-        Of :data:`COVARIANCE_PARAMETERS` (NaN in ``vz``'s row and column), or
-        None for no sigmas.
+    The speed across the line of sight ``|(vx, v_across)|`` (a lower bound
+    of the speed) with its sigma, and ``psi_y`` as the fit bounded it
+    (:class:`Transverse`); ``psi_z``, the correlations with the speed and
+    the world frame (which need the whole velocity) are NaN or None.
     """
-    vx, vy = (float(v) for v in velocity_xy_mps)
-    C = np.full((2, 2), np.nan) if covariance is None else np.asarray(covariance, dtype=float)[3:5, 3:5]
-    vt, vt_sigma = _speed_across(vx, vy, C)
+    vt, vt_sigma = _speed_across(*transverse.velocity_mps, transverse.covariance)
     return Derived(
         speed_transverse_mps=vt,
         speed_transverse_sigma_mps=vt_sigma,
-        direction_deg=np.array([math.degrees(math.atan2(vy, vx)), math.nan]),
-        direction_sigma_deg=np.array([math.degrees(_angle_rms(np.array([vx, vy]), C, ((0, 1),))[0]), math.nan]),
+        direction_deg=np.array([transverse.psi_y_deg, math.nan]),
+        direction_sigma_deg=np.array([transverse.psi_y_sigma_deg, math.nan]),
         speed_direction_correlation=np.full(2, math.nan),
     )

@@ -37,7 +37,7 @@ from ..measure.edges import EdgeMeasurements
 from ..model.averaged import ModelEdges
 from .problem import BlockState, FitProblem, ResidualBlock, Selection
 from .settings import FitSettings
-from .prior import ParameterPrior, WithPrior
+from .prior import Prior, WithPrior
 from .solver import SolveResult, levenberg_marquardt, scipy_least_squares
 from .uncertainty import covariance_from_jacobian, edge_sides, limb_covariance, residual_scale
 
@@ -144,7 +144,7 @@ def fit_motion(
     edges: EdgeMeasurements,
     initial: BallMotion,
     settings: FitSettings = FitSettings(),
-    prior: ParameterPrior | None = None,
+    prior: Prior | None = None,
 ) -> FitResult:
     """Fit the averaged-silhouette model to one ball's edge measurements (Eq. (7)-(10)).
 
@@ -158,8 +158,9 @@ def fit_motion(
         Starting point (e.g. the paper's key-point guess, Eq. (3)-(7)); its
         radius and known acceleration are kept fixed.
     settings : FitSettings
-    prior : ParameterPrior or None
-        A Gaussian prior on one parameter, one more residual of the fit
+    prior : ParameterPrior or VelocityPrior or None
+        A Gaussian prior on one parameter or on the velocity along a
+        direction, one more residual of the fit
         (:mod:`ballscan.solve.prior`); its covariance holds it too.
 
     Returns
@@ -172,7 +173,7 @@ def fit_motion(
     return fit_blocks((ResidualBlock(camera, edges),), initial, settings, prior)
 
 
-def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(), prior: ParameterPrior | None = None) -> FitResult:
+def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(), prior: Prior | None = None) -> FitResult:
     """Fit the motion shared by residual blocks (one per camera) to their measurements (Eq. (7)-(10)).
 
     Parameters
@@ -183,7 +184,7 @@ def fit_blocks(blocks, initial: BallMotion, settings: FitSettings = FitSettings(
     initial : BallMotion
         Starting point; its radius and known acceleration are kept fixed.
     settings : FitSettings
-    prior : ParameterPrior or None
+    prior : ParameterPrior or VelocityPrior or None
         As :func:`fit_motion`'s.
 
     Returns
@@ -257,7 +258,7 @@ def _select_all(states, theta: np.ndarray, level_partial: bool) -> tuple[Selecti
     return tuple(st.select(theta, level_partial) for st in states)
 
 
-def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings, prior: ParameterPrior | None) -> SolveResult:
+def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings, prior: Prior | None) -> SolveResult:
     """One solve of the stacked problem at the selections ``sels`` from ``x`` (with the prior's residual last)."""
     problem = FitProblem(states, sels, fit_bias=len(x) == 7)
     if prior is not None:
@@ -269,7 +270,7 @@ def _solve(states, sels, x: np.ndarray, loss: str, settings: FitSettings, prior:
     return levenberg_marquardt(problem, x, settings, start=problem.start(), loss=loss)
 
 
-def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: FitSettings, prior: ParameterPrior | None = None) -> _Rounds:
+def _solve_rounds(states, sels, x: np.ndarray, level_partial: bool, settings: FitSettings, prior: Prior | None = None) -> _Rounds:
     """(Optionally a robust fit first, then) least squares, rejection of outlying edges, re-selection and refit until nothing changes."""
     n_total = n_rejected = 0
     sol, solved = None, ()

@@ -1,15 +1,17 @@
-"""A Gaussian prior on one motion parameter, as one more whitened residual of a fitting problem.
+"""A Gaussian prior on one motion parameter, or on the velocity along one direction, as one more whitened residual of a fitting problem.
 
-A prior ``p ~ N(mean, sigma^2)`` on the parameter ``p`` of
-:data:`ballscan.geometry.motion.PARAM_NAMES` adds the residual ``(p - mean)
-/ sigma`` to the least squares of Eq. (9) and the row ``e_p / sigma`` to its
-Jacobian, so the fit's covariance holds it too (scaled, as the data's
-information is, by the fit's covariance scale: a reduced chi-square above 1
-widens the prior's share alike).  Its use: keeping a
-parameter that the image leaves undetermined (one camera's depth velocity
-``vz``) within a stated plausible range, so that the others are taken
-where the motion is plausible instead of wherever the flat direction led
-the solver.
+A prior ``w . p ~ N(mean, sigma^2)`` on a linear combination of the
+parameters ``p`` of :data:`ballscan.geometry.motion.PARAM_NAMES` adds the
+residual ``(w . p - mean) / sigma`` to the least squares of Eq. (9) and the
+row ``w / sigma`` to its Jacobian, so the fit's covariance holds it too
+(scaled, as the data's information is, by the fit's covariance scale: a
+reduced chi-square above 1 widens the prior's share alike).  Its use:
+keeping what the image leaves undetermined (one camera's velocity along
+its line of sight) within a stated plausible range, so that the rest is
+taken where the motion is plausible instead of wherever the flat direction
+led the solver.  :class:`ParameterPrior` puts it on one parameter (``w`` a
+unit vector), :class:`VelocityPrior` on the velocity's component along a
+direction.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ import numpy as np
 
 from ..geometry.motion import PARAM_NAMES
 
-__all__ = ["ParameterPrior", "WithPrior"]
+__all__ = ["ParameterPrior", "Prior", "VelocityPrior", "WithPrior"]
 
 
 @dataclass(frozen=True)
@@ -56,6 +58,52 @@ class ParameterPrior:
         """The parameter's place in the fit's parameter vector."""
         return PARAM_NAMES.index(self.name)
 
+    def weights(self, n_params: int) -> np.ndarray:
+        """``w`` over the fit's ``n_params`` parameters: 1 at :attr:`index`."""
+        w = np.zeros(n_params)
+        w[self.index] = 1.0
+        return w
+
+
+@dataclass(frozen=True)
+class VelocityPrior:
+    """``v . direction ~ N(mean, sigma^2)``: the velocity's component along a unit direction, m/s.
+
+    Attributes
+    ----------
+    direction : (float, float, float)
+        Unit vector in the camera frame (normalised at construction; not
+        zero, finite).
+    mean : float
+        The prior's centre, m/s.
+    sigma : float
+        Its standard deviation, m/s; positive and finite.
+    """
+
+    direction: tuple[float, float, float]
+    mean: float
+    sigma: float
+
+    def __post_init__(self) -> None:
+        d = np.asarray(self.direction, dtype=float)
+        if d.shape != (3,) or not np.all(np.isfinite(d)) or not np.any(d):
+            raise ValueError(f"VelocityPrior.direction: a finite non-zero 3-vector, got {self.direction!r}")
+        object.__setattr__(self, "direction", tuple(float(c) for c in d / np.linalg.norm(d)))
+        if not (_real(self.mean) and math.isfinite(self.mean)):
+            raise ValueError(f"VelocityPrior.mean: a finite number, got {self.mean!r}")
+        if not (_real(self.sigma) and math.isfinite(self.sigma) and self.sigma > 0):
+            raise ValueError(f"VelocityPrior.sigma: a finite number > 0, got {self.sigma!r}")
+
+    def weights(self, n_params: int) -> np.ndarray:
+        """``w`` over the fit's ``n_params`` parameters: the direction in the velocity's three."""
+        w = np.zeros(n_params)
+        w[3:6] = self.direction
+        return w
+
+
+#: either prior: what :class:`WithPrior` and the fit take
+Prior = ParameterPrior | VelocityPrior
+
 
 def _real(v) -> bool:
     """A real number, numpy's included, that is not a bool."""
@@ -74,24 +122,24 @@ class WithPrior:
         Its ``residuals``, ``residuals_and_jacobian``, ``start`` and
         ``fit_bias`` (the parameters: the six of ``PARAM_NAMES``, and the
         edge bias after them when it is fitted).
-    prior : ParameterPrior
+    prior : ParameterPrior or VelocityPrior
     """
 
-    def __init__(self, problem, prior: ParameterPrior) -> None:
+    def __init__(self, problem, prior: Prior) -> None:
         self.problem = problem
         self.prior = prior
-        self._jac = np.zeros(6 + int(problem.fit_bias))
-        self._jac[prior.index] = 1.0 / prior.sigma
+        self._w = prior.weights(6 + int(problem.fit_bias))
+        self._jac = self._w / prior.sigma
 
     def _residual(self, x: np.ndarray) -> float:
-        return (float(x[self.prior.index]) - self.prior.mean) / self.prior.sigma
+        return (float(self._w @ x) - self.prior.mean) / self.prior.sigma
 
     def residuals(self, x: np.ndarray) -> np.ndarray:
-        """The problem's whitened residuals at ``x``, then ``(x_p - mean) / sigma``."""
+        """The problem's whitened residuals at ``x``, then ``(w . x - mean) / sigma``."""
         return np.append(self.problem.residuals(x), self._residual(x))
 
     def jacobian(self, x: np.ndarray) -> np.ndarray:
-        """Jacobian of :meth:`residuals` at ``x``: the problem's rows, then ``e_p / sigma``."""
+        """Jacobian of :meth:`residuals` at ``x``: the problem's rows, then ``w / sigma``."""
         return self.residuals_and_jacobian(x)[1]
 
     def residuals_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

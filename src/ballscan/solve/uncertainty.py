@@ -33,7 +33,7 @@ from .derived import GH_NODES, GH_WEIGHTS, direction_sigmas
 
 __all__ = [
     "LimbSide", "MotionUncertainty", "covariance_from_jacobian", "edge_sides", "limb_covariance", "param_scale", "propagate",
-    "residual_scale", "smooth_residual_px", "unfixed_parameters",
+    "residual_scale", "sight_axes", "smooth_residual_px", "unfixed_across_sight", "unfixed_parameters",
 ]
 
 #: a velocity component whose 1-sigma exceeds this many times the speed
@@ -234,6 +234,50 @@ def unfixed_parameters(cov: np.ndarray, scale_motion: BallMotion) -> tuple[str, 
     t_cross = 2.0 * scale_motion.radius_m / abs(vx) if vx != 0 else math.inf
     scale = np.array([t_cross, z0, z0] + [MAX_VELOCITY_SIGMA_RATIO * vt] * 3)
     return tuple(PARAM_NAMES[k] for k in range(6) if not sig[k] <= scale[k])
+
+
+def sight_axes(position_m) -> tuple[np.ndarray, np.ndarray]:
+    """Unit vectors across and along one camera's line of sight to a centre ``(0, y0, z0)`` (camera frame, metres).
+
+    Both lie in the viewing plane: along is ``(0, y0, z0) / r``, across is
+    ``(0, z0, -y0) / r`` (``r = |(y0, z0)|``; ``(0, 1, 0)`` on the optical
+    axis).  One camera sees the velocity across it as the centre's angular
+    rate and the one along it only as a change of the ball's size
+    (:class:`ballscan.solve.derived.Transverse`).
+    """
+    _, y0, z0 = (float(c) for c in position_m)
+    r = math.hypot(y0, z0)
+    return np.array([0.0, z0 / r, -y0 / r]), np.array([0.0, y0 / r, z0 / r])
+
+
+def unfixed_across_sight(cov: np.ndarray, scale_motion: BallMotion, position_m) -> tuple[str, ...]:
+    """Which of ``vx`` and the velocity across the line of sight a fit leaves unfixed, by :func:`unfixed_parameters`' velocity scale.
+
+    Off the optical axis the weak direction of one camera, the velocity
+    along its line of sight (:func:`sight_axes`), has a part in ``vy`` as
+    well as in ``vz``: both may then exceed their scale while ``vx`` and
+    the velocity across the line of sight are fixed.
+
+    Parameters
+    ----------
+    cov : ndarray (6, 6)
+        Covariance of ``(t_c, y0, z0, vx, vy, vz)`` (s, m, m, m/s).
+    scale_motion : BallMotion
+        The motion the scale is taken from (the key-point guess).
+    position_m : (3,) array-like
+        The fitted centre at ``t_c``, metres.
+
+    Returns
+    -------
+    tuple of str
+        Among ``("vx_mps", "v_across_mps")``; NaN sigmas count.
+    """
+    across, _ = sight_axes(position_m)
+    P = np.array([[1.0, 0.0, 0.0], across])
+    var = np.diag(P @ np.asarray(cov, dtype=float)[3:6, 3:6] @ P.T)
+    vx, vy, _ = scale_motion.velocity_mps
+    scale = MAX_VELOCITY_SIGMA_RATIO * math.hypot(vx, vy)
+    return tuple(name for name, v in zip(("vx_mps", "v_across_mps"), var) if not math.sqrt(abs(v)) <= scale)
 
 
 def residual_scale(chi2_red: float, sides: tuple[np.ndarray, ...], correlated: bool) -> tuple[float, float]:
