@@ -126,10 +126,11 @@ def test_the_speed_across_the_line_of_sight_is_the_velocitys_part_there(slope, v
     assert part.speed_transverse_mps == pytest.approx(math.sqrt(max(v @ v - (v @ along) ** 2, 0.0)), rel=1e-9, abs=1e-12)
 
 
-@pytest.mark.parametrize("kw, word", [(dict(axis=(0.0, 0.8, 0.8)), "unit"), (dict(axis=(1.0, 0.0, 0.0)), "unit"), (dict(source="free"), "source")])
+@pytest.mark.parametrize("kw, word", [(dict(axis=(0.0, 0.8, 0.8)), "unit"), (dict(axis=(1.0, 0.0, 0.0)), "unit"), (dict(axis=(0.0, math.nan, 1.0)), "unit"),
+     (dict(velocity_mps=(math.inf, 0.0)), "unit"), (dict(source="free"), "source")])
 def test_a_transverse_velocity_is_checked_at_construction(kw, word):
     args = dict(velocity_mps=(1.0, 0.0), axis=(0.0, 1.0, 0.0), covariance=np.eye(2), psi_y_deg=0.0, psi_y_sigma_deg=1.0, source="prior") | kw
-    with pytest.raises(ValueError, match="Transverse"):
+    with pytest.raises(ValueError, match=f"Transverse.*{word}"):
         Transverse(**args)
 
 

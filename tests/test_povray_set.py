@@ -319,7 +319,7 @@ def test_off_the_axis_the_velocity_across_the_line_of_sight_is_measured(name, ca
     # leaves vy and vz both undetermined; the speed across it holds the truth within 3 sigma
     truth, balls = _estimate(name, capsys)
     (ball,) = balls
-    assert ball["speed_mps"] is None and {"vy_mps", "vz_mps"} <= set(ball["covariance"]["parameters"])
+    assert ball["speed_mps"] is None
     assert ball["covariance"]["matrix"][4][4] is None and ball["covariance"]["matrix"][5][5] is None
     axis = ball["transverse_axis"]
     assert axis[0] == 0.0 and abs(axis[2]) > 0.15

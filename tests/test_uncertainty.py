@@ -60,8 +60,17 @@ def test_off_the_axis_a_flat_direction_along_the_line_of_sight_leaves_vy_and_vz_
     assert unfixed_across_sight(C, guess, centre) == ()
     C[3:6, 3:6] += 100.0**2 * np.outer(across, across)
     assert unfixed_across_sight(C, guess, centre) == ("v_across_mps",)
-    C[3, 3] = np.nan
+    C[3, :] = C[:, 3] = np.nan
     assert unfixed_across_sight(C, guess, centre) == ("vx_mps", "v_across_mps")
+
+
+def test_on_the_axis_a_vz_undetermined_by_rank_leaves_the_velocity_across_the_line_of_sight_fixed():
+    """A NaN row of vz (the rank test's) does not reach v_across on the axis, where its weight is zero."""
+    C = _cov(SMALL)
+    C[5, :] = C[:, 5] = np.nan
+    assert unfixed_across_sight(C, GUESS, (0.0, 0.0, 2.0)) == ()
+    with pytest.raises(ValueError, match="sight_axes"):
+        sight_axes((0.0, 0.0, 0.0))
 
 
 def test_the_scales_are_the_given_motions_not_the_fits():

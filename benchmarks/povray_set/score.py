@@ -236,7 +236,7 @@ def table(rows: list[dict]) -> list[str]:
 
 
 def transverse_lines(rows: list[dict]) -> list[str]:
-    """The fit's balls with the speed undetermined (one camera's depth velocity) but ``|(vx, vy)|`` and ``psi_y`` reported."""
+    """The fit's balls with the speed undetermined (one camera's line of sight) but the speed across it and ``psi_y`` reported."""
     t = [r["fit"] for r in rows if r["fit"].get("transverse_only")]
     if not t:
         return []
@@ -246,9 +246,9 @@ def transverse_lines(rows: list[dict]) -> list[str]:
         zs = [r[key] for r in t if r.get(key) is not None]
         return f"{100 * sum(z <= k for z in zs) / len(zs):.0f}" if zs else "-"
 
-    return ["", f"fit, speed undetermined but the transverse speed reported: {len(t)} balls; |(vx, vy)| error median "
+    return ["", f"fit, speed undetermined but the speed across the line of sight reported: {len(t)} balls; its error median "
             f"{_fmt(_med(errs), '.2f')} %, worst {_fmt(max(errs) if errs else None, '.2f')} %; within 1 / 3 sigma: "
-            f"|(vx, vy)| {cover('z_vt', 1)} / {cover('z_vt', 3)} %, psi_y {cover('z_psi_y', 1)} / {cover('z_psi_y', 3)} %"]
+            f"that speed {cover('z_vt', 1)} / {cover('z_vt', 3)} %, psi_y {cover('z_psi_y', 1)} / {cover('z_psi_y', 3)} %"]
 
 
 def main(argv: list[str] | None = None) -> int:

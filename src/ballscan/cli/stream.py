@@ -10,6 +10,8 @@ every result measured before them has been printed.
 
 from __future__ import annotations
 
+import math
+
 import json
 import sys
 import time
@@ -381,7 +383,8 @@ def format_stream_line(result: StreamResult, camera: LineScanCamera, units: str 
     if der is not None and b.covariance is not None:
         across = "across axis" if b.transverse is None else "across sight"
         parts.append(f"{across} {der.speed_transverse_mps * u:.2f} ± {der.speed_transverse_sigma_mps * u:.2f}")
-        parts.append(f"psi_y {der.direction_deg[0]:.1f} ± {der.direction_sigma_deg[0]:.1f} deg")
+        psi, psi_sigma = der.direction_deg[0], der.direction_sigma_deg[0]
+        parts.append(f"psi_y {psi:.1f} ± {psi_sigma:.1f} deg" if math.isfinite(psi) else "psi_y undetermined")
         if der.elevation_deg is not None:
             parts.append(f"elevation {der.elevation_deg:.1f} ± {der.elevation_sigma_deg:.1f} deg")
     if b.flags:

@@ -172,7 +172,8 @@ class LiveBall:
         Time the centre crossed the viewing plane, seconds.
     speed_mps, speed_sigma_mps : float or None
     speed_transverse_mps : float or None
-        ``|(vx, vy)|``, m/s.
+        ``|(vx, vy)|``, or the speed across the line of sight where only
+        that is determined (geometry.md), m/s.
     direction_deg, direction_sigma_deg : tuple of float or None
         ``(psi_y, psi_z)`` and their 1-sigma, degrees (geometry.md).
     flags : tuple of str

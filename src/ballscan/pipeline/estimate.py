@@ -38,7 +38,7 @@ from ..measure.defocus import Defocus
 from ..solve.derived import Transverse, psi_y
 from ..solve.fit import FitResult
 from ..solve.prior import VelocityPrior
-from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, propagate, sight_axes, unfixed_across_sight, unfixed_parameters
+from ..solve.uncertainty import MAX_VELOCITY_SIGMA_RATIO, projected, propagate, sight_axes, unfixed_across_sight, unfixed_parameters
 from ..solve.initial import InitialGuess
 from ..solve.paper import refine_paper
 from .plausibility import assess, check_radius
@@ -196,7 +196,8 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, unfi
     the solver may stop anywhere, and ``vx`` follows it through their
     correlation.  The final fit is repeated, from its motion with that
     component removed and from its motion with ``vz = 0`` (the flat valley
-    may hold more than one minimum; the lower is kept), under the prior ``v_sight ~ N(0, (3 |(vx, vy)|)^2)``
+    may hold more than one minimum; the one with fewer edges rejected, then
+    the lower chi-square, is kept), under the prior ``v_sight ~ N(0, (3 |(vx, vy)|)^2)``
     (the scale beyond which a velocity component counts as undetermined,
     :data:`ballscan.solve.uncertainty.MAX_VELOCITY_SIGMA_RATIO` transverse
     speeds of the key-point guess): ``vx`` and ``v_across`` are taken where
@@ -206,13 +207,19 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, unfi
     direction).  ``psi_y`` is the repeated fit's, its sigma the wider of
     the two fits' where the unconstrained one fixes ``vy`` (off the axis
     ``vy`` holds part of the flat direction, within the prior's range).
+    Where the rank test finds the flat direction in ``vz`` itself, the
+    pair is ``(vx, vy)``.
     Where the repeated fit does not converge, the unconstrained fit's
     ``vx``, ``v_across`` and their covariance, and its ``psi_y`` where it
     fixes ``vy`` (``"unconstrained"``).
     """
     fit = final.fit
     m = fit.motion
-    across, along = sight_axes(m.position_m)
+    if "vz_mps" in fit.undetermined:
+        # the rank test found the flat direction in vz itself
+        across, along = np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 1.0])
+    else:
+        across, along = sight_axes(m.position_m)
     to_pair = np.array([[1.0, 0.0, 0.0], across])
     v = np.asarray(m.velocity_mps, dtype=float)
     free = fit.covariance[3:6, 3:6]
@@ -223,13 +230,14 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, unfi
     vy_fixed = "vy_mps" not in unfixed and np.all(np.isfinite(free[:2, :2]))
     if not fits:
         angle = psi_y(v[0], v[1], free[:2, :2]) if vy_fixed else (math.nan, math.nan)
-        return Transverse(to_pair @ v, across, to_pair @ free @ to_pair.T, *angle, "unconstrained")
-    bound = min(fits, key=lambda f: f.chi2_red)
+        return Transverse(to_pair @ v, across, projected(to_pair, free), *angle, "unconstrained")
+    # fewer edges rejected first: a lower chi-square on fewer edges is not a better fit
+    bound = min(fits, key=lambda f: (f.n_rejected, f.chi2_red))
     held = bound.covariance[3:6, 3:6]
     vb = np.asarray(bound.motion.velocity_mps, dtype=float)
-    pair, block, wide = to_pair @ vb, to_pair @ held @ to_pair.T, to_pair @ free @ to_pair.T
+    pair, block, wide = to_pair @ vb, projected(to_pair, held), projected(to_pair, free)
     g = pair / np.linalg.norm(pair)
-    if g @ wide @ g > g @ block @ g:
+    if np.all(np.isfinite(wide)) and g @ wide @ g > g @ block @ g:
         block = wide
     angle, angle_sigma = psi_y(vb[0], vb[1], held[:2, :2])
     if vy_fixed:
@@ -251,7 +259,9 @@ def _along_sight_only(fit: FitResult, unfixed: list[str], guess_motion: BallMoti
 
     ``vz`` is undetermined, by rank or by its sigma; ``vx`` is fixed, and
     ``vy`` is fixed too or its sigma is the line of sight's share
-    (:func:`ballscan.solve.uncertainty.unfixed_across_sight`).
+    (:func:`ballscan.solve.uncertainty.unfixed_across_sight`).  A ``vy``
+    undetermined by rank is not taken: the rank test leaves no covariance
+    to judge the velocity across the line of sight by.
     """
     velocity = {"vx_mps", "vy_mps", "vz_mps"}
     by_rank = set(fit.undetermined) & velocity

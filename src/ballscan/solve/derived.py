@@ -141,15 +141,26 @@ class Transverse:
     def __post_init__(self) -> None:
         object.__setattr__(self, "velocity_mps", tuple(float(v) for v in self.velocity_mps))
         object.__setattr__(self, "axis", tuple(float(v) for v in self.axis))
-        object.__setattr__(self, "covariance", np.asarray(self.covariance, dtype=float).reshape(2, 2))
-        if len(self.velocity_mps) != 2 or len(self.axis) != 3 or abs(math.hypot(*self.axis) - 1.0) > 1e-9 or self.axis[0] != 0.0:
-            raise ValueError(f"Transverse: (vx, v_across) and a unit axis in the viewing plane, got {self.velocity_mps!r}, {self.axis!r}")
+        cov = np.array(self.covariance, dtype=float).reshape(2, 2)
+        cov.flags.writeable = False
+        object.__setattr__(self, "covariance", cov)
+        unit = len(self.axis) == 3 and abs(math.hypot(*self.axis) - 1.0) <= 1e-9 and self.axis[0] == 0.0
+        if len(self.velocity_mps) != 2 or not np.all(np.isfinite(self.velocity_mps)) or not unit:
+            raise ValueError(f"Transverse: (vx, v_across) and a unit axis in the viewing plane, finite, got {self.velocity_mps!r}, {self.axis!r}")
         if self.source not in ("prior", "unconstrained"):
             raise ValueError(f"Transverse.source: 'prior' or 'unconstrained', got {self.source!r}")
 
 
 def psi_y(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
-    """``psi_y = atan2(vy, vx)`` and its RMS error (:func:`direction_sigmas`) from the ``vx``, ``vy`` covariance ``C``, degrees."""
+    """``psi_y = atan2(vy, vx)`` and its RMS error (:func:`direction_sigmas`), degrees.
+
+    Parameters
+    ----------
+    vx, vy : float
+        Camera frame, m/s.
+    C : ndarray (2, 2)
+        Their covariance, m^2/s^2 (NaN gives a NaN sigma).
+    """
     return math.degrees(math.atan2(vy, vx)), math.degrees(_angle_rms(np.array([vx, vy], dtype=float), np.asarray(C, dtype=float), ((0, 1),))[0])
 
 
@@ -307,6 +318,15 @@ def derive_transverse(transverse: Transverse) -> Derived:
     of the speed) with its sigma, and ``psi_y`` as the fit bounded it
     (:class:`Transverse`); ``psi_z``, the correlations with the speed and
     the world frame (which need the whole velocity) are NaN or None.
+
+    Parameters
+    ----------
+    transverse : Transverse
+        The velocity across the line of sight (m/s) and its covariance.
+
+    Returns
+    -------
+    Derived
     """
     vt, vt_sigma = _speed_across(*transverse.velocity_mps, transverse.covariance)
     return Derived(

@@ -33,7 +33,7 @@ from .derived import GH_NODES, GH_WEIGHTS, direction_sigmas
 
 __all__ = [
     "LimbSide", "MotionUncertainty", "covariance_from_jacobian", "edge_sides", "limb_covariance", "param_scale", "propagate",
-    "residual_scale", "sight_axes", "smooth_residual_px", "unfixed_across_sight", "unfixed_parameters",
+    "projected", "residual_scale", "sight_axes", "smooth_residual_px", "unfixed_across_sight", "unfixed_parameters",
 ]
 
 #: a velocity component whose 1-sigma exceeds this many times the speed
@@ -237,17 +237,44 @@ def unfixed_parameters(cov: np.ndarray, scale_motion: BallMotion) -> tuple[str, 
 
 
 def sight_axes(position_m) -> tuple[np.ndarray, np.ndarray]:
-    """Unit vectors across and along one camera's line of sight to a centre ``(0, y0, z0)`` (camera frame, metres).
+    """Unit vectors across and along one camera's line of sight to a centre ``(0, y0, z0)``.
 
     Both lie in the viewing plane: along is ``(0, y0, z0) / r``, across is
     ``(0, z0, -y0) / r`` (``r = |(y0, z0)|``; ``(0, 1, 0)`` on the optical
-    axis).  One camera sees the velocity across it as the centre's angular
-    rate and the one along it only as a change of the ball's size
-    (:class:`ballscan.solve.derived.Transverse`).
+    axis in front of the camera, ``z0 > 0``).  One camera sees the velocity
+    across it as the centre's angular rate and the one along it only as a
+    change of the ball's size (:class:`ballscan.solve.derived.Transverse`).
+
+    Parameters
+    ----------
+    position_m : (3,) array-like
+        The centre at ``t_c``, camera frame, metres; not at the camera.
+
+    Returns
+    -------
+    across, along : ndarray (3,)
+        Unit vectors, camera frame.
     """
     _, y0, z0 = (float(c) for c in position_m)
     r = math.hypot(y0, z0)
+    if not (math.isfinite(r) and r > 0):
+        raise ValueError(f"sight_axes: a centre off the camera, got {tuple(position_m)!r}")
     return np.array([0.0, z0 / r, -y0 / r]), np.array([0.0, y0 / r, z0 / r])
+
+
+def projected(P: np.ndarray, C: np.ndarray) -> np.ndarray:
+    """``P C P^T`` over the components ``P`` weighs: a NaN row of a component with zero weight stays out.
+
+    Parameters
+    ----------
+    P : ndarray (k, n)
+        The linear map.
+    C : ndarray (n, n)
+        A covariance (NaN rows for undetermined components).
+    """
+    used = np.flatnonzero(np.any(P != 0.0, axis=0))
+    Pu = P[:, used]
+    return Pu @ np.asarray(C, dtype=float)[np.ix_(used, used)] @ Pu.T
 
 
 def unfixed_across_sight(cov: np.ndarray, scale_motion: BallMotion, position_m) -> tuple[str, ...]:
@@ -270,11 +297,11 @@ def unfixed_across_sight(cov: np.ndarray, scale_motion: BallMotion, position_m) 
     Returns
     -------
     tuple of str
-        Among ``("vx_mps", "v_across_mps")``; NaN sigmas count.
+        Among ``("vx_mps", "v_across_mps")``; a NaN sigma counts.
     """
     across, _ = sight_axes(position_m)
-    P = np.array([[1.0, 0.0, 0.0], across])
-    var = np.diag(P @ np.asarray(cov, dtype=float)[3:6, 3:6] @ P.T)
+    C = np.asarray(cov, dtype=float)[3:6, 3:6]
+    var = [projected(np.array([[1.0, 0.0, 0.0]]), C)[0, 0], projected(across[None, :], C)[0, 0]]
     vx, vy, _ = scale_motion.velocity_mps
     scale = MAX_VELOCITY_SIGMA_RATIO * math.hypot(vx, vy)
     return tuple(name for name, v in zip(("vx_mps", "v_across_mps"), var) if not math.sqrt(abs(v)) <= scale)
