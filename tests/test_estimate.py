@@ -13,7 +13,7 @@ import pytest
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
 from ballscan.pipeline.recipe import Recipe
-from ballscan.pipeline.report import format_table
+from ballscan.pipeline.report import csv_row, format_table
 from ballscan.pipeline.results import BallEstimate, EstimateReport
 from ballscan.solve.settings import FitSettings
 from ballscan.solve.derived import Transverse
@@ -480,6 +480,9 @@ def test_with_the_depth_velocity_undetermined_the_transverse_speed_is_still_meas
     assert doc["speed_transverse_sigma_mps"] > 0 and doc["direction_deg"][1] is None and doc["direction_sigma_deg"][1] is None
     table = format_table(EstimateReport("cut.png", (ball,)), CUT_CAM)
     assert "across sight" in table and "psi_z undetermined" in table
+    row = csv_row("cut.png", 0, ball, CUT_CAM)
+    assert (float(row["transverse_axis_y"]), float(row["transverse_axis_z"])) == pytest.approx(ball.transverse.axis[1:])
+    assert float(row["speed_transverse_mps"]) == pytest.approx(der.speed_transverse_mps) and row["speed_mps"] == ""
     from ballscan.cli.stream import format_stream_line
     from ballscan.stream.engine import StreamResult
 

@@ -41,7 +41,7 @@ CSV_COLUMNS = (
     "t_c_s", "x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps", "speed_mps",
     "t_c_sigma_s", "x_sigma_m", "y_sigma_m", "z_sigma_m", "vx_sigma_mps", "vy_sigma_mps", "vz_sigma_mps", "speed_sigma_mps",
     "flags", "undetermined", "method",
-    "speed_transverse_mps", "speed_transverse_sigma_mps",
+    "speed_transverse_mps", "speed_transverse_sigma_mps", "transverse_axis_y", "transverse_axis_z",
     "psi_y_deg", "psi_y_sigma_deg", "psi_z_deg", "psi_z_sigma_deg",
     "world_x_m", "world_y_m", "world_z_m", "world_vx_mps", "world_vy_mps", "world_vz_mps",
     "world_x_sigma_m", "world_y_sigma_m", "world_z_sigma_m", "world_vx_sigma_mps", "world_vy_sigma_mps", "world_vz_sigma_mps",
@@ -162,6 +162,8 @@ def csv_row(source: str, k: int, b: BallEstimate, camera: LineScanCamera | None 
     if der is None:
         return row
     row["speed_transverse_mps"] = _num(der.speed_transverse_mps)
+    if b.transverse is not None:
+        row["transverse_axis_y"], row["transverse_axis_z"] = _num(b.transverse.axis[1]), _num(b.transverse.axis[2])
     row["psi_y_deg"], row["psi_z_deg"] = _num(der.direction_deg[0]), _num(der.direction_deg[1])
     if sig:
         row["speed_transverse_sigma_mps"] = _num(der.speed_transverse_sigma_mps)
