@@ -41,6 +41,13 @@ GH_NODES, GH_WEIGHTS = np.polynomial.hermite_e.hermegauss(24)
 GH_WEIGHTS = GH_WEIGHTS / GH_WEIGHTS.sum()
 #: Gauss-Hermite nodes per eigen-direction of the angles' product grid (:func:`direction_sigmas`).
 ANGLE_NODES = 10
+#: A direction angle's sigma is at least its largest change over the velocity's ellipse of this many
+#: sigmas, over as many (:func:`direction_sigmas`); the ellipse's boundary is sampled at REACH_NODES points.
+REACH_SIGMAS = 3.0
+REACH_NODES = 256
+_PHI = np.linspace(0.0, 2.0 * math.pi, REACH_NODES, endpoint=False)
+_CIRCLE = np.stack([np.cos(_PHI), np.sin(_PHI)])
+_CIRCLE.flags.writeable = False
 
 
 def _product_grid(n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -152,7 +159,7 @@ class Transverse:
 
 
 def psi_y(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
-    """``psi_y = atan2(vy, vx)`` and its RMS error (:func:`direction_sigmas`), degrees.
+    """``psi_y = atan2(vy, vx)`` and its 1-sigma (as :func:`direction_sigmas` gives it), degrees.
 
     Parameters
     ----------
@@ -161,7 +168,9 @@ def psi_y(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
     C : ndarray (2, 2)
         Their covariance, m^2/s^2 (NaN gives a NaN sigma).
     """
-    return math.degrees(math.atan2(vy, vx)), math.degrees(_angle_rms(np.array([vx, vy], dtype=float), np.asarray(C, dtype=float), ((0, 1),))[0])
+    V, C = np.array([vx, vy], dtype=float), np.asarray(C, dtype=float)
+    sigma = max(_angle_rms(V, C, ((0, 1),))[0], _angle_reach(V, C, ((0, 1),))[0] / REACH_SIGMAS)
+    return math.degrees(math.atan2(vy, vx)), math.degrees(sigma)
 
 
 def _linear_sigma(g: np.ndarray, C: np.ndarray) -> float:
@@ -189,19 +198,45 @@ def _angle_jacobian(a: float, b: float) -> np.ndarray:
 
 
 def direction_sigmas(V: np.ndarray, Cv: np.ndarray) -> np.ndarray:
-    """RMS errors (2,) of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, radians, for a velocity ``V`` of covariance ``Cv`` (m/s).
+    """1-sigma (2,) of ``psi_y = atan2(vy, vx)`` and ``psi_z = atan2(vz, vx)``, radians, for a velocity ``V`` of covariance ``Cv`` (m/s).
 
-    The angles' distance to the reported ones integrated over the
-    velocities the measurement allows (``V ~ N(V, Cv)``, a Gauss-Hermite
-    product grid), as the speed's error is along its weakest direction
-    (:func:`ballscan.solve.uncertainty.propagate`).  Where the weakest
-    direction's sigma (chiefly ``vz``'s) is comparable with ``vx`` an angle saturates
-    towards +-90 degrees and its linear sigma shrinks with ``vx / vz``,
-    while the true angle may lie anywhere down to 0: a linear sigma then
-    claims a few degrees for an angle open by tens.  For small sigmas the
-    two agree.  NaN where ``Cv`` is not finite.
+    The angles' RMS distance to the reported ones over the velocities the
+    measurement allows (``V ~ N(V, Cv)``, a Gauss-Hermite product grid),
+    as the speed's error is along its weakest direction
+    (:func:`ballscan.solve.uncertainty.propagate`), and at least a third of
+    the angle's largest change over the velocity's 3-sigma ellipse
+    (:func:`_angle_reach`).  Where the weakest direction's sigma (chiefly
+    ``vz``'s) is comparable with ``vx`` an angle saturates towards +-90
+    degrees: its linear sigma shrinks with ``vx / vz`` while the true angle
+    may lie anywhere down to 0, and even the RMS, dominated by the
+    velocities near ``V``, puts a truth 3 sigmas out in ``vz`` 5-10 of its
+    sigmas out in the angle.  The reach keeps a velocity within 3 sigma an
+    angle within 3 sigma.  For small sigmas all agree with the linear
+    propagation.  NaN where ``Cv`` is not finite.
     """
-    return _angle_rms(np.asarray(V, dtype=float), np.asarray(Cv, dtype=float), ((0, 1), (0, 2)))
+    V, Cv = np.asarray(V, dtype=float), np.asarray(Cv, dtype=float)
+    pairs = ((0, 1), (0, 2))
+    return np.maximum(_angle_rms(V, Cv, pairs), _angle_reach(V, Cv, pairs) / REACH_SIGMAS)
+
+
+def _angle_reach(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
+    """Largest change of each angle ``atan2(V[b], V[a])`` over the boundary of the velocity's :data:`REACH_SIGMAS` ellipse, radians.
+
+    The angle depends on ``(V[a], V[b])`` alone, so the ellipsoid's
+    projection, the marginal covariance's ellipse, holds every value it
+    takes; its extremes lie on the boundary (at the tangents from the
+    origin, or anywhere, up to pi, where the ellipse holds the origin),
+    sampled at :data:`REACH_NODES` points.  NaN where ``Cv`` is not finite.
+    """
+    if not np.all(np.isfinite(Cv)):
+        return np.full(len(pairs), np.nan)
+    out = []
+    for a, b in pairs:
+        lam, Q = np.linalg.eigh(Cv[np.ix_((a, b), (a, b))])
+        edge = V[[a, b]][:, None] + REACH_SIGMAS * (Q * np.sqrt(np.maximum(lam, 0.0))) @ _CIRCLE
+        d = np.arctan2(edge[1], edge[0]) - math.atan2(V[b], V[a])
+        out.append(np.abs((d + math.pi) % (2.0 * math.pi) - math.pi).max())
+    return np.array(out)
 
 
 def _angle_rms(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
