@@ -236,7 +236,7 @@ def _transverse(ball: BallInput, final: FinalFit, guess_motion: BallMotion, unfi
     held = bound.covariance[3:6, 3:6]
     vb = np.asarray(bound.motion.velocity_mps, dtype=float)
     pair, block, wide = to_pair @ vb, projected(to_pair, held), projected(to_pair, free)
-    g = pair / np.linalg.norm(pair)
+    g = pair / max(float(np.linalg.norm(pair)), 1e-300)
     if np.all(np.isfinite(wide)) and g @ wide @ g > g @ block @ g:
         block = wide
     angle, angle_sigma = psi_y(vb[0], vb[1], held[:2, :2])

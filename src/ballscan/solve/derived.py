@@ -168,8 +168,7 @@ def psi_y(vx: float, vy: float, C: np.ndarray) -> tuple[float, float]:
     C : ndarray (2, 2)
         Their covariance, m^2/s^2 (NaN gives a NaN sigma).
     """
-    V, C = np.array([vx, vy], dtype=float), np.asarray(C, dtype=float)
-    sigma = max(_angle_rms(V, C, ((0, 1),))[0], _angle_reach(V, C, ((0, 1),))[0] / REACH_SIGMAS)
+    sigma = _angle_sigmas(np.array([vx, vy], dtype=float), np.asarray(C, dtype=float), ((0, 1),))[0]
     return math.degrees(math.atan2(vy, vx)), math.degrees(sigma)
 
 
@@ -214,8 +213,11 @@ def direction_sigmas(V: np.ndarray, Cv: np.ndarray) -> np.ndarray:
     angle within 3 sigma.  For small sigmas all agree with the linear
     propagation.  NaN where ``Cv`` is not finite.
     """
-    V, Cv = np.asarray(V, dtype=float), np.asarray(Cv, dtype=float)
-    pairs = ((0, 1), (0, 2))
+    return _angle_sigmas(np.asarray(V, dtype=float), np.asarray(Cv, dtype=float), ((0, 1), (0, 2)))
+
+
+def _angle_sigmas(V: np.ndarray, Cv: np.ndarray, pairs) -> np.ndarray:
+    """1-sigma of the angles ``atan2(V[b], V[a])`` for ``(a, b)`` in ``pairs`` (:func:`direction_sigmas`), radians."""
     return np.maximum(_angle_rms(V, Cv, pairs), _angle_reach(V, Cv, pairs) / REACH_SIGMAS)
 
 

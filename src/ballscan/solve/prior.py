@@ -48,10 +48,7 @@ class ParameterPrior:
     def __post_init__(self) -> None:
         if self.name not in PARAM_NAMES:
             raise ValueError(f"ParameterPrior.name: one of {PARAM_NAMES}, got {self.name!r}")
-        if not (_real(self.mean) and math.isfinite(self.mean)):
-            raise ValueError(f"ParameterPrior.mean: a finite number, got {self.mean!r}")
-        if not (_real(self.sigma) and math.isfinite(self.sigma) and self.sigma > 0):
-            raise ValueError(f"ParameterPrior.sigma: a finite number > 0, got {self.sigma!r}")
+        _check_mean_sigma("ParameterPrior", self.mean, self.sigma)
 
     @property
     def index(self) -> int:
@@ -89,10 +86,7 @@ class VelocityPrior:
         if d.shape != (3,) or not np.all(np.isfinite(d)) or not np.any(d):
             raise ValueError(f"VelocityPrior.direction: a finite non-zero 3-vector, got {self.direction!r}")
         object.__setattr__(self, "direction", tuple(float(c) for c in d / np.linalg.norm(d)))
-        if not (_real(self.mean) and math.isfinite(self.mean)):
-            raise ValueError(f"VelocityPrior.mean: a finite number, got {self.mean!r}")
-        if not (_real(self.sigma) and math.isfinite(self.sigma) and self.sigma > 0):
-            raise ValueError(f"VelocityPrior.sigma: a finite number > 0, got {self.sigma!r}")
+        _check_mean_sigma("VelocityPrior", self.mean, self.sigma)
 
     def weights(self, n_params: int) -> np.ndarray:
         """``w`` over the fit's ``n_params`` parameters: the direction in the velocity's three."""
@@ -103,6 +97,14 @@ class VelocityPrior:
 
 #: either prior: what :class:`WithPrior` and the fit take
 Prior = ParameterPrior | VelocityPrior
+
+
+def _check_mean_sigma(owner: str, mean, sigma) -> None:
+    """One precise ``ValueError`` naming ``owner``'s field where ``mean`` is not finite or ``sigma`` not finite and positive."""
+    if not (_real(mean) and math.isfinite(mean)):
+        raise ValueError(f"{owner}.mean: a finite number, got {mean!r}")
+    if not (_real(sigma) and math.isfinite(sigma) and sigma > 0):
+        raise ValueError(f"{owner}.sigma: a finite number > 0, got {sigma!r}")
 
 
 def _real(v) -> bool:
