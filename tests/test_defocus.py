@@ -53,6 +53,8 @@ def test_settings_are_checked():
         DefocusSettings(step_px=0.0)
     with pytest.raises(ValueError, match="min_edges"):
         DefocusSettings(min_edges=0)
+    with pytest.raises(ValueError, match="max_shift_px"):
+        DefocusSettings(max_shift_px=True)
 
 
 # ------------------------------------------------------------------ the camera key

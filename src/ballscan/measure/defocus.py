@@ -85,7 +85,7 @@ class DefocusSettings:
     def __post_init__(self) -> None:
         for name in ("max_spread_px", "max_diameter_px", "step_px", "max_shift_px"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if not (isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v > 0):
                 raise ValueError(f"DefocusSettings.{name}: expected a finite number > 0, got {v!r}")
         for name, low in (("half_window_px", 2), ("max_edges", 1), ("min_edges", 1), ("samples_per_px", 2)):
             v = getattr(self, name)
