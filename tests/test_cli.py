@@ -223,3 +223,25 @@ def test_the_program_exits_with_mains_status_its_objects_frozen_before_the_teard
     assert out[-2:] == ["0", "True"]
     bad = subprocess.run([sys.executable, "-m", "ballscan", "estimate", "/no/such/image.png", "--radius", "0.03"], capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.startswith("ballscan: ")
+
+
+def test_estimate_recipe_file_and_the_flags_over_it(tmp_path, capsys):
+    """--recipe: the file's settings reach the estimator (and the result's 'recipe'); a flag given overrides the file; a result file re-runs its recipe."""
+    scene = DATA / "scenes" / "pub_pingpong"
+    args = ("estimate", f"{scene}.png", "--camera", f"{scene}.camera.toml", "--radius", "0.02", "--json")
+    (tmp_path / "r.toml").write_text("shading = false\nrefined_background = true\n")
+    code, out, err = run(capsys, *args, "--recipe", tmp_path / "r.toml")
+    assert code == 0, err
+    res = json.loads(out)
+    assert res["recipe"] == {"shading": False, "refined_background": True}
+    assert res["balls"][0]["shading"] is None and res["balls"][0]["background_refined"]
+    code, out, err = run(capsys, *args, "--recipe", tmp_path / "r.toml", "--shading")
+    assert code == 0, err
+    assert json.loads(out)["recipe"] == {"refined_background": True}
+    (tmp_path / "res.json").write_text(json.dumps(res))
+    code, out, err = run(capsys, *args, "--recipe", tmp_path / "res.json")
+    assert code == 0 and json.loads(out) == res | {"balls": json.loads(out)["balls"]}
+    assert [b["velocity_mps"] for b in json.loads(out)["balls"]] == [b["velocity_mps"] for b in res["balls"]]
+    (tmp_path / "bad.toml").write_text("shading = 'off'\n")
+    code, out, err = run(capsys, *args, "--recipe", tmp_path / "bad.toml")
+    assert code == 2 and out == "" and err.strip() == f"ballscan: error: {tmp_path / 'bad.toml'}: shading: expected True or False, got 'off'"

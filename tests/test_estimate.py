@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -12,7 +13,7 @@ import pytest
 
 from ballscan.geometry.camera import LineScanCamera, load_camera
 from ballscan.pipeline.estimate import estimate_image
-from ballscan.pipeline.recipe import Recipe
+from ballscan.pipeline.recipe import Recipe, load_recipe
 from ballscan.pipeline.report import csv_row, format_table
 from ballscan.pipeline.results import BallEstimate, EstimateReport
 from ballscan.solve.settings import FitSettings
@@ -352,6 +353,54 @@ def test_recipe_default_is_the_estimator_and_is_hashable():
         estimate_image(_img(np.zeros((10, CAM.width))), CAM, 0.0335, recipe="fit")
 
 
+@pytest.mark.parametrize(
+    "recipe",
+    [
+        Recipe(),
+        Recipe(method="paper"),
+        Recipe(refined_background=True, level_samples=(8, 4), shading_start="loose_fit", background_window_sigma=3.0),
+        Recipe(pixels=True, pixel_fit=replace(Recipe().pixel_fit, max_nfev=17), edge_fit=replace(Recipe().edge_fit, loss="huber")),
+    ],
+)
+def test_a_recipe_is_rebuilt_from_its_changes_through_json_and_toml(recipe, tmp_path):
+    import tomli_w
+
+    c = recipe.changes()
+    assert Recipe.from_changes(json.loads(json.dumps(c))) == recipe
+    (tmp_path / "r.toml").write_text(tomli_w.dumps(c))
+    assert load_recipe(tmp_path / "r.toml") == recipe
+    # a result file: its "recipe" key
+    (tmp_path / "r.json").write_text(json.dumps({"image": "x.png", "recipe": c, "balls": []}))
+    assert load_recipe(tmp_path / "r.json") == recipe
+
+
+@pytest.mark.parametrize(
+    "text, needle",
+    [
+        ("refit_law = 'yes'\n", "r.toml: refit_law: expected True or False, got 'yes'"),
+        ("colour = 3\n", "r.toml: colour: not a recipe setting"),
+        ("[edge_fit]\nspeed = 2\n", "r.toml: edge_fit.speed: not a FitSettings field"),
+        ("edge_fit = 3\n", "r.toml: edge_fit: expected a table of FitSettings changes"),
+        ("[pixel_fit]\npixels = false\n", "r.toml: pixel_fit: expected FitSettings with pixels=True"),
+        ("level_samples = [0, 2]\n", "r.toml: level_samples: expected two positive integers"),
+        ("shading = [\n", "r.toml: not valid TOML"),
+    ],
+)
+def test_a_bad_recipe_file_is_one_line_naming_the_file_and_the_setting(tmp_path, text, needle):
+    from ballscan.errors import RecipeFileError
+
+    (tmp_path / "r.toml").write_text(text)
+    with pytest.raises(RecipeFileError) as info:
+        load_recipe(tmp_path / "r.toml")
+    msg = str(info.value)
+    assert needle in msg and "\n" not in msg, msg
+    with pytest.raises(RecipeFileError, match="file not found"):
+        load_recipe(tmp_path / "none.toml")
+    (tmp_path / "list.json").write_text("[1, 2]")
+    with pytest.raises(RecipeFileError, match="list.json: expected a table"):
+        load_recipe(tmp_path / "list.json")
+
+
 def _shaded_ball():
     cam = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_hz=20000.0)
     m = BallMotion(0.0335, 60 / cam.line_rate_hz, (0.0, 0.05, 4.0), (12.0, 0.3, -0.5))
@@ -508,3 +557,14 @@ def test_cut_balls_sigmas_are_honest(case):
     assert z_speed.max() < 3.0
     assert np.mean(z_speed < 1.0) >= 0.5
     assert 0.5 <= np.mean(z_params < 1.0) <= 0.85
+
+
+def test_the_recipe_files_keys_in_geometry_md_are_the_recipes_fields():
+    import re
+    from dataclasses import fields
+
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "geometry.md").read_text()
+    section = doc.split("## Recipe file (TOML)")[1].split("\n## ")[0]
+    listed = set(re.findall(r"`([a-z_]+)`", section.split("The keys are the fields of")[1].split("An unknown")[0]))
+    assert {f.name for f in fields(Recipe)} <= listed
+    assert listed - {f.name for f in fields(Recipe)} <= {"FitSettings"}

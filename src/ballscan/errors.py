@@ -22,6 +22,15 @@ class CameraFileError(BallscanError, ValueError):
         self.problem = problem
 
 
+class RecipeFileError(BallscanError, ValueError):
+    """A recipe file (the estimator's settings) is missing, malformed or out of range."""
+
+    def __init__(self, source: str, problem: str):
+        super().__init__(f"{source}: {problem}")
+        self.source = source
+        self.problem = problem
+
+
 class ImageFileError(BallscanError, ValueError):
     """An image file cannot be used as a line-scan image."""
 

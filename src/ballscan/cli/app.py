@@ -141,7 +141,7 @@ def estimate(
     images: list[Path] = typer.Argument(..., help="Line-scan image (PNG or TIFF, rows = scan lines); with --rig one per camera, in the rig's order."),
     camera: Optional[Path] = typer.Option(None, "--camera", help="Camera TOML (geometry.md)."),
     radius: float = typer.Option(..., "--radius", help="Ball radius R, metres."),
-    method: str = typer.Option("fit", "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
+    method: Optional[str] = typer.Option(None, "--method", help="'fit' (sub-pixel least squares, default) or 'paper' (Zhao & Wen)."),
     as_json: bool = typer.Option(False, "--json", help="Print geometry.md's JSON instead of a table."),
     as_csv: bool = typer.Option(False, "--csv", help="Print CSV instead of a table: a header and one row per ball (the columns of batch)."),
     units: str = typer.Option("m/s", "--units", help="Speed unit of the table: m/s, km/h or mph (JSON and CSV stay in m/s)."),
@@ -150,15 +150,18 @@ def estimate(
     timestamps: Optional[Path] = typer.Option(None, "--timestamps", help="Per-line timestamps (text or .npy), seconds."),
     lines_as_columns: bool = typer.Option(False, "--lines-as-columns", help="The image stores time along the columns."),
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
-    shading: bool = typer.Option(True, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
-    pixels: bool = typer.Option(
-        False, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
+    shading: Optional[bool] = typer.Option(None, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
+    pixels: Optional[bool] = typer.Option(
+        None, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
     ),
-    matched: bool = typer.Option(
-        True, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."
+    matched: Optional[bool] = typer.Option(
+        None, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."
     ),
-    flat_field: bool = typer.Option(
-        True, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
+    flat_field: Optional[bool] = typer.Option(
+        None, "--flat-field/--no-flat-field", help="On a sensor whose column gains scatter (PRNU): matched edges on the image with the ball's measured gains divided out, on balls of >= 250 lines (default on; extra 'flat_fielded' says where)."
+    ),
+    recipe_file: Optional[Path] = typer.Option(
+        None, "--recipe", help="Recipe file: the estimator's settings that differ from its default (TOML, or a result JSON whose 'recipe' it takes; docs/geometry.md). The flags above override it."
     ),
     force: bool = typer.Option(False, "--force", help="Write --plot through a symbolic link (refused otherwise)."),
     rig: Optional[Path] = typer.Option(None, "--rig", help="Rig TOML (docs/geometry.md): each ball matched across the cameras' images and fitted jointly, world frame."),
@@ -172,19 +175,18 @@ def estimate(
     """
     from ..geometry.camera import load_camera
     from ..measure.images import load_timestamps, read_stored
-    from ..pipeline.recipe import Recipe
     from ..pipeline.report import UNITS, format_table
     from ..stream.recording import measure_stored
 
-    from .options import check_radius_option
+    from .options import check_radius_option, recipe_from_options
 
     radius = check_radius_option(radius)
+    recipe = recipe_from_options(recipe_file, method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
     if rig is not None or constraint is not None:
         from .rig import estimate_rig_command
 
         if rig is None and (camera is None or len(images) != 1):
             raise ValueError("estimate --constraint without --rig: give one image and --camera")
-        recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
         estimate_rig_command(images, rig, camera, radius, constraint, recipe, as_json)
         return
     if camera is None:
@@ -205,7 +207,6 @@ def estimate(
         check_not_symlink(plot, force)  # before the work, not after it
     stored = read_stored(image, lines_as_columns=lines_as_columns, max_pixels=max_pixels)
     ts = load_timestamps(timestamps, stored.n_lines) if timestamps else None
-    recipe = Recipe(method=method, shading=shading, pixels=pixels, matched=matched, flat_field=flat_field)
     report = measure_stored(stored, cam, radius, recipe, timestamps_s=ts, saturation_dn=saturation)
     if as_json:
         typer.echo(report.to_json(cam))

@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
-__all__ = ["check_radius_option"]
+if TYPE_CHECKING:
+    from ..pipeline.recipe import Recipe
+
+__all__ = ["check_radius_option", "recipe_from_options"]
 
 
 def check_radius_option(radius_m: float) -> float:
@@ -39,3 +44,29 @@ def check_radius_option(radius_m: float) -> float:
     if problem is not None:  # its balls are flagged implausible_radius too
         print(f"ballscan: warning: --radius: {problem}", file=sys.stderr)
     return radius_m
+
+
+def recipe_from_options(path: Path | None, **flags: object) -> "Recipe":
+    """The recipe of ``--recipe FILE`` (the default recipe without one) with the flags given on the command line applied.
+
+    Parameters
+    ----------
+    path : Path or None
+        The recipe file (:func:`ballscan.pipeline.recipe.load_recipe`).
+    **flags
+        Recipe fields from their command-line flags; ``None`` where the flag
+        was not given, which leaves the file's value.
+
+    Raises
+    ------
+    RecipeFileError
+        The file cannot be read or holds a bad setting.
+    ValueError
+        A flag's value is not a valid setting (naming the field).
+    """
+    from dataclasses import replace
+
+    from ..pipeline.recipe import Recipe, load_recipe
+
+    base = load_recipe(path) if path is not None else Recipe()
+    return replace(base, **{k: v for k, v in flags.items() if v is not None})

@@ -10,12 +10,17 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass, fields, is_dataclass
-from typing import Literal, get_args
+import difflib
+import json
+import tomllib
+from dataclasses import dataclass, fields, is_dataclass, replace
+from pathlib import Path
+from typing import Any, Literal, Mapping, get_args
 
+from ..errors import RecipeFileError
 from ..solve.settings import FitSettings
 
-__all__ = ["METHODS", "SHADING_STARTS", "Method", "ShadingStart", "Recipe"]
+__all__ = ["METHODS", "SHADING_STARTS", "Method", "ShadingStart", "Recipe", "load_recipe"]
 
 Method = Literal["fit", "paper"]
 ShadingStart = Literal["guess", "loose_fit"]
@@ -74,8 +79,12 @@ class Recipe:
         ends' mean brightness (:meth:`ballscan.measure.shading.LimbProfile.line_levels`).
     refined_background : bool
         Measure every ball's edges on its columns' background measured away
-        from the balls (:func:`ballscan.pipeline.stages.refine_background`);
-        otherwise only long balls' matched edges are.
+        from the balls (:func:`ballscan.pipeline.background.refine_background`);
+        otherwise only long balls' matched edges are.  Off by default: on
+        independent renders it removes most of the speed across the line of
+        sight's bias (the detector's level takes in a shaded ball's faint
+        limb) but widens the error of the depth velocity, and with it the
+        speed's (docs/benchmarks.md).
     refit_law : bool
         On the window edges' path, fit the shading law and the limb model
         again at the fitted motion, and the motion once more from there.
@@ -182,6 +191,35 @@ class Recipe:
         """The fields that differ from ``Recipe()`` (the results' ``recipe`` key: empty for the default)."""
         return changes(self, Recipe())
 
+    @classmethod
+    def from_changes(cls, values: Mapping[str, Any]) -> "Recipe":
+        """The recipe that differs from ``Recipe()`` by ``values``, the inverse of :meth:`changes`.
+
+        ``values`` has a recipe's field names as keys (a result's ``recipe``
+        key, or a recipe file's table); a fit's settings (``loose_fit``,
+        ``pixel_fit``, ``spread_fit``, ``edge_fit``) are a table of their
+        own changes.  Lists stand for tuples.
+
+        Raises
+        ------
+        ValueError
+            Naming the first unknown field or value out of range.
+        """
+        default = cls()
+        known = {f.name for f in fields(cls)}
+        out: dict[str, Any] = {}
+        for name, value in values.items():
+            if name not in known:
+                close = difflib.get_close_matches(str(name), sorted(known), n=1)
+                hint = f"did you mean {close[0]!r}?" if close else "docs/geometry.md lists them"
+                raise ValueError(f"{name}: not a recipe setting ({hint})")
+            if name in _FITS:
+                if not isinstance(value, Mapping):
+                    raise ValueError(f"{name}: expected a table of FitSettings changes, got {value!r}")
+                value = _replace_checked(getattr(default, name), value, name)
+            out[name] = _tuples(value)
+        return replace(default, **out)
+
     def __post_init__(self) -> None:
         def bad(name: str, why: str) -> ValueError:
             return ValueError(f"{name}: {why}, got {getattr(self, name)!r}")
@@ -224,6 +262,71 @@ def changes(value, default) -> dict:
             continue
         out[f.name] = changes(a, b) if is_dataclass(a) and is_dataclass(b) else (list(a) if isinstance(a, tuple) else a)
     return out
+
+
+def _replace_checked(settings: FitSettings, values: Mapping[str, Any], where: str) -> FitSettings:
+    """``settings`` with ``values`` changed; an unknown field is a ``ValueError`` naming ``where``."""
+    known = {f.name for f in fields(settings)}
+    for name in values:
+        if name not in known:
+            raise ValueError(f"{where}.{name}: not a FitSettings field")
+    try:
+        return replace(settings, **{k: _tuples(v) for k, v in values.items()})
+    except ValueError as exc:
+        raise ValueError(f"{where}.{exc}") from None
+
+
+def _tuples(value: Any) -> Any:
+    """Lists (TOML's and JSON's arrays) as the tuples a frozen settings class holds."""
+    return tuple(_tuples(v) for v in value) if isinstance(value, list) else value
+
+
+def load_recipe(path: str | Path) -> Recipe:
+    """Read a recipe file: a TOML table, or JSON (a bare table, or a result file's ``recipe`` key).
+
+    The keys are :class:`Recipe`'s fields that differ from the default, as
+    the results' ``recipe`` key gives them (:meth:`Recipe.from_changes`);
+    an empty file is the default recipe.
+
+    Raises
+    ------
+    RecipeFileError
+        With a one-line message naming the file: not found, unreadable,
+        not valid TOML or JSON, an unknown setting or a value out of range.
+    """
+    path = Path(path)
+    try:
+        if path.is_file() and path.stat().st_size > MAX_RECIPE_FILE_BYTES:
+            raise RecipeFileError(str(path), f"{path.stat().st_size} bytes: not a recipe file (at most {MAX_RECIPE_FILE_BYTES})")
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise RecipeFileError(str(path), "file not found") from None
+    except UnicodeDecodeError:
+        raise RecipeFileError(str(path), "not a recipe file (not UTF-8 text)") from None
+    except OSError as exc:
+        raise RecipeFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
+    try:
+        if path.suffix.lower() == ".json":
+            table = json.loads(text)
+            if isinstance(table, dict) and "balls" in table:
+                table = table.get("recipe", {})
+        else:
+            table = tomllib.loads(text)
+    except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
+        kind = "JSON" if path.suffix.lower() == ".json" else "TOML"
+        raise RecipeFileError(str(path), f"not valid {kind} ({exc})") from None
+    except RecursionError:
+        raise RecipeFileError(str(path), "not a recipe file (arrays or tables nested too deeply to read)") from None
+    if not isinstance(table, dict):
+        raise RecipeFileError(str(path), f"expected a table of recipe settings, got {type(table).__name__}")
+    try:
+        return Recipe.from_changes(table)
+    except (ValueError, TypeError) as exc:
+        raise RecipeFileError(str(path), str(exc)) from None
+
+
+#: the largest recipe file read (bytes): a recipe is a few dozen settings
+MAX_RECIPE_FILE_BYTES = 1 << 20
 
 
 def _is_int(v: object) -> bool:
