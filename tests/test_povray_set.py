@@ -393,3 +393,27 @@ def test_a_football_whose_panels_reach_the_limb(capsys):
     assert "texture_at_limb" in ball["flags"] and ball["inward_edges"] >= 20
     row = _within_3_sigma(ball, truth[0])
     assert abs(row["speed_err"]) < 0.05, row  # measured -2.9 %
+
+
+def _rows(speed_errs, transverse_errs, scene_names=None):
+    names = scene_names or [f"pv{2 * k:04d}" for k in range(len(speed_errs))]
+    return [{"scene": n, "fit": {"measured": s is not None, "speed_err": s, "transverse_err": t}}
+            for n, s, t in zip(names, speed_errs, transverse_errs)]
+
+
+def test_the_paired_comparison_counts_ratios_and_tests_ball_by_ball():
+    rng = np.random.default_rng(5)
+    base = rng.lognormal(-5, 1.5, 40) * rng.choice([-1, 1], 40)
+    # every error halved: each ratio 0.5, all 40 balls smaller, the signed-rank test's p far below 0.01
+    lines = score.paired_lines(_rows(list(0.5 * base), list(0.5 * base)), _rows(list(base), list(base)))
+    speed = next(x for x in lines if x.startswith("| speed |")).split(" | ")
+    assert speed[1:4] == ["40", "0 / 40", "0.500"] and float(speed[4]) == pytest.approx(0.5) and float(speed[5].rstrip(" |")) < 1e-6
+    # unchanged: no ball moved, the test has nothing to test
+    same = score.paired_lines(_rows(list(base), list(base)), _rows(list(base), list(base)))
+    assert next(x for x in same if x.startswith("| speed |")).endswith("| 40 | 0 / 0 | 1.000 | 1.000 | - |")
+    # a ball measured in one run only is counted, not paired; a second ball of a scene pairs with the second
+    now = _rows([None, 0.01, 0.02], [0.01, 0.01, 0.03], ["pv0000", "pv0002", "pv0002"])
+    then = _rows([0.01, None, 0.01], [0.01, 0.01, 0.01], ["pv0000", "pv0002", "pv0002"])
+    lines = score.paired_lines(now, then)
+    assert "speed measured only now 1, only in the base 1" in lines[1]
+    assert next(x for x in lines if x.startswith("| speed |")).startswith("| speed | 1 | 1 / 0 | 2.000 |")

@@ -1,7 +1,8 @@
 """Score ``ballscan estimate`` on the POV-Ray validation set: one table per ball kind and condition.
 
     python benchmarks/povray_set/score.py [--split report|tune|all] [--scenes DIR] [--jobs 2]
-                                          [--save RESULTS.json] [--load RESULTS.json] [--markdown]
+                                          [--save RESULTS.json] [--load RESULTS.json] [--against BASE.json]
+                                          [--recipe RECIPE.toml]
 
 Each rendered scene is measured with ``ballscan estimate --json`` by both
 methods (``--method fit`` and ``--method paper``), and each true ball's
@@ -21,6 +22,11 @@ depth velocity V.z; the fit's median speed error over the Cramér-Rao sigma; the
 method's on the balls both measured, and the number of the fit's speed errors
 beyond 4 reported sigmas (the paper method reports no sigma).  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
 100 lines and not cut, each ball kind, each condition tag of the truth files.
+
+``--against BASE.json`` (rows saved from another version of the estimator on
+the same scenes) adds a paired comparison of the fit, ball by ball: the
+medians of about a hundred heavy-tailed errors move more than the balls do,
+so a change is judged by the signed-rank test of each ball's log error ratio.
 """
 
 from __future__ import annotations
@@ -137,8 +143,8 @@ def _transverse_only(est: dict, tb: dict) -> dict:
     return {"transverse_only": True, "transverse_err": _transverse_err(est, tb), "z_vt": z_vt, "z_psi_y": _z_angle(est, tb, "psi_y")}
 
 
-def score_scene(ballscan: str, scenes: Path, name: str) -> list[dict]:
-    """Rows (one per true ball) of one scene, both methods and the bound."""
+def score_scene(ballscan: str, scenes: Path, name: str, recipe: Path | None = None) -> list[dict]:
+    """Rows (one per true ball) of one scene, both methods (each with ``recipe``'s other settings, ``estimate --recipe``) and the bound."""
     truth = json.loads((scenes / f"{name}.truth.json").read_text())
     cam = scenes / f"{name}.camera.toml"
     balls = truth_balls(truth)
@@ -147,7 +153,7 @@ def score_scene(ballscan: str, scenes: Path, name: str) -> list[dict]:
     ests = {}
     for m in METHODS:
         cmd = [ballscan, "estimate", str(scenes / f"{name}.png"), "--camera", str(cam),
-               "--radius", repr(balls[0]["radius_m"]), "--method", m, "--json"]
+               "--radius", repr(balls[0]["radius_m"]), "--method", m, "--json"] + (["--recipe", str(recipe)] if recipe else [])
         out, why = run_json(cmd)
         ests[m] = (out or {}).get("balls", []), why, len((out or {}).get("balls", []))
     rows = []
@@ -251,6 +257,47 @@ def transverse_lines(rows: list[dict]) -> list[str]:
             f"that speed {cover('z_vt', 1)} / {cover('z_vt', 3)} %, psi_y {cover('z_psi_y', 1)} / {cover('z_psi_y', 3)} %"]
 
 
+def _ball_keys(rows: list[dict]) -> list[tuple[str, int]]:
+    """Each row's scene and its place among that scene's balls (the truth's order, the same in every run)."""
+    seen: dict[str, int] = {}
+    keys = []
+    for r in rows:
+        keys.append((r["scene"], seen.get(r["scene"], 0)))
+        seen[r["scene"]] = keys[-1][1] + 1
+    return keys
+
+
+def paired_lines(rows: list[dict], base: list[dict]) -> list[str]:
+    """The fit's errors in ``rows`` against ``base``'s on the same balls: counts, median and geometric-mean ratios, Wilcoxon p.
+
+    For the speed (balls measured in both) and the speed across the line of
+    sight (balls with it in both): how many errors grew or shrank by more
+    than 10 %, the median and the geometric mean of ``|err| / |err_base|``,
+    and the two-sided signed-rank test's p of their logarithms (``-`` with
+    fewer than 6 changed balls).
+    """
+    from scipy.stats import wilcoxon
+
+    old = dict(zip(_ball_keys(base), base))
+    pairs = [(old[k]["fit"], r["fit"]) for k, r in zip(_ball_keys(rows), rows) if k in old]
+    only_new = sum(n.get("measured") and not b.get("measured") for b, n in pairs)
+    only_old = sum(b.get("measured") and not n.get("measured") for b, n in pairs)
+    out = ["", f"against the base rows: {len(pairs)} balls in both; speed measured only now {only_new}, only in the base {only_old}",
+           "| error | balls | larger / smaller by > 10 % | median ratio | geometric-mean ratio | Wilcoxon p |", "|---|---|---|---|---|---|"]
+    for key, label, ok in (("speed_err", "speed", lambda f: f.get("measured")),
+                           ("transverse_err", "speed across the line of sight", lambda f: True)):
+        logs = [math.log(abs(n[key]) / abs(b[key])) for b, n in pairs
+                if ok(b) and ok(n) and b.get(key) and n.get(key)]
+        if not logs:
+            continue
+        changed = [x for x in logs if x != 0.0]
+        p = f"{wilcoxon(changed).pvalue:.3f}" if len(changed) >= 6 else "-"
+        up, down = sum(x > math.log(1.1) for x in logs), sum(x < -math.log(1.1) for x in logs)
+        out.append(f"| {label} | {len(logs)} | {up} / {down} | {math.exp(statistics.median(logs)):.3f} | "
+                   f"{math.exp(statistics.fmean(logs)):.3f} | {p} |")
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
@@ -260,6 +307,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--save", type=Path, help="write the per-ball rows (JSON) here")
     ap.add_argument("--load", type=Path, help="tabulate saved rows instead of measuring")
+    ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate (ballscan estimate --recipe): the estimator's settings to score")
+    ap.add_argument("--against", type=Path, help="saved rows of another version: compare the fit's errors ball by ball")
     a = ap.parse_args(argv)
     if a.load:
         rows = json.loads(a.load.read_text())
@@ -270,7 +319,7 @@ def main(argv: list[str] | None = None) -> int:
             if (a.split == "all" or t["split"] == a.split) and (a.scenes / t["image"]).exists():
                 names.append(t["scene"])
         def one(name: str) -> list[dict]:
-            rows = score_scene(a.ballscan, a.scenes, name)
+            rows = score_scene(a.ballscan, a.scenes, name, a.recipe)
             print(f"{name} scored", file=sys.stderr, flush=True)
             return rows
 
@@ -286,6 +335,8 @@ def main(argv: list[str] | None = None) -> int:
     if failed:
         print(f"\nnot measured ({len(failed)}):")
         print("\n".join("  " + f for f in failed))
+    if a.against:
+        print("\n".join(paired_lines(rows, json.loads(a.against.read_text()))))
     return 0
 
 
