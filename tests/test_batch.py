@@ -152,3 +152,26 @@ def test_the_batch_warm_up_loads_the_estimators_kernels_not_the_stream_engines()
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     assert int(out[0]) >= 40 and out[1] == "True"
     assert int(out[2]) >= 1 and out[3] == "False"
+
+
+def test_batch_recipe_file_reaches_every_input(recordings, tmp_path, capsys):
+    """--recipe: the paper method from a recipe file, as --method paper gives it; --method over the file; a bad file is one line, status 2."""
+    from ballscan.cli.app import main
+
+    (tmp_path / "paper.toml").write_text('method = "paper"\n')
+    rows = {}
+    for name, extra in (("file", ["--recipe", tmp_path / "paper.toml"]), ("flag", ["--method", "paper"]),
+                        ("over", ["--recipe", tmp_path / "paper.toml", "--method", "fit"])):
+        out = tmp_path / f"{name}.csv"
+        main(["batch", str(recordings / "two.png"), "--out", str(out), "--radius", str(RADIUS)] + [str(a) for a in extra])
+        rows[name] = _rows(out)
+    capsys.readouterr()
+    assert [r["method"] for r in rows["file"]] == ["paper", "paper"]
+    assert [(r["method"], r["t_c_s"]) for r in rows["file"]] == [(r["method"], r["t_c_s"]) for r in rows["flag"]]
+    assert [r["method"] for r in rows["over"]] == ["fit", "fit"]
+    (tmp_path / "bad.toml").write_text("pixels = 2\n")
+    code = main(["batch", str(recordings / "two.png"), "--out", str(tmp_path / "bad.csv"), "--radius", str(RADIUS), "--recipe", str(tmp_path / "bad.toml")])
+    err = capsys.readouterr().err
+    assert code == 2 and err.strip() == f"ballscan: error: {tmp_path / 'bad.toml'}: pixels: expected True or False, got 2"
+    with pytest.raises(ValueError, match="recipe"):
+        run_batch([recordings / "two.png"], tmp_path / "x.csv", RADIUS, recipe="paper")

@@ -150,6 +150,13 @@ def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):
     assert len(found) == len(truth) == 2
     for f, t in zip(found, truth):
         assert abs(f["t_c_s"] - t["t_c_s"]) < 1e-4 and f["source"]
+    # a recipe file reaches the stream's estimates (the paper method's balls), and --rig refuses it by its name
+    (tmp_path / "paper.toml").write_text('method = "paper"\n')
+    code, out, err = run(capsys, "watch", raw, "--camera", f"{raw}.camera.toml", "--radius", truth[0]["radius_m"], "--recipe", tmp_path / "paper.toml")
+    assert code == 0, err
+    assert [json.loads(line)["method"] for line in out.splitlines()] == ["paper", "paper"]
+    code, _, err = run(capsys, "watch", raw, raw, "--rig", f"{raw}.camera.toml", "--radius", truth[0]["radius_m"], "--recipe", tmp_path / "paper.toml")
+    assert code == 2 and "watch --rig: --recipe does not apply" in err
 
 
 def test_experiment_commands_are_registered(capsys):

@@ -176,9 +176,10 @@ def watch(
     pfs: Annotated[Optional[Path], typer.Option("--pfs", help="Camera: a pylon feature file (.pfs, saved by pylon Viewer) loaded first.")] = None,
     pixel_format: Annotated[Optional[str], typer.Option("--pixel-format", help="Camera: set its PixelFormat, Mono8, Mono12 or Mono16 (default: as it is).")] = None,
     pylon_timestamps: Annotated[str, typer.Option("--pylon-timestamps", help="Camera: the frames' times from 'none' (the line count at the camera file's line rate, default), 'grab' (the grab results' timestamps) or 'chunk' (the Timestamp chunk); lost frames (block-ID gaps) flag a ball dropped_lines.")] = "none",
-    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
-    shading: Annotated[bool, typer.Option("--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate).")] = True,
-    matched: Annotated[bool, typer.Option("--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on).")] = True,
+    method: Annotated[Optional[str], typer.Option("--method", help="'fit' (default) or 'paper'.")] = None,
+    shading: Annotated[Optional[bool], typer.Option("--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate).")] = None,
+    matched: Annotated[Optional[bool], typer.Option("--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on).")] = None,
+    recipe_file: Annotated[Optional[Path], typer.Option("--recipe", help="Recipe file, as for estimate (docs/geometry.md); the flags above override it.")] = None,
     background: Annotated[str, typer.Option("--background", help="Background a ball's crop is measured on: 'engine' (the stream's running model of its columns, default) or 'crop' (learned on the crop alone, as 'ballscan estimate' on the saved crop).")] = "engine",
     k_sigma: Annotated[float, typer.Option("--k-sigma", help="Ball pixels: beyond k noise sigmas of the background.")] = 4.0,
     margin_lines: Annotated[int, typer.Option("--margin-lines", help="Background lines kept before and after each ball.")] = 16,
@@ -211,7 +212,7 @@ def watch(
         raise ValueError("watch: give --radius R (the ball's radius, metres)")
     if rig is not None:
         _refuse_without_rig(camera=camera, width=width, timestamps=timestamps, pfs=pfs, pixel_format=pixel_format, pylon_timestamps=pylon_timestamps,
-                            method=method, shading=shading, matched=matched, background=background, k_sigma=k_sigma, margin_lines=margin_lines,
+                            method=method, shading=shading, matched=matched, recipe_file=recipe_file, background=background, k_sigma=k_sigma, margin_lines=margin_lines,
                             buffer_lines=buffer_lines, save_events=save_events, output_format=output_format, units=units, jobs=jobs, force=force, serve=serve)
         from .rig import watch as rig_watch
 
@@ -226,10 +227,9 @@ def watch(
     source = sources[0]
     from ..geometry.camera import load_camera
     from ..pipeline.report import UNITS
-    from ..pipeline.recipe import Recipe
     from ..stream.engine import StreamConfig
 
-    from .options import check_radius_option
+    from .options import check_radius_option, recipe_from_options
 
     cam = load_camera(camera)
     radius = check_radius_option(radius)
@@ -240,7 +240,7 @@ def watch(
     if jobs < 0:
         raise typer.BadParameter(f"must be >= 0, got {jobs}", param_hint="--jobs")
     # the settings first: a bad one is reported before a pipe or a camera is opened
-    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=Recipe(method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None or serve is not None)
+    cfg = StreamConfig(k_sigma=k_sigma, margin_lines=margin_lines, buffer_lines=buffer_lines, recipe=recipe_from_options(recipe_file, method=method, shading=shading, matched=matched), background=background, keep_crops=save_events is not None or serve is not None)
     from .signals import ExitStatus, stop_signals
 
     with stop_signals(graceful=True) as stop, _event_folder(save_events, force) as events:
@@ -283,7 +283,7 @@ def _refuse_without_rig(**given) -> None:
     defaults = inspect.signature(watch).parameters
     for name, value in given.items():
         if value != defaults[name].default:
-            flag = "--format" if name == "output_format" else "--" + name.replace("_", "-")
+            flag = {"output_format": "--format", "recipe_file": "--recipe"}.get(name, "--" + name.replace("_", "-"))
             raise ValueError(f"watch --rig: {flag} does not apply (the rig file gives the cameras; with --rig: --radius, --dtype, --chunk-lines, --timeout, --pair-timeout, --constraint)")
 
 
@@ -400,7 +400,8 @@ def batch(
     camera: Annotated[Optional[Path], typer.Option("--camera", help="Camera TOML for all inputs (default: NAME.camera.toml beside each).")] = None,
     jobs: Annotated[int, typer.Option("--jobs", "-j", help="Processes on this machine (1: this process, default; -1: all cores).")] = 1,
     scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Dask distributed scheduler address (tcp://HOST:PORT).")] = None,
-    method: Annotated[str, typer.Option("--method", help="'fit' (default) or 'paper'.")] = "fit",
+    method: Annotated[Optional[str], typer.Option("--method", help="'fit' (default) or 'paper'.")] = None,
+    recipe_file: Annotated[Optional[Path], typer.Option("--recipe", help="Recipe file for every input, as for estimate (docs/geometry.md); --method overrides it.")] = None,
     dtype: Annotated[str, typer.Option("--dtype", help="Sample type of raw streams: uint8 or uint16.")] = "uint8",
     progress: Annotated[Optional[bool], typer.Option("--progress/--no-progress", help="Progress bar on stderr (default: when it is a terminal).")] = None,
     background: Annotated[str, typer.Option("--background", help="Raw streams: 'engine' (the stream's running background of a crop's columns, default, as watch) or 'crop' (learned on the crop alone).")] = "engine",
@@ -416,13 +417,14 @@ def batch(
     signal's number (the rows written stay; a rerun does the rest).
     """
     from ..stream.batch import run_batch
-    from .options import check_radius_option
+    from .options import check_radius_option, recipe_from_options
     from .signals import ExitStatus, stop_signals
 
     radius = check_radius_option(radius)
+    recipe = recipe_from_options(recipe_file, method=method)
     with stop_signals(graceful=False):
         summary = run_batch(
-            inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype,
+            inputs, out_csv, radius, camera=camera, jobs=jobs, scheduler=scheduler, recipe=recipe, dtype=dtype,
             progress=sys.stderr.isatty() if progress is None else progress, background=background, force=force,
         )
     for note in summary.repairs:

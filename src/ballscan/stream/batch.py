@@ -35,8 +35,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from ..pipeline.recipe import Recipe
 
 from ..errors import BallscanError
 from ..outputs import OutputLock, check_not_symlink
@@ -119,7 +123,7 @@ def _timestamps_beside(path: Path) -> Path | None:
     return _beside(path, ".timestamps.npy") or _beside(path, ".timestamps.txt")
 
 
-def measure_input(path: str, camera_path: str | None, radius_m: float, method: str = "fit", dtype: str = "uint8", background: str = "engine") -> InputResult:
+def measure_input(path: str, camera_path: str | None, radius_m: float, recipe: "Recipe | None" = None, dtype: str = "uint8", background: str = "engine") -> InputResult:
     """Measure every ball of one input; never raises (a failure is in ``error``).
 
     Parameters
@@ -130,7 +134,9 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
         Camera TOML; None to look beside the input.
     radius_m : float
         Ball radius, metres.
-    method : {"fit", "paper"}
+    recipe : Recipe or None
+        The estimator's settings (:class:`ballscan.pipeline.recipe.Recipe`;
+        None: the default).
     dtype : {"uint8", "uint16"}
         Sample type of a raw stream.
     background : {"engine", "crop"}
@@ -157,7 +163,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             source = RawLineSource(p, camera.width, dtype, timestamps=ts_path, name=src)
             ests = []
             try:
-                for r in process_stream(source, camera, radius_m, StreamConfig(recipe=Recipe(method=method), background=background), source=src):
+                for r in process_stream(source, camera, radius_m, StreamConfig(recipe=recipe or Recipe(), background=background), source=src):
                     ests.append(r.estimate)
             except StreamError as exc:
                 # A damaged stream (e.g. a truncated last line): keep the balls
@@ -174,7 +180,7 @@ def measure_input(path: str, camera_path: str | None, radius_m: float, method: s
             if stored is None:
                 stored = read_stored(p)
             ts = load_timestamps(ts_path, stored.n_lines) if ts_path is not None else None
-            ests = list(measure_stored(stored, camera, radius_m, Recipe(method=method), timestamps_s=ts).balls)
+            ests = list(measure_stored(stored, camera, radius_m, recipe or Recipe(), timestamps_s=ts).balls)
         return InputResult(src, tuple(csv_row(src, k, e, camera) for k, e in enumerate(ests)))
     except (BallscanError, ValueError, OSError) as exc:
         msg = " ".join(str(exc).split())
@@ -261,7 +267,7 @@ def run_batch(
     camera: str | os.PathLike[str] | None = None,
     jobs: int = 1,
     scheduler: str | None = None,
-    method: str = "fit",
+    recipe: "Recipe | None" = None,
     dtype: str = "uint8",
     progress: bool = False,
     background: str = "engine",
@@ -283,7 +289,7 @@ def run_batch(
         Local processes (-1 = all cores; 1 = this process).
     scheduler : str or None
         Dask distributed scheduler address; overrides ``jobs``.
-    method, dtype
+    recipe, dtype
         As for :func:`measure_input`.
     progress : bool
         Show a rich progress bar on stderr (when it is a terminal).
@@ -304,8 +310,10 @@ def run_batch(
     """
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
-    if method not in ("fit", "paper"):
-        raise ValueError(f"method: expected 'fit' or 'paper', got {method!r}")
+    from ..pipeline.recipe import Recipe
+
+    if recipe is not None and not isinstance(recipe, Recipe):
+        raise ValueError(f"recipe: expected a Recipe, got {recipe!r}")
     from .engine import BACKGROUNDS
 
     if background not in BACKGROUNDS:
@@ -339,7 +347,7 @@ def run_batch(
             from ..outputs import atomic_write_text
 
             atomic_write_text(side, "".join(f"{x}\n" for x in [f"# csv inode {os.fstat(fd).st_ino}", *no_balls]))
-            n_done, n_balls, errors = _run(todo, fd, side, camera=cam, radius_m=radius_m, jobs=jobs, scheduler=scheduler, method=method, dtype=dtype, progress=progress, background=background)
+            n_done, n_balls, errors = _run(todo, fd, side, camera=cam, radius_m=radius_m, jobs=jobs, scheduler=scheduler, recipe=recipe, dtype=dtype, progress=progress, background=background)
         finally:
             os.close(fd)
     return BatchSummary(len(files), len(files) - len(todo), n_done, n_balls, tuple(errors), tuple(repairs))
@@ -357,7 +365,7 @@ def load_estimator() -> None:
     preload_estimator(stream_kernels=False)
 
 
-def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, method: str, dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
+def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, recipe: "Recipe | None", dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
     """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write.
 
     With local workers allowed (``jobs`` other than 1, no ``scheduler``),
@@ -369,7 +377,7 @@ def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: 
 
     n_done = n_balls = 0
     errors: list[tuple[str, str]] = []
-    task = partial(measure_input, camera_path=camera, radius_m=radius_m, method=method, dtype=dtype, background=background)
+    task = partial(measure_input, camera_path=camera, radius_m=radius_m, recipe=recipe, dtype=dtype, background=background)
     executor = TaskExecutor(jobs, scheduler, warm_up=load_estimator, progress=progress, before_workers=stop_decoding)  # no process yet
     ahead = executor.scheduler is None and executor.jobs > 1 and len(todo) > 1
     with decoding_ahead(todo if ahead else []), open(side, "a") as side_fh, executor:
