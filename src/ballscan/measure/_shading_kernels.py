@@ -278,6 +278,37 @@ def _edge_variance(sw: np.ndarray, r: int, S_r: float, Lr: float, sl2_r: float, 
     return s_w2 / Ls**2 + (S_r / Ls**2) ** 2 * sl2_r * ratio**2
 
 
+@jit(inline="always", error_model="numpy")
+def _model_ratio(val: np.ndarray, cov: np.ndarray, n_use: int, kw: int, n_level: int) -> tuple[float, float, bool]:
+    """The model's window value per covered length over its level run's mean value, the window's covered length (px), and whether it is usable.
+
+    The window is the first ``n_use`` of ``kw`` pixels of the profile's
+    values ``val`` and coverages ``cov``, the level run the ``n_level``
+    after them.  The ratio is usable within [0.5, 2] and on at least
+    0.05 px of covered length; otherwise it is 1.
+    """
+    s_model = 0.0
+    c_model = 0.0
+    for k in range(kw):
+        if k < n_use:
+            s_model += val[k]
+            c_model += cov[k]
+    lev = 0.0
+    for k in range(kw, kw + n_level):
+        lev += val[k]
+    ratio = s_model / c_model / (lev / n_level)
+    usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
+    return (ratio if usable else 1.0), c_model, usable
+
+
+@jit(inline="always")
+def _accumulate(blurred: np.ndarray, w: float, cov: np.ndarray, val: np.ndarray) -> None:
+    """Add ``w`` times a shifted profile's coverage and value to ``blurred``'s rows 0 and 1 (a blur node's share)."""
+    for k in range(cov.shape[0]):
+        blurred[0, k] += w * cov[k]
+        blurred[1, k] += w * val[k]
+
+
 @jit(error_model="numpy")
 def limb_levels(
     sg: np.ndarray, px: np.ndarray, n_win: np.ndarray, kw: int, n_level: int,
@@ -309,17 +340,15 @@ def limb_levels(
 
     Two rounds place the model's mean edge (the model-free edge, then the
     first round's), each taking the level ``L = L_run r``, ``r`` the
-    model's window value per covered length over its level run's (rejected
-    outside [0.5, 2] or below 0.05 px of covered length) and moving the
-    edge by the model's covered length less the data's ``S / L``; the
-    texture test compares ``q_data`` with the model's ratio at the new edge
-    (within ``q_lim``).  Rows
-    that fail keep ``e0, var0, L0``.  ``n_points`` point samples per partly
-    covered pixel.  A lens's blur along the sensor (``blur_shift`` pixels,
-    weights ``blur_w``: :func:`ballscan.model.blur.semicircle_nodes`; one
-    shift 0 of weight 1 for none) averages each pixel's value and coverage
-    over the profile moved by those shifts, the brightness at each shift
-    the surface's there.
+    model's ratio (:func:`_model_ratio`) and moving the edge by the
+    model's covered length less the data's ``S / L``; the texture test
+    compares ``q_data`` with the model's ratio at the new edge (within
+    ``q_lim``).  Rows that fail keep ``e0, var0, L0``.  ``n_points`` point
+    samples per partly covered pixel.  A lens's blur along the sensor
+    (``blur_shift`` pixels, weights ``blur_w``:
+    :func:`ballscan.model.blur.semicircle_nodes`; one shift 0 of weight 1
+    for none) averages each pixel's value and coverage over the profile
+    moved by those shifts, the brightness at each shift the surface's there.
 
     Returns
     -------
@@ -340,16 +369,13 @@ def limb_levels(
     frac = (np.arange(n_points) + 0.5) / n_points
     point = np.full((R, K), np.nan)
     wk = np.empty((4, K))
-    cov = wk[1]
-    val = wk[3]
+    cov, val = wk[1], wk[3]
     R2 = radius_m * radius_m
     has_acc = acc[0] != 0.0 or acc[1] != 0.0 or acc[2] != 0.0
     width = background.shape[1]
     law = np.array([focal, principal, k1, k2, R2, ambient, scale])
-    cen_pt = np.empty((max(tk.shape[0], 1), 4))
-    hs_pt = np.empty(max(hk.shape[0], 1))
-    cen_c = np.empty((1, 4))
-    hs_c = np.empty(1)
+    cen_pt, hs_pt = np.empty((max(tk.shape[0], 1), 4)), np.empty(max(hk.shape[0], 1))
+    cen_c, hs_c = np.empty((1, 4)), np.empty(1)
     rays_ok = True
     for r in range(R):
         if not np.isfinite(edge_m[r]):
@@ -381,9 +407,7 @@ def limb_levels(
                 if not fine:
                     break
                 if nb > 1:
-                    for k in range(K):
-                        blurred[0, k] += blur_w[j] * cov[k]
-                        blurred[1, k] += blur_w[j] * val[k]
+                    _accumulate(blurred, blur_w[j], cov, val)
             if not fine:
                 break
             if nb > 1:
@@ -391,19 +415,7 @@ def limb_levels(
                 val[:] = blurred[1]
             if rnd == 2:
                 break
-            s_model = 0.0
-            c_model = 0.0
-            for k in range(kw):
-                if k < n_win[r]:
-                    s_model += val[k]
-                    c_model += cov[k]
-            lev = 0.0
-            for k in range(kw, kw + n_level):
-                lev += val[k]
-            ratio = s_model / c_model / (lev / n_level)
-            usable = np.isfinite(ratio) and c_model > 0.05 and ratio >= 0.5 and ratio <= 2.0
-            if not usable:
-                ratio = 1.0
+            ratio, c_model, usable = _model_ratio(val, cov, n_win[r], kw, n_level)
             Lr = L_run[r] * ratio
             covered = S[r] / (Lr if Lr > 0.0 else 1.0)
             er = at + sg[r] * (c_model - covered) if usable else e0[r]
