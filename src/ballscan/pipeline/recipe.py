@@ -80,11 +80,12 @@ class Recipe:
     refined_background : bool
         Measure every ball's edges on its columns' background measured away
         from the balls (:func:`ballscan.pipeline.background.refine_background`);
-        otherwise only long balls' matched edges are.  Off by default: on
-        independent renders it removes most of the speed across the line of
-        sight's bias (the detector's level takes in a shaded ball's faint
-        limb) but widens the error of the depth velocity, and with it the
-        speed's (docs/benchmarks.md).
+        otherwise only long balls' matched edges are.  On independent
+        renders it removes most of ``vx``'s bias (the detector's level takes
+        in a shaded ball's faint limb) and leaves the depth velocity's error
+        as it is; off by default while its lower direction coverage on
+        ballscan's own renders and an overlapping cut ball it reports are
+        open (docs/benchmarks.md).
     refit_law : bool
         On the window edges' path, fit the shading law and the limb model
         again at the fitted motion, and the motion once more from there.
