@@ -1,6 +1,6 @@
 """Do the reported sigmas cover the errors as a normal distribution would?  (run on demand, not a test)
 
-    python benchmarks/bench_coverage.py [--scenes 200] [--seed 0] [--jobs 2] [--out FILE.npz]
+    python benchmarks/bench_coverage.py [--scenes 200] [--seed 0] [--jobs 2] [--out FILE.npz] [--recipe FILE.toml]
 
 Draws ``--scenes`` scenes at random (seeded) over the experiments' ranges
 (:class:`ballscan.lab.experiments.Scene`, the fig5 camera of 2048 px and
@@ -11,7 +11,7 @@ a bright ball on a dark background or the reverse, flat or Lambertian-shaded,
 untextured or with the tennis seam; the default 8-bit sensor (read and shot
 noise, 0.8 % PRNU).  Each is rendered once (the experiments' renderer, a
 random sub-line phase), measured by ``estimate_image`` with the default
-recipe, and the errors of the speed (``speed_mps`` against
+recipe (or ``--recipe``'s, :func:`ballscan.pipeline.recipe.load_recipe`), and the errors of the speed (``speed_mps`` against
 ``speed_sigma_mps``) and of the two direction angles (``direction_deg``
 against ``direction_sigma_deg``, :mod:`ballscan.solve.derived`) are divided
 by their sigmas.  It prints the share of balls within 1 and 3 sigmas (a
@@ -68,13 +68,14 @@ def draw_scene(rng: np.random.Generator):
         return scene, texture
 
 
-def run_one(k: int, seed: int) -> dict:
+def run_one(k: int, seed: int, recipe=None) -> dict:
     """Render and measure scene ``k``; the z-scores of speed and direction angles."""
     from ballscan.lab import experiments as ex
     from ballscan.measure.images import LineImage
     from ballscan.model.render import render
     from ballscan.model.silhouette import visible_line_count
     from ballscan.pipeline.estimate import estimate_image
+    from ballscan.pipeline.recipe import Recipe
 
     rng = np.random.default_rng([seed, k])
     scene, texture = draw_scene(rng)
@@ -83,7 +84,7 @@ def run_one(k: int, seed: int) -> dict:
     r = render(scene.camera, (truth, ex.appearance(scene, texture, int(rng.integers(2**31)))), geom.n_lines,
                background_level=scene.background_level, noise=scene.noise, seed=int(rng.integers(2**31)))
     image = LineImage(r.image.astype(float), float(scene.noise.max_dn), scene.noise.bits, f"scene {k}")
-    rep = estimate_image(image, scene.camera, scene.radius_m)
+    rep = estimate_image(image, scene.camera, scene.radius_m, recipe=recipe or Recipe())
     ball, _ = ex.pick_estimate(rep, truth.t_c_s)
     V = np.asarray(truth.velocity_mps)
     out = dict(k=k, texture=texture, shading=scene.shading, lines=float(visible_line_count(scene.camera, truth)), vz_share=abs(V[2]) / np.linalg.norm(V),
@@ -116,9 +117,15 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=None)
+    ap.add_argument("--recipe", default=None, help="a recipe file (docs/geometry.md) in place of the default recipe")
     a = ap.parse_args()
+    recipe = None
+    if a.recipe:
+        from ballscan.pipeline.recipe import load_recipe
+
+        recipe = load_recipe(a.recipe)
     t0 = time.perf_counter()
-    res = Parallel(n_jobs=a.jobs)(delayed(run_one)(k, a.seed) for k in range(a.scenes))
+    res = Parallel(n_jobs=a.jobs)(delayed(run_one)(k, a.seed, recipe) for k in range(a.scenes))
     wall = time.perf_counter() - t0
     print(f"{a.scenes} scenes, seed {a.seed}, {wall:.0f} s wall on {a.jobs} jobs; "
           f"{sum(not np.all(np.isfinite(r['z'])) for r in res)} without a speed and direction sigma")
