@@ -83,9 +83,9 @@ class Recipe:
         otherwise only long balls' matched edges are.  On independent
         renders it removes most of ``vx``'s bias (the detector's level takes
         in a shaded ball's faint limb) and leaves the depth velocity's error
-        as it is; off by default while its lower direction coverage on
-        ballscan's own renders and an overlapping cut ball it reports are
-        open (docs/benchmarks.md).
+        as it is; off by default while the balls it changes beyond that
+        (an overlapping pair's non-converged fit it reports, single balls
+        of the tests) are open (docs/benchmarks.md).
     refit_law : bool
         On the window edges' path, fit the shading law and the limb model
         again at the fitted motion, and the motion once more from there.
