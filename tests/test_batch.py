@@ -175,3 +175,22 @@ def test_batch_recipe_file_reaches_every_input(recordings, tmp_path, capsys):
     assert code == 2 and err.strip() == f"ballscan: error: {tmp_path / 'bad.toml'}: pixels: expected True or False, got 2"
     with pytest.raises(ValueError, match="recipe"):
         run_batch([recordings / "two.png"], tmp_path / "x.csv", RADIUS, recipe="paper")
+
+
+def test_a_rerun_with_another_recipe_is_refused_not_mixed(recordings, tmp_path):
+    from ballscan.pipeline.recipe import Recipe
+
+    out = tmp_path / "r.csv"
+    assert run_batch([recordings / "one.png", recordings / "none.png"], out, RADIUS, recipe=Recipe(method="paper")).n_balls == 1
+    rows = _rows(out)
+    with pytest.raises(BallscanError, match=r'r.csv: measured with the recipe \{"method": "paper"\}, not \{\}'):
+        run_batch([recordings], out, RADIUS)
+    assert _rows(out) == rows  # nothing written
+    # the same recipe resumes: the two inputs skipped, the others measured
+    s = run_batch([recordings], out, RADIUS, recipe=Recipe(method="paper"))
+    assert s.n_skipped == 2 and {r["method"] for r in _rows(out)} == {"paper"}
+    # a CSV whose inputs had no ball is held to its recipe too
+    empty = tmp_path / "e.csv"
+    run_batch([recordings / "none.png"], empty, RADIUS)
+    with pytest.raises(BallscanError, match="e.csv: measured with the recipe"):
+        run_batch([recordings / "none.png"], empty, RADIUS, recipe=Recipe(shading=False))

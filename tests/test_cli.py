@@ -157,6 +157,8 @@ def test_stream_simulate_and_watch_through_the_cli(tmp_path, capsys):
     assert [json.loads(line)["method"] for line in out.splitlines()] == ["paper", "paper"]
     code, _, err = run(capsys, "watch", raw, raw, "--rig", f"{raw}.camera.toml", "--radius", truth[0]["radius_m"], "--recipe", tmp_path / "paper.toml")
     assert code == 2 and "watch --rig: --recipe does not apply" in err
+    code, _, err = run(capsys, "watch", raw, raw, "--rig", f"{raw}.camera.toml", "--radius", truth[0]["radius_m"], "--shading")
+    assert code == 2 and "watch --rig: --shading does not apply" in err  # given, even at its default
 
 
 def test_experiment_commands_are_registered(capsys):

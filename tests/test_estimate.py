@@ -380,6 +380,7 @@ def test_a_recipe_is_rebuilt_from_its_changes_through_json_and_toml(recipe, tmp_
         ("refit_law = 'yes'\n", "r.toml: refit_law: expected True or False, got 'yes'"),
         ("colour = 3\n", "r.toml: colour: not a recipe setting"),
         ("[edge_fit]\nspeed = 2\n", "r.toml: edge_fit.speed: not a FitSettings field"),
+        ("[edge_fit]\nmax_nfev = 'x'\n", "r.toml: edge_fit.max_nfev: expected an integer >= 1, got 'x'"),
         ("edge_fit = 3\n", "r.toml: edge_fit: expected a table of FitSettings changes"),
         ("[pixel_fit]\npixels = false\n", "r.toml: pixel_fit: expected FitSettings with pixels=True"),
         ("level_samples = [0, 2]\n", "r.toml: level_samples: expected two positive integers"),
@@ -394,11 +395,33 @@ def test_a_bad_recipe_file_is_one_line_naming_the_file_and_the_setting(tmp_path,
         load_recipe(tmp_path / "r.toml")
     msg = str(info.value)
     assert needle in msg and "\n" not in msg, msg
-    with pytest.raises(RecipeFileError, match="file not found"):
-        load_recipe(tmp_path / "none.toml")
-    (tmp_path / "list.json").write_text("[1, 2]")
-    with pytest.raises(RecipeFileError, match="list.json: expected a table"):
-        load_recipe(tmp_path / "list.json")
+
+
+@pytest.mark.parametrize(
+    "name, content, needle",
+    [
+        ("none.toml", None, "none.toml: file not found"),
+        ("list.json", "[1, 2]", "list.json: expected a table of recipe settings, got list"),
+        ("rig.json", '{"rig": "r.toml", "balls": []}', "rig.json: a result without a 'recipe' key"),
+        ("null.json", '{"image": "x.png", "recipe": null, "balls": []}', "null.json: expected a table of recipe settings, got NoneType"),
+        ("big.toml", "level_samples = [" + "9" * 5000 + ", 1]\n", "big.toml: not valid TOML"),
+        ("big.json", '{"level_samples": [' + "9" * 5000 + ', 1]}', "big.json: not valid JSON"),
+        ("latin.toml", b"shading = false # \xe9\n", "latin.toml: not a recipe file (not UTF-8 text)"),
+        ("huge.toml", "# x\n" * 300_000, "huge.toml: over 1048576 bytes"),
+    ],
+)
+def test_a_recipe_file_that_cannot_be_read_is_one_line_naming_it(tmp_path, name, content, needle):
+    from ballscan.errors import RecipeFileError
+
+    if isinstance(content, bytes):
+        (tmp_path / name).write_bytes(content)
+    elif content is not None:
+        (tmp_path / name).write_text(content)
+    with pytest.raises(RecipeFileError) as info:
+        load_recipe(tmp_path / name)
+    assert needle in str(info.value) and "\n" not in str(info.value), str(info.value)
+    with pytest.raises(RecipeFileError, match="cannot read"):
+        load_recipe(tmp_path)  # a folder
 
 
 def _shaded_ball():
@@ -566,5 +589,4 @@ def test_the_recipe_files_keys_in_geometry_md_are_the_recipes_fields():
     doc = (Path(__file__).resolve().parents[1] / "docs" / "geometry.md").read_text()
     section = doc.split("## Recipe file (TOML)")[1].split("\n## ")[0]
     listed = set(re.findall(r"`([a-z_]+)`", section.split("The keys are the fields of")[1].split("An unknown")[0]))
-    assert {f.name for f in fields(Recipe)} <= listed
-    assert listed - {f.name for f in fields(Recipe)} <= {"FitSettings"}
+    assert listed == {f.name for f in fields(Recipe)}

@@ -395,10 +395,11 @@ def test_a_football_whose_panels_reach_the_limb(capsys):
     assert abs(row["speed_err"]) < 0.05, row  # measured -2.9 %
 
 
-def _rows(speed_errs, transverse_errs, scene_names=None):
+def _rows(speed_errs, transverse_errs, scene_names=None, lines=None):
     names = scene_names or [f"pv{2 * k:04d}" for k in range(len(speed_errs))]
-    return [{"scene": n, "fit": {"measured": s is not None, "speed_err": s, "transverse_err": t}}
-            for n, s, t in zip(names, speed_errs, transverse_errs)]
+    lines = lines or [100.0] * len(names)
+    return [{"scene": n, "lines": ln, "vz_share": 0.1, "fit": {"measured": s is not None, "speed_err": s, "transverse_err": t}}
+            for n, s, t, ln in zip(names, speed_errs, transverse_errs, lines)]
 
 
 def test_the_paired_comparison_counts_ratios_and_tests_ball_by_ball():
@@ -411,9 +412,12 @@ def test_the_paired_comparison_counts_ratios_and_tests_ball_by_ball():
     # unchanged: no ball moved, the test has nothing to test
     same = score.paired_lines(_rows(list(base), list(base)), _rows(list(base), list(base)))
     assert next(x for x in same if x.startswith("| speed |")).endswith("| 40 | 0 / 0 | 1.000 | 1.000 | - |")
-    # a ball measured in one run only is counted, not paired; a second ball of a scene pairs with the second
-    now = _rows([None, 0.01, 0.02], [0.01, 0.01, 0.03], ["pv0000", "pv0002", "pv0002"])
-    then = _rows([0.01, None, 0.01], [0.01, 0.01, 0.01], ["pv0000", "pv0002", "pv0002"])
+    # a ball measured in one run only is counted, not paired; balls pair by their truth, not by their order
+    now = _rows([None, 0.02, 0.01], [0.01, 0.03, 0.01], ["pv0000", "pv0002", "pv0002"], [100.0, 80.0, 60.0])
+    then = _rows([0.01, None, 0.01], [0.01, 0.01, 0.01], ["pv0000", "pv0002", "pv0002"], [100.0, 60.0, 80.0])
     lines = score.paired_lines(now, then)
-    assert "speed measured only now 1, only in the base 1" in lines[1]
+    assert "speed measured only now 1, only in the base 1" in lines[1] and "(0 only here, 0 only in the base)" in lines[1]
     assert next(x for x in lines if x.startswith("| speed |")).startswith("| speed | 1 | 1 / 0 | 2.000 |")
+    # rows of another set pair with nothing: refused, not an empty table
+    with pytest.raises(ValueError, match="no ball of these rows"):
+        score.paired_lines(_rows([0.01], [0.01], ["pv0001"]), then)

@@ -257,32 +257,42 @@ def transverse_lines(rows: list[dict]) -> list[str]:
             f"that speed {cover('z_vt', 1)} / {cover('z_vt', 3)} %, psi_y {cover('z_psi_y', 1)} / {cover('z_psi_y', 3)} %"]
 
 
-def _ball_keys(rows: list[dict]) -> list[tuple[str, int]]:
-    """Each row's scene and its place among that scene's balls (the truth's order, the same in every run)."""
-    seen: dict[str, int] = {}
+def _ball_keys(rows: list[dict]) -> list[tuple]:
+    """Each row's true ball: its scene, its line count and depth share (the truth's, the same in every run) and its place among equals."""
+    seen: dict[tuple, int] = {}
     keys = []
     for r in rows:
-        keys.append((r["scene"], seen.get(r["scene"], 0)))
-        seen[r["scene"]] = keys[-1][1] + 1
+        ball = (r["scene"], round(r["lines"], 6), round(r["vz_share"], 9))
+        keys.append(ball + (seen.get(ball, 0),))
+        seen[ball] = keys[-1][-1] + 1
     return keys
 
 
 def paired_lines(rows: list[dict], base: list[dict]) -> list[str]:
-    """The fit's errors in ``rows`` against ``base``'s on the same balls: counts, median and geometric-mean ratios, Wilcoxon p.
+    """The fit's errors in ``rows`` against ``base``'s on the same true balls: counts, median and geometric-mean ratios, Wilcoxon p.
 
     For the speed (balls measured in both) and the speed across the line of
     sight (balls with it in both): how many errors grew or shrank by more
     than 10 %, the median and the geometric mean of ``|err| / |err_base|``,
-    and the two-sided signed-rank test's p of their logarithms (``-`` with
-    fewer than 6 changed balls).
+    and the two-sided signed-rank test's p of their logarithms over the
+    balls whose error changed by more than 1e-9 (``-`` with fewer than 6).
+
+    Raises
+    ------
+    ValueError
+        No ball of ``rows`` is in ``base`` (rows of another split or set).
     """
     from scipy.stats import wilcoxon
 
     old = dict(zip(_ball_keys(base), base))
-    pairs = [(old[k]["fit"], r["fit"]) for k, r in zip(_ball_keys(rows), rows) if k in old]
+    keys = _ball_keys(rows)
+    pairs = [(old[k]["fit"], r["fit"]) for k, r in zip(keys, rows) if k in old]
+    if not pairs:
+        raise ValueError("--against: no ball of these rows is in the base rows (another split or scene set?)")
     only_new = sum(n.get("measured") and not b.get("measured") for b, n in pairs)
     only_old = sum(b.get("measured") and not n.get("measured") for b, n in pairs)
-    out = ["", f"against the base rows: {len(pairs)} balls in both; speed measured only now {only_new}, only in the base {only_old}",
+    out = ["", f"against the base rows: {len(pairs)} balls in both ({len(rows) - len(pairs)} only here, {len(base) - len(pairs)} only in the base); "
+           f"speed measured only now {only_new}, only in the base {only_old}",
            "| error | balls | larger / smaller by > 10 % | median ratio | geometric-mean ratio | Wilcoxon p |", "|---|---|---|---|---|---|"]
     for key, label, ok in (("speed_err", "speed", lambda f: f.get("measured")),
                            ("transverse_err", "speed across the line of sight", lambda f: True)):
@@ -290,7 +300,7 @@ def paired_lines(rows: list[dict], base: list[dict]) -> list[str]:
                 if ok(b) and ok(n) and b.get(key) and n.get(key)]
         if not logs:
             continue
-        changed = [x for x in logs if x != 0.0]
+        changed = [x for x in logs if abs(x) > 1e-9]
         p = f"{wilcoxon(changed).pvalue:.3f}" if len(changed) >= 6 else "-"
         up, down = sum(x > math.log(1.1) for x in logs), sum(x < -math.log(1.1) for x in logs)
         out.append(f"| {label} | {len(logs)} | {up} / {down} | {math.exp(statistics.median(logs)):.3f} | "
@@ -336,7 +346,11 @@ def main(argv: list[str] | None = None) -> int:
         print(f"\nnot measured ({len(failed)}):")
         print("\n".join("  " + f for f in failed))
     if a.against:
-        print("\n".join(paired_lines(rows, json.loads(a.against.read_text()))))
+        try:
+            print("\n".join(paired_lines(rows, json.loads(a.against.read_text()))))
+        except ValueError as exc:
+            print(f"score.py: {a.against}: {exc}", file=sys.stderr)
+            return 2
     return 0
 
 

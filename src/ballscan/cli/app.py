@@ -152,7 +152,7 @@ def estimate(
     saturation: Optional[float] = typer.Option(None, "--saturation", help="Saturation level in DN (default: the type's maximum)."),
     shading: Optional[bool] = typer.Option(None, "--shading/--no-shading", help="The fit's shading-aware second pass (default on; off takes about 40 % less time per ball, V.z less accurate)."),
     pixels: Optional[bool] = typer.Option(
-        None, "--pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
+        None, "--pixels/--no-pixels", help="Fit the pixels of the ball's ends (uniform, untextured balls and a continuous exposure: closer to the Cramér–Rao bound, about twice the time; not for textured balls)."
     ),
     matched: Optional[bool] = typer.Option(
         None, "--matched/--no-matched", help="Matched edges on uniform balls of a flat-fielded sensor (default on; extra 'edges' says where they were used)."

@@ -274,7 +274,7 @@ def _replace_checked(settings: FitSettings, values: Mapping[str, Any], where: st
     try:
         return replace(settings, **{k: _tuples(v) for k, v in values.items()})
     except ValueError as exc:
-        raise ValueError(f"{where}.{exc}") from None
+        raise ValueError(f"{where}.{str(exc).removeprefix('FitSettings.')}") from None
 
 
 def _tuples(value: Any) -> Any:
@@ -287,7 +287,9 @@ def load_recipe(path: str | Path) -> Recipe:
 
     The keys are :class:`Recipe`'s fields that differ from the default, as
     the results' ``recipe`` key gives them (:meth:`Recipe.from_changes`);
-    an empty file is the default recipe.
+    an empty file is the default recipe.  A result's ``recipe`` holds the
+    differences from the defaults of the version that wrote it (its
+    ``ballscan_version``): another version's defaults fill in the rest.
 
     Raises
     ------
@@ -297,27 +299,28 @@ def load_recipe(path: str | Path) -> Recipe:
     """
     path = Path(path)
     try:
-        if path.is_file() and path.stat().st_size > MAX_RECIPE_FILE_BYTES:
-            raise RecipeFileError(str(path), f"{path.stat().st_size} bytes: not a recipe file (at most {MAX_RECIPE_FILE_BYTES})")
-        text = path.read_bytes().decode("utf-8")
+        with open(path, "rb") as fh:
+            data = fh.read(MAX_RECIPE_FILE_BYTES + 1)
+        if len(data) > MAX_RECIPE_FILE_BYTES:
+            raise RecipeFileError(str(path), f"over {MAX_RECIPE_FILE_BYTES} bytes: not a recipe file")
+        text = data.decode("utf-8")
     except FileNotFoundError:
         raise RecipeFileError(str(path), "file not found") from None
     except UnicodeDecodeError:
         raise RecipeFileError(str(path), "not a recipe file (not UTF-8 text)") from None
     except OSError as exc:
         raise RecipeFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
+    kind = "JSON" if path.suffix.lower() == ".json" else "TOML"
     try:
-        if path.suffix.lower() == ".json":
-            table = json.loads(text)
-            if isinstance(table, dict) and "balls" in table:
-                table = table.get("recipe", {})
-        else:
-            table = tomllib.loads(text)
-    except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
-        kind = "JSON" if path.suffix.lower() == ".json" else "TOML"
-        raise RecipeFileError(str(path), f"not valid {kind} ({exc})") from None
+        table = json.loads(text) if kind == "JSON" else tomllib.loads(text)
     except RecursionError:
         raise RecipeFileError(str(path), "not a recipe file (arrays or tables nested too deeply to read)") from None
+    except ValueError as exc:  # the decoders' errors, and integers beyond Python's digit limit
+        raise RecipeFileError(str(path), f"not valid {kind} ({exc})") from None
+    if kind == "JSON" and isinstance(table, dict) and "balls" in table:
+        if "recipe" not in table:
+            raise RecipeFileError(str(path), "a result without a 'recipe' key (a rig's result has none): give a recipe file")
+        table = table["recipe"]
     if not isinstance(table, dict):
         raise RecipeFileError(str(path), f"expected a table of recipe settings, got {type(table).__name__}")
     try:

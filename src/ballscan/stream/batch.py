@@ -15,7 +15,9 @@ row (a write cut by a crash) is dropped with the rows of its input, which is
 measured again, so every ball is in the CSV exactly once. Inputs without any
 ball are listed in ``OUT.done``, which is tied to the CSV (it names the CSV's
 inode): it counts only while that very CSV exists, and a deleted CSV means
-every input is measured again. ``OUT.lock`` (``fcntl.flock``) keeps a second
+every input is measured again. It also records the recipe the rows were
+measured with: a rerun with another recipe is refused rather than mixing
+two estimators' rows in one CSV. ``OUT.lock`` (``fcntl.flock``) keeps a second
 run from writing the same CSV; an ``OUT`` that is a symbolic link is refused
 unless forced.
 
@@ -30,6 +32,7 @@ its first input.
 from __future__ import annotations
 
 import csv
+import json
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -233,14 +236,27 @@ def _check_csv(out_csv: Path) -> _CsvState:
     return _CsvState(size, frozenset(src for _, src in starts), tuple(dict.fromkeys(dropped)))
 
 
-def _sidecar_sources(side: Path, out_csv: Path) -> set[str]:
-    """Inputs without balls listed in ``side``, if it belongs to this very CSV (its inode)."""
+def _sidecar_lines(side: Path, out_csv: Path) -> list[str]:
+    """The lines of ``side`` after its first, if it belongs to this very CSV (its first line names the CSV's inode)."""
     if not side.is_file() or not out_csv.is_file():
-        return set()
+        return []
     lines = side.read_text(errors="replace").splitlines()
     if not lines or lines[0] != f"# csv inode {out_csv.stat().st_ino}":
-        return set()
-    return {s for s in lines[1:] if s}
+        return []
+    return lines[1:]
+
+
+def _sidecar_sources(side: Path, out_csv: Path) -> set[str]:
+    """Inputs without balls listed in ``side``, if it belongs to this very CSV."""
+    return {s for s in _sidecar_lines(side, out_csv) if s and not s.startswith("# ")}
+
+
+def _sidecar_recipe(side: Path, out_csv: Path) -> str | None:
+    """The recipe (its changes as sorted JSON) that the CSV's rows were measured with, where ``side`` says it."""
+    for s in _sidecar_lines(side, out_csv):
+        if s.startswith("# recipe "):
+            return s[len("# recipe "):]
+    return None
 
 
 def _append(fd: int, data: bytes) -> None:
@@ -306,7 +322,8 @@ def run_batch(
     ------
     BallscanError
         If another run holds the CSV's lock, the CSV is a symbolic link
-        (without ``force``) or has other columns.
+        (without ``force``), has other columns, or its rows were measured
+        with another recipe (``OUT.done`` records it).
     """
     if not (np.isfinite(radius_m) and radius_m > 0):
         raise ValueError(f"radius: must be positive, got {radius_m!r}")
@@ -327,8 +344,13 @@ def run_batch(
     out.parent.mkdir(parents=True, exist_ok=True)
     side = out.with_name(out.name + ".done")
     check_not_symlink(side)
+    used = json.dumps((recipe or Recipe()).changes(), sort_keys=True)
     with OutputLock(out.with_name(out.name + ".lock"), str(out)):
         state = _check_csv(out)
+        earlier = _sidecar_recipe(side, out)
+        if earlier is not None and earlier != used and (state.sources or _sidecar_sources(side, out)):
+            # a restart with other settings would mix two estimators' rows in one CSV
+            raise BallscanError(f"{out}: measured with the recipe {earlier}, not {used}: give that recipe, or another --out")
         repairs = []
         if state.size and state.size < out.stat().st_size:
             with open(out, "r+b") as fh:
@@ -346,7 +368,7 @@ def run_batch(
             # the sidecar names this CSV's inode: it counts only with this very file
             from ..outputs import atomic_write_text
 
-            atomic_write_text(side, "".join(f"{x}\n" for x in [f"# csv inode {os.fstat(fd).st_ino}", *no_balls]))
+            atomic_write_text(side, "".join(f"{x}\n" for x in [f"# csv inode {os.fstat(fd).st_ino}", f"# recipe {used}", *no_balls]))
             n_done, n_balls, errors = _run(todo, fd, side, camera=cam, radius_m=radius_m, jobs=jobs, scheduler=scheduler, recipe=recipe, dtype=dtype, progress=progress, background=background)
         finally:
             os.close(fd)
