@@ -421,3 +421,13 @@ def test_the_paired_comparison_counts_ratios_and_tests_ball_by_ball():
     # rows of another set pair with nothing: refused, not an empty table
     with pytest.raises(ValueError, match="no ball of these rows"):
         score.paired_lines(_rows([0.01], [0.01], ["pv0001"]), then)
+
+
+def test_the_score_of_vx_compares_its_magnitude_with_its_sigma():
+    truth = {"speed_mps": math.hypot(10.0, 1.0), "velocity_mps": [-10.0, 1.0, 0.0], "t_c_s": 0.0, "direction_deg": {"psi_y": 0.0, "psi_z": 0.0}}
+    est = {"speed_mps": 10.1, "speed_sigma_mps": 0.1, "velocity_mps": [10.02, -1.0, 0.0], "velocity_sigma_mps": [0.01, 0.1, 1.0],
+           "direction_deg": [0.0, 0.0], "direction_sigma_deg": [1.0, 1.0]}
+    row = score.compare(est, truth)
+    # the crossing direction's sign aside: |10.02| against |-10| over its sigma 0.01
+    assert row["z_vx"] == pytest.approx(2.0)
+    assert score.compare({**est, "velocity_sigma_mps": [None, 0.1, 1.0]}, truth)["z_vx"] is None
