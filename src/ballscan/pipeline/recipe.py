@@ -4,14 +4,16 @@ A :class:`Recipe` is everything :func:`ballscan.pipeline.estimate.estimate_image
 chooses on its own; ``Recipe()`` is the estimator's default.  It is frozen
 and checked when it is built, so that a recipe handed to a stream engine or
 to worker processes is valid before the first ball arrives.
+:func:`load_recipe` reads one from a file (docs/geometry.md's recipe file,
+or a result's ``recipe`` key).
 """
 
 from __future__ import annotations
 
-import math
-import numbers
 import difflib
 import json
+import math
+import numbers
 import tomllib
 from dataclasses import dataclass, fields, is_dataclass, replace
 from pathlib import Path
