@@ -236,7 +236,7 @@ def test_unparseable_and_missing_files(tmp_path):
         load_camera(tmp_path / "nope.toml")
     binary = tmp_path / "image.png"
     binary.write_bytes(b"\x89PNG\r\n\x1a\n\xff\xfe")
-    with pytest.raises(CameraFileError, match="not a TOML text file"):
+    with pytest.raises(CameraFileError, match=r"image.png: not a camera file \(not UTF-8 text\)"):
         load_camera(binary)
     with pytest.raises(CameraFileError, match="cannot read"):
         load_camera(tmp_path)  # a folder

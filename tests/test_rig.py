@@ -160,7 +160,8 @@ def test_bad_rig_files_name_the_file_and_key(tmp_path, text, key):
     [
         (b"gravity_mps2 = [0.0, 0.0, -9.81]\n" + b"# padding\n" * 200_000, "not a rig file"),
         (b"x = " + b"[" * 5000 + b"]" * 5000 + b"\n", "nested too deeply"),
-        (b"\x89PNG\r\n\x1a\n\xff\xfe", "not a TOML text file"),
+        (b"\x89PNG\r\n\x1a\n\xff\xfe", "not a rig file \\(not UTF-8 text\\)"),
+        (b"x = " + b"9" * 5000 + b"\n", "not valid TOML"),
         (b"speed = = 3", "not valid TOML"),
     ],
 )

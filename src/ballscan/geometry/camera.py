@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CameraFileError, GeometryError
+from ..inputs import read_small_text
 from ..outputs import atomic_write_text
 from .lens import distorted, distortion_slope, project, undistorted
 
@@ -545,22 +546,13 @@ def _read_toml(path: Path, kind: str) -> dict[str, Any]:
         With a one-line message naming the file: not found, unreadable, over
         :data:`MAX_CAMERA_FILE_BYTES`, not UTF-8 text or not valid TOML.
     """
-    try:
-        if path.is_file() and path.stat().st_size > MAX_CAMERA_FILE_BYTES:
-            raise CameraFileError(str(path), f"{path.stat().st_size} bytes: not a {kind} file (at most {MAX_CAMERA_FILE_BYTES})")
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise CameraFileError(str(path), "file not found") from None
-    except UnicodeDecodeError:
-        raise CameraFileError(str(path), "not a TOML text file (not UTF-8 text)") from None
-    except OSError as exc:
-        raise CameraFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
+    text = read_small_text(path, MAX_CAMERA_FILE_BYTES, kind, CameraFileError)
     try:
         return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
     except RecursionError:
         raise CameraFileError(str(path), f"not a {kind} file (arrays or tables nested too deeply to read)") from None
+    except ValueError as exc:  # TOML's errors, and integers beyond Python's digit limit
+        raise CameraFileError(str(path), f"not valid TOML ({exc})") from None
 
 
 def load_camera(path: str | Path) -> LineScanCamera:

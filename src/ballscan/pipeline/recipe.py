@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any, Literal, Mapping, get_args
 
 from ..errors import RecipeFileError
+from ..inputs import read_small_text
 from ..solve.settings import FitSettings
 
 __all__ = ["METHODS", "SHADING_STARTS", "Method", "ShadingStart", "Recipe", "load_recipe"]
@@ -300,18 +301,7 @@ def load_recipe(path: str | Path) -> Recipe:
         not valid TOML or JSON, an unknown setting or a value out of range.
     """
     path = Path(path)
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_RECIPE_FILE_BYTES + 1)
-        if len(data) > MAX_RECIPE_FILE_BYTES:
-            raise RecipeFileError(str(path), f"over {MAX_RECIPE_FILE_BYTES} bytes: not a recipe file")
-        text = data.decode("utf-8")
-    except FileNotFoundError:
-        raise RecipeFileError(str(path), "file not found") from None
-    except UnicodeDecodeError:
-        raise RecipeFileError(str(path), "not a recipe file (not UTF-8 text)") from None
-    except OSError as exc:
-        raise RecipeFileError(str(path), f"cannot read ({exc.strerror or exc.__class__.__name__})") from None
+    text = read_small_text(path, MAX_RECIPE_FILE_BYTES, "recipe", RecipeFileError)
     kind = "JSON" if path.suffix.lower() == ".json" else "TOML"
     try:
         table = json.loads(text) if kind == "JSON" else tomllib.loads(text)
