@@ -408,20 +408,21 @@ def test_a_bad_recipe_file_is_one_line_naming_the_file_and_the_setting(tmp_path,
         ("big.json", '{"level_samples": [' + "9" * 5000 + ', 1]}', "big.json: not valid JSON"),
         ("latin.toml", b"shading = false # \xe9\n", "latin.toml: not a recipe file (not UTF-8 text)"),
         ("huge.toml", "# x\n" * 300_000, "huge.toml: over 1048576 bytes"),
+        ("folder.toml", "a folder", "folder.toml: cannot read"),
     ],
 )
 def test_a_recipe_file_that_cannot_be_read_is_one_line_naming_it(tmp_path, name, content, needle):
     from ballscan.errors import RecipeFileError
 
-    if isinstance(content, bytes):
+    if content == "a folder":
+        (tmp_path / name).mkdir()
+    elif isinstance(content, bytes):
         (tmp_path / name).write_bytes(content)
     elif content is not None:
         (tmp_path / name).write_text(content)
     with pytest.raises(RecipeFileError) as info:
         load_recipe(tmp_path / name)
     assert needle in str(info.value) and "\n" not in str(info.value), str(info.value)
-    with pytest.raises(RecipeFileError, match="cannot read"):
-        load_recipe(tmp_path)  # a folder
 
 
 def _shaded_ball():

@@ -22,22 +22,21 @@ class CameraFileError(BallscanError, ValueError):
         self.problem = problem
 
 
-class RecipeFileError(BallscanError, ValueError):
+class InputFileError(BallscanError, ValueError):
+    """A file given to ballscan cannot be used: the message is ``"{source}: {problem}"``."""
+
+    def __init__(self, source: str, problem: str):
+        super().__init__(f"{source}: {problem}")
+        self.source = source
+        self.problem = problem
+
+
+class RecipeFileError(InputFileError):
     """A recipe file (the estimator's settings) is missing, malformed or out of range."""
 
-    def __init__(self, source: str, problem: str):
-        super().__init__(f"{source}: {problem}")
-        self.source = source
-        self.problem = problem
 
-
-class ImageFileError(BallscanError, ValueError):
+class ImageFileError(InputFileError):
     """An image file cannot be used as a line-scan image."""
-
-    def __init__(self, source: str, problem: str):
-        super().__init__(f"{source}: {problem}")
-        self.source = source
-        self.problem = problem
 
 
 class GeometryError(BallscanError, ValueError):

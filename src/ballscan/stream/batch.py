@@ -42,13 +42,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from ..pipeline.recipe import Recipe
-
 from ..errors import BallscanError
 from ..outputs import OutputLock, check_not_symlink
 from ..parallel import TaskExecutor
 from ..pipeline.report import CSV_COLUMNS, csv_row
+
+if TYPE_CHECKING:
+    from ..pipeline.recipe import Recipe
 
 __all__ = ["COLUMNS", "BatchSummary", "InputResult", "find_inputs", "camera_beside", "load_estimator", "measure_input", "run_batch"]
 
@@ -236,27 +236,19 @@ def _check_csv(out_csv: Path) -> _CsvState:
     return _CsvState(size, frozenset(src for _, src in starts), tuple(dict.fromkeys(dropped)))
 
 
-def _sidecar_lines(side: Path, out_csv: Path) -> list[str]:
-    """The lines of ``side`` after its first, if it belongs to this very CSV (its first line names the CSV's inode)."""
+def _sidecar(side: Path, out_csv: Path) -> tuple[set[str], str | None]:
+    """The inputs without balls that ``side`` lists and the recipe it records (its changes as sorted JSON; None where it has none).
+
+    Empty and None unless ``side`` belongs to this very CSV (its first line
+    names the CSV's inode).
+    """
     if not side.is_file() or not out_csv.is_file():
-        return []
+        return set(), None
     lines = side.read_text(errors="replace").splitlines()
     if not lines or lines[0] != f"# csv inode {out_csv.stat().st_ino}":
-        return []
-    return lines[1:]
-
-
-def _sidecar_sources(side: Path, out_csv: Path) -> set[str]:
-    """Inputs without balls listed in ``side``, if it belongs to this very CSV."""
-    return {s for s in _sidecar_lines(side, out_csv) if s and not s.startswith("# ")}
-
-
-def _sidecar_recipe(side: Path, out_csv: Path) -> str | None:
-    """The recipe (its changes as sorted JSON) that the CSV's rows were measured with, where ``side`` says it."""
-    for s in _sidecar_lines(side, out_csv):
-        if s.startswith("# recipe "):
-            return s[len("# recipe "):]
-    return None
+        return set(), None
+    recipe = next((s[len("# recipe "):] for s in lines[1:] if s.startswith("# recipe ")), None)
+    return {s for s in lines[1:] if s and not s.startswith("# ")}, recipe
 
 
 def _append(fd: int, data: bytes) -> None:
@@ -344,11 +336,12 @@ def run_batch(
     out.parent.mkdir(parents=True, exist_ok=True)
     side = out.with_name(out.name + ".done")
     check_not_symlink(side)
-    used = json.dumps((recipe or Recipe()).changes(), sort_keys=True)
+    recipe = recipe or Recipe()
+    used = json.dumps(recipe.changes(), sort_keys=True)
     with OutputLock(out.with_name(out.name + ".lock"), str(out)):
         state = _check_csv(out)
-        earlier = _sidecar_recipe(side, out)
-        if earlier is not None and earlier != used and (state.sources or _sidecar_sources(side, out)):
+        no_ball_sources, earlier = _sidecar(side, out)
+        if earlier is not None and earlier != used and (state.sources or no_ball_sources):
             # a restart with other settings would mix two estimators' rows in one CSV
             raise BallscanError(f"{out}: measured with the recipe {earlier}, not {used}: give that recipe, or another --out")
         repairs = []
@@ -357,7 +350,7 @@ def run_batch(
                 fh.truncate(state.size)
                 os.fsync(fh.fileno())
             repairs.append(f"{out}: dropped a partial last row; measuring again: {', '.join(state.dropped) or 'its input'}")
-        done = set(state.sources) | _sidecar_sources(side, out)
+        done = set(state.sources) | no_ball_sources
         todo = [str(p) for p in files if str(p) not in done]
         fd = os.open(out, os.O_WRONLY | os.O_APPEND | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0), 0o644)
         try:
@@ -387,7 +380,7 @@ def load_estimator() -> None:
     preload_estimator(stream_kernels=False)
 
 
-def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, recipe: "Recipe | None", dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
+def _run(todo: list[str], fd: int, side: Path, *, camera: str | None, radius_m: float, jobs: int, scheduler: str | None, recipe: "Recipe", dtype: str, progress: bool, background: str) -> tuple[int, int, list[tuple[str, str]]]:
     """Measure ``todo`` on the executor, appending each input's rows to the CSV's ``fd`` in one write.
 
     With local workers allowed (``jobs`` other than 1, no ``scheduler``),
