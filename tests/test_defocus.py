@@ -48,6 +48,40 @@ def test_nodes_integrate_the_semicircles_moments(n):
     assert [list(v) for v in semicircle_nodes(0.0, n)] == [[0.0], [1.0]]
 
 
+# ------------------------------------------------------------------ the edges' least squares
+def _edge_squares_numpy(point, kernel, below, fraction, y, w):
+    """The kernel's result as whole-array numpy: every row convolved (np.convolve, centred), every shift's level and squares."""
+    k = kernel.size
+    c = (k - 1) // 2
+    full = np.array([np.convolve(row, kernel) for row in point])
+    model = full[:, c:c + point.shape[1]]
+    if k % 2 == 0:
+        model = 0.5 * (model + full[:, c + 1:c + 1 + point.shape[1]])
+    e = np.arange(point.shape[0])[:, None, None]
+    m = model[e, below] + (model[e, below + 1] - model[e, below]) * fraction
+    y, w = y[:, None], w[:, None]
+    level = (m * w * y).sum(-1) / (m * w * m).sum(-1)
+    return (w * (y - level[..., None] * m) ** 2).sum(-1).min(axis=1)
+
+
+@pytest.mark.parametrize("n_kernel", [1, 6, 11, 40])
+def test_edge_squares_are_the_whole_array_formulation(n_kernel):
+    from ballscan.measure._defocus_kernels import edge_squares
+
+    rng = np.random.default_rng(n_kernel)
+    n_edge, n_grid, n_shift, n_pix = 7, 120, 5, 11
+    point = np.cumsum(rng.random((n_edge, n_grid)), axis=1) / n_grid
+    kernel = rng.random(n_kernel)
+    kernel /= kernel.sum()
+    below = rng.integers(0, n_grid - 1, (n_edge, n_shift, n_pix))
+    below[0, 0, 0] = n_grid - 2  # the last pair of samples, where the convolution meets the row's end
+    fraction = rng.random((n_edge, n_shift, n_pix))
+    y = rng.random((n_edge, n_pix))
+    w = rng.random((n_edge, n_pix)) * (rng.random((n_edge, n_pix)) > 0.2)
+    got = edge_squares(point, kernel, below, fraction, y, w)
+    assert np.allclose(got, _edge_squares_numpy(point, kernel, below, fraction, y, w), rtol=1e-12, atol=1e-15)
+
+
 def test_settings_are_checked():
     with pytest.raises(ValueError, match="step_px"):
         DefocusSettings(step_px=0.0)

@@ -28,8 +28,9 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal
 
 import numpy as np
-from numpy.lib.stride_tricks import sliding_window_view
 
+from ..compiled import as_arg
+from ._defocus_kernels import edge_squares
 from .edges import EdgeMeasurements
 
 if TYPE_CHECKING:  # the shading module imports this one's kernel
@@ -200,49 +201,17 @@ def _edge_pixels(edges: EdgeMeasurements, rows: np.ndarray, sides: np.ndarray, a
 
 @dataclass(frozen=True)
 class _Lookup:
-    """Where each edge's pixels fall on the model's fine grid at each shift: flat indices of the sample below and the fraction towards the next (S, E, K)."""
+    """Where each edge's pixels fall on the model's fine grid at each shift: the sample below (its index in the edge's row) and the fraction towards the next (E, S, K)."""
 
-    index: np.ndarray
+    below: np.ndarray
     fraction: np.ndarray
 
 
 def _lookup(n_grid: int, grid0: float, step: float, offsets: np.ndarray, shifts: np.ndarray) -> _Lookup:
     """The data's pixel at offset ``o`` (inwards from the measured edge) is compared with the model at ``o + shift`` (grid ``grid0 + step * f``)."""
-    x = (offsets[None] + shifts[:, None, None] - grid0) / step
-    i0 = np.clip(np.floor(x).astype(int), 0, n_grid - 2)
-    rows = np.arange(offsets.shape[0])[None, :, None] * n_grid
-    return _Lookup(rows + i0, np.clip(x - i0, 0.0, 1.0))
-
-
-def _profile_sse(model: np.ndarray, at: _Lookup, y: np.ndarray, w: np.ndarray) -> np.ndarray:
-    """Each edge's least weighted squares over its shifts, its level fitted at each: (E,).
-
-    ``model`` (E, F) is the pixel-averaged model on the fine grid of
-    :func:`_lookup`, ``y`` and ``w`` (E, K) the pixels' values and weights.
-    """
-    flat = model.ravel()
-    m = flat[at.index] + (flat[at.index + 1] - flat[at.index]) * at.fraction
-    mw = m * w
-    level = np.einsum("sek,ek->se", mw, y) / np.maximum(np.einsum("sek,sek->se", mw, m), 1e-300)
-    r = y - level[..., None] * m
-    return np.einsum("ek,sek->se", w, r * r).min(axis=0)
-
-
-def _centred_convolution(rows: np.ndarray, kernel: np.ndarray) -> np.ndarray:
-    """Each row convolved with ``kernel``, centred on its middle (zeros beyond the rows' ends); an even kernel's centre, between two samples, by their mean.
-
-    A sliding window's dot product (exact; on a ball's 48 edges of 240
-    samples 0.2-0.5 ms for the kernels of 0-4 px blur circles, as long as
-    numpy's FFT of the same rows).
-    """
-    n, k = rows.shape[1], kernel.size
-    padded = np.pad(rows, ((0, 0), (k - 1, k - 1)))
-    full = sliding_window_view(padded, k, axis=1) @ kernel[::-1]
-    c = (k - 1) // 2
-    out = full[:, c:c + n]
-    if k % 2 == 0:
-        out = 0.5 * (out + full[:, c + 1:c + 1 + n])
-    return out
+    x = (offsets[:, None, :] + shifts[None, :, None] - grid0) / step
+    i0 = np.clip(np.floor(x).astype(np.int64), 0, n_grid - 2)
+    return _Lookup(i0, np.clip(x - i0, 0.0, 1.0))
 
 
 def _parabola_min(d: np.ndarray, f: np.ndarray) -> float:
@@ -316,10 +285,11 @@ def estimate_defocus(limb: "LimbProfile", edges: EdgeMeasurements, settings: Def
     at_grid = _lookup(grid.size, grid[0], step, offsets, np.arange(-s.max_shift_px, s.max_shift_px + 1e-9, 0.1))
     diameters = np.arange(0.0, s.max_diameter_px + 1e-9, s.step_px)
     pixel = np.ones(s.samples_per_px) / s.samples_per_px
+    point, y, w = as_arg(point), as_arg(y), as_arg(w)
     per_edge, total = [], []
     for d in diameters:
         # the model blurred by the circle and averaged over the pixel's width
-        per_edge.append(_profile_sse(_centred_convolution(point, np.convolve(blur_kernel(d, step), pixel)), at_grid, y, w))
+        per_edge.append(edge_squares(point, np.convolve(blur_kernel(d, step), pixel), at_grid.below, at_grid.fraction, y, w))
         total.append(per_edge[-1].sum())
         if len(total) >= 3 and total[-1] > total[-2] > min(total):
             # past the minimum (the squares rise on both of its sides): the larger blurs fit worse still

@@ -31,6 +31,7 @@ KERNEL_MODULES = (
     "ballscan.measure._edge_kernels",
     "ballscan.measure._shading_kernels",
     "ballscan.measure._flatfield_kernels",
+    "ballscan.measure._defocus_kernels",
 )
 
 _warm = False
