@@ -431,3 +431,22 @@ def test_the_score_of_vx_compares_its_magnitude_with_its_sigma():
     # the crossing direction's sign aside: |10.02| against |-10| over its sigma 0.01
     assert row["z_vx"] == pytest.approx(2.0)
     assert score.compare({**est, "velocity_sigma_mps": [None, 0.1, 1.0]}, truth)["z_vx"] is None
+
+
+def test_the_speed_errors_vx_part_and_the_fits_residual_are_kept_and_tabulated():
+    truth = {"speed_mps": math.hypot(10.0, 1.0), "velocity_mps": [-10.0, 1.0, 0.0], "t_c_s": 0.0, "direction_deg": {"psi_y": 0.0, "psi_z": 0.0}}
+    est = {"speed_mps": 10.1, "speed_sigma_mps": 0.1, "velocity_mps": [10.02, -1.0, 0.5], "velocity_sigma_mps": [0.01, 0.1, 1.0],
+           "direction_deg": [0.0, 0.0], "direction_sigma_deg": [1.0, 1.0], "residual_rms_px": 0.07}
+    row = score.compare(est, truth)
+    # |V.x| 0.02 m/s high moves |V| = sqrt(101) by 0.02 * 10 / sqrt(101) to first order: relative 0.2 / 101
+    assert row["speed_err_vx"] == pytest.approx(0.2 / 101) and row["residual_rms_px"] == 0.07
+    rows = []
+    for k, (z, zx, res) in enumerate([(2.0, 0.5, 0.02), (4.0, 0.1, 0.07), (6.0, 0.3, 0.2)]):
+        fit = {"measured": True, "speed_err": 0.01, "z_cr": z, "z_cr_vx": zx, "residual_rms_px": res, "flags": []}
+        rows.append({"scene": f"pv{k:04d}", "kind": "plain", "conditions": [], "cut": "none", "lines": 100.0, "vz_share": 0.0,
+                     "fit": fit, "paper": {"measured": False}})
+    assert score.vx_part_lines(rows)[1] == "err / CR σ median (fit, 3 balls): 4.00; of the speed error's first-order part from |V.x| alone: 0.30"
+    table = score.table(rows)
+    for group, z in (("fit residual < 0.05 px", "2.00"), ("fit residual 0.05-0.1 px", "4.00"), ("fit residual >= 0.1 px", "6.00")):
+        line = next(x for x in table if x.startswith(f"| {group} |"))
+        assert line.split(" | ")[1] == "1" and line.rstrip(" |").endswith(z)

@@ -1,6 +1,7 @@
 """Edge bias on the POV-Ray set: each measured edge against the truth's projected limb, line by line.
 
     python benchmarks/povray_set/edge_bias.py [--scenes DIR] [--split tune] [--clean] [--per-line] NAME [NAME ...]
+    python benchmarks/povray_set/edge_bias.py [--split tune] [--clean] --limb-levels
 
 For each scene (its first true ball) the default estimator runs in-process
 (``estimate_image``); the edges its reported fit took
@@ -19,6 +20,14 @@ error in transverse speeds, and the same fit's V.z error started from the
 truth on the same edges.  ``--clean`` measures the scene's noise-free
 render (``scenes/clean/``, same detection) instead; ``--per-line`` prints
 every line's offsets.  Tuning half only unless ``--split all``.
+
+``--limb-levels`` (no names: every uncut scene of the split) bins the
+offsets of all those edges by the shading law's brightness half a pixel
+inside the true limb, as a fraction of the ball's contrast (the law fitted
+on the ball's interior at the truth's motion,
+``measure.shading.ball_limb``): where a side lit at grazing incidence has
+about the background's brightness, its window finds the terminator
+inside the limb instead.
 """
 
 from __future__ import annotations
@@ -126,14 +135,78 @@ def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
             f"{f(ez)} | {f((vz_t - v[2]) / vt)} |")
 
 
+#: Bins of the limb's brightness (fraction of the ball's contrast) for ``--limb-levels``.
+LEVEL_BINS = (-math.inf, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, math.inf)
+
+
+def limb_level_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, float]]:
+    """(limb brightness half a pixel inside, inward offset px) of each fitted narrow or wide edge of the scene's first ball."""
+    from ballscan.geometry.camera import line_times
+    from ballscan.measure.detection import detect
+    from ballscan.measure.shading import ball_limb
+    from ballscan.pipeline.estimate import estimate_image
+    from ballscan.pipeline.recipe import Recipe
+    from ballscan.pipeline.stages import shading_background
+
+    truth, cam, img = load(scenes, name, clean)
+    tb = (truth["balls"] if "balls" in truth else [truth])[0]
+    found = [b for b in estimate_image(img, cam, tb["radius_m"]).balls if b.t_c_s is not None and b.fitted_edges is not None]
+    if not found:
+        return []
+    b = min(found, key=lambda e: abs(e.t_c_s - tb["t_c_s"]))
+    m = truth_motion(tb)
+    recipe = Recipe()
+    bg = shading_background(img, detect(img), recipe)
+    t = line_times(cam, img.data.shape[0])
+    limb = ball_limb(cam, m, img.data, b.fitted_edges, t, bg, level_samples=recipe.level_samples)
+    if limb is None:
+        return []
+    o = offsets(b.fitted_edges, cam, m)
+    out = []
+    for side, sg in (("left", 1.0), ("right", -1.0)):
+        ok = np.isfinite(o[side])
+        lines = o["lines"][ok]
+        level = limb.surface(lines, np.full(lines.size, sg), np.full((lines.size, 1), 0.5))[:, 0]
+        out += list(zip(level.tolist(), o[side][ok].tolist()))
+    return out
+
+
+def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
+    """The inward offsets of every uncut ball's fitted edges, binned by the limb's brightness (``--limb-levels``)."""
+    rows, balls = [], {}
+    for p in sorted(scenes.glob("pv*.truth.json")):
+        t = json.loads(p.read_text())
+        if t["cut"] != "none" or (split == "tune" and t["split"] != "tune"):
+            continue
+        got = limb_level_rows(scenes, t["scene"], clean)
+        rows += [(lv, d, t["scene"]) for lv, d in got]
+    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges",
+           "| limb brightness / contrast | edges | balls | median offset px | mean abs offset px | 90 % abs offset px |", "|---|---|---|---|---|---|"]
+    lv = np.array([r[0] for r in rows])
+    d = np.array([r[1] for r in rows])
+    for lo, hi in zip(LEVEL_BINS[:-1], LEVEL_BINS[1:]):
+        sel = (lv >= lo) & (lv < hi)
+        if sel.any():
+            names = {r[2] for r, s in zip(rows, sel) if s}
+            out.append(f"| {lo:.2f} - {hi:.2f} | {int(sel.sum())} | {len(names)} | {np.median(d[sel]):+.3f} | "
+                       f"{np.mean(np.abs(d[sel])):.3f} | {np.percentile(np.abs(d[sel]), 90):.3f} |")
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("names", nargs="+")
+    ap.add_argument("names", nargs="*")
     ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
     ap.add_argument("--split", choices=("tune", "all"), default="tune")
     ap.add_argument("--clean", action="store_true")
     ap.add_argument("--per-line", action="store_true")
+    ap.add_argument("--limb-levels", action="store_true", help="every uncut ball's edge offsets binned by the limb's brightness")
     a = ap.parse_args(argv)
+    if a.limb_levels:
+        print("\n".join(limb_level_table(a.scenes, a.split, a.clean)))
+        return 0
+    if not a.names:
+        ap.error("name at least one scene, or --limb-levels")
     print("| scene | kind | fit path / edges | lines with both edges | median offset L / R px (inwards) | "
           "trend over the passage L / R px | fit V.z error / V_t | V.z error / V_t, fit from the truth |")
     print("|" + "---|" * 8)

@@ -107,6 +107,9 @@ def compare(est: dict | None, tb: dict) -> dict:
     # |vx|: the crossing direction's sign aside, what the line rate and the ball's passage fix
     ok_vx = ev is not None and es is not None and ev[0] is not None and es[0]
     row["z_vx"] = abs(abs(ev[0]) - abs(v[0])) / es[0] if ok_vx else None
+    # the speed error's first-order part from |vx| alone (relative): what the passage's duration fixes
+    row["speed_err_vx"] = (abs(ev[0]) - abs(v[0])) * abs(v[0]) / s_true**2 if ev is not None and ev[0] is not None else None
+    row["residual_rms_px"] = est.get("residual_rms_px")
     sig = est.get("speed_sigma_mps")
     row["z_speed"] = abs(est["speed_mps"] - s_true) / sig if sig else None
     try:
@@ -174,6 +177,8 @@ def score_scene(ballscan: str, scenes: Path, name: str, recipe: Path | None = No
             row[m] = r
         if row["fit"].get("measured") and row["cr_speed_sigma"]:
             row["fit"]["z_cr"] = abs(row["fit"]["speed_err"]) * tb["speed_mps"] / row["cr_speed_sigma"]
+            if row["fit"].get("speed_err_vx") is not None:
+                row["fit"]["z_cr_vx"] = abs(row["fit"]["speed_err_vx"]) * tb["speed_mps"] / row["cr_speed_sigma"]
         rows.append(row)
     return rows
 
@@ -235,6 +240,9 @@ def table(rows: list[dict]) -> list[str]:
         groups.append((f"kind {k}", [r for r in rows if r["kind"] == k]))
     for c in sorted({c for r in rows for c in r["conditions"]}):
         groups.append((c, [r for r in rows if c in r["conditions"]]))
+    # how well the fit's model matched the ball: its edges' residual RMS (rows scored before it was kept have none)
+    for name, lo, hi in (("fit residual < 0.05 px", 0.0, 0.05), ("fit residual 0.05-0.1 px", 0.05, 0.1), ("fit residual >= 0.1 px", 0.1, math.inf)):
+        groups.append((name, [r for r in rows if r["fit"].get("residual_rms_px") is not None and lo <= r["fit"]["residual_rms_px"] < hi]))
     head = ["group", "balls", "measured", "speed err median %", "worst %", "transverse speed err median %",
             "direction err median deg", "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %",
             "V.z 1σ / 3σ % (fit)", "|V.x| 1σ / 3σ % (fit)", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
@@ -243,6 +251,15 @@ def table(rows: list[dict]) -> list[str]:
         if g:
             out.append("| " + " | ".join([name] + summarise(g)) + " |")
     return out
+
+
+def vx_part_lines(rows: list[dict]) -> list[str]:
+    """The fit's err / CR against that of its ``|V.x|`` part alone: what is left is along the line of sight."""
+    both = [r["fit"] for r in rows if r["fit"].get("z_cr") is not None and r["fit"].get("z_cr_vx") is not None]
+    if not both:
+        return []
+    return ["", f"err / CR σ median (fit, {len(both)} balls): {_fmt(_med([f['z_cr'] for f in both]), '.2f')}; "
+            f"of the speed error's first-order part from |V.x| alone: {_fmt(_med([f['z_cr_vx'] for f in both]), '.2f')}"]
 
 
 def transverse_lines(rows: list[dict]) -> list[str]:
@@ -343,7 +360,7 @@ def main(argv: list[str] | None = None) -> int:
             a.save.write_text(json.dumps(rows, indent=1) + "\n")
     print(f"{len({r['scene'] for r in rows})} scenes, {len(rows)} balls ({a.split} half)")
     print("\n".join(table(rows)))
-    print("\n".join(transverse_lines(rows)))
+    print("\n".join(vx_part_lines(rows) + transverse_lines(rows)))
     failed = [f"{r['scene']} {m}: {r[m]['error'] or 'not measured'} flags {','.join(r[m].get('flags', []))}"
               for r in rows for m in METHODS if not r[m].get("measured")]
     if failed:
