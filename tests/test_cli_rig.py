@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -154,3 +155,34 @@ def test_watch_rig_alias_refuses_what_does_not_fit(tmp_path, capsys, monkeypatch
     assert code == 2 and out == ""
     assert all(w in err for w in words), err
     assert len(err.strip().splitlines()) == 1
+
+
+def _strict(text: str):
+    """JSON that holds no NaN or Infinity (which JSON does not have)."""
+    def refuse(name):
+        raise ValueError(f"not JSON: {name}")
+    return json.loads(text, parse_constant=refuse)
+
+
+def test_a_joint_fit_with_an_undetermined_component_reports_it_undetermined(tmp_path, capsys):
+    # a 0.053 m/s ball seen by two POV-Ray views 90 degrees apart whose joint fit leaves x and V.x
+    # undetermined (the solver stops near 1e159 m/s along that flat direction): null, not a number
+    from pathlib import Path
+
+    rig_dir = Path(__file__).resolve().parents[1] / "benchmarks" / "povray_set" / "rig"
+    rig = tmp_path / "pair.rig.toml"
+    rig.write_text("".join(f'[[camera]]\nname = "{v}"\nclock_offset_s = 0.0\nfile = "{rig_dir / f"pv1069_{v}.camera.toml"}"\n\n' for v in ("a000", "a090")))
+    radius = json.loads((rig_dir / "pv1069_a000.truth.json").read_text())["radius_m"]
+    images = [rig_dir / f"pv1069_{v}.png" for v in ("a000", "a090")]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # no overflow on the way either
+        code, out, err = run(capsys, "estimate", "--rig", rig, *images, "--radius", radius, "--json")
+        assert code == 0, err
+        table = run(capsys, "estimate", "--rig", rig, *images, "--radius", radius)
+    (b,) = _strict(out)["balls"]
+    assert "degenerate" in b["flags"] and "vx_mps" in b["undetermined"]
+    assert b["velocity_mps"][0] is None and b["speed_mps"] is None and b["elevation_deg"] is None and b["azimuth_deg"] is None
+    assert all(v is not None and abs(v) < 1.0 for v in b["velocity_mps"][1:])
+    code, out, err = table
+    assert code == 0 and "inf" not in out, err
+    assert "undetermined" in out.splitlines()[1] and "(x_m, vx_mps)" in out

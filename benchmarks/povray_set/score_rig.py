@@ -150,7 +150,8 @@ def score_pair(ballscan: str, scenes: Path, name: str, angle: int, work: Path) -
     if out is None:
         return {"measured": False, "error": err}
     b = nearest(out["balls"], truth["t_c_s"])
-    if b is None or b.get("velocity_mps") is None:
+    if b is None or b.get("velocity_mps") is None or None in b["velocity_mps"]:
+        # a velocity component the joint fit leaves undetermined is null: no direction, no speed
         return {"measured": False, "error": "", "flags": [] if b is None else b.get("flags", []), "n_found": len(out["balls"])}
     cov = b["covariance"]["matrix"]
     cov_v = np.array([[math.nan if x is None else x for x in r[4:7]] for r in cov[4:7]], float)

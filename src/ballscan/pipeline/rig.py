@@ -27,7 +27,7 @@ from ..measure.shading import shade_profile
 from ..geometry.rig import Rig, RigCamera, WorldMotion, camera_params, plane_crossing, viewing_plane, world_crossing
 from ..solve.constraint import Constraint
 from ..solve.derived import WORLD_COVARIANCE_PARAMETERS, derive, launch_angles, world_covariance
-from ..solve.joint import JointCamera, JointResult, fit_joint
+from ..solve.joint import STATE_NAMES, JointCamera, JointResult, fit_joint
 from ..solve.settings import FitSettings
 from .estimate import estimate_image
 from .recipe import Recipe
@@ -51,6 +51,11 @@ __all__ = [
 
 #: Flags of a rig's ball (docs/geometry.md), beside the cameras' own.
 RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate")
+
+
+def _finite(v: float) -> float | None:
+    """``v`` as a float, None where it is not finite (JSON's ``null``: undetermined)."""
+    return float(v) if np.isfinite(v) else None
 
 
 def _list(a) -> list | None:
@@ -94,15 +99,25 @@ class RigBall:
     def t_c_s(self) -> float:
         return math.nan if self.motion is None else self.motion.t_ref_s
 
+    @property
+    def undetermined(self) -> tuple[str, ...]:
+        """The joint fit's undetermined components (:data:`ballscan.solve.joint.STATE_NAMES`), () without one."""
+        return () if self.joint is None else tuple(self.joint.undetermined)
+
+    @property
+    def velocity_determined(self) -> bool:
+        """Whether every velocity component is determined (the speed and the angles need all three)."""
+        return self.motion is not None and not any(u.startswith("v") for u in self.undetermined)
+
     def direction(self) -> tuple[float, float, float, float]:
-        """Elevation, its sigma, azimuth, its sigma (degrees; :func:`ballscan.solve.derived.launch_angles`)."""
-        if self.motion is None:
+        """Elevation, its sigma, azimuth, its sigma (degrees; :func:`ballscan.solve.derived.launch_angles`); NaN where a velocity component is undetermined."""
+        if not self.velocity_determined:
             return (math.nan,) * 4
         return launch_angles(np.asarray(self.motion.velocity_mps), self.covariance[4:, 4:])
 
     def speed(self) -> tuple[float, float]:
-        """Speed and its 1-sigma (m/s, first order)."""
-        if self.motion is None:
+        """Speed and its 1-sigma (m/s, first order); NaN where a velocity component is undetermined."""
+        if not self.velocity_determined:
             return math.nan, math.nan
         V = np.asarray(self.motion.velocity_mps)
         sp = float(np.linalg.norm(V))
@@ -118,10 +133,14 @@ class RigBall:
             m, s = self.motion, self.sigmas
             elev, elev_s, azim, azim_s = self.direction()
             sp, sp_s = self.speed()
+            # an undetermined component's value is wherever the solver stopped along its flat direction
+            known = np.array([name not in self.undetermined for name in STATE_NAMES])
+            position = np.where(known[:3], np.asarray(m.position_m, dtype=float), np.nan)
+            velocity = np.where(known[3:], np.asarray(m.velocity_mps, dtype=float), np.nan)
             d.update(
-                radius_m=m.radius_m, t_c_s=m.t_ref_s, position_m=list(m.position_m), velocity_mps=list(m.velocity_mps), speed_mps=sp,
-                t_c_sigma_s=float(s[0]), position_sigma_m=_list(s[1:4]), velocity_sigma_mps=_list(s[4:7]), speed_sigma_mps=sp_s,
-                elevation_deg=elev, elevation_sigma_deg=elev_s, azimuth_deg=azim, azimuth_sigma_deg=azim_s,
+                radius_m=m.radius_m, t_c_s=m.t_ref_s, position_m=_list(position), velocity_mps=_list(velocity), speed_mps=_finite(sp),
+                t_c_sigma_s=_finite(s[0]), position_sigma_m=_list(s[1:4]), velocity_sigma_mps=_list(s[4:7]), speed_sigma_mps=_finite(sp_s),
+                elevation_deg=_finite(elev), elevation_sigma_deg=_finite(elev_s), azimuth_deg=_finite(azim), azimuth_sigma_deg=_finite(azim_s),
                 covariance={"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": [_list(r) for r in self.covariance]},
             )
         j = self.joint
