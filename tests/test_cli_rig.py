@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -167,8 +168,6 @@ def _strict(text: str):
 def test_a_joint_fit_with_an_undetermined_component_reports_it_undetermined(tmp_path, capsys):
     # a 0.053 m/s ball seen by two POV-Ray views 90 degrees apart whose joint fit leaves x and V.x
     # undetermined (the solver stops near 1e159 m/s along that flat direction): null, not a number
-    from pathlib import Path
-
     rig_dir = Path(__file__).resolve().parents[1] / "benchmarks" / "povray_set" / "rig"
     rig = tmp_path / "pair.rig.toml"
     rig.write_text("".join(f'[[camera]]\nname = "{v}"\nclock_offset_s = 0.0\nfile = "{rig_dir / f"pv1069_{v}.camera.toml"}"\n\n' for v in ("a000", "a090")))
@@ -182,7 +181,9 @@ def test_a_joint_fit_with_an_undetermined_component_reports_it_undetermined(tmp_
     (b,) = _strict(out)["balls"]
     assert "degenerate" in b["flags"] and "vx_mps" in b["undetermined"]
     assert b["velocity_mps"][0] is None and b["speed_mps"] is None and b["elevation_deg"] is None and b["azimuth_deg"] is None
+    # the crossing of the reference plane (world x) moves with x and V.x: undetermined as well
+    assert b["t_c_s"] is None and b["t_c_sigma_s"] is None and all(c["t_c_s"] is None for c in b["per_camera"].values())
     assert all(v is not None and abs(v) < 1.0 for v in b["velocity_mps"][1:])
     code, out, err = table
     assert code == 0 and "inf" not in out, err
-    assert "undetermined" in out.splitlines()[1] and "(x_m, vx_mps)" in out
+    assert out.splitlines()[1].split()[2] == "undetermined" and "(x_m, vx_mps)" in out

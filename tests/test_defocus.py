@@ -75,6 +75,7 @@ def test_edge_squares_are_the_whole_array_formulation(n_kernel):
     kernel /= kernel.sum()
     below = rng.integers(0, n_grid - 1, (n_edge, n_shift, n_pix))
     below[0, 0, 0] = n_grid - 2  # the last pair of samples, where the convolution meets the row's end
+    below[1, 0, 0] = 0  # and the first pair, where it meets its start
     fraction = rng.random((n_edge, n_shift, n_pix))
     y = rng.random((n_edge, n_pix))
     w = rng.random((n_edge, n_pix)) * (rng.random((n_edge, n_pix)) > 0.2)

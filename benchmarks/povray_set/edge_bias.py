@@ -180,10 +180,10 @@ def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
             continue
         got = limb_level_rows(scenes, t["scene"], clean)
         rows += [(lv, d, t["scene"]) for lv, d in got]
-    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges",
-           "| limb brightness / contrast | edges | balls | median offset px | mean abs offset px | 90 % abs offset px |", "|---|---|---|---|---|---|"]
     lv = np.array([r[0] for r in rows])
     d = np.array([r[1] for r in rows])
+    out = [f"{len({r[2] for r in rows})} balls, {int(np.isfinite(lv).sum())} edges ({int((~np.isfinite(lv)).sum())} more where the law does not see the ball)",
+           "| limb brightness / contrast | edges | balls | median offset px | mean abs offset px | 90 % abs offset px |", "|---|---|---|---|---|---|"]
     for lo, hi in zip(LEVEL_BINS[:-1], LEVEL_BINS[1:]):
         sel = (lv >= lo) & (lv < hi)
         if sel.any():

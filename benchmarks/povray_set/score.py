@@ -240,7 +240,7 @@ def table(rows: list[dict]) -> list[str]:
         groups.append((f"kind {k}", [r for r in rows if r["kind"] == k]))
     for c in sorted({c for r in rows for c in r["conditions"]}):
         groups.append((c, [r for r in rows if c in r["conditions"]]))
-    # how well the fit's model matched the ball: its edges' residual RMS (rows scored before it was kept have none)
+    # how well the fit's model matched the ball: its edges' residual RMS (a measured ball's only; rows scored before it was kept have none)
     for name, lo, hi in (("fit residual < 0.05 px", 0.0, 0.05), ("fit residual 0.05-0.1 px", 0.05, 0.1), ("fit residual >= 0.1 px", 0.1, math.inf)):
         groups.append((name, [r for r in rows if r["fit"].get("residual_rms_px") is not None and lo <= r["fit"]["residual_rms_px"] < hi]))
     head = ["group", "balls", "measured", "speed err median %", "worst %", "transverse speed err median %",

@@ -99,13 +99,14 @@ def estimate_rig_command(images: list[Path], rig: Optional[Path], camera: Option
         if b.motion is None:
             typer.echo(f"{k:>4} {'+'.join(b.cameras):<16} {'undetermined':>12}  {' '.join(b.flags)}")
             continue
+        t_c = f"{b.t_c_s:12.6f}" if b.t_c_determined else f"{'undetermined':>12}"
+        unknown = f" ({', '.join(b.undetermined)})" if b.undetermined else ""
         if b.velocity_determined:
             sp, sp_s = b.speed()
             el, el_s, az, az_s = b.direction()
-            typer.echo(f"{k:>4} {'+'.join(b.cameras):<16} {b.t_c_s:12.6f} {sp:10.3f} +- {sp_s:<7.3g} {el:8.3f} +- {el_s:<6.3g} {az:8.3f} +- {az_s:<6.3g}  {' '.join(b.flags)}")
+            typer.echo(f"{k:>4} {'+'.join(b.cameras):<16} {t_c} {sp:10.3f} +- {sp_s:<7.3g} {el:8.3f} +- {el_s:<6.3g} {az:8.3f} +- {az_s:<6.3g}  {' '.join(b.flags)}{unknown}")
         else:
-            typer.echo(f"{k:>4} {'+'.join(b.cameras):<16} {b.t_c_s:12.6f} {'undetermined':>20} {'undetermined':>18} {'undetermined':>18}  {' '.join(b.flags)}"
-                       f" ({', '.join(b.undetermined)})")
+            typer.echo(f"{k:>4} {'+'.join(b.cameras):<16} {t_c} {'undetermined':>20} {'undetermined':>18} {'undetermined':>18}  {' '.join(b.flags)}{unknown}")
         if b.joint is not None:
             for c in b.joint.cameras:
                 clock = f", clock offset {c.clock_offset_s:+.4g} +- {c.clock_offset_sigma_s:.2g} s" if c.clock_offset_sigma_s else ""

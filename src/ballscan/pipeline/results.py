@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from .recipe import Recipe
     from .stages import StageRecord
 
-__all__ = ["BallEstimate", "EstimateReport", "FLAGS"]
+__all__ = ["BallEstimate", "EstimateReport", "FLAGS", "jsonable"]
 
 #: The flag vocabulary of geometry.md.
 FLAGS = (
@@ -239,7 +239,7 @@ class BallEstimate:
         for k, v in self.extra.items():
             d.setdefault(k, v)
         # NaN (a sigma of a parameter the fit could not determine) is not JSON: null
-        return _jsonable(d)
+        return jsonable(d)
 
     def _world(self, der: Derived | None) -> dict[str, Any]:
         """The ``"world"`` object from :meth:`derived` of a camera with a pose (None: the motion is undetermined)."""
@@ -292,16 +292,16 @@ def _list(v) -> list[float | None] | None:
     return [float(x) if math.isfinite(x) else None for x in np.asarray(v, dtype=float).reshape(-1)]
 
 
-def _jsonable(v: Any) -> Any:
-    """JSON-ready value: arrays to lists, numpy scalars to Python, NaN/inf to null."""
+def jsonable(v: Any) -> Any:
+    """JSON-ready value: arrays to lists, numpy scalars to Python, NaN/inf to null (the results' and the rigs' JSON)."""
     if isinstance(v, np.ndarray):
-        return _jsonable(v.tolist())
-    if isinstance(v, (np.floating, np.integer)):
-        return _jsonable(v.item())
+        return jsonable(v.tolist())
+    if isinstance(v, (np.floating, np.integer, np.bool_)):
+        return jsonable(v.item())
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, dict):
-        return {k: _jsonable(x) for k, x in v.items()}
+        return {k: jsonable(x) for k, x in v.items()}
     if isinstance(v, (list, tuple)):
-        return [_jsonable(x) for x in v]
+        return [jsonable(x) for x in v]
     return v

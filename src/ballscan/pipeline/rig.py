@@ -31,7 +31,7 @@ from ..solve.joint import STATE_NAMES, JointCamera, JointResult, fit_joint
 from ..solve.settings import FitSettings
 from .estimate import estimate_image
 from .recipe import Recipe
-from .results import BallEstimate, EstimateReport
+from .results import BallEstimate, EstimateReport, jsonable
 
 __all__ = [
     "RIG_FLAGS",
@@ -51,17 +51,6 @@ __all__ = [
 
 #: Flags of a rig's ball (docs/geometry.md), beside the cameras' own.
 RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate")
-
-
-def _finite(v: float) -> float | None:
-    """``v`` as a float, None where it is not finite (JSON's ``null``: undetermined)."""
-    return float(v) if np.isfinite(v) else None
-
-
-def _list(a) -> list | None:
-    if a is None:
-        return None
-    return [None if not np.isfinite(v) else float(v) for v in np.asarray(a, dtype=float).ravel()]
 
 
 @dataclass(frozen=True)
@@ -107,7 +96,12 @@ class RigBall:
     @property
     def velocity_determined(self) -> bool:
         """Whether every velocity component is determined (the speed and the angles need all three)."""
-        return self.motion is not None and not any(u.startswith("v") for u in self.undetermined)
+        return self.motion is not None and not set(STATE_NAMES[3:]) & set(self.undetermined)
+
+    @property
+    def t_c_determined(self) -> bool:
+        """Whether the crossing time is determined (it moves with a component along the reference plane's normal)."""
+        return self.motion is not None and not (self.joint is not None and self.joint.t_c_undetermined)
 
     def direction(self) -> tuple[float, float, float, float]:
         """Elevation, its sigma, azimuth, its sigma (degrees; :func:`ballscan.solve.derived.launch_angles`); NaN where a velocity component is undetermined."""
@@ -137,30 +131,31 @@ class RigBall:
             known = np.array([name not in self.undetermined for name in STATE_NAMES])
             position = np.where(known[:3], np.asarray(m.position_m, dtype=float), np.nan)
             velocity = np.where(known[3:], np.asarray(m.velocity_mps, dtype=float), np.nan)
+            t_c = m.t_ref_s if self.t_c_determined else math.nan
             d.update(
-                radius_m=m.radius_m, t_c_s=m.t_ref_s, position_m=_list(position), velocity_mps=_list(velocity), speed_mps=_finite(sp),
-                t_c_sigma_s=_finite(s[0]), position_sigma_m=_list(s[1:4]), velocity_sigma_mps=_list(s[4:7]), speed_sigma_mps=_finite(sp_s),
-                elevation_deg=_finite(elev), elevation_sigma_deg=_finite(elev_s), azimuth_deg=_finite(azim), azimuth_sigma_deg=_finite(azim_s),
-                covariance={"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": [_list(r) for r in self.covariance]},
+                radius_m=m.radius_m, t_c_s=t_c, position_m=position, velocity_mps=velocity, speed_mps=sp,
+                t_c_sigma_s=s[0], position_sigma_m=s[1:4], velocity_sigma_mps=s[4:7], speed_sigma_mps=sp_s,
+                elevation_deg=elev, elevation_sigma_deg=elev_s, azimuth_deg=azim, azimuth_sigma_deg=azim_s,
+                covariance={"parameters": list(WORLD_COVARIANCE_PARAMETERS), "matrix": self.covariance},
             )
         j = self.joint
         if j is not None:
-            d["per_camera"] = {c.name: c.to_dict() for c in j.cameras}
+            d["per_camera"] = {c.name: {**c.to_dict(), **({} if self.t_c_determined else {"t_c_s": None})} for c in j.cameras}
             d["inconsistent_cameras"] = [c.name for c in j.cameras if not c.consistent]
             d["chi2_red"] = j.chi2_red
             d["undetermined"] = list(j.undetermined)
             if j.constraint is not None:
-                d["constraint"] = {**j.constraint.describe(), "residuals_sigma": _list(j.constraint_residuals)}
+                d["constraint"] = {**j.constraint.describe(), "residuals_sigma": j.constraint_residuals}
         d["own"] = {name: e.to_dict() for name, e in self.estimates.items()}
-        return d
+        return jsonable(d)
 
     def to_json(self, *, own: bool = True, indent: int | None = None) -> str:
         """:meth:`to_dict` as JSON; ``own=False`` keeps of the cameras' own estimates only their ``t_c_s`` (``own_t_c_s``: one line per ball in a stream)."""
         d = self.to_dict()
         if not own:
-            d["own_t_c_s"] = {n: e.t_c_s for n, e in self.estimates.items()}
+            d["own_t_c_s"] = jsonable({n: e.t_c_s for n, e in self.estimates.items()})
             del d["own"]
-        return json.dumps(d, indent=indent, default=_json_default)
+        return json.dumps(d, indent=indent, allow_nan=False)
 
 
 @dataclass(frozen=True)
@@ -180,15 +175,7 @@ class RigReport:
         }
 
     def to_json(self) -> str:
-        return json.dumps(self.to_dict(), indent=2, default=_json_default)
-
-
-def _json_default(o):
-    if isinstance(o, np.ndarray):
-        return _list(o) if o.ndim == 1 else [_list(r) for r in o]
-    if isinstance(o, (np.floating, np.integer, np.bool_)):
-        return o.item()
-    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+        return json.dumps(self.to_dict(), indent=2, allow_nan=False)
 
 
 # ----------------------------------------------------------------- the check

@@ -147,6 +147,10 @@ class JointResult:
     message : str
     undetermined : tuple of str
         Names of :data:`STATE_NAMES` the data cannot determine.
+    t_c_undetermined : bool
+        Whether the crossing time moves with one of them (a component
+        along the reference plane's normal): then it, and the cameras'
+        own crossings, are undetermined too.
     constraint : Constraint or None
     constraint_residuals : ndarray or None
         The constraint's whitened residuals at the solution.
@@ -163,6 +167,7 @@ class JointResult:
     converged: bool
     message: str
     undetermined: tuple[str, ...] = ()
+    t_c_undetermined: bool = False
     constraint: Constraint | None = None
     constraint_residuals: np.ndarray | None = field(default=None, repr=False)
     n_iterations: int = 0
@@ -390,6 +395,10 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         i = 1 + STATE_NAMES.index(name)
         cov7[i, :] = np.nan
         cov7[:, i] = np.nan
+    t_c_undetermined = _crossing_moves(Jw[0], undetermined)
+    if t_c_undetermined:
+        cov7[0, :] = np.nan
+        cov7[:, 0] = np.nan
     r = sol.residuals
     m = r.size
     dof = m - lay.n_params - sum(p.selections[0].n_groups for p in problem.problems)
@@ -404,8 +413,26 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         converged=sol.converged,
         message=sol.message,
         undetermined=undetermined,
+        t_c_undetermined=t_c_undetermined,
         constraint=constraint,
         constraint_residuals=None if constraint is None else r[m - constraint.n_residuals :],
         n_iterations=n_eval,
         run_time_s=time.perf_counter() - t0,
     )
+
+
+def _crossing_moves(dt_dstate: np.ndarray, undetermined: tuple[str, ...]) -> bool:
+    """Whether the crossing time depends on an undetermined state component.
+
+    ``dt_dstate`` is the crossing time's derivative by ``(P, V)`` (s/m,
+    s^2/m, :func:`ballscan.geometry.rig.world_crossing`); a component counts
+    where its derivative exceeds 1e-9 of the largest of its kind (position
+    or velocity): a pose's rounding leaves the plane's normal a few 1e-16
+    off an axis.
+    """
+    for name in undetermined:
+        k = STATE_NAMES.index(name)
+        kind = dt_dstate[:3] if k < 3 else dt_dstate[3:6]
+        if abs(dt_dstate[k]) > 1e-9 * float(np.max(np.abs(kind))):
+            return True
+    return False
