@@ -275,6 +275,20 @@ def test_balls_touching_in_time_flagged_overlap():
     assert all("overlap" in r.flags for r in det.regions)
 
 
+def test_a_ball_whose_inner_gap_reaches_its_outline_is_one_region():
+    # A bright ball crossed by a band at the backdrop's level (a seam, a dark
+    # patch or a shaded side) from its left limb to past its middle: the
+    # columns it crosses are in two runs, and a cut in time through the band
+    # would leave a cap, widest at the cut, not a second ball (POV-Ray
+    # pv0062, pv0117, pv0242, pv0286 were cut so).
+    img, _ = _disc((300, 200), (150, 100), (90, 45), 150.0)
+    img[96:116, 50:115] = 20.0
+    det = detect(_image(_noisy(img, 1.5, 12)))
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    assert "overlap" not in r.flags and r.line_stop - r.line_start >= 175
+
+
 def test_long_ball_with_a_ragged_edge_column_is_one_region():
     # A long ball (400 lines) whose widest column is covered by a fraction of
     # a pixel: its pixels cross the threshold on two stretches of lines far

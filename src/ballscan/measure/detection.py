@@ -705,8 +705,11 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[_RawRegion] | None:
     """Try to split a merged mask into two parts cleanly apart along one axis.
 
     Returns the two parts (their first line and column relative to the
-    box's, ``merged`` True) or None.
+    box's, ``merged`` True); an empty list where the only cuts found leave a
+    cap of one ball (:func:`_is_cap`: the mask is one ball with an inner
+    gap); None otherwise.
     """
+    capped = False
     closed = _close(m, r)
     for axis in (1, 0):  # first apart along the sensor (same time), then in time
         multi = _merged_runs(m, closed, axis)
@@ -732,6 +735,9 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[_RawRegion] | None:
             offs = ((0, 0), (cut, 0))
         if a.sum() < min_area or b.sum() < min_area:
             continue
+        if _is_cap(a, axis, at_end=True) or _is_cap(b, axis, at_end=False):
+            capped = True  # one ball whose inner gap (texture, a shaded side) reaches the cut
+            continue
         parts = []
         for (dl, dc), part in zip(offs, (a, b)):
             rows = np.flatnonzero(part.any(axis=1))
@@ -744,7 +750,36 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[_RawRegion] | None:
             parts.append(_RawRegion(int(dl + rows[0]), int(dc + cols[0]), crop, True))
         if parts:
             return parts
-    return None
+    return [] if capped else None
+
+
+#: A split part whose widest chord lies within this share of its length from the cut is a cap of a
+#: ball that goes on beyond the cut, not a ball of its own (:func:`_is_cap`).
+_CAP_SHARE = 0.25
+
+
+def _is_cap(part: np.ndarray, axis: int, at_end: bool) -> bool:
+    """Whether a part of a split mask widens towards the cut: a cap of one ball, not a second ball.
+
+    Two touching balls meet at a notch, and each part is widest about its
+    ball's middle, away from the cut (for two equal balls overlapping by
+    less than two thirds of a diameter, more than a quarter of the part's
+    length from it); a ball cut through an inner gap (a seam, a dark patch
+    or a shaded side that reaches its outline) leaves a part that is widest
+    at the cut or just beyond the gap.  ``axis`` is the split's (0: in time,
+    the part's chords per line; 1: along the sensor, per column),
+    ``at_end`` whether the cut lies after the part's last line (column)
+    rather than before its first.
+    """
+    lines = part if axis == 0 else part.T
+    rows = np.flatnonzero(lines.any(axis=1))
+    if rows.size < 2:
+        return False
+    width = np.array([np.ptp(np.flatnonzero(lines[i])) + 1 for i in rows])
+    # the widest chord nearest the cut, as a share of the part's length from the cut
+    widest = rows[np.flatnonzero(width == width.max())[-1 if at_end else 0]]
+    from_cut = (rows[-1] - widest) if at_end else (widest - rows[0])
+    return bool(from_cut <= _CAP_SHARE * (rows[-1] - rows[0]))
 
 
 def _group_components(
@@ -858,6 +893,7 @@ def _raw_regions(lab: np.ndarray, boxes: np.ndarray, sizes: np.ndarray, gap: int
             if parts:
                 out.extend(_RawRegion(l0 + q.line_start, c0 + q.col_start, q.mask, True) for q in parts)
                 continue
+            merged = parts is None  # [] : one ball, its inner gap reaching its outline
         out.append(_RawRegion(l0, c0, m, merged))
     return out
 
