@@ -755,7 +755,7 @@ def _split(m: np.ndarray, r: int, min_area: int) -> list[_RawRegion] | None:
 
 #: A split part whose widest chord lies within this share of its length from the cut is a cap of a
 #: ball that goes on beyond the cut, not a ball of its own (:func:`_is_cap`).
-_CAP_SHARE = 0.25
+_CAP_SHARE = 0.2
 
 
 def _is_cap(part: np.ndarray, axis: int, at_end: bool) -> bool:
@@ -763,7 +763,7 @@ def _is_cap(part: np.ndarray, axis: int, at_end: bool) -> bool:
 
     Two touching balls meet at a notch, and each part is widest about its
     ball's middle, away from the cut (for two equal balls overlapping by
-    less than two thirds of a diameter, more than a quarter of the part's
+    less than three quarters of a diameter, more than a fifth of the part's
     length from it); a ball cut through an inner gap (a seam, a dark patch
     or a shaded side that reaches its outline) leaves a part that is widest
     at the cut or just beyond the gap.  ``axis`` is the split's (0: in time,

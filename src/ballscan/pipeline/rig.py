@@ -100,8 +100,8 @@ class RigBall:
 
     @property
     def t_c_determined(self) -> bool:
-        """Whether the crossing time is determined (it moves with a component along the reference plane's normal)."""
-        return self.motion is not None and not (self.joint is not None and self.joint.t_c_undetermined)
+        """Whether the crossing time is determined (the joint fit leaves its covariance row NaN where it moves with an undetermined component)."""
+        return self.motion is not None and self.covariance is not None and bool(np.isfinite(self.covariance[0, 0]))
 
     def direction(self) -> tuple[float, float, float, float]:
         """Elevation, its sigma, azimuth, its sigma (degrees; :func:`ballscan.solve.derived.launch_angles`); NaN where a velocity component is undetermined."""

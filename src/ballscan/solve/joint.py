@@ -136,7 +136,9 @@ class JointResult:
     motion : WorldMotion
         The ball at its crossing of the reference camera's plane (rig clock).
     covariance : ndarray (7, 7)
-        Of ``(t_c, x, y, z, vx, vy, vz)`` (:data:`ballscan.solve.derived.WORLD_COVARIANCE_PARAMETERS`), world frame.
+        Of ``(t_c, x, y, z, vx, vy, vz)`` (:data:`ballscan.solve.derived.WORLD_COVARIANCE_PARAMETERS`), world frame;
+        NaN in the rows of the undetermined components, and in ``t_c``'s where
+        the crossing moves with one of them (one along the reference plane's normal).
     parameter_names : tuple of str
         The fitted parameters: :data:`STATE_NAMES`, ``clock_offset_s:NAME``, ``edge_bias_px:NAME``.
     parameter_covariance : ndarray
@@ -147,10 +149,6 @@ class JointResult:
     message : str
     undetermined : tuple of str
         Names of :data:`STATE_NAMES` the data cannot determine.
-    t_c_undetermined : bool
-        Whether the crossing time moves with one of them (a component
-        along the reference plane's normal): then it, and the cameras'
-        own crossings, are undetermined too.
     constraint : Constraint or None
     constraint_residuals : ndarray or None
         The constraint's whitened residuals at the solution.
@@ -167,7 +165,6 @@ class JointResult:
     converged: bool
     message: str
     undetermined: tuple[str, ...] = ()
-    t_c_undetermined: bool = False
     constraint: Constraint | None = None
     constraint_residuals: np.ndarray | None = field(default=None, repr=False)
     n_iterations: int = 0
@@ -395,8 +392,8 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         i = 1 + STATE_NAMES.index(name)
         cov7[i, :] = np.nan
         cov7[:, i] = np.nan
-    t_c_undetermined = _crossing_moves(Jw[0], undetermined)
-    if t_c_undetermined:
+    if _crossing_moves(Jw[0], undetermined):
+        # the crossing time moves with them too: its row is unknown
         cov7[0, :] = np.nan
         cov7[:, 0] = np.nan
     r = sol.residuals
@@ -413,7 +410,6 @@ def _joint_result(problem: JointProblem, sol, states, start: WorldMotion, constr
         converged=sol.converged,
         message=sol.message,
         undetermined=undetermined,
-        t_c_undetermined=t_c_undetermined,
         constraint=constraint,
         constraint_residuals=None if constraint is None else r[m - constraint.n_residuals :],
         n_iterations=n_eval,
