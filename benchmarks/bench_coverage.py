@@ -11,13 +11,15 @@ a bright ball on a dark background or the reverse, flat or Lambertian-shaded,
 untextured or with the tennis seam; the default 8-bit sensor (read and shot
 noise, 0.8 % PRNU).  Each is rendered once (the experiments' renderer, a
 random sub-line phase), measured by ``estimate_image`` with the default
-recipe (or ``--recipe``'s, :func:`ballscan.pipeline.recipe.load_recipe`), and the errors of the speed (``speed_mps`` against
-``speed_sigma_mps``) and of the two direction angles (``direction_deg``
-against ``direction_sigma_deg``, :mod:`ballscan.solve.derived`) are divided
-by their sigmas.  It prints the share of balls within 1 and 3 sigmas (a
-normal distribution: 68.3 % and 99.7 %) over all balls and by texture, by
-the share of the depth velocity and by the ball's length in lines, and the
-RMS of the z-scores.
+recipe (or ``--recipe``'s, :func:`ballscan.pipeline.recipe.load_recipe`),
+and the errors of the speed (``speed_mps`` against ``speed_sigma_mps``), of
+the two direction angles (``direction_deg`` against
+``direction_sigma_deg``, :mod:`ballscan.solve.derived`) and of ``|V.x|``
+(the speed along the lane, against its sigma in ``velocity_sigma_mps``) are
+divided by their sigmas.  It prints the share of balls within 1 and 3
+sigmas (a normal distribution: 68.3 % and 99.7 %) over all balls and by
+texture, by the share of the depth velocity and by the ball's length in
+lines, and the RMS of the z-scores.
 """
 
 from __future__ import annotations
@@ -34,7 +36,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 from joblib import Parallel, delayed  # noqa: E402
 
-QUANTITIES = ("speed", "psi_y", "psi_z")
+QUANTITIES = ("speed", "psi_y", "psi_z", "|vx|")
 
 
 def draw_scene(rng: np.random.Generator):
@@ -88,14 +90,14 @@ def run_one(k: int, seed: int, recipe=None) -> dict:
     ball, _ = ex.pick_estimate(rep, truth.t_c_s)
     V = np.asarray(truth.velocity_mps)
     out = dict(k=k, texture=texture, shading=scene.shading, lines=float(visible_line_count(scene.camera, truth)), vz_share=abs(V[2]) / np.linalg.norm(V),
-               z=np.full(3, np.nan), flags="no_detection" if ball is None else ";".join(ball.flags))
+               z=np.full(len(QUANTITIES), np.nan), flags="no_detection" if ball is None else ";".join(ball.flags))
     der = ball.derived(scene.camera) if ball is not None else None
     if der is None or ball.speed_mps is None or ball.speed_sigma_mps is None:
         return out
     true_dir = np.degrees([math.atan2(V[1], V[0]), math.atan2(V[2], V[0])])
-    est = np.r_[ball.speed_mps, der.direction_deg]
-    sig = np.r_[ball.speed_sigma_mps, der.direction_sigma_deg]
-    out["z"] = (est - np.r_[truth.speed_mps, true_dir]) / sig
+    est = np.r_[ball.speed_mps, der.direction_deg, abs(ball.velocity_mps[0])]
+    sig = np.r_[ball.speed_sigma_mps, der.direction_sigma_deg, ball.velocity_sigma_mps[0]]
+    out["z"] = (est - np.r_[truth.speed_mps, true_dir, abs(V[0])]) / sig
     out["rel_speed_error"] = (ball.speed_mps - truth.speed_mps) / truth.speed_mps
     return out
 
@@ -105,7 +107,7 @@ def table(results: list[dict], label: str) -> str:
     ok = np.all(np.isfinite(z), axis=1)
     z = z[ok]
     cells = [f"{label:<28} {ok.sum():>4}"]
-    for q in range(3):
+    for q in range(len(QUANTITIES)):
         a = np.abs(z[:, q])
         cells.append(f"{100 * np.mean(a < 1):6.1f} {100 * np.mean(a < 3):6.1f} {np.sqrt(np.mean(a**2)):6.2f}")
     return "  ".join(cells)

@@ -129,12 +129,15 @@ def test_noisy_textured_tennis_ball_is_never_wildly_wrong(seed):
     # pass)
     assert 1000 * np.linalg.norm(np.asarray(b.position_m) - m.position_m) < 8.0
     assert sv[2] < 15.0  # vz is weak but bounded; vx, vy are sharp
-    # the measurements fix vx and vy to 0.05 m/s; the reported vy sigma also
-    # holds the seam's limb error that the motion absorbs
-    # (FitSettings.limb_residual_gain), up to 0.12 m/s on seeds 0-3
+    # the measurements fix vx and vy to 0.05 m/s; the reported sigmas also
+    # hold the seam's limb error that the motion absorbs
+    # (FitSettings.limb_residual_gain): its trend in vy, up to 0.12 m/s on
+    # seeds 0-3, its curvature in vx, up to 0.06 m/s (seed 3; without it
+    # vx's sigma covered the error on 37-46 % of 170 seamed tennis balls of
+    # benchmarks/bench_coverage.py, with it 64-71 %)
     sv_measured = np.asarray(estimate_image(_image(r.image), CAM, R_TENNIS, recipe=_NO_LIMB_TERM).balls[0].velocity_sigma_mps)
     assert sv_measured[0] < 0.05 and sv_measured[1] < 0.05
-    assert sv[0] < 0.05 and sv[1] < 0.15
+    assert sv[0] < 0.1 and sv[1] < 0.15
 
 
 def _scene_balls(name: str):

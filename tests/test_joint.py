@@ -354,7 +354,8 @@ def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
 def test_the_joint_covariance_holds_each_cameras_limb_error():
     """Analytic against brute force, as for one camera: the joint velocity's added covariance is the sum of the
     outer products of the joint fit's moves when each side of each camera is displaced by one sigma of the
-    trend, here with one camera's residuals 1.5 times their stated sigma (unequal covariance scales)."""
+    trend and of the curvature in turn, here with one camera's residuals 1.5 times their stated sigma (unequal
+    covariance scales)."""
     from dataclasses import replace
 
     m = LANE.motion
@@ -377,13 +378,14 @@ def test_the_joint_covariance_holds_each_cameras_limb_error():
             ok = np.isfinite(x)
             t = c.edges.t_s
             tau = 2.0 * (t - t[ok].min()) / (t[ok].max() - t[ok].min()) - 1.0
-            moved = list(cams)
-            moved[k] = replace(c, edges=replace(c.edges, **{f"{side}_px": x + 0.05 * tau}))
-            d = np.asarray(fit(moved, 0.05).motion.velocity_mps) - np.asarray(on.motion.velocity_mps)
-            brute += np.outer(d, d)
+            for shape in (tau, 1.5 * tau**2 - 0.5):
+                moved = list(cams)
+                moved[k] = replace(c, edges=replace(c.edges, **{f"{side}_px": x + 0.05 * shape}))
+                d = np.asarray(fit(moved, 0.05).motion.velocity_mps) - np.asarray(on.motion.velocity_mps)
+                brute += np.outer(d, d)
     added = on.covariance[4:, 4:] - off.covariance[4:, 4:]
     sig, total = np.sqrt(np.diag(brute)), np.sqrt(np.diag(on.covariance)[4:])
-    # VY and VZ, which the limbs' trends move by 0.05 m/s each: within 1 %; VX moves by second-order
-    # amounts only (the same sign for either side's trend), a few per cent of its sigma
+    # VY and VZ, which the limbs' trends and curvatures move by 0.05 m/s each: within 1 %; VX, which the
+    # curvature moves through the passage's duration (0.04 m/s here), within 10 % (its second-order part)
     assert np.allclose(np.sqrt(np.diag(added))[1:], sig[1:], rtol=0.01), (np.sqrt(np.diag(added)), sig)
-    assert np.sqrt(added[0, 0]) < 0.2 * total[0] and sig[0] < 0.2 * total[0]
+    assert np.allclose(np.sqrt(added[0, 0]), sig[0], rtol=0.1), (np.sqrt(np.diag(added)), sig)

@@ -100,21 +100,21 @@ def _serve_edges():
     return cam, m, synthetic_edges(cam, m, 240, edge_sigma_px=0.02, seed=0, add_noise=False)
 
 
-def _displaced(e, side: str, offset_px: float, trend_px: float):
-    """``e`` with one side's edges displaced by ``offset + trend * tau``, ``tau`` from -1 to 1 over that side's lines."""
+def _displaced(e, side: str, offset_px: float, trend_px: float, curve_px: float = 0.0):
+    """``e`` with one side's edges displaced by ``offset + trend * tau + curve * P2(tau)``, ``tau`` from -1 to 1 over that side's lines."""
     from dataclasses import replace
 
     x = getattr(e, f"{side}_px")
     ok = np.isfinite(x)
     t = e.t_s
     tau = 2.0 * (t - t[ok].min()) / (t[ok].max() - t[ok].min()) - 1.0
-    return replace(e, **{f"{side}_px": np.where(ok, x + offset_px + trend_px * tau, np.nan)})
+    return replace(e, **{f"{side}_px": np.where(ok, x + offset_px + trend_px * tau + curve_px * (1.5 * tau**2 - 0.5), np.nan)})
 
 
 @pytest.mark.parametrize("offset_px, trend_px, right_from", [(0.0, 0.05, 0), (0.04, 0.0, 0), (0.03, 0.05, 0), (0.0, 0.05, 50)])
 def test_limb_covariance_equals_the_fits_moved_by_displaced_limbs(offset_px, trend_px, right_from):
     """Analytic against brute force: the added covariance is the sum of the outer products of the fits' moves
-    when each side's edges are displaced by one sigma of the offset and of the trend in turn (noise-free edges,
+    when each side's edges are displaced by one sigma of the offset, of the trend and of the curvature in turn (noise-free edges,
     so the residuals add nothing); ``right_from``: the right side's edges only from that line on (the sides'
     lines and times differ)."""
     from dataclasses import replace
@@ -131,10 +131,10 @@ def test_limb_covariance_equals_the_fits_moved_by_displaced_limbs(offset_px, tre
     assert base.converged
     brute = np.zeros((6, 6))
     for side in ("left", "right"):
-        for a, b in ((offset_px, 0.0), (0.0, trend_px)):
-            if a == b == 0.0:
+        for a, b, c in ((offset_px, 0.0, 0.0), (0.0, trend_px, 0.0), (0.0, 0.0, trend_px)):
+            if a == b == c == 0.0:
                 continue
-            d = fit_motion(cam, _displaced(e, side, a, b), m, s).motion.to_params() - base.motion.to_params()
+            d = fit_motion(cam, _displaced(e, side, a, b, c), m, s).motion.to_params() - base.motion.to_params()
             brute += np.outer(d, d)
     limb = base.limb_covariance
     # to within 5 %, or 1 % of the parameter's whole sigma where the move is second order (z0, t_c)

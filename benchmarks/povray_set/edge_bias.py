@@ -2,6 +2,7 @@
 
     python benchmarks/povray_set/edge_bias.py [--scenes DIR] [--split tune] [--clean] [--per-line] NAME [NAME ...]
     python benchmarks/povray_set/edge_bias.py [--split tune] [--clean] --limb-levels
+    python benchmarks/povray_set/edge_bias.py [--split tune] [--clean] --beyond
 
 For each scene (its first true ball) the default estimator runs in-process
 (``estimate_image``); the edges its reported fit took
@@ -28,6 +29,12 @@ on the ball's interior at the truth's motion,
 ``measure.shading.ball_limb``): where a side lit at grazing incidence has
 about the background's brightness, its window finds the terminator
 inside the limb instead.
+
+``--beyond`` (no names) bins the same edges by what lies outside them: the
+mean normalised profile of the 4 pixels from the second pixel beyond the
+edge outwards, over its noise sigma.  A band darker than the backdrop (for
+a bright ball; brighter, for a dark one) is the ball's part of the other
+polarity, a side in shadow or a dark panel: the edge is not the limb.
 """
 
 from __future__ import annotations
@@ -193,6 +200,61 @@ def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
     return out
 
 
+#: the band outside an edge for ``--beyond``: pixels from the edge's second outer neighbour on, and their count
+BEYOND_GAP_PX, BEYOND_PX = 2, 4
+#: bins of the band's mean over its noise sigma
+BEYOND_BINS = (-np.inf, -8.0, -4.0, -2.0, 2.0, 4.0, 8.0, np.inf)
+
+
+def beyond_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, float]]:
+    """(band mean / its sigma, inward offset px) of each fitted narrow or wide edge of a scene with one ball found."""
+    from ballscan.pipeline.estimate import estimate_image
+
+    truth, cam, img = load(scenes, name, clean)
+    tb = (truth["balls"] if "balls" in truth else [truth])[0]
+    found = [b for b in estimate_image(img, cam, tb["radius_m"]).balls if b.t_c_s is not None and b.fitted_edges is not None]
+    if len(found) != 1 or found[0].fitted_edges.profile is None:
+        return []
+    e = found[0].fitted_edges
+    o = offsets(e, cam, truth_motion(tb))
+    p, c0 = e.profile, e.profile_col0
+    sp = np.broadcast_to(e.profile_sigma, p.shape)
+    out = []
+    for side, sg in (("left", 1.0), ("right", -1.0)):
+        px = getattr(e, f"{side}_px")
+        for i in np.flatnonzero(np.isfinite(o[side])):
+            first = int(math.floor(px[i] - c0 - BEYOND_GAP_PX)) if sg > 0 else int(math.ceil(px[i] - c0 + BEYOND_GAP_PX))
+            cols = first - sg * np.arange(BEYOND_PX)
+            if cols.min() < 0 or cols.max() >= p.shape[1] or not np.all(np.isfinite(p[i, cols.astype(int)])):
+                continue
+            band, sig = p[i, cols.astype(int)], sp[i, cols.astype(int)]
+            out.append((float(band.mean() / (np.sqrt(np.sum(sig**2)) / BEYOND_PX)), float(o[side][i])))
+    return out
+
+
+def beyond_table(scenes: Path, split: str, clean: bool) -> list[str]:
+    """The inward offsets of every uncut single ball's fitted edges, binned by the band outside them (``--beyond``)."""
+    rows = []
+    for p in sorted(scenes.glob("pv*.truth.json")):
+        t = json.loads(p.read_text())
+        if t["cut"] != "none" or (split == "tune" and t["split"] != "tune"):
+            continue
+        rows += [(z, d, t["scene"]) for z, d in beyond_rows(scenes, t["scene"], clean)]
+    z = np.array([r[0] for r in rows])
+    d = np.array([r[1] for r in rows])
+    far = np.abs(d) > 0.5
+    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges; {int(far.sum())} lie more than 0.5 px off the limb",
+           "| band mean / sigma | edges | balls | median offset px | mean abs offset px | 90 % abs offset px | more than 0.5 px off |",
+           "|---|---|---|---|---|---|---|"]
+    for lo, hi in zip(BEYOND_BINS[:-1], BEYOND_BINS[1:]):
+        sel = (z >= lo) & (z < hi)
+        if sel.any():
+            names = {r[2] for r, s in zip(rows, sel) if s}
+            out.append(f"| {lo:g} - {hi:g} | {int(sel.sum())} | {len(names)} | {np.median(d[sel]):+.3f} | "
+                       f"{np.mean(np.abs(d[sel])):.3f} | {np.percentile(np.abs(d[sel]), 90):.3f} | {int((sel & far).sum())} |")
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("names", nargs="*")
@@ -201,12 +263,16 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--clean", action="store_true")
     ap.add_argument("--per-line", action="store_true")
     ap.add_argument("--limb-levels", action="store_true", help="every uncut ball's edge offsets binned by the limb's brightness")
+    ap.add_argument("--beyond", action="store_true", help="every uncut single ball's edge offsets binned by the band outside the edge")
     a = ap.parse_args(argv)
     if a.limb_levels:
         print("\n".join(limb_level_table(a.scenes, a.split, a.clean)))
         return 0
+    if a.beyond:
+        print("\n".join(beyond_table(a.scenes, a.split, a.clean)))
+        return 0
     if not a.names:
-        ap.error("name at least one scene, or --limb-levels")
+        ap.error("name at least one scene, --limb-levels or --beyond")
     print("| scene | kind | fit path / edges | lines with both edges | median offset L / R px (inwards) | "
           "trend over the passage L / R px | fit V.z error / V_t | V.z error / V_t, fit from the truth |")
     print("|" + "---|" * 8)

@@ -121,22 +121,26 @@ class FitSettings:
     limb_offset_sigma_px, limb_trend_sigma_px : float
         1-sigma of a limb model error that the fit cannot see in its
         residuals, pixels: each side's edges displaced by an unknown
-        constant and by an unknown straight line over the passage (its value
-        at the passage's ends).  A displacement of this shape is absorbed by
-        the motion (a common trend is a ``vy``, a differing one a change of
-        size, a ``vz``), so no residual-based scale reveals it; its effect on
+        constant, and by an unknown straight line and an unknown parabola
+        over the passage (their values at the passage's ends), each with the
+        trend's sigma.  A displacement of this shape is absorbed by the
+        motion (a common trend is a ``vy``, a differing one a change of
+        size, a ``vz``; a curvature the passage's duration, a ``vx``), so no
+        residual-based scale reveals it; its effect on
         the parameters is added to their covariance
         (:func:`ballscan.solve.uncertainty.limb_covariance`).  0 leaves it out.
         Both are 0 by default: an error that no residual shows would widen
         the sigmas of balls whose limb the model describes exactly
         (ballscan's own renders) as much as any other's.
     limb_residual_gain : float
-        The trend's 1-sigma grows by this many times the side's slowly
-        varying residual (pixels, :func:`ballscan.solve.uncertainty.smooth_residual_px`):
-        a limb whose model error shows in the residuals hides more in the
-        motion.  5 calibrates the direction angles' sigmas on the
-        independent validation set's tuning half (docs/benchmarks.md); a
-        clean limb's residual is white and adds nothing.
+        The trend's and the curvature's 1-sigma grow by this many times the
+        side's slowly varying residual (pixels,
+        :func:`ballscan.solve.uncertainty.smooth_residual_px`): a limb whose
+        model error shows in the residuals hides more in the motion.  5
+        calibrates the direction angles' sigmas on the independent
+        validation set's tuning half and ``vx``'s on ballscan's own seamed
+        renders (docs/benchmarks.md); a clean limb's residual is white and
+        adds nothing.
     area_rel_sigma : float
         Relative systematic 1-sigma of an end line's area without a
         brightness level (the lit or shaded cap's brightness is unknown);

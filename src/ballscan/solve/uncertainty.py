@@ -109,15 +109,20 @@ def limb_covariance(
 ) -> np.ndarray:
     """Covariance of the parameters due to a limb model error of each side that the residuals cannot show.
 
-    Each side's measured edges are taken as displaced by ``a + b tau``
-    (pixels), ``tau`` running from -1 to 1 over that side's lines, with
-    ``a ~ N(0, offset_sigma_px^2)`` and ``b ~ N(0, s_b^2)`` independent per
-    side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * smooth_px)^2``: a
-    limb whose model error shows in the residuals hides a larger part in
-    the motion.  The fit moves by ``dx = -(J^T J)^-1 J^T D c`` (``D`` the
-    whitened residuals' change per unit of ``c = (a, b)``), so the added
-    covariance is ``G diag(sigma^2) G^T`` with ``G = (J^T J)^-1 J^T D``.
-    Rows not named by a side (areas, pixels) see no displacement.
+    Each side's measured edges are taken as displaced by
+    ``a + b tau + c P2(tau)`` (pixels), ``tau`` running from -1 to 1 over
+    that side's lines and ``P2(tau) = (3 tau^2 - 1) / 2``, with
+    ``a ~ N(0, offset_sigma_px^2)`` and ``b, c ~ N(0, s_b^2)`` independent
+    per side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * smooth_px)^2``:
+    a limb whose model error shows in the residuals hides a larger part in
+    the motion.  A trend is absorbed by ``vy`` and the size's change
+    (``vz``); a curvature (one end of the passage displaced against the
+    middle, e.g. a shaded cap's edges inside the limb) by the passage's
+    duration and the outline's curvature, ``vx`` and ``z0``.  The fit moves
+    by ``dx = -(J^T J)^-1 J^T D c`` (``D`` the whitened residuals' change
+    per unit of ``c = (a, b, c)``), so the added covariance is
+    ``G diag(sigma^2) G^T`` with ``G = (J^T J)^-1 J^T D``.  Rows not named
+    by a side (areas, pixels) see no displacement.
 
     Parameters
     ----------
@@ -128,9 +133,9 @@ def limb_covariance(
     sides : sequence of LimbSide
         Each side of each block (camera).
     offset_sigma_px, trend_sigma_px : float
-        1-sigma of ``a`` and the least of ``b``, pixels.
+        1-sigma of ``a`` and the least of ``b`` and ``c``, pixels.
     residual_gain : float
-        ``b``'s sigma per pixel of the side's slowly varying residual.
+        ``b``'s and ``c``'s sigma per pixel of the side's slowly varying residual.
 
     Returns
     -------
@@ -144,10 +149,11 @@ def limb_covariance(
         t = side.t_s
         span = float(t.max() - t.min())
         tau = 2.0 * (t - t.min()) / span - 1.0 if span > 0 else np.zeros_like(t)
-        # J^T D for this side's two columns of D (-1 / sigma and -tau / sigma on its rows)
+        # J^T D for this side's three columns of D (-1, -tau and -P2(tau), each over sigma, on its rows)
         Jw = J[side.rows] / side.sigma_px[:, None]
-        cols += [-Jw.sum(axis=0), -(tau @ Jw)]
-        sig2 += [offset_sigma_px**2, trend_sigma_px**2 + (residual_gain * side.smooth_px) ** 2]
+        cols += [-Jw.sum(axis=0), -(tau @ Jw), -((1.5 * tau**2 - 0.5) @ Jw)]
+        s_b2 = trend_sigma_px**2 + (residual_gain * side.smooth_px) ** 2
+        sig2 += [offset_sigma_px**2, s_b2, s_b2]
     if not cols or not any(sig2):
         return np.zeros((p, p))
     G = cov_unit @ np.column_stack(cols)
