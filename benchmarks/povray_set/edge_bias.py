@@ -178,26 +178,40 @@ def limb_level_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, f
     return out
 
 
-def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
-    """The inward offsets of every uncut ball's fitted edges, binned by the limb's brightness (``--limb-levels``)."""
-    rows, balls = [], {}
+def _uncut_scenes(scenes: Path, split: str) -> list[str]:
+    """The split's scenes whose balls no image border cuts."""
+    out = []
     for p in sorted(scenes.glob("pv*.truth.json")):
         t = json.loads(p.read_text())
-        if t["cut"] != "none" or (split == "tune" and t["split"] != "tune"):
-            continue
-        got = limb_level_rows(scenes, t["scene"], clean)
-        rows += [(lv, d, t["scene"]) for lv, d in got]
+        if t["cut"] == "none" and (split != "tune" or t["split"] == "tune"):
+            out.append(t["scene"])
+    return out
+
+
+def _binned(key: np.ndarray, d: np.ndarray, names: list[str], bins, label: str) -> list[str]:
+    """Table rows of the offsets ``d`` binned by ``key``: edges, balls, median, mean and 90 % absolute offset, those beyond 0.5 px."""
+    out = []
+    for lo, hi in zip(bins[:-1], bins[1:]):
+        sel = (key >= lo) & (key < hi)
+        if sel.any():
+            balls = {n for n, s in zip(names, sel) if s}
+            a = np.abs(d[sel])
+            out.append(f"| {label.format(lo, hi)} | {int(sel.sum())} | {len(balls)} | {np.median(d[sel]):+.3f} | "
+                       f"{np.mean(a):.3f} | {np.percentile(a, 90):.3f} | {int((a > 0.5).sum())} |")
+    return out
+
+
+_OFFSET_COLUMNS = "| edges | balls | median offset px | mean abs offset px | 90 % abs offset px | more than 0.5 px off |"
+
+
+def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
+    """The inward offsets of every uncut ball's fitted edges, binned by the limb's brightness (``--limb-levels``)."""
+    rows = [(lv, d, name) for name in _uncut_scenes(scenes, split) for lv, d in limb_level_rows(scenes, name, clean)]
     lv = np.array([r[0] for r in rows])
     d = np.array([r[1] for r in rows])
     out = [f"{len({r[2] for r in rows})} balls, {int(np.isfinite(lv).sum())} edges ({int((~np.isfinite(lv)).sum())} more where the law does not see the ball)",
-           "| limb brightness / contrast | edges | balls | median offset px | mean abs offset px | 90 % abs offset px |", "|---|---|---|---|---|---|"]
-    for lo, hi in zip(LEVEL_BINS[:-1], LEVEL_BINS[1:]):
-        sel = (lv >= lo) & (lv < hi)
-        if sel.any():
-            names = {r[2] for r, s in zip(rows, sel) if s}
-            out.append(f"| {lo:.2f} - {hi:.2f} | {int(sel.sum())} | {len(names)} | {np.median(d[sel]):+.3f} | "
-                       f"{np.mean(np.abs(d[sel])):.3f} | {np.percentile(np.abs(d[sel]), 90):.3f} |")
-    return out
+           "| limb brightness / contrast " + _OFFSET_COLUMNS, "|---|---|---|---|---|---|---|"]
+    return out + _binned(lv, d, [r[2] for r in rows], LEVEL_BINS, "{:.2f} - {:.2f}")
 
 
 #: the band outside an edge for ``--beyond``: pixels from the edge's second outer neighbour on, and their count
@@ -234,25 +248,12 @@ def beyond_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, float
 
 def beyond_table(scenes: Path, split: str, clean: bool) -> list[str]:
     """The inward offsets of every uncut single ball's fitted edges, binned by the band outside them (``--beyond``)."""
-    rows = []
-    for p in sorted(scenes.glob("pv*.truth.json")):
-        t = json.loads(p.read_text())
-        if t["cut"] != "none" or (split == "tune" and t["split"] != "tune"):
-            continue
-        rows += [(z, d, t["scene"]) for z, d in beyond_rows(scenes, t["scene"], clean)]
+    rows = [(z, d, name) for name in _uncut_scenes(scenes, split) for z, d in beyond_rows(scenes, name, clean)]
     z = np.array([r[0] for r in rows])
     d = np.array([r[1] for r in rows])
-    far = np.abs(d) > 0.5
-    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges; {int(far.sum())} lie more than 0.5 px off the limb",
-           "| band mean / sigma | edges | balls | median offset px | mean abs offset px | 90 % abs offset px | more than 0.5 px off |",
-           "|---|---|---|---|---|---|---|"]
-    for lo, hi in zip(BEYOND_BINS[:-1], BEYOND_BINS[1:]):
-        sel = (z >= lo) & (z < hi)
-        if sel.any():
-            names = {r[2] for r, s in zip(rows, sel) if s}
-            out.append(f"| {lo:g} - {hi:g} | {int(sel.sum())} | {len(names)} | {np.median(d[sel]):+.3f} | "
-                       f"{np.mean(np.abs(d[sel])):.3f} | {np.percentile(np.abs(d[sel]), 90):.3f} | {int((sel & far).sum())} |")
-    return out
+    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges; {int((np.abs(d) > 0.5).sum())} lie more than 0.5 px off the limb",
+           "| band mean / sigma " + _OFFSET_COLUMNS, "|---|---|---|---|---|---|---|"]
+    return out + _binned(z, d, [r[2] for r in rows], BEYOND_BINS, "{:g} - {:g}")
 
 
 def main(argv: list[str] | None = None) -> int:
