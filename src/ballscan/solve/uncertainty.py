@@ -116,11 +116,11 @@ def limb_covariance(
     per side, ``s_b^2 = trend_sigma_px^2 + (residual_gain * smooth_px)^2``:
     a limb whose model error shows in the residuals hides a larger part in
     the motion.  A trend is absorbed by ``vy`` and the size's change
-    (``vz``); a curvature (one end of the passage displaced against the
-    middle, e.g. a shaded cap's edges inside the limb) by the passage's
+    (``vz``); a curvature (the passage's ends displaced against its
+    middle, as by a shaded cap's edges inside the limb) by the passage's
     duration and the outline's curvature, ``vx`` and ``z0``.  The fit moves
-    by ``dx = -(J^T J)^-1 J^T D c`` (``D`` the whitened residuals' change
-    per unit of ``c = (a, b, c)``), so the added covariance is
+    by ``dx = -(J^T J)^-1 J^T D k`` (``D`` the whitened residuals' change
+    per unit of ``k = (a, b, c)``), so the added covariance is
     ``G diag(sigma^2) G^T`` with ``G = (J^T J)^-1 J^T D``.  Rows not named
     by a side (areas, pixels) see no displacement.
 
