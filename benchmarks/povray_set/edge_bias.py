@@ -110,16 +110,21 @@ def refit_from_truth(cam, edges, motion):
     return fit_motion(cam, edges, motion).motion
 
 
-def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
+def fitted_ball(scenes: Path, name: str, clean: bool, single: bool = False):
+    """The scene's truth, camera, image, first true ball and the estimate nearest it in time with fitted edges (None: none, or with ``single`` not exactly one)."""
     from ballscan.pipeline.estimate import estimate_image
 
     truth, cam, img = load(scenes, name, clean)
     tb = (truth["balls"] if "balls" in truth else [truth])[0]
-    rep = estimate_image(img, cam, tb["radius_m"])
-    found = [b for b in rep.balls if b.t_c_s is not None and b.fitted_edges is not None]
-    if not found:
+    found = [b for b in estimate_image(img, cam, tb["radius_m"]).balls if b.t_c_s is not None and b.fitted_edges is not None]
+    b = min(found, key=lambda e: abs(e.t_c_s - tb["t_c_s"])) if found and (len(found) == 1 or not single) else None
+    return truth, cam, img, tb, b
+
+
+def scene_row(scenes: Path, name: str, clean: bool, per_line: bool) -> str:
+    truth, cam, img, tb, b = fitted_ball(scenes, name, clean)
+    if b is None:
         return f"| {name} | no fit | | | | | | |"
-    b = min(found, key=lambda e: abs(e.t_c_s - tb["t_c_s"]))
     m = truth_motion(tb)
     o = offsets(b.fitted_edges, cam, m)
     both = np.isfinite(o["left"]) & np.isfinite(o["right"])
@@ -151,16 +156,12 @@ def limb_level_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, f
     from ballscan.geometry.camera import line_times
     from ballscan.measure.detection import detect
     from ballscan.measure.shading import ball_limb
-    from ballscan.pipeline.estimate import estimate_image
     from ballscan.pipeline.recipe import Recipe
     from ballscan.pipeline.stages import shading_background
 
-    truth, cam, img = load(scenes, name, clean)
-    tb = (truth["balls"] if "balls" in truth else [truth])[0]
-    found = [b for b in estimate_image(img, cam, tb["radius_m"]).balls if b.t_c_s is not None and b.fitted_edges is not None]
-    if not found:
+    _, cam, img, tb, b = fitted_ball(scenes, name, clean)
+    if b is None:
         return []
-    b = min(found, key=lambda e: abs(e.t_c_s - tb["t_c_s"]))
     m = truth_motion(tb)
     recipe = Recipe()
     bg = shading_background(img, detect(img), recipe)
@@ -204,14 +205,18 @@ def _binned(key: np.ndarray, d: np.ndarray, names: list[str], bins, label: str) 
 _OFFSET_COLUMNS = "| edges | balls | median offset px | mean abs offset px | 90 % abs offset px | more than 0.5 px off |"
 
 
+def _collected(scenes: Path, split: str, clean: bool, rows_of) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """``rows_of(scenes, name, clean)``'s (key, offset) pairs over the split's uncut scenes: keys, offsets and each pair's scene."""
+    rows = [(k, d, name) for name in _uncut_scenes(scenes, split) for k, d in rows_of(scenes, name, clean)]
+    return np.array([r[0] for r in rows]), np.array([r[1] for r in rows]), [r[2] for r in rows]
+
+
 def limb_level_table(scenes: Path, split: str, clean: bool) -> list[str]:
     """The inward offsets of every uncut ball's fitted edges, binned by the limb's brightness (``--limb-levels``)."""
-    rows = [(lv, d, name) for name in _uncut_scenes(scenes, split) for lv, d in limb_level_rows(scenes, name, clean)]
-    lv = np.array([r[0] for r in rows])
-    d = np.array([r[1] for r in rows])
-    out = [f"{len({r[2] for r in rows})} balls, {int(np.isfinite(lv).sum())} edges ({int((~np.isfinite(lv)).sum())} more where the law does not see the ball)",
+    lv, d, names = _collected(scenes, split, clean, limb_level_rows)
+    out = [f"{len(set(names))} balls, {int(np.isfinite(lv).sum())} edges ({int((~np.isfinite(lv)).sum())} more where the law does not see the ball)",
            "| limb brightness / contrast " + _OFFSET_COLUMNS, "|---|---|---|---|---|---|---|"]
-    return out + _binned(lv, d, [r[2] for r in rows], LEVEL_BINS, "{:.2f} - {:.2f}")
+    return out + _binned(lv, d, names, LEVEL_BINS, "{:.2f} - {:.2f}")
 
 
 #: the band outside an edge for ``--beyond``: pixels from the edge's second outer neighbour on, and their count
@@ -222,14 +227,10 @@ BEYOND_BINS = (-np.inf, -8.0, -4.0, -2.0, 2.0, 4.0, 8.0, np.inf)
 
 def beyond_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, float]]:
     """(band mean / its sigma, inward offset px) of each fitted narrow or wide edge of a scene with one ball found."""
-    from ballscan.pipeline.estimate import estimate_image
-
-    truth, cam, img = load(scenes, name, clean)
-    tb = (truth["balls"] if "balls" in truth else [truth])[0]
-    found = [b for b in estimate_image(img, cam, tb["radius_m"]).balls if b.t_c_s is not None and b.fitted_edges is not None]
-    if len(found) != 1 or found[0].fitted_edges.profile is None:
+    _, cam, _, tb, b = fitted_ball(scenes, name, clean, single=True)
+    if b is None or b.fitted_edges.profile is None:
         return []
-    e = found[0].fitted_edges
+    e = b.fitted_edges
     o = offsets(e, cam, truth_motion(tb))
     p, c0 = e.profile, e.profile_col0
     sp = np.broadcast_to(e.profile_sigma, p.shape)
@@ -248,12 +249,10 @@ def beyond_rows(scenes: Path, name: str, clean: bool) -> list[tuple[float, float
 
 def beyond_table(scenes: Path, split: str, clean: bool) -> list[str]:
     """The inward offsets of every uncut single ball's fitted edges, binned by the band outside them (``--beyond``)."""
-    rows = [(z, d, name) for name in _uncut_scenes(scenes, split) for z, d in beyond_rows(scenes, name, clean)]
-    z = np.array([r[0] for r in rows])
-    d = np.array([r[1] for r in rows])
-    out = [f"{len({r[2] for r in rows})} balls, {len(rows)} edges; {int((np.abs(d) > 0.5).sum())} lie more than 0.5 px off the limb",
+    z, d, names = _collected(scenes, split, clean, beyond_rows)
+    out = [f"{len(set(names))} balls, {d.size} edges; {int((np.abs(d) > 0.5).sum())} lie more than 0.5 px off the limb",
            "| band mean / sigma " + _OFFSET_COLUMNS, "|---|---|---|---|---|---|---|"]
-    return out + _binned(z, d, [r[2] for r in rows], BEYOND_BINS, "{:g} - {:g}")
+    return out + _binned(z, d, names, BEYOND_BINS, "{:g} - {:g}")
 
 
 def main(argv: list[str] | None = None) -> int:

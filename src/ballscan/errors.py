@@ -11,17 +11,6 @@ class BallscanError(Exception):
     """Base class: the message is a complete one-line explanation."""
 
 
-class CameraFileError(BallscanError, ValueError):
-    """A camera TOML file is missing, malformed or physically invalid."""
-
-    def __init__(self, source: str, problem: str, key: str | None = None):
-        where = f"{source}: key '{key}'" if key else f"{source}"
-        super().__init__(f"{where}: {problem}")
-        self.source = source
-        self.key = key
-        self.problem = problem
-
-
 class InputFileError(BallscanError, ValueError):
     """A file given to ballscan cannot be used: the message is ``"{source}: {problem}"``."""
 
@@ -29,6 +18,15 @@ class InputFileError(BallscanError, ValueError):
         super().__init__(f"{source}: {problem}")
         self.source = source
         self.problem = problem
+
+
+class CameraFileError(InputFileError):
+    """A camera TOML file is missing, malformed or physically invalid; ``key`` names the offending key, if one."""
+
+    def __init__(self, source: str, problem: str, key: str | None = None):
+        super().__init__(f"{source}: key '{key}'" if key else source, problem)
+        self.source = source
+        self.key = key
 
 
 class RecipeFileError(InputFileError):

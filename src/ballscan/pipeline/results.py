@@ -199,16 +199,16 @@ class BallEstimate:
             "method": self.method,
             "radius_m": self.radius_m,
             "t_c_s": self.t_c_s,
-            "position_m": _list(self.position_m),
-            "velocity_mps": _list(self.velocity_mps),
+            "position_m": self.position_m,
+            "velocity_mps": self.velocity_mps,
             "speed_mps": self.speed_mps,
         }
         if self.t_c_sigma_s is not None:
             d["t_c_sigma_s"] = self.t_c_sigma_s
         if self.position_sigma_m is not None:
-            d["position_sigma_m"] = _list(self.position_sigma_m)
+            d["position_sigma_m"] = self.position_sigma_m
         if self.velocity_sigma_mps is not None:
-            d["velocity_sigma_mps"] = _list(self.velocity_sigma_mps)
+            d["velocity_sigma_mps"] = self.velocity_sigma_mps
         if self.speed_sigma_mps is not None:
             d["speed_sigma_mps"] = self.speed_sigma_mps
         if self.covariance is not None:
@@ -284,12 +284,6 @@ class EstimateReport:
 
     def to_json(self, camera: LineScanCamera | None = None) -> str:
         return json.dumps(self.to_dict(camera), indent=2, allow_nan=False)
-
-
-def _list(v) -> list[float | None] | None:
-    if v is None:
-        return None
-    return [float(x) if math.isfinite(x) else None for x in np.asarray(v, dtype=float).reshape(-1)]
 
 
 def jsonable(v: Any) -> Any:
