@@ -38,8 +38,25 @@ CAM = LineScanCamera(width=512, focal_px=1100.0, principal_px=255.5, line_rate_h
 HANG_S = 60.0
 
 
+#: The commands started by the running test; ended at its teardown whatever its outcome.
+_STARTED: list[subprocess.Popen] = []
+
+
+@pytest.fixture(autouse=True)
+def _end_started_commands():
+    yield
+    while _STARTED:
+        p = _STARTED.pop()
+        if p.poll() is None:
+            p.kill()
+        p.communicate()
+
+
 def _ballscan(*args: str, **kw) -> subprocess.Popen:
-    return subprocess.Popen([sys.executable, "-m", "ballscan", *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, **kw)
+    p = subprocess.Popen([sys.executable, "-m", "ballscan", *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, **kw)
+    _STARTED.append(p)
+    return p
+
 
 
 def _balls(text: str) -> list[tuple[int, int, tuple[str, ...]]]:
@@ -199,6 +216,11 @@ def _cmdline(proc: psutil.Process) -> str:
         return ""
 
 
+def _workers(parent: psutil.Process) -> list[psutil.Process]:
+    """The batch's live workers: its children but the resource tracker and those just ended."""
+    return [c for c in parent.children(recursive=True) if (line := _cmdline(c)) and "resource_tracker" not in line]
+
+
 def test_kill_9_during_batch_ends_its_workers_and_a_rerun_gives_every_ball_once(images, tmp_path):
     want = {f"img{k}.png": 1 if k % 2 else 2 for k in range(8)}
     out = tmp_path / "out.csv"
@@ -207,7 +229,7 @@ def test_kill_9_during_batch_ends_its_workers_and_a_rerun_gives_every_ball_once(
     t0 = time.monotonic()
     workers: list[psutil.Process] = []
     while time.monotonic() - t0 < HANG_S and p.poll() is None:
-        workers = [c for c in parent.children(recursive=True) if "resource_tracker" not in _cmdline(c)]
+        workers = _workers(parent)
         if len(workers) >= 2 and out.is_file() and out.read_bytes().count(b"\n") >= 2:
             break
         time.sleep(0.02)
@@ -280,7 +302,7 @@ def test_sigterm_stops_batch_with_its_status_and_the_rows_written_stay(images, t
     t0 = time.monotonic()
     while time.monotonic() - t0 < HANG_S and p.poll() is None and not (out.is_file() and out.read_bytes().count(b"\n") >= 2):
         time.sleep(0.02)
-    workers = [c for c in psutil.Process(p.pid).children(recursive=True) if "resource_tracker" not in " ".join(c.cmdline())] if p.poll() is None else []
+    workers = _workers(psutil.Process(p.pid)) if p.poll() is None else []
     p.send_signal(signal.SIGTERM)
     _, err = p.communicate(timeout=HANG_S)
     assert p.returncode == 128 + signal.SIGTERM, err.decode()
