@@ -159,6 +159,19 @@ def test_blur_measured_on_a_renders_edges(diameter):
 
 
 @pytest.mark.slow
+def test_blur_measured_on_a_ball_whose_edge_windows_reach_the_sensors_end():
+    # the right limb 2.5 px from the sensor's last pixel: its edge windows reach the end, the
+    # ball is not cut (its mask does not touch the end), so its blur is measured as any other
+    m = BallMotion(0.03, 0.004, (0.0, 0.167, 2.5), (20.0, 0.0, 0.0))
+    limb_px = CAM.principal_px + CAM.focal_px * (m.position_m[1] + m.radius_m) / m.position_m[2]
+    assert 2.0 < (CAM.width - 0.5) - limb_px < 3.0
+    (ball,) = estimate_image(_blurred_render(2.0, m, seed=1), CAM, m.radius_m, bits=12).balls
+    d = ball.extra
+    assert "cut_sensor_end" not in ball.flags
+    assert d["defocus_source"] == "image" and d["defocus_px"] == pytest.approx(2.0, abs=0.1) and d["defocus_used"]
+
+
+@pytest.mark.slow
 def test_no_blur_taken_on_a_sharp_render():
     # in focus the estimate reads 0.48 px (below the 1 px the recipe takes): neither used nor flagged
     m = BallMotion(0.03, 0.004, (0.0, 0.02, 2.5), (20.0, 0.0, 0.0))

@@ -345,12 +345,14 @@ def ball_defocus(ball: BallInput, limb: LimbProfile, first: FirstFit) -> Defocus
     below the model's other errors, and a blur that is not there would bias
     them.  None where texture at the limb was found (a panel's border widens
     the edges it crosses like a blur) or the ball is cut by the sensor's end
-    (its cut side's edges are the sensor's).
+    (its region reaches the end: its cut side's edges are the sensor's).  An
+    edge window that reaches the end while the ball does not is left out of
+    the measurement like any unusable edge and does not stop it.
     """
     if ball.camera.defocus_px is not None:
         return camera_defocus(ball.camera)
     recipe = ball.recipe
-    if not recipe.defocus or first.n_inward or "cut_sensor_end" in first.edges.flags:
+    if not recipe.defocus or first.n_inward or "cut_sensor_end" in ball.region.flags:
         return None
     found = estimate_defocus(limb, first.edges)
     if found is None:
