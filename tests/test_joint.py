@@ -63,6 +63,21 @@ def test_two_cameras_within_three_sigma_of_the_truth(lane_render):
     assert len(d["covariance"]["matrix"]) == 7 and d["own"]["side"]["velocity_mps"] is not None
 
 
+def test_a_ball_both_cameras_see_enters_the_joint_fit_measured_on_the_refined_background(lane_render):
+    refined = Recipe(refined_background=True)
+    b = estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m).balls[0]
+    for rc, img in zip(LANE.rig.cameras, lane_render.images):
+        own = estimate_image(img, rc.camera, LANE.motion.radius_m, recipe=refined).balls[0]
+        np.testing.assert_array_equal(b.estimates[rc.name].velocity_mps, own.velocity_mps)
+    # switched off, each camera's first measurement (the detector's level) enters instead
+    off = estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m, recipe=Recipe(rig_refined_background=False)).balls[0]
+    for rc, img in zip(LANE.rig.cameras, lane_render.images):
+        own = estimate_image(img, rc.camera, LANE.motion.radius_m).balls[0]
+        np.testing.assert_array_equal(off.estimates[rc.name].velocity_mps, own.velocity_mps)
+    assert not np.array_equal(off.motion.velocity_mps, b.motion.velocity_mps)
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+
+
 def test_unknown_clock_offset_recovered():
     truth_offset = 2.5e-4
     sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, LANE.appearance, seed=12, clock_offsets_s={"top": truth_offset})
@@ -74,6 +89,23 @@ def test_unknown_clock_offset_recovered():
     assert abs(top.clock_offset_s - truth_offset) < 3 * top.clock_offset_sigma_s
     assert "clock_offset_s:top" in b.joint.parameter_names
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+
+
+@pytest.mark.parametrize("velocity, position, flags", [
+    ((30.0, -2.0, 1.0), None, ()),
+    ((150.5, 0.0, 0.0), None, ("implausible_speed",)),
+    ((30.0, 0.0, 0.0), (0.0, 0.0, 250.0), ("implausible_range",)),
+])
+def test_a_joint_motion_beyond_any_ball_is_flagged_as_one_cameras_would_be(velocity, position, flags):
+    import ballscan.pipeline.rig as prig
+
+    m = LANE.motion
+    if position is not None:
+        # the centre 250 m along the world's z from the lane's: farther than 200 m from both cameras
+        position = tuple(np.asarray(m.position_m) + np.asarray(position))
+    motion = replace(m, velocity_mps=velocity, position_m=position or m.position_m)
+    assert prig._implausible(LANE.rig, motion) == flags
+    assert prig._implausible(LANE.rig, None) == ()
 
 
 def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
@@ -149,8 +181,9 @@ def test_a_camera_whose_own_fit_is_degenerate_still_enters_the_joint_fit(lane_re
     for k in (0, 1):  # the reference camera degenerate, then the other one
         broken = list(reports)
         broken[k] = replace(reports[k], balls=(_undetermined(reports[k].balls[0], keys, guess_t_c_s),))
-        it = iter(broken)
-        monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: next(it))
+        # every measurement of a camera's image (its second on the refined background too) gives its report
+        by_camera = {id(rc.camera): r for rc, r in zip(LANE.rig.cameras, broken)}
+        monkeypatch.setattr(prig, "estimate_image", lambda img, camera, *a, **kw: by_camera[id(camera)])
         rep = prig.estimate_rig(lane_render.images, LANE.rig, LANE.motion.radius_m)
         assert len(rep.balls) == 1
         b = rep.balls[0]

@@ -1,6 +1,6 @@
 """Score ``ballscan estimate --rig`` on the POV-Ray rig views: one camera against two on independent renders.
 
-    python benchmarks/povray_set/score_rig.py [--scenes DIR] [--pairs 90,30] [--jobs 2]
+    python benchmarks/povray_set/score_rig.py [--scenes DIR] [--pairs 90,30] [--jobs 2] [--recipe RECIPE.toml]
                                               [--save ROWS.json] [--load ROWS.json]
 
 The rig set (``generate.py --rig 0,90,30``, README "Rigs") holds, per seed,
@@ -123,11 +123,11 @@ def nearest(balls: list[dict], t_c: float) -> dict | None:
     return min(cands, key=lambda b: abs(b["t_c_s"] - t_c)) if cands else None
 
 
-def score_view(ballscan: str, scenes: Path, view: str) -> dict:
-    """One view measured alone, in its own frame."""
+def score_view(ballscan: str, scenes: Path, view: str, recipe: Path | None = None) -> dict:
+    """One view measured alone, in its own frame (with ``recipe``'s settings, ``estimate --recipe``)."""
     truth = json.loads((scenes / f"{view}.truth.json").read_text())
     cmd = [ballscan, "estimate", str(scenes / f"{view}.png"), "--camera", str(scenes / f"{view}.camera.toml"),
-           "--radius", repr(truth["radius_m"]), "--json"]
+           "--radius", repr(truth["radius_m"]), "--json"] + (["--recipe", str(recipe)] if recipe else [])
     out, err = run_json(cmd)
     if out is None:
         return {"measured": False, "error": err}
@@ -139,13 +139,13 @@ def score_view(ballscan: str, scenes: Path, view: str) -> dict:
     return {"measured": True, "n_found": len(out["balls"]), **compare(b, truth, cov_v)}
 
 
-def score_pair(ballscan: str, scenes: Path, name: str, angle: int, work: Path) -> dict:
-    """Views ``a000`` + ``aANGLE`` as a rig, in the world frame (view ``a000``'s)."""
+def score_pair(ballscan: str, scenes: Path, name: str, angle: int, work: Path, recipe: Path | None = None) -> dict:
+    """Views ``a000`` + ``aANGLE`` as a rig, in the world frame (view ``a000``'s), with ``recipe``'s settings."""
     truth = json.loads((scenes / f"{name}_a000.truth.json").read_text())
     rig = work / f"{name}_a{angle:03d}.rig.toml"
     rig.write_text(rig_toml(scenes, name, angle))
     cmd = [ballscan, "estimate", "--rig", str(rig), str(scenes / f"{name}_a000.png"), str(scenes / f"{name}_a{angle:03d}.png"),
-           "--radius", repr(truth["radius_m"]), "--json"]
+           "--radius", repr(truth["radius_m"]), "--json"] + (["--recipe", str(recipe)] if recipe else [])
     out, err = run_json(cmd)
     if out is None:
         return {"measured": False, "error": err}
@@ -161,12 +161,12 @@ def score_pair(ballscan: str, scenes: Path, name: str, angle: int, work: Path) -
     return row
 
 
-def score_seed(ballscan: str, scenes: Path, name: str, pairs: list[int], work: Path) -> dict:
+def score_seed(ballscan: str, scenes: Path, name: str, pairs: list[int], work: Path, recipe: Path | None = None) -> dict:
     truth = json.loads((scenes / f"{name}_a000.truth.json").read_text())
     views = [0] + pairs
     row = {"scene": name, "kind": truth["kind"], "conditions": truth["conditions"],
-           "alone": {f"a{a:03d}": score_view(ballscan, scenes, f"{name}_a{a:03d}") for a in views},
-           "pair": {f"a{a:03d}": score_pair(ballscan, scenes, name, a, work) for a in pairs}}
+           "alone": {f"a{a:03d}": score_view(ballscan, scenes, f"{name}_a{a:03d}", recipe) for a in views},
+           "pair": {f"a{a:03d}": score_pair(ballscan, scenes, name, a, work, recipe) for a in pairs}}
     return row
 
 
@@ -278,6 +278,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--load", type=Path)
     ap.add_argument("--per-ball", action="store_true", help="also print every ball's direction errors")
     ap.add_argument("--ballscan", default=shutil.which("ballscan") or "ballscan")
+    ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate (ballscan estimate --recipe): the estimator's settings to score")
     a = ap.parse_args(argv)
     pairs = [int(x) for x in a.pairs.split(",")]
     if a.load:
@@ -290,7 +291,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"score_rig: no rendered rig views under {a.scenes}", file=sys.stderr)
             return 1
         with tempfile.TemporaryDirectory() as tmp, ThreadPoolExecutor(a.jobs) as ex:
-            rows = list(ex.map(lambda n: score_seed(a.ballscan, a.scenes, n, pairs, Path(tmp)), names))
+            rows = list(ex.map(lambda n: score_seed(a.ballscan, a.scenes, n, pairs, Path(tmp), a.recipe), names))
         if a.save:
             a.save.write_text(json.dumps(rows, indent=1) + "\n")
     print("\n".join(tables(rows, pairs)))

@@ -31,7 +31,7 @@ ShadingStart = Literal["guess", "loose_fit"]
 METHODS: tuple[str, ...] = get_args(Method)
 SHADING_STARTS: tuple[str, ...] = get_args(ShadingStart)
 
-_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "refit_law", "limb_envelope", "defocus")
+_BOOLS = ("shading", "pixels", "matched", "flat_field", "refined_background", "rig_refined_background", "refit_law", "limb_envelope", "defocus")
 #: integer fields and their smallest allowed value
 _INTS = {
     "flat_field_min_columns": 0,
@@ -89,6 +89,14 @@ class Recipe:
         as it is; off by default while the balls it changes beyond that
         (an overlapping pair's non-converged fit it reports, single balls
         of the tests) are open (docs/benchmarks.md).
+    rig_refined_background : bool
+        In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure every
+        camera's edges on the refined background, as ``refined_background``
+        does.  The joint fit's direction rests on each camera's measurement
+        across its line of sight, which the detector's level biases in
+        proportion to the noise; the single camera's depth velocity, which
+        the refined level moves, is fixed there by the other camera
+        (docs/benchmarks.md, "Rigs: each camera on the refined background").
     refit_law : bool
         On the window edges' path, fit the shading law and the limb model
         again at the fitted motion, and the motion once more from there.
@@ -170,6 +178,7 @@ class Recipe:
     shading_start: ShadingStart = "guess"
     level_samples: tuple[int, int] = (3, 2)
     refined_background: bool = False
+    rig_refined_background: bool = True
     refit_law: bool = False
     matched_max_gain_sigma: float = 0.0015
     flat_field_min_columns: int = 64

@@ -29,7 +29,9 @@ from ..solve.constraint import Constraint
 from ..solve.derived import WORLD_COVARIANCE_PARAMETERS, derive, launch_angles, world_covariance
 from ..solve.joint import STATE_NAMES, JointCamera, JointResult, fit_joint
 from ..solve.settings import FitSettings
+from ..measure.images import as_line_image
 from .estimate import estimate_image
+from .plausibility import PlausibilityLimits
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport, jsonable
 
@@ -50,7 +52,7 @@ __all__ = [
 ]
 
 #: Flags of a rig's ball (docs/geometry.md), beside the cameras' own.
-RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate")
+RIG_FLAGS = ("single_camera", "inconsistent_camera", "not_converged", "degenerate", "implausible_speed", "implausible_range")
 
 
 @dataclass(frozen=True)
@@ -545,7 +547,49 @@ def measure_group(
     flags += () if res.consistent else ("inconsistent_camera",)
     flags += () if res.converged else ("not_converged",)
     flags += ("degenerate",) if res.undetermined else ()
+    flags += _implausible(rig, res.motion)
     return RigBall(tuple(c.name for c in cams), res.motion, res.covariance, flags, names, res)
+
+
+def _implausible(rig: Rig, motion: WorldMotion | None, limits: PlausibilityLimits = PlausibilityLimits()) -> tuple[str, ...]:
+    """The joint motion's flags of :mod:`ballscan.pipeline.plausibility`: faster than any sports ball, or farther from every camera than any field."""
+    if motion is None:
+        return ()
+    flags = ("implausible_speed",) if motion.speed_mps > limits.max_speed_mps else ()
+    ranges = [float(np.linalg.norm(rc.camera.world_to_camera(np.asarray(motion.position_m)))) for rc in rig.cameras]
+    return flags + (("implausible_range",) if min(ranges) > limits.max_range_m else ())
+
+
+def _joint_reports(images, rig: Rig, radius_m: float, recipe: Recipe, reports, groups: list[dict[int, int]]) -> tuple[EstimateReport, ...]:
+    """Each camera's report with the balls of the groups of two or more cameras measured again on the refined background.
+
+    The joint fit's direction rests on every camera's measurement across
+    its line of sight, which the detector's per-column level biases in
+    proportion to the noise (``Recipe.refined_background``); the depth
+    velocity that the refined level moves in one camera is fixed there by
+    the others.  A ball is taken from the second measurement where exactly
+    one of its balls spans the same lines; otherwise it keeps the first.
+    Each camera that sees such a ball is measured twice.
+    """
+    if not recipe.rig_refined_background:
+        return reports
+    wanted: dict[int, set[int]] = {}
+    for g in groups:
+        if len(g) > 1:
+            for k, j in g.items():
+                wanted.setdefault(k, set()).add(j)
+    refined = replace(recipe, refined_background=True)
+    out = list(reports)
+    for k, js in wanted.items():
+        again = estimate_image(images[k], rig.cameras[k].camera, radius_m, recipe=refined).balls
+        spans = [(b.first_line, b.last_line) for b in again]
+        balls = list(reports[k].balls)
+        for j in js:
+            span = (balls[j].first_line, balls[j].last_line)
+            if spans.count(span) == 1:
+                balls[j] = again[spans.index(span)]
+        out[k] = replace(reports[k], balls=tuple(balls))
+    return tuple(out)
 
 
 def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
@@ -559,7 +603,11 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
     radius_m : float
         Ball radius (m).
     recipe : Recipe
-        Each camera's estimator; the joint fit uses its ``edge_fit`` settings.
+        Each camera's estimator; the joint fit uses its ``edge_fit``
+        settings.  With ``recipe.rig_refined_background`` a ball two or more
+        cameras see enters the joint fit measured on each camera's refined
+        background (:func:`_joint_reports`); a ball one camera sees alone
+        keeps that camera's estimate.
     constraint : Constraint, optional
         A known plane or point (world frame), as a prior of every ball's fit.
 
@@ -572,8 +620,11 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         raise ValueError(f"estimate --rig: {len(images)} images for {len(rig.cameras)} cameras ({', '.join(rig.names)}); give one per camera in the rig's order")
     if recipe.method != "fit":
         raise ValueError("estimate --rig: the joint fit needs --method fit")
+    images = [as_line_image(img) for img in images]
     reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=recipe) for img, rc in zip(images, rig.cameras))
-    balls = [_joint_ball(rig, g, reports, radius_m, recipe, constraint) for g in _matches(rig, reports)]
+    groups = _matches(rig, reports)
+    joint = _joint_reports(images, rig, radius_m, recipe, reports, groups)
+    balls = [_joint_ball(rig, g, joint if len(g) > 1 else reports, radius_m, recipe, constraint) for g in groups]
     balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))
     return RigReport(rig, tuple(r.image for r in reports), tuple(balls), reports)
 
