@@ -90,9 +90,11 @@ class Recipe:
         (an overlapping pair's non-converged fit it reports, single balls
         of the tests) are open (docs/benchmarks.md).
     rig_refined_background : bool
-        In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure every
-        camera's edges on the refined background, as ``refined_background``
-        does.  The joint fit's direction rests on each camera's measurement
+        In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure a ball
+        that two or more cameras see again on each camera's refined
+        background, as ``refined_background`` does, for the joint fit (a
+        ball one camera sees alone keeps its first estimate).  The joint
+        fit's direction rests on each camera's measurement
         across its line of sight, which the detector's level biases in
         proportion to the noise; the single camera's depth velocity, which
         the refined level moves, is fixed there by the other camera
