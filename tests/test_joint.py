@@ -78,6 +78,24 @@ def test_a_ball_both_cameras_see_enters_the_joint_fit_measured_on_the_refined_ba
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
 
 
+def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(lane_render, monkeypatch):
+    # the second measurement is matched to the first by the lines each ball spans: where two balls
+    # span the same lines it cannot tell them apart, and the joint fit takes the first measurement
+    import ballscan.pipeline.rig as prig
+
+    first = [estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    again = [estimate_image(img, rc.camera, LANE.motion.radius_m, recipe=Recipe(refined_background=True))
+             for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    twin = replace(again[1], balls=again[1].balls * 2)
+    by_camera = {id(LANE.rig.cameras[0].camera): again[0], id(LANE.rig.cameras[1].camera): twin}
+    monkeypatch.setattr(prig, "estimate_image", lambda img, camera, *a, **kw: by_camera[id(camera)])
+    out = prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}])
+    assert out[0].balls[0] is again[0].balls[0] and out[1].balls[0] is first[1].balls[0]
+    # a ball one camera sees alone is not measured again
+    monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: pytest.fail("measured again"))
+    assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0}, {1: 0}]) == tuple(first)
+
+
 def test_unknown_clock_offset_recovered():
     truth_offset = 2.5e-4
     sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, LANE.appearance, seed=12, clock_offsets_s={"top": truth_offset})
