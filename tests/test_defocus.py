@@ -169,6 +169,10 @@ def test_blur_measured_on_a_ball_whose_edge_windows_reach_the_sensors_end():
     d = ball.extra
     assert "cut_sensor_end" not in ball.flags
     assert d["defocus_source"] == "image" and d["defocus_px"] == pytest.approx(2.0, abs=0.1) and d["defocus_used"]
+    # a pixel further, its region reaches the end: cut, its cut side's edges are the sensor's, no blur is read
+    m = replace(m, position_m=(0.0, 0.168, 2.5))
+    (ball,) = estimate_image(_blurred_render(2.0, m, seed=1), CAM, m.radius_m, bits=12).balls
+    assert "cut_sensor_end" in ball.flags and ball.extra["defocus_px"] is None and "defocus" not in ball.flags
 
 
 @pytest.mark.slow

@@ -8,6 +8,7 @@ malformed file, no traceback and no hang.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import os
@@ -48,8 +49,22 @@ def _end_started_commands():
     while _STARTED:
         p = _STARTED.pop()
         if p.poll() is None:
+            # its workers hold its pipes: a worker left behind would block the read below
+            try:
+                children = psutil.Process(p.pid).children(recursive=True)
+            except psutil.NoSuchProcess:
+                children = []
+            for c in children:
+                with contextlib.suppress(psutil.NoSuchProcess):
+                    c.kill()
             p.kill()
-        p.communicate()
+        try:
+            p.communicate(timeout=HANG_S)
+        except subprocess.TimeoutExpired:
+            for pipe in (p.stdout, p.stderr, p.stdin):
+                if pipe is not None:
+                    pipe.close()
+            pytest.fail(f"a started command's output stayed open {HANG_S:g} s after it was killed")
 
 
 def _ballscan(*args: str, **kw) -> subprocess.Popen:

@@ -83,7 +83,7 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     # span the same lines it cannot tell them apart, and the joint fit takes the first measurement
     import ballscan.pipeline.rig as prig
 
-    first = [estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    first = tuple(estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras))
     again = [estimate_image(img, rc.camera, LANE.motion.radius_m, recipe=Recipe(refined_background=True))
              for img, rc in zip(lane_render.images, LANE.rig.cameras)]
     twin = replace(again[1], balls=again[1].balls * 2)
@@ -91,9 +91,14 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     monkeypatch.setattr(prig, "estimate_image", lambda img, camera, *a, **kw: by_camera[id(camera)])
     out = prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}])
     assert out[0].balls[0] is again[0].balls[0] and out[1].balls[0] is first[1].balls[0]
-    # a ball one camera sees alone is not measured again
+    # a ball one camera sees alone, or that only one camera's estimate can join, is not measured again
     monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: pytest.fail("measured again"))
-    assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0}, {1: 0}]) == tuple(first)
+    for groups in ([{0: 0}, {1: 0}], [{0: 0, 1: 0}]):
+        # each ball alone, or a pair of which one camera's estimate cannot enter a joint fit
+        reports = first if len(groups) == 2 else (first[0], replace(first[1], balls=(replace(first[1].balls[0], fitted_edges=None),)))
+        assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), reports, groups) is reports
+    # nor where every camera was measured on the refined background already
+    assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(refined_background=True), first, [{0: 0, 1: 0}]) is first
 
 
 def test_unknown_clock_offset_recovered():
@@ -124,6 +129,25 @@ def test_a_joint_motion_beyond_any_ball_is_flagged_as_one_cameras_would_be(veloc
     motion = replace(m, velocity_mps=velocity, position_m=position or m.position_m)
     assert prig._implausible(LANE.rig, motion) == flags
     assert prig._implausible(LANE.rig, None) == ()
+    # what the fit leaves undetermined is not judged, however large (and its square does not overflow)
+    wild = replace(motion, velocity_mps=(7e153, 0.0, 0.0), position_m=(1.5e300, 0.0, 0.0))
+    assert prig._implausible(LANE.rig, wild, undetermined=("x_m", "vx_mps")) == ()
+    assert prig._implausible(LANE.rig, wild) == ("implausible_speed", "implausible_range")
+
+
+def test_a_joint_ball_is_flagged_on_its_joint_motion(lane_render, monkeypatch):
+    import ballscan.pipeline.rig as prig
+
+    picks = {k: estimate_image(img, rc.camera, LANE.motion.radius_m).balls[0] for k, (img, rc) in enumerate(zip(lane_render.images, LANE.rig.cameras))}
+    real = prig.fit_joint
+    for undetermined, flags in (((), ("implausible_speed",)), (("vz_mps",), ())):
+        def fast(*a, **kw):
+            res = real(*a, **kw)
+            return replace(res, motion=replace(res.motion, velocity_mps=(200.0, 0.0, 0.0)), undetermined=undetermined)
+
+        monkeypatch.setattr(prig, "fit_joint", fast)
+        b = prig.measure_group(LANE.rig, picks, LANE.motion.radius_m)
+        assert b.cameras == ("side", "top") and tuple(f for f in b.flags if f.startswith("implausible")) == flags
 
 
 def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
@@ -135,6 +159,11 @@ def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
     own = estimate_image(sim.images[0], LANE.rig.cameras[0].camera, LANE.motion.radius_m).balls[0]
     np.testing.assert_allclose(b.motion.velocity_mps, LANE.rig.cameras[0].camera.vectors_to_world(own.velocity_mps), rtol=1e-12)
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
+    # the camera's own plausibility flags stay with the ball
+    import ballscan.pipeline.rig as prig
+
+    flagged = replace(own, flags=own.flags + ("implausible_speed",))
+    assert "implausible_speed" in prig.measure_group(LANE.rig, {0: flagged}, LANE.motion.radius_m).flags
 
 
 def test_a_uniform_balls_window_edges_enter_the_joint_fit_as_their_pixels():

@@ -93,7 +93,8 @@ class Recipe:
         In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure a ball
         that two or more cameras see again on each camera's refined
         background, as ``refined_background`` does, for the joint fit (a
-        ball one camera sees alone keeps its first estimate).  The joint
+        ball whose joint fit fewer than two cameras' estimates can join
+        keeps its first estimates).  The joint
         fit's direction rests on each camera's measurement
         across its line of sight, which the detector's level biases in
         proportion to the noise; the single camera's depth velocity, which

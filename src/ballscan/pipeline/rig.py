@@ -3,13 +3,17 @@
 :func:`estimate_rig` runs :func:`ballscan.pipeline.estimate.estimate_image`
 on every camera's image, matches each ball of the reference camera with
 the other cameras' balls whose crossing time falls in a window about the
-crossing its motion predicts for them (:func:`match_window_s`), starts the
-joint fit from the cameras' estimates combined by their information
-(:func:`combined_start`) and fits one world motion to all their edges
-(:func:`ballscan.solve.joint.fit_joint`).  A ball seen by one camera only
-keeps that camera's estimate and is flagged ``single_camera``; a camera
+crossing its motion predicts for them (:func:`match_window_s`), measures
+a ball that two or more cameras' estimates can join again on each camera's
+refined background (:func:`_joint_reports`, ``Recipe.rig_refined_background``),
+starts the joint fit from the cameras' estimates combined by their
+information (:func:`combined_start`) and fits one world motion to all their
+edges (:func:`ballscan.solve.joint.fit_joint`).  A ball seen by one camera
+only keeps that camera's estimate and is flagged ``single_camera``; a camera
 that disagrees with the others (a wrong pose, a wrong clock) is named in
-``inconsistent_cameras`` and the ball flagged ``inconsistent_camera``.
+``inconsistent_cameras`` and the ball flagged ``inconsistent_camera``; a
+joint motion no sports ball could have is flagged as one camera's would be
+(``implausible_speed``, ``implausible_range``).
 """
 
 from __future__ import annotations
@@ -29,7 +33,6 @@ from ..solve.constraint import Constraint
 from ..solve.derived import WORLD_COVARIANCE_PARAMETERS, derive, launch_angles, world_covariance
 from ..solve.joint import STATE_NAMES, JointCamera, JointResult, fit_joint
 from ..solve.settings import FitSettings
-from ..measure.images import as_line_image
 from .estimate import estimate_image
 from .plausibility import PlausibilityLimits
 from .recipe import Recipe
@@ -162,7 +165,12 @@ class RigBall:
 
 @dataclass(frozen=True)
 class RigReport:
-    """Every ball of one rig's images, in the order of ``t_c_s``."""
+    """Every ball of one rig's images, in the order of ``t_c_s``.
+
+    ``reports`` holds each camera's first measurement of its image; the
+    estimates a ball's joint fit took (those measured again on the refined
+    background) are in its :attr:`RigBall.estimates`.
+    """
 
     rig: Rig
     images: tuple[str, ...]
@@ -423,7 +431,7 @@ def _single(rig: Rig, k: int, e: BallEstimate, flags: tuple[str, ...]) -> RigBal
     dv = derive(rc.camera, e.position_m, e.velocity_mps, e.covariance)
     off = rc.clock_offset_s if rc.clock_known else 0.0
     motion = WorldMotion(e.radius_m, float(e.t_c_s) - off, tuple(dv.world_position_m), tuple(dv.world_velocity_mps), tuple(rig.gravity_vector()))
-    extra = tuple(f for f in ("not_converged", "degenerate") if f in e.flags)
+    extra = tuple(f for f in ("not_converged", "degenerate", "implausible_speed", "implausible_range") if f in e.flags)
     return RigBall((name,), motion, dv.world_covariance, flags + extra, {name: e})
 
 
@@ -528,7 +536,7 @@ def measure_group(
     stream's crop, :func:`ballscan.geometry.camera.crop_camera`).
     """
     cameras = cameras or {}
-    usable = {k: e for k, e in picks.items() if e.fitted_edges is not None and _crossing(rig.cameras[k], e) is not None}
+    usable = {k: e for k, e in picks.items() if _usable(rig, k, e)}
     names = {rig.cameras[k].name: e for k, e in picks.items()}
     flags: tuple[str, ...] = ("single_camera",) if len(rig.cameras) > 1 and len(usable) < 2 else ()
     start = combined_start(rig, usable, radius_m) if usable else None
@@ -547,37 +555,89 @@ def measure_group(
     flags += () if res.consistent else ("inconsistent_camera",)
     flags += () if res.converged else ("not_converged",)
     flags += ("degenerate",) if res.undetermined else ()
-    flags += _implausible(rig, res.motion)
+    flags += _implausible(rig, res.motion, res.undetermined)
     return RigBall(tuple(c.name for c in cams), res.motion, res.covariance, flags, names, res)
 
 
-def _implausible(rig: Rig, motion: WorldMotion | None, limits: PlausibilityLimits = PlausibilityLimits()) -> tuple[str, ...]:
-    """The joint motion's flags of :mod:`ballscan.pipeline.plausibility`: faster than any sports ball, or farther from every camera than any field."""
+def _usable(rig: Rig, k: int, e: BallEstimate) -> bool:
+    """Whether camera ``k``'s estimate ``e`` can enter a joint fit: it has fitted edges and a crossing time."""
+    return e.fitted_edges is not None and _crossing(rig.cameras[k], e) is not None
+
+
+def _implausible(
+    rig: Rig, motion: WorldMotion | None, undetermined: tuple[str, ...] = (), limits: PlausibilityLimits = PlausibilityLimits()
+) -> tuple[str, ...]:
+    """The flags of :mod:`ballscan.pipeline.plausibility` that a world motion earns.
+
+    ``implausible_speed``: faster than ``limits.max_speed_mps`` (m/s);
+    ``implausible_range``: the centre farther than ``limits.max_range_m``
+    (m) from every camera of ``rig``.  Each is judged only where the motion
+    determines it: no velocity component, or no position component, among
+    ``undetermined`` (:data:`ballscan.solve.joint.STATE_NAMES`) and all of
+    them finite.
+    """
     if motion is None:
         return ()
-    flags = ("implausible_speed",) if motion.speed_mps > limits.max_speed_mps else ()
-    ranges = [float(np.linalg.norm(rc.camera.world_to_camera(np.asarray(motion.position_m)))) for rc in rig.cameras]
-    return flags + (("implausible_range",) if min(ranges) > limits.max_range_m else ())
+    flags: tuple[str, ...] = ()
+    v = np.asarray(motion.velocity_mps, dtype=float)
+    if not any(n in undetermined for n in STATE_NAMES[3:]) and np.all(np.isfinite(v)) and _length(v) > limits.max_speed_mps:
+        flags += ("implausible_speed",)
+    p = np.asarray(motion.position_m, dtype=float)
+    if not any(n in undetermined for n in STATE_NAMES[:3]) and np.all(np.isfinite(p)):
+        if min(_length(rc.camera.world_to_camera(p)) for rc in rig.cameras) > limits.max_range_m:
+            flags += ("implausible_range",)
+    return flags
 
 
-def _joint_reports(images, rig: Rig, radius_m: float, recipe: Recipe, reports, groups: list[dict[int, int]]) -> tuple[EstimateReport, ...]:
-    """Each camera's report with the balls of the groups of two or more cameras measured again on the refined background.
+def _length(x: np.ndarray) -> float:
+    """``|x|`` of a finite vector, scaled by its largest component so that no square overflows."""
+    big = float(np.max(np.abs(x)))
+    return big * float(np.linalg.norm(x / big)) if big > 0 and math.isfinite(big) else big
+
+
+def _joint_reports(
+    images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], groups: list[dict[int, int]]
+) -> tuple[EstimateReport, ...]:
+    """Each camera's report with the balls that enter a joint fit measured again on the refined background.
 
     The joint fit's direction rests on every camera's measurement across
     its line of sight, which the detector's per-column level biases in
     proportion to the noise (``Recipe.refined_background``); the depth
     velocity that the refined level moves in one camera is fixed there by
-    the others.  A ball is taken from the second measurement where exactly
-    one of its balls spans the same lines; otherwise it keeps the first.
-    Each camera that sees such a ball is measured twice.
+    the others.  A group is measured again where two or more of its
+    cameras' estimates can enter the joint fit (:func:`_usable`).  A ball
+    is taken from the second measurement where exactly one of its balls
+    spans the same lines; otherwise it keeps the first.
+
+    Parameters
+    ----------
+    images : list of path, LineImage or array
+        The rig's images, in its cameras' order (read again for the second
+        measurement).
+    rig : Rig
+    radius_m : float
+        Ball radius, m.
+    recipe : Recipe
+    reports : tuple of EstimateReport
+        Each camera's first measurement.
+    groups : list of dict
+        ``{camera index: ball index}`` of :func:`_matches`.
+
+    Returns
+    -------
+    tuple of EstimateReport
+        ``reports`` itself where nothing is measured again (the switch off,
+        the first measurement already refined, or no such group).
     """
-    if not recipe.rig_refined_background:
+    if not recipe.rig_refined_background or recipe.refined_background:
         return reports
     wanted: dict[int, set[int]] = {}
     for g in groups:
-        if len(g) > 1:
+        if sum(_usable(rig, k, reports[k].balls[j]) for k, j in g.items()) >= 2:
             for k, j in g.items():
                 wanted.setdefault(k, set()).add(j)
+    if not wanted:
+        return reports
     refined = replace(recipe, refined_background=True)
     out = list(reports)
     for k, js in wanted.items():
@@ -586,7 +646,7 @@ def _joint_reports(images, rig: Rig, radius_m: float, recipe: Recipe, reports, g
         balls = list(reports[k].balls)
         for j in js:
             span = (balls[j].first_line, balls[j].last_line)
-            if spans.count(span) == 1:
+            if spans.count(span) == 1 and _usable(rig, k, again[spans.index(span)]):
                 balls[j] = again[spans.index(span)]
         out[k] = replace(reports[k], balls=tuple(balls))
     return tuple(out)
@@ -620,7 +680,6 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         raise ValueError(f"estimate --rig: {len(images)} images for {len(rig.cameras)} cameras ({', '.join(rig.names)}); give one per camera in the rig's order")
     if recipe.method != "fit":
         raise ValueError("estimate --rig: the joint fit needs --method fit")
-    images = [as_line_image(img) for img in images]
     reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=recipe) for img, rc in zip(images, rig.cameras))
     groups = _matches(rig, reports)
     joint = _joint_reports(images, rig, radius_m, recipe, reports, groups)
