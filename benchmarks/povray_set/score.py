@@ -341,6 +341,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate (ballscan estimate --recipe): the estimator's settings to score")
     ap.add_argument("--against", type=Path, help="saved rows of another version: compare the fit's errors ball by ball")
     a = ap.parse_args(argv)
+    if a.load and a.recipe:
+        ap.error("--recipe sets how balls are measured; --load measures none")
     if a.load:
         rows = json.loads(a.load.read_text())
     else:

@@ -280,6 +280,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--ballscan", default=shutil.which("ballscan") or "ballscan")
     ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate (ballscan estimate --recipe): the estimator's settings to score")
     a = ap.parse_args(argv)
+    if a.load and a.recipe:
+        ap.error("--recipe sets how balls are measured; --load measures none")
     pairs = [int(x) for x in a.pairs.split(",")]
     if a.load:
         rows = json.loads(a.load.read_text())
