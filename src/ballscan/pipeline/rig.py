@@ -664,10 +664,11 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         Ball radius (m).
     recipe : Recipe
         Each camera's estimator; the joint fit uses its ``edge_fit``
-        settings.  With ``recipe.rig_refined_background`` a ball two or more
-        cameras see enters the joint fit measured on each camera's refined
-        background (:func:`_joint_reports`); a ball one camera sees alone
-        keeps that camera's estimate.
+        settings.  With ``recipe.rig_refined_background`` a ball whose
+        joint fit two or more cameras' estimates can join enters it
+        measured on each camera's refined background
+        (:func:`_joint_reports`); any other ball keeps the cameras' first
+        estimates.
     constraint : Constraint, optional
         A known plane or point (world frame), as a prior of every ball's fit.
 
