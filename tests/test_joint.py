@@ -6,6 +6,7 @@ import json
 import math
 from dataclasses import replace
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -79,26 +80,26 @@ def test_a_ball_both_cameras_see_enters_the_joint_fit_measured_on_the_refined_ba
 
 
 def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(lane_render, monkeypatch):
-    # the second measurement is matched to the first by the lines each ball spans: where two balls
-    # span the same lines it cannot tell them apart, and the joint fit takes the first measurement
+    # the second measurement (of a ball no joint fit takes) is matched to the first by the lines each
+    # ball spans: where two balls span the same lines it cannot tell them apart and keeps the first
     import ballscan.pipeline.rig as prig
 
-    first = tuple(estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras))
-    again = [estimate_image(img, rc.camera, LANE.motion.radius_m, recipe=Recipe(refined_background=True))
-             for img, rc in zip(lane_render.images, LANE.rig.cameras)]
+    first = tuple(estimate_image(img, rc.camera, LANE.motion.radius_m, recipe=Recipe(refined_background=True))
+                  for img, rc in zip(lane_render.images, LANE.rig.cameras))
+    again = [estimate_image(img, rc.camera, LANE.motion.radius_m) for img, rc in zip(lane_render.images, LANE.rig.cameras)]
     twin = replace(again[1], balls=again[1].balls * 2)
     by_camera = {id(LANE.rig.cameras[0].camera): again[0], id(LANE.rig.cameras[1].camera): twin}
     monkeypatch.setattr(prig, "estimate_image", lambda img, camera, *a, **kw: by_camera[id(camera)])
-    out = prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}])
-    assert out[0].balls[0] is again[0].balls[0] and out[1].balls[0] is first[1].balls[0]
-    # a ball one camera sees alone, or that only one camera's estimate can join, is not measured again
-    monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: pytest.fail("measured again"))
-    for groups in ([{0: 0}, {1: 0}], [{0: 0, 1: 0}]):
+    cut_short = (first[0], replace(first[1], balls=(replace(first[1].balls[0], fitted_edges=None),)))
+    for reports, groups in ((first, [{0: 0}, {1: 0}]), (cut_short, [{0: 0, 1: 0}])):
         # each ball alone, or a pair of which one camera's estimate cannot enter a joint fit
-        reports = first if len(groups) == 2 else (first[0], replace(first[1], balls=(replace(first[1].balls[0], fitted_edges=None),)))
-        assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), reports, groups) is reports
-    # nor where every camera was measured on the refined background already
-    assert prig._joint_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(refined_background=True), first, [{0: 0, 1: 0}]) is first
+        out = prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), reports, groups)
+        assert out[0].balls[0] is again[0].balls[0] and out[1].balls[0] is reports[1].balls[0]
+    # a ball that enters a joint fit is not measured again, nor any where the first measurement was the recipe's own
+    monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: pytest.fail("measured again"))
+    assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}]) is first
+    for recipe in (Recipe(refined_background=True), Recipe(rig_refined_background=False)):
+        assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, recipe, first, [{0: 0}, {1: 0}]) is first
 
 
 def test_unknown_clock_offset_recovered():
@@ -127,12 +128,17 @@ def test_a_joint_motion_beyond_any_ball_is_flagged_as_one_cameras_would_be(veloc
         # the centre 250 m along the world's z from the lane's: farther than 200 m from both cameras
         position = tuple(np.asarray(m.position_m) + np.asarray(position))
     motion = replace(m, velocity_mps=velocity, position_m=position or m.position_m)
-    assert prig._implausible(LANE.rig, motion) == flags
-    assert prig._implausible(LANE.rig, None) == ()
+
+    def ball(motion, undetermined=()):
+        # the ball reads its undetermined components from its joint fit
+        return prig.RigBall(("side", "top"), motion, np.eye(7), (), joint=SimpleNamespace(undetermined=undetermined))
+
+    assert prig._implausible(LANE.rig, ball(motion)) == flags
+    assert prig._implausible(LANE.rig, ball(None)) == ()
     # what the fit leaves undetermined is not judged, however large (and its square does not overflow)
     wild = replace(motion, velocity_mps=(7e153, 0.0, 0.0), position_m=(1.5e300, 0.0, 0.0))
-    assert prig._implausible(LANE.rig, wild, undetermined=("x_m", "vx_mps")) == ()
-    assert prig._implausible(LANE.rig, wild) == ("implausible_speed", "implausible_range")
+    assert prig._implausible(LANE.rig, ball(wild, ("x_m", "vx_mps"))) == ()
+    assert prig._implausible(LANE.rig, ball(wild)) == ("implausible_speed", "implausible_range")
 
 
 def test_a_joint_ball_is_flagged_on_its_joint_motion(lane_render, monkeypatch):

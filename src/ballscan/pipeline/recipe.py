@@ -90,13 +90,11 @@ class Recipe:
         (an overlapping pair's non-converged fit it reports, single balls
         of the tests) are open (docs/benchmarks.md).
     rig_refined_background : bool
-        In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure a ball
-        that two or more cameras see again on each camera's refined
-        background, as ``refined_background`` does, for the joint fit (a
-        ball whose joint fit fewer than two cameras' estimates can join
-        keeps its first estimates).  The joint
-        fit's direction rests on each camera's measurement
-        across its line of sight, which the detector's level biases in
+        In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure every
+        camera on its refined background, as ``refined_background`` does,
+        and a ball that fewer than two cameras' estimates can join again as
+        this recipe says (it keeps one camera's depth).  The joint fit's
+        direction rests on each camera's measurement across its line of sight, which the detector's level biases in
         proportion to the noise; the single camera's depth velocity, which
         the refined level moves, is fixed there by the other camera
         (docs/benchmarks.md, "Rigs: each camera on the refined background").

@@ -3,10 +3,10 @@
 :func:`estimate_rig` runs :func:`ballscan.pipeline.estimate.estimate_image`
 on every camera's image, matches each ball of the reference camera with
 the other cameras' balls whose crossing time falls in a window about the
-crossing its motion predicts for them (:func:`match_window_s`), measures
-a ball that two or more cameras' estimates can join again on each camera's
-refined background (:func:`_joint_reports`, ``Recipe.rig_refined_background``),
-starts the joint fit from the cameras' estimates combined by their
+crossing its motion predicts for them (:func:`match_window_s`; each camera
+measured on its refined background, and a ball that no joint fit takes
+measured again on the detector's, :func:`_alone_reports`,
+``Recipe.rig_refined_background``), starts the joint fit from the cameras' estimates combined by their
 information (:func:`combined_start`) and fits one world motion to all their
 edges (:func:`ballscan.solve.joint.fit_joint`).  A ball seen by one camera
 only keeps that camera's estimate and is flagged ``single_camera``; a camera
@@ -167,9 +167,10 @@ class RigBall:
 class RigReport:
     """Every ball of one rig's images, in the order of ``t_c_s``.
 
-    ``reports`` holds each camera's first measurement of its image; the
-    estimates a ball's joint fit took (those measured again on the refined
-    background) are in its :attr:`RigBall.estimates`.
+    ``reports`` holds each camera's first measurement of its image (on
+    its refined background with ``Recipe.rig_refined_background``); the
+    estimates each ball took, a ball measured again among them, are in its
+    :attr:`RigBall.estimates`.
     """
 
     rig: Rig
@@ -555,8 +556,8 @@ def measure_group(
     flags += () if res.consistent else ("inconsistent_camera",)
     flags += () if res.converged else ("not_converged",)
     flags += ("degenerate",) if res.undetermined else ()
-    flags += _implausible(rig, res.motion, res.undetermined)
-    return RigBall(tuple(c.name for c in cams), res.motion, res.covariance, flags, names, res)
+    ball = RigBall(tuple(c.name for c in cams), res.motion, res.covariance, flags, names, res)
+    return replace(ball, flags=flags + _implausible(rig, ball))
 
 
 def _usable(rig: Rig, k: int, e: BallEstimate) -> bool:
@@ -564,50 +565,44 @@ def _usable(rig: Rig, k: int, e: BallEstimate) -> bool:
     return e.fitted_edges is not None and _crossing(rig.cameras[k], e) is not None
 
 
-def _implausible(
-    rig: Rig, motion: WorldMotion | None, undetermined: tuple[str, ...] = (), limits: PlausibilityLimits = PlausibilityLimits()
-) -> tuple[str, ...]:
-    """The flags of :mod:`ballscan.pipeline.plausibility` that a world motion earns.
+def _implausible(rig: Rig, ball: RigBall, limits: PlausibilityLimits = PlausibilityLimits()) -> tuple[str, ...]:
+    """The flags of :mod:`ballscan.pipeline.plausibility` that a joint ball's motion earns.
 
     ``implausible_speed``: faster than ``limits.max_speed_mps`` (m/s);
     ``implausible_range``: the centre farther than ``limits.max_range_m``
-    (m) from every camera of ``rig``.  Each is judged only where the motion
-    determines it: no velocity component, or no position component, among
-    ``undetermined`` (:data:`ballscan.solve.joint.STATE_NAMES`) and all of
-    them finite.
+    (m) from every camera of ``rig``.  Each is judged only where the fit
+    determines the components it needs, finite (``math.hypot`` does not
+    overflow on the solver's far values).
     """
-    if motion is None:
+    if ball.motion is None:
         return ()
     flags: tuple[str, ...] = ()
-    v = np.asarray(motion.velocity_mps, dtype=float)
-    if not any(n in undetermined for n in STATE_NAMES[3:]) and np.all(np.isfinite(v)) and _length(v) > limits.max_speed_mps:
+    v = ball.motion.velocity_mps
+    if ball.velocity_determined and all(map(math.isfinite, v)) and math.hypot(*v) > limits.max_speed_mps:
         flags += ("implausible_speed",)
-    p = np.asarray(motion.position_m, dtype=float)
-    if not any(n in undetermined for n in STATE_NAMES[:3]) and np.all(np.isfinite(p)):
-        if min(_length(rc.camera.world_to_camera(p)) for rc in rig.cameras) > limits.max_range_m:
+    p = np.asarray(ball.motion.position_m, dtype=float)
+    if not set(STATE_NAMES[:3]) & set(ball.undetermined) and np.all(np.isfinite(p)):
+        if min(math.hypot(*rc.camera.world_to_camera(p)) for rc in rig.cameras) > limits.max_range_m:
             flags += ("implausible_range",)
     return flags
 
 
-def _length(x: np.ndarray) -> float:
-    """``|x|`` of a finite vector, scaled by its largest component so that no square overflows."""
-    big = float(np.max(np.abs(x)))
-    return big * float(np.linalg.norm(x / big)) if big > 0 and math.isfinite(big) else big
-
-
-def _joint_reports(
+def _alone_reports(
     images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], groups: list[dict[int, int]]
 ) -> tuple[EstimateReport, ...]:
-    """Each camera's report with the balls that enter a joint fit measured again on the refined background.
+    """Each camera's report with the balls that enter no joint fit measured again on the detector's background.
 
-    The joint fit's direction rests on every camera's measurement across
-    its line of sight, which the detector's per-column level biases in
-    proportion to the noise (``Recipe.refined_background``); the depth
-    velocity that the refined level moves in one camera is fixed there by
-    the others.  A group is measured again where two or more of its
-    cameras' estimates can enter the joint fit (:func:`_usable`).  A ball
-    is taken from the second measurement where exactly one of its balls
-    spans the same lines; otherwise it keeps the first.
+    With ``recipe.rig_refined_background`` every camera is measured first on
+    its refined background (:func:`estimate_rig`): the joint fit's direction
+    rests on each camera's measurement across its line of sight, which the
+    detector's per-column level biases in proportion to the noise
+    (``Recipe.refined_background``), and the depth velocity that the
+    refined level moves in one camera is fixed there by the others.  A ball
+    whose group has fewer than two estimates that can join a fit
+    (:func:`_usable`) keeps one camera's estimate, depth and all, so it is
+    measured again with ``recipe`` itself.  It is taken from that second
+    measurement where exactly one of its balls spans the same lines, and
+    keeps the first otherwise.
 
     Parameters
     ----------
@@ -626,30 +621,39 @@ def _joint_reports(
     Returns
     -------
     tuple of EstimateReport
-        ``reports`` itself where nothing is measured again (the switch off,
-        the first measurement already refined, or no such group).
+        ``reports`` itself where nothing is measured again (the first
+        measurement was the recipe's own, or every ball joins a fit).
     """
-    if not recipe.rig_refined_background or recipe.refined_background:
+    if not _refines_first(recipe):
         return reports
     wanted: dict[int, set[int]] = {}
     for g in groups:
-        if sum(_usable(rig, k, reports[k].balls[j]) for k, j in g.items()) >= 2:
+        if not _joins(rig, g, reports):
             for k, j in g.items():
                 wanted.setdefault(k, set()).add(j)
     if not wanted:
         return reports
-    refined = replace(recipe, refined_background=True)
     out = list(reports)
     for k, js in wanted.items():
-        again = estimate_image(images[k], rig.cameras[k].camera, radius_m, recipe=refined).balls
+        again = estimate_image(images[k], rig.cameras[k].camera, radius_m, recipe=recipe).balls
         spans = [(b.first_line, b.last_line) for b in again]
         balls = list(reports[k].balls)
         for j in js:
             span = (balls[j].first_line, balls[j].last_line)
-            if spans.count(span) == 1 and _usable(rig, k, again[spans.index(span)]):
+            if spans.count(span) == 1:
                 balls[j] = again[spans.index(span)]
         out[k] = replace(reports[k], balls=tuple(balls))
     return tuple(out)
+
+
+def _refines_first(recipe: Recipe) -> bool:
+    """Whether :func:`estimate_rig` measures first on the refined background where ``recipe`` itself would not."""
+    return recipe.rig_refined_background and not recipe.refined_background
+
+
+def _joins(rig: Rig, group: dict[int, int], reports) -> bool:
+    """Whether two or more of a group's estimates can enter its joint fit."""
+    return sum(_usable(rig, k, reports[k].balls[j]) for k, j in group.items()) >= 2
 
 
 def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
@@ -664,11 +668,10 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         Ball radius (m).
     recipe : Recipe
         Each camera's estimator; the joint fit uses its ``edge_fit``
-        settings.  With ``recipe.rig_refined_background`` a ball whose
-        joint fit two or more cameras' estimates can join enters it
-        measured on each camera's refined background
-        (:func:`_joint_reports`); any other ball keeps the cameras' first
-        estimates.
+        settings.  With ``recipe.rig_refined_background`` every camera is
+        measured on its refined background, and a ball whose joint fit
+        fewer than two cameras' estimates can join is measured again with
+        ``recipe`` itself (:func:`_alone_reports`).
     constraint : Constraint, optional
         A known plane or point (world frame), as a prior of every ball's fit.
 
@@ -681,10 +684,11 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         raise ValueError(f"estimate --rig: {len(images)} images for {len(rig.cameras)} cameras ({', '.join(rig.names)}); give one per camera in the rig's order")
     if recipe.method != "fit":
         raise ValueError("estimate --rig: the joint fit needs --method fit")
-    reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=recipe) for img, rc in zip(images, rig.cameras))
+    first = replace(recipe, refined_background=True) if _refines_first(recipe) else recipe
+    reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=first) for img, rc in zip(images, rig.cameras))
     groups = _matches(rig, reports)
-    joint = _joint_reports(images, rig, radius_m, recipe, reports, groups)
-    balls = [_joint_ball(rig, g, joint if len(g) > 1 else reports, radius_m, recipe, constraint) for g in groups]
+    alone = _alone_reports(images, rig, radius_m, recipe, reports, groups)
+    balls = [_joint_ball(rig, g, reports if _joins(rig, g, reports) else alone, radius_m, recipe, constraint) for g in groups]
     balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))
     return RigReport(rig, tuple(r.image for r in reports), tuple(balls), reports)
 
