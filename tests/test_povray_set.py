@@ -450,3 +450,37 @@ def test_the_speed_errors_vx_part_and_the_fits_residual_are_kept_and_tabulated()
     for group, z in (("fit residual < 0.05 px", "2.00"), ("fit residual 0.05-0.1 px", "4.00"), ("fit residual >= 0.1 px", "6.00")):
         line = next(x for x in table if x.startswith(f"| {group} |"))
         assert line.split(" | ")[1] == "1" and line.rstrip(" |").endswith(z)
+
+
+# ------------------------------------------------------------------ new noise on the clean renders
+import renoise  # noqa: E402
+
+
+def test_renoise_reads_each_quantity_and_leaves_out_what_the_fit_did_not_determine():
+    ball = {"velocity_mps": [-10.0, 1.0, None], "velocity_sigma_mps": [0.01, 0.02, None], "speed_mps": None,
+            "speed_sigma_mps": None, "speed_transverse_mps": 10.05, "speed_transverse_sigma_mps": 0.01,
+            "direction_deg": [5.7, None], "direction_sigma_deg": [0.1, None]}
+    v = renoise._values(ball)
+    assert v["vx"] == (10.0, 0.01) and v["across"] == (10.05, 0.01) and v["psi_y"] == (5.7, 0.1)
+    assert v["vz"] is None and v["speed"] is None and v["psi_z"] is None
+    t = renoise._truth({"velocity_mps": [-3.0, 4.0, 12.0], "direction_deg": {"psi_y": 127.0, "psi_z": 104.0}})
+    assert t["vx"] == 3.0 and t["across"] == 5.0 and t["speed"] == 13.0 and t["vz"] == 12.0
+
+
+def test_renoise_scatter_and_bias_of_a_measured_scene(tmp_path):
+    # pv0034, a dark ball measured on every draw: new noise scatters the fit's |V.x| by about its
+    # reported sigma (0.4-1.2 over 3-12 draws), and every figure is finite
+    row = renoise.scene_row(SCENES, "pv0034", 3, [], tmp_path)
+    assert row is not None and row["n"] == 3 and not list(tmp_path.iterdir())
+    for q in ("vx", "across", "vz", "speed", "psi_y", "psi_z"):
+        f = row[q]
+        assert all(math.isfinite(f[k]) for k in ("std", "bias", "clean", "rms", "cover1")), (q, f)
+        assert f["std"] > 0.0 and 0.0 <= f["cover1"] <= 1.0
+    assert 0.2 < row["vx"]["std"] < 3.0
+
+
+def test_renoise_leaves_out_two_ball_scenes_and_unmeasured_balls(tmp_path):
+    two = next(json.loads(p.read_text())["scene"] for p in sorted(SCENES.glob("pv*.truth.json")) if "balls" in json.loads(p.read_text()))
+    assert renoise.scene_row(SCENES, two, 3, [], tmp_path) is None
+    # pv0137: a bright ball whose depth velocity the fit leaves undetermined
+    assert renoise.scene_row(SCENES, "pv0137", 3, [], tmp_path) is None

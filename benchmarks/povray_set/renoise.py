@@ -1,0 +1,229 @@
+"""New noise on the POV-Ray set's clean renders: how far the estimate's scatter and its bias are from its reported sigma, scene by scene.
+
+    python benchmarks/povray_set/renoise.py [--split tune] [--every K] [--reps N] [--jobs J] [--recipe R.toml] [--plane] [NAME ...]
+
+Each scene's noise-free render (``scenes/clean/``, linear grey) gets ``N``
+new draws of the scene's own sensor model (``render.add_noise``: shot and
+read noise, PRNU column gains, the bit depth, its dead or hot column, with
+other seeds than the committed image's) and ``ballscan estimate --json``
+runs on each, in-process.  One coverage figure over ~110 balls mixes two
+things a change must tell apart: the scatter that the noise causes, which
+the reported sigma is meant to describe, and an offset that every draw of
+the same scene shares (the model's error on that scene's limb, shading and
+background, and any bias of the estimator in the noise).  Per scene and
+quantity (``|V.x|``, the speed across the line of sight ``|(V.x, V.y)|``,
+``V.z``, the speed and the direction angles ``psi_y`` and ``psi_z``; each
+against its reported sigma, the median over the draws):
+
+- ``std``: the standard deviation over the draws / sigma (1 for a sigma
+  that describes the noise's scatter);
+- ``bias``: (mean over the draws - truth) / sigma;
+- ``clean``: the error on the noise-free render / sigma (the model's part
+  of the bias: ``bias - clean`` is what the noise adds to it).
+
+``--plane`` gives each estimate a known constraint, the plane the true path
+rolls on with its normal nearest the line of sight (the case where the
+constraint, not the image, fixes the depth motion), and the camera the true
+crossing direction; the direction angles are then not reported (the
+constrained fit's JSON gives elevation and azimuth instead).
+
+Scenes with one true ball that the default fit measures (velocity
+determined) on at least 3 draws.  The last lines give the medians over the
+scenes of ``std``, ``|bias|``, the share of draws within 1 sigma and the
+RMS error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from render import add_noise  # noqa: E402
+
+#: the quantities compared: |V.x|, |(V.x, V.y)|, V.z, the speed (m/s) and the direction angles (degrees)
+QUANTITIES = ("vx", "across", "vz", "speed", "psi_y", "psi_z")
+
+
+UNITS = {"vx": "m/s", "across": "m/s", "vz": "m/s", "speed": "m/s", "psi_y": "deg", "psi_z": "deg"}
+
+
+def _values(ball: dict) -> dict[str, tuple[float, float] | None]:
+    """Each quantity's (value, sigma) in one ``--json`` ball, None where the fit left it undetermined."""
+    v, s = ball.get("velocity_mps"), ball.get("velocity_sigma_mps")
+    out: dict[str, tuple[float, float] | None] = dict.fromkeys(QUANTITIES)
+    if v is None or s is None or v[0] is None:
+        return out
+    out["vx"] = (abs(v[0]), s[0])
+    out["vz"] = (v[2], s[2]) if v[2] is not None and s[2] is not None else None
+    if ball.get("speed_mps") is not None and ball.get("speed_sigma_mps") is not None:
+        out["speed"] = (ball["speed_mps"], ball["speed_sigma_mps"])
+    if ball.get("speed_transverse_mps") is not None and ball.get("speed_transverse_sigma_mps") is not None:
+        out["across"] = (ball["speed_transverse_mps"], ball["speed_transverse_sigma_mps"])
+    d, ds = ball.get("direction_deg"), ball.get("direction_sigma_deg")
+    for k, name in enumerate(("psi_y", "psi_z")):
+        if d is not None and ds is not None and d[k] is not None and ds[k] is not None:
+            out[name] = (d[k], ds[k])
+    return out
+
+
+def _truth(tb: dict) -> dict[str, float]:
+    v = np.asarray(tb["velocity_mps"], dtype=float)
+    d = tb["direction_deg"]
+    return {"vx": abs(v[0]), "across": math.hypot(v[0], v[1]), "vz": v[2], "speed": float(np.linalg.norm(v)), "psi_y": d["psi_y"], "psi_z": d["psi_z"]}
+
+
+def plane_through_path(truth: dict) -> str:
+    """The ``--constraint`` of the plane the true path rolls on whose normal is nearest the line of sight's axis ``z``.
+
+    The normal ``n`` is ``z`` less its component along the velocity (so the
+    velocity lies in the plane and the plane pins the depth motion), and
+    ``D = n . X(t_c) - R`` puts the ball's centre its radius above it.
+    """
+    v = np.asarray(truth["velocity_mps"], dtype=float)
+    u = v / np.linalg.norm(v)
+    n = np.array([0.0, 0.0, 1.0]) - u[2] * u
+    n /= np.linalg.norm(n)
+    d = float(n @ np.asarray(truth["position_m"], dtype=float)) - truth["radius_m"]
+    return "plane:" + ",".join(repr(float(x)) for x in (*n, d))
+
+
+def _camera_with_crossing(scenes: Path, name: str, truth: dict, tmp: Path) -> Path:
+    """A copy of the scene's camera file stating the true crossing direction (a constraint's plane is not symmetric in ``V.x``)."""
+    path = tmp / f"{name}.camera.toml"
+    sign = "+x" if truth["velocity_mps"][0] > 0 else "-x"
+    path.write_text((scenes / f"{name}.camera.toml").read_text() + f'crossing = "{sign}"\n')
+    return path
+
+
+def _estimate(image: Path, camera: Path, radius_m: float, t_c_s: float, extra: list[str]) -> dict | None:
+    """The ``--json`` ball nearest in ``t_c`` to the truth's, None where none was found."""
+    from ballscan.cli.app import main
+
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
+        code = main(["estimate", str(image), "--camera", str(camera), "--radius", repr(radius_m), "--json", *extra])
+    balls = json.loads(buf.getvalue())["balls"] if code == 0 else []
+    return min(balls, key=lambda b: abs((b.get("t_c_s") or 0.0) - t_c_s)) if balls else None
+
+
+def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, plane: bool = False) -> dict | None:
+    """One scene's figures (see the module's notes), None where it does not qualify.
+
+    With ``plane`` every estimate has the true path's plane as a known
+    constraint (:func:`plane_through_path`) and its camera the true crossing.
+    """
+    truth = json.loads((scenes / f"{name}.truth.json").read_text())
+    if "balls" in truth:
+        return None
+    camera = scenes / f"{name}.camera.toml"
+    if plane:
+        camera = _camera_with_crossing(scenes, name, truth, tmp)
+        extra = [*extra, "--constraint", plane_through_path(truth)]
+    clean16 = np.asarray(Image.open(scenes / "clean" / f"{name}.png"))
+    y = clean16.astype(float) / 65535.0
+    true = _truth(truth)
+    draws: dict[str, list[tuple[float, float]]] = {q: [] for q in QUANTITIES}
+    for k in range(reps):
+        path = tmp / f"{name}_{k}.png"
+        Image.fromarray(add_noise(y, truth["noise"], 10_000 + truth["seed"] * 100 + k)).save(path)
+        ball = _estimate(path, camera, truth["radius_m"], truth["t_c_s"], extra)
+        path.unlink()
+        for q, vs in (_values(ball) if ball else {}).items():
+            if vs is not None and math.isfinite(vs[0]) and math.isfinite(vs[1]) and vs[1] > 0:
+                draws[q].append(vs)
+    if len(draws["vx"]) < 3:
+        if plane:
+            camera.unlink()
+        return None
+    # the noise-free render at the noisy images' scale (the detector's noise floor needs a level)
+    clean_ball = _estimate(scenes / "clean" / f"{name}.png", camera, truth["radius_m"], truth["t_c_s"], extra)
+    clean = _values(clean_ball) if clean_ball else dict.fromkeys(QUANTITIES)
+    if plane:
+        camera.unlink()
+    row = {"scene": name, "conditions": truth["conditions"], "n": len(draws["vx"])}
+    for q in QUANTITIES:
+        if len(draws[q]) < 3:
+            continue
+        val, sig = (np.array(a) for a in zip(*draws[q]))
+        s = float(np.median(sig))
+        c = clean.get(q)
+        row[q] = {
+            "std": float(np.std(val, ddof=1)) / s,
+            "bias": float(np.mean(val) - true[q]) / s,
+            "clean": (c[0] - true[q]) / s if c is not None else None,
+            "rms": float(np.sqrt(np.mean((val - true[q]) ** 2))),
+            "cover1": float(np.mean(np.abs(val - true[q]) <= sig)),
+        }
+    return row
+
+
+def _table(rows: list[dict]) -> None:
+    print(f"{'scene':<8} {'n':>2}  " + "  ".join(f"{q + ' std / bias / clean':>27}" for q in QUANTITIES) + "  conditions")
+    for r in rows:
+        cells = []
+        for q in QUANTITIES:
+            f = r.get(q)
+            cells.append(f"{'-':>27}" if f is None else f"{f['std']:8.2f} {f['bias']:+8.2f} " + (f"{f['clean']:+8.2f}" if f["clean"] is not None else f"{'-':>8}"))
+        print(f"{r['scene']:<8} {r['n']:>2}  " + "  ".join(cells) + "  " + ",".join(r["conditions"]))
+    print()
+    for q in QUANTITIES:
+        fs = [r[q] for r in rows if q in r]
+        if not fs:
+            continue
+        med = lambda key, f=abs: float(np.median([f(x[key]) for x in fs]))  # noqa: E731
+        cl = [abs(x["clean"]) for x in fs if x["clean"] is not None]
+        print(
+            f"{q:<7} {len(fs):3d} scenes: std / sigma median {med('std', float):.2f}, |bias| / sigma median {med('bias'):.2f}"
+            f" (noise-free {np.median(cl) if cl else math.nan:.2f}), within 1 sigma {100 * med('cover1', float):.0f} % (median scene),"
+            f" RMS error median {med('rms', float):.4g} {UNITS[q]}"
+        )
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("names", nargs="*", help="scenes (default: every K-th single-ball scene of the split)")
+    ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
+    ap.add_argument("--split", default="tune", choices=("tune", "report", "all"))
+    ap.add_argument("--every", type=int, default=4, help="every K-th scene of the split (default 4)")
+    ap.add_argument("--reps", type=int, default=8, help="noise draws per scene (default 8)")
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate")
+    ap.add_argument("--plane", action="store_true", help="give every estimate the true path's plane as a known constraint (--constraint), and the true crossing")
+    ap.add_argument("--save", type=Path, help="write the rows as JSON")
+    a = ap.parse_args()
+    if a.reps < 3 or a.every < 1:
+        raise SystemExit("error: --reps must be at least 3 and --every at least 1")
+    names = a.names
+    if not names:
+        picks = []
+        for p in sorted(a.scenes.glob("pv*.truth.json")):
+            t = json.loads(p.read_text())
+            if (a.split == "all" or t["split"] == a.split) and "balls" not in t:
+                picks.append(t["scene"])
+        names = picks[:: a.every]
+    extra = ["--recipe", str(a.recipe)] if a.recipe else []
+    import tempfile
+
+    from joblib import Parallel, delayed
+
+    with tempfile.TemporaryDirectory() as tmp:
+        rows = Parallel(n_jobs=a.jobs)(delayed(scene_row)(a.scenes, n, a.reps, extra, Path(tmp), a.plane) for n in names)
+    rows = [r for r in rows if r is not None]
+    _table(rows)
+    if a.save:
+        a.save.write_text(json.dumps(rows, indent=1))
+
+
+if __name__ == "__main__":
+    main()
