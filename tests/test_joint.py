@@ -100,6 +100,8 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}]) is first
     for recipe in (Recipe(refined_background=True), Recipe(rig_refined_background=False)):
         assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, recipe, first, [{0: 0}, {1: 0}]) is first
+    # beside a constraint one estimate is enough for a joint fit: a ball one camera sees alone is not measured again
+    assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0}, {1: 0}], constrained=True) is first
 
 
 def test_unknown_clock_offset_recovered():
@@ -271,6 +273,26 @@ def test_plane_constraint_on_a_rail_ball():
     assert per_unit[0] <= per_unit[1]
     assert b.joint.constraint is con and b.joint.constraint_residuals.shape == (2,)
     assert "constraint" in b.to_dict()
+
+
+def test_one_camera_beside_a_constraint_is_measured_on_its_refined_background():
+    # the plane fixes the depth motion as a second camera would: the camera's estimate that enters
+    # the constrained fit is its refined background's, and with the switch off the detector's
+    p = get_preset("paper-rail")
+    img = render(p.camera, [(p.motion, p.appearance)], p.n_lines, seed=4).image
+    R = p.motion.radius_m
+    con = Constraint("plane", normal=(0.0, 0.0, -1.0), offset_m=-(1.0 + R), sigma_m=1e-3, sigma_deg=0.1)
+    rig = single_camera_rig(p.camera)
+    refined = estimate_image(img, p.camera, R, recipe=Recipe(refined_background=True)).balls[0]
+    level = estimate_image(img, p.camera, R).balls[0]
+    assert not np.array_equal(refined.velocity_mps, level.velocity_mps)
+    for recipe, own in ((Recipe(), refined), (Recipe(rig_refined_background=False), level)):
+        b = estimate_rig([img], rig, R, recipe=recipe, constraint=con).balls[0]
+        assert b.joint is not None and b.cameras == ("camera",)
+        np.testing.assert_array_equal(b.estimates["camera"].velocity_mps, own.velocity_mps)
+    # without the constraint the ball is one camera's own estimate, the recipe's
+    alone = estimate_rig([img], rig, R).balls[0]
+    np.testing.assert_array_equal(alone.estimates["camera"].velocity_mps, level.velocity_mps)
 
 
 def test_constraint_residuals_vanish_on_the_truth():

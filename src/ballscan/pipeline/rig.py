@@ -588,7 +588,8 @@ def _implausible(rig: Rig, ball: RigBall, limits: PlausibilityLimits = Plausibil
 
 
 def _alone_reports(
-    images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], groups: list[dict[int, int]]
+    images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], groups: list[dict[int, int]],
+    constrained: bool = False,
 ) -> tuple[EstimateReport, ...]:
     """Each camera's report with the balls that enter no joint fit measured again on the detector's background.
 
@@ -597,10 +598,11 @@ def _alone_reports(
     rests on each camera's measurement across its line of sight, which the
     detector's per-column level biases in proportion to the noise
     (``Recipe.refined_background``), and the depth velocity that the
-    refined level moves in one camera is fixed there by the others.  A ball
-    whose group has fewer than two estimates that can join a fit
-    (:func:`_usable`) keeps one camera's estimate, depth and all, so it is
-    measured again with ``recipe`` itself.  It is taken from that second
+    refined level moves in one camera is fixed there by the others, or by
+    a known constraint.  A ball whose group has fewer estimates that can
+    join a fit (:func:`_usable`) than its fit needs (two; one with a
+    constraint, ``constrained``) keeps one camera's estimate, depth and
+    all, so it is measured again with ``recipe`` itself.  It is taken from that second
     measurement where exactly one of its balls spans the same lines, and
     keeps the first otherwise.
 
@@ -628,7 +630,7 @@ def _alone_reports(
         return reports
     wanted: dict[int, set[int]] = {}
     for g in groups:
-        if not _joins(rig, g, reports):
+        if not _joins(rig, g, reports, constrained):
             for k, j in g.items():
                 wanted.setdefault(k, set()).add(j)
     if not wanted:
@@ -651,9 +653,9 @@ def _refines_first(recipe: Recipe) -> bool:
     return recipe.rig_refined_background and not recipe.refined_background
 
 
-def _joins(rig: Rig, group: dict[int, int], reports) -> bool:
-    """Whether two or more of a group's estimates can enter its joint fit."""
-    return sum(_usable(rig, k, reports[k].balls[j]) for k, j in group.items()) >= 2
+def _joins(rig: Rig, group: dict[int, int], reports, constrained: bool = False) -> bool:
+    """Whether a group's estimates that can enter its joint fit are enough for one: two, or one beside a known constraint."""
+    return sum(_usable(rig, k, reports[k].balls[j]) for k, j in group.items()) >= (1 if constrained else 2)
 
 
 def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
@@ -670,8 +672,9 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         Each camera's estimator; the joint fit uses its ``edge_fit``
         settings.  With ``recipe.rig_refined_background`` every camera is
         measured on its refined background, and a ball whose joint fit
-        fewer than two cameras' estimates can join is measured again with
-        ``recipe`` itself (:func:`_alone_reports`).
+        fewer than two cameras' estimates can join (one, with a
+        ``constraint``) is measured again with ``recipe`` itself
+        (:func:`_alone_reports`).
     constraint : Constraint, optional
         A known plane or point (world frame), as a prior of every ball's fit.
 
@@ -687,8 +690,9 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
     first = replace(recipe, refined_background=True) if _refines_first(recipe) else recipe
     reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=first) for img, rc in zip(images, rig.cameras))
     groups = _matches(rig, reports)
-    alone = _alone_reports(images, rig, radius_m, recipe, reports, groups)
-    balls = [_joint_ball(rig, g, reports if _joins(rig, g, reports) else alone, radius_m, recipe, constraint) for g in groups]
+    constrained = constraint is not None
+    alone = _alone_reports(images, rig, radius_m, recipe, reports, groups, constrained)
+    balls = [_joint_ball(rig, g, reports if _joins(rig, g, reports, constrained) else alone, radius_m, recipe, constraint) for g in groups]
     balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))
     return RigReport(rig, tuple(r.image for r in reports), tuple(balls), reports)
 
