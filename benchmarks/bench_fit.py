@@ -1,6 +1,6 @@
 """Timing and precision of the "paper" and "fit" methods and of the fit of the ends' pixels (run on demand, not a test).
 
-    python benchmarks/bench_fit.py [--runs N] [--noise DN] [--repeat K]
+    python benchmarks/bench_fit.py [--runs N] [--noise DN] [--repeat K] [--recipe FILE]
 
 On the same rendered images — an untextured, unshaded tennis ball
 (R = 33.5 mm, z = 3 m, f = 3000 px, 50 kHz, 30 m/s; perpendicular and
@@ -35,13 +35,16 @@ import argparse  # noqa: E402
 import math  # noqa: E402
 import statistics  # noqa: E402
 import time  # noqa: E402
+from dataclasses import replace  # noqa: E402
+from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
 
 from ballscan.geometry.camera import LineScanCamera, line_times  # noqa: E402
 from ballscan.measure.detection import detect  # noqa: E402
 from ballscan.pipeline.estimate import estimate_region  # noqa: E402
-from ballscan.pipeline.recipe import Recipe  # noqa: E402
+from ballscan.errors import RecipeFileError  # noqa: E402
+from ballscan.pipeline.recipe import Recipe, load_recipe  # noqa: E402
 from ballscan.measure.images import LineImage  # noqa: E402
 from ballscan.geometry.motion import BallMotion  # noqa: E402
 from ballscan.solve.precision import pixel_crlb  # noqa: E402
@@ -61,9 +64,12 @@ WHITE_DN = 1000.0  # DN per unit of linear grey; contrast = 700 DN
 TRUTH_SAMPLING = RenderSettings(samples_across=16, samples_time=64, cap_across=16, cap_time=64)
 
 
-# label -> estimate_region's recipe: the paper's method, the default fit
-# (edges and levelled end areas) and the fit of the ends' pixels
-METHODS = {"paper": Recipe(method="paper"), "fit": Recipe(), "pixels": Recipe(pixels=True)}
+def methods(base: Recipe = Recipe()) -> dict[str, Recipe]:
+    """Label -> estimate_region's recipe: the paper's method, the fit of ``base`` (by default: edges and levelled end areas) and its fit of the ends' pixels."""
+    return {"paper": replace(base, method="paper"), "fit": replace(base, method="fit"), "pixels": replace(base, method="fit", pixels=True)}
+
+
+METHODS = methods()
 
 
 def geometries() -> list[tuple[str, BallMotion]]:
@@ -75,15 +81,15 @@ def geometries() -> list[tuple[str, BallMotion]]:
     return out
 
 
-def run(runs: int, noise_dn: float, repeat: int = 3) -> list[dict]:
-    """Estimate every geometry ``runs`` times with every method; one row per (geometry, method)."""
+def run(runs: int, noise_dn: float, repeat: int = 3, recipes: dict[str, Recipe] = METHODS) -> list[dict]:
+    """Estimate every geometry ``runs`` times with every method of ``recipes``; one row per (geometry, method)."""
     rows = []
     t_lines = line_times(CAMERA, N_LINES)
     for gname, m in geometries():
         clean = render(CAMERA, (m, Appearance.flat(BALL)), N_LINES, background_level=BACKGROUND, noise=None, settings=TRUTH_SAMPLING).clean
         contrast = (BALL - BACKGROUND) * WHITE_DN
         bound = pixel_crlb(CAMERA, m, noise_dn, contrast)
-        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "shade": [], "refine": [], "least": [], "err": [], "z": [], "vz": []} for k in METHODS}
+        acc: dict[str, dict[str, list[float]]] = {k: {"det": [], "edges": [], "shade": [], "refine": [], "least": [], "err": [], "z": [], "vz": []} for k in recipes}
         rng = np.random.default_rng(12345)
         for _ in range(runs):
             data = clean * WHITE_DN + noise_dn * rng.standard_normal(clean.shape)
@@ -93,8 +99,8 @@ def run(runs: int, noise_dn: float, repeat: int = 3) -> list[dict]:
             t_det = time.perf_counter() - t0
             if len(det.regions) != 1:
                 raise RuntimeError(f"{gname}: {len(det.regions)} balls detected")
-            for method in METHODS:
-                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method])
+            for method, recipe in recipes.items():
+                b = estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, recipe)
                 a = acc[method]
                 a["det"].append(t_det)
                 if method != "paper":
@@ -103,7 +109,7 @@ def run(runs: int, noise_dn: float, repeat: int = 3) -> list[dict]:
                     a["refine"].append(b.extra["time_fit_s"])
                     # the least of `repeat` runs of the same estimate: the fit's
                     # cost without this shared machine's interruptions
-                    again = [estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, METHODS[method]) for _ in range(repeat - 1)]
+                    again = [estimate_region(img, det, det.regions[0], CAMERA, RADIUS_M, t_lines, recipe) for _ in range(repeat - 1)]
                     a["least"].append(min([b.extra["time_fit_s"]] + [x.extra["time_fit_s"] for x in again]))
                 else:
                     a["edges"].append(0.0)
@@ -145,8 +151,13 @@ def main() -> None:
     ap.add_argument("--runs", type=int, default=30, help="noisy images per geometry")
     ap.add_argument("--noise", type=float, default=5.0, help="Gaussian pixel noise, DN (contrast 700 DN)")
     ap.add_argument("--repeat", type=int, default=3, help="runs of each fit for the 'least' column (the fit's cost without the machine's interruptions)")
+    ap.add_argument("--recipe", type=Path, help="a recipe file (TOML) whose changes all three methods take, e.g. a physics stage switched off")
     a = ap.parse_args()
-    rows = run(a.runs, a.noise, max(a.repeat, 1))
+    try:
+        recipes = methods(load_recipe(a.recipe)) if a.recipe else METHODS
+    except RecipeFileError as exc:
+        raise SystemExit(f"error: {exc}") from None
+    rows = run(a.runs, a.noise, max(a.repeat, 1), recipes)
     print(f"{a.runs} images per geometry, pixel noise {a.noise:g} DN, contrast {(BALL - BACKGROUND) * WHITE_DN:g} DN, one core")
     hdr = f"{'geometry':<15} {'method':<6} {'detect ms':>9} {'edges ms':>9} {'shade ms':>8} {'refine ms':>9} {'least ms':>8} {'e+r ms':>7} {'bias m/s':>10} {'RMSE m/s':>10} {'CRLB m/s':>10} {'RMSE/CRLB':>9} {'1-sig cov':>9} {'vz RMSE':>8} {'vz CRLB':>8}"
     print(hdr)
