@@ -41,7 +41,7 @@ from .derived import COVARIANCE_PARAMETERS
 from .problem import whitened_jacobian
 from .settings import FitSettings
 from .synthetic import synthetic_edges
-from .uncertainty import param_scale, propagate
+from .uncertainty import param_scale, propagate, significant_square
 from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
@@ -206,8 +206,8 @@ def speed_error_quantiles(velocity_mps: np.ndarray, velocity_cov: np.ndarray, pr
 
     The velocity estimate is ``V_hat ~ N(V, C_v)``; its speed is the one
     :func:`ballscan.solve.uncertainty.propagate` reports, in the eigenbasis
-    ``C_v = Q diag(lambda) Q^T``: ``sqrt(sum_k max(a_k^2 - lambda_k, 0))``
-    with ``a = Q^T V_hat``.  The three components of ``a`` are independent
+    ``C_v = Q diag(lambda) Q^T``: the root of the sum of
+    :func:`ballscan.solve.uncertainty.significant_square` of ``a = Q^T V_hat``.  The three components of ``a`` are independent
     normals; each is taken at ``n_per_axis`` points, the midpoints of equal
     probability ``(i + 1/2) / n`` of its distribution, and the quantiles are
     those of ``|speed(a) - |V||`` over the ``n^3`` equally weighted
@@ -242,7 +242,7 @@ def speed_error_quantiles(velocity_mps: np.ndarray, velocity_cov: np.ndarray, pr
     nd = NormalDist()
     z = np.array([nd.inv_cdf((i + 0.5) / n_per_axis) for i in range(n_per_axis)])
     # each axis's squared, corrected component, then their sum over the n^3 grid
-    sq = [np.maximum((a[k] + math.sqrt(lam[k]) * z) ** 2 - lam[k], 0.0) for k in range(3)]
+    sq = [significant_square(a[k] + math.sqrt(lam[k]) * z, lam[k]) for k in range(3)]
     total = sq[0][:, None, None] + sq[1][None, :, None] + sq[2][None, None, :]
     err = np.abs(np.sqrt(total) - float(np.linalg.norm(V)))
     return np.quantile(err.ravel(), p)
