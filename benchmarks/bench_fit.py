@@ -66,7 +66,7 @@ TRUTH_SAMPLING = RenderSettings(samples_across=16, samples_time=64, cap_across=1
 
 def methods(base: Recipe = Recipe()) -> dict[str, Recipe]:
     """Label -> estimate_region's recipe: the paper's method, the fit of ``base`` (by default: edges and levelled end areas) and its fit of the ends' pixels."""
-    return {"paper": replace(base, method="paper"), "fit": replace(base, method="fit"), "pixels": replace(base, method="fit", pixels=True)}
+    return {"paper": replace(base, method="paper"), "fit": replace(base, method="fit", pixels=False), "pixels": replace(base, method="fit", pixels=True)}
 
 
 METHODS = methods()

@@ -100,8 +100,12 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}]) is first
     for recipe in (Recipe(refined_background=True), Recipe(rig_refined_background=False)):
         assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, recipe, first, [{0: 0}, {1: 0}]) is first
-    # beside a constraint one estimate is enough for a joint fit: a ball one camera sees alone is not measured again
+    # beside a plane one estimate is enough for a joint fit: a ball one camera sees alone is not measured again,
+    # unless that camera's clock is unknown (the joint fit's start needs a camera with a known clock)
     assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0}, {1: 0}], constrained=True) is first
+    free_clock = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], clock_offset_s=None, clock_sigma_s=1e-3))
+    assert prig._joins(free_clock, {0: 0}, first, constrained=True) and not prig._joins(free_clock, {1: 0}, first, constrained=True)
+    assert not prig._joins(LANE.rig, {0: 0}, first) and prig._joins(LANE.rig, {0: 0, 1: 0}, first)
 
 
 def test_unknown_clock_offset_recovered():
@@ -290,9 +294,12 @@ def test_one_camera_beside_a_constraint_is_measured_on_its_refined_background():
         b = estimate_rig([img], rig, R, recipe=recipe, constraint=con).balls[0]
         assert b.joint is not None and b.cameras == ("camera",)
         np.testing.assert_array_equal(b.estimates["camera"].velocity_mps, own.velocity_mps)
-    # without the constraint the ball is one camera's own estimate, the recipe's
-    alone = estimate_rig([img], rig, R).balls[0]
-    np.testing.assert_array_equal(alone.estimates["camera"].velocity_mps, level.velocity_mps)
+    # without the constraint, or beside a point (which need not fix the depth motion), the ball is
+    # one camera's estimate on the recipe's own level
+    point = Constraint("point", point_m=tuple(np.asarray(p.motion.position_m)), sigma_m=0.01)
+    for c in (None, point):
+        b = estimate_rig([img], rig, R, constraint=c).balls[0]
+        np.testing.assert_array_equal(b.estimates["camera"].velocity_mps, level.velocity_mps)
 
 
 def test_constraint_residuals_vanish_on_the_truth():

@@ -221,7 +221,7 @@ def test_speed_error_quantiles_against_monte_carlo():
     q = speed_error_quantiles(V, A, (0.25, 0.5, 0.75))
     assert np.allclose(q / s, [0.31864, 0.67449, 1.15035], rtol=0.01), q / s
     # A weak depth velocity: against 10^6 seeded draws of the bias-corrected speed
-    # (each component's square less its variance where it stands out of its noise).
+    # (each component's square less its variance, in the measure it stands out of its noise).
     from ballscan.solve.uncertainty import significant_square
 
     C = np.diag([2e-6, 5e-4, 0.5])
@@ -232,10 +232,7 @@ def test_speed_error_quantiles_against_monte_carlo():
     a = Q.T @ V + np.sqrt(lam) * rng.standard_normal((1_000_000, 3))
     e = np.abs(np.sqrt(significant_square(a, lam).sum(axis=1)) - np.linalg.norm(V))
     mc = np.quantile(e, (0.25, 0.5, 0.75, 0.9))
-    # the quartiles within 3 %; the 90th percentile within 6 % (measured 5.0 %:
-    # a component that crosses the noise threshold jumps the speed by its
-    # variance over the speed, which the grid's 64 points per axis resolve coarsely)
-    assert np.allclose(q[:3], mc[:3], rtol=0.03) and np.isclose(q[3], mc[3], rtol=0.06), (q, mc)
+    assert np.allclose(q, mc, rtol=0.03), (q, mc)
     # the median is then far below 0.6745 x the RMS the bound's speed_sigma_mps states
     assert q[1] < 0.3 * 0.6745 * np.sqrt(np.mean(e**2))
     assert np.all(np.isinf(speed_error_quantiles(V, np.full((3, 3), np.inf), (0.5,))))

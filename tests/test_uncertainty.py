@@ -1,6 +1,8 @@
-"""The fit's covariance: parameters that a full-rank fit still does not fix (solve.uncertainty.unfixed_parameters, unfixed_across_sight)."""
+"""The fit's covariance: parameters that a full-rank fit still does not fix (solve.uncertainty.unfixed_parameters, unfixed_across_sight), and the speed's components (significant_square)."""
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import pytest
@@ -192,3 +194,20 @@ def test_a_clean_limb_adds_nothing_and_a_wavy_one_widens_the_velocity():
     assert wavy.inflation > 5.0
     grow = np.sqrt(np.diag(wavy.covariance) / np.diag(wavy.statistical_covariance))
     assert grow[5] > 1.02 and grow[0] > 1.02
+
+
+def test_significant_square_takes_a_component_in_the_measure_it_stands_out_of_its_noise():
+    from ballscan.solve.uncertainty import SPEED_COMPONENT_VARIANCES, significant_square
+
+    lo, hi = SPEED_COMPONENT_VARIANCES
+    lam = 4.0
+    # below the first threshold nothing, from the second the unbiased square a^2 - lambda
+    assert significant_square(np.array([math.sqrt(lo * lam) * 0.999]), lam)[0] == 0.0
+    assert significant_square(np.array([3.0 * math.sqrt(lam)]), lam)[0] == pytest.approx(8.0 * lam)
+    # continuous in the measured component (no jump of the speed at either threshold)
+    a = np.linspace(0.0, 2.0 * math.sqrt(hi * lam), 20001)
+    f = significant_square(a, lam)
+    assert np.all(np.diff(f) >= 0.0) and np.max(np.diff(f)) < 1e-2
+    # a component of zero variance counts whole; NaN stays NaN
+    assert significant_square(np.array([0.5]), 0.0)[0] == 0.25
+    assert np.isnan(significant_square(np.array([np.nan]), lam)[0]) and np.isnan(significant_square(np.array([1.0]), np.nan)[0])

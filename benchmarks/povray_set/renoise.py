@@ -24,8 +24,9 @@ against its reported sigma, the median over the draws):
 ``--plane`` gives each estimate a known constraint, the plane the true path
 rolls on with its normal nearest the line of sight (the case where the
 constraint, not the image, fixes the depth motion), and the camera the true
-crossing direction; the direction angles are then not reported (the
-constrained fit's JSON gives elevation and azimuth instead).
+crossing direction; the speed across the line of sight and the direction
+angles are then not compared (the constrained fit's JSON gives elevation
+and azimuth instead).
 
 Scenes with one true ball that the default fit measures (velocity
 determined) on at least 3 draws.  The last lines give the medians over the
@@ -146,7 +147,7 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
         if plane:
             camera.unlink()
         return None
-    # the noise-free render at the noisy images' scale (the detector's noise floor needs a level)
+    # the noise-free render itself (16-bit linear grey)
     clean_ball = _estimate(scenes / "clean" / f"{name}.png", camera, truth["radius_m"], truth["t_c_s"], extra)
     clean = _values(clean_ball) if clean_ball else dict.fromkeys(QUANTITIES)
     if plane:

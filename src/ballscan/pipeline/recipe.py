@@ -93,12 +93,12 @@ class Recipe:
         In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure every
         camera on its refined background, as ``refined_background`` does,
         and a ball that fewer than two cameras' estimates can join (none,
-        beside a known constraint) again as this recipe says (it keeps one
+        beside a known plane) again as this recipe says (it keeps one
         camera's depth).  The joint fit's direction rests on each camera's
         measurement across its line of sight, which the detector's level
         biases in proportion to the noise; the single camera's depth
         velocity, which the refined level moves, is fixed there by the
-        other camera or the constraint (docs/benchmarks.md, "Rigs: each
+        other camera or the plane (docs/benchmarks.md, "Rigs: each
         camera on the refined background", "A constraint beside one
         camera: its refined background").
     refit_law : bool

@@ -599,10 +599,11 @@ def _alone_reports(
     detector's per-column level biases in proportion to the noise
     (``Recipe.refined_background``), and the depth velocity that the
     refined level moves in one camera is fixed there by the others, or by
-    a known constraint.  A ball whose group has fewer estimates that can
-    join a fit (:func:`_usable`) than its fit needs (two; one with a
-    constraint, ``constrained``) keeps one camera's estimate, depth and
-    all, so it is measured again with ``recipe`` itself.  It is taken from that second
+    a known plane.  A ball whose group has fewer estimates that can join a
+    fit (:func:`_usable`) than its fit needs (:func:`_joins`: two; one from
+    a camera with a known clock beside a plane, ``constrained``) keeps one
+    camera's estimate, depth and all, so it is measured again with
+    ``recipe`` itself.  It is taken from that second
     measurement where exactly one of its balls spans the same lines, and
     keeps the first otherwise.
 
@@ -654,8 +655,9 @@ def _refines_first(recipe: Recipe) -> bool:
 
 
 def _joins(rig: Rig, group: dict[int, int], reports, constrained: bool = False) -> bool:
-    """Whether a group's estimates that can enter its joint fit are enough for one: two, or one beside a known constraint."""
-    return sum(_usable(rig, k, reports[k].balls[j]) for k, j in group.items()) >= (1 if constrained else 2)
+    """Whether a group's estimates that can enter its joint fit are enough for one: two, or, beside a known plane (``constrained``), one from a camera whose clock is known (the joint fit's start needs one)."""
+    usable = [k for k, j in group.items() if _usable(rig, k, reports[k].balls[j])]
+    return len(usable) >= 2 or (constrained and any(rig.cameras[k].clock_known for k in usable))
 
 
 def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
@@ -672,9 +674,9 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
         Each camera's estimator; the joint fit uses its ``edge_fit``
         settings.  With ``recipe.rig_refined_background`` every camera is
         measured on its refined background, and a ball whose joint fit
-        fewer than two cameras' estimates can join (one, with a
-        ``constraint``) is measured again with ``recipe`` itself
-        (:func:`_alone_reports`).
+        fewer than two cameras' estimates can join (none of a camera with
+        a known clock, beside a plane ``constraint``) is measured again
+        with ``recipe`` itself (:func:`_alone_reports`).
     constraint : Constraint, optional
         A known plane or point (world frame), as a prior of every ball's fit.
 
@@ -690,7 +692,8 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
     first = replace(recipe, refined_background=True) if _refines_first(recipe) else recipe
     reports = tuple(estimate_image(img, rc.camera, radius_m, recipe=first) for img, rc in zip(images, rig.cameras))
     groups = _matches(rig, reports)
-    constrained = constraint is not None
+    # a plane fixes the depth motion as a second camera would; a point need not (near the viewing plane)
+    constrained = constraint is not None and constraint.kind == "plane"
     alone = _alone_reports(images, rig, radius_m, recipe, reports, groups, constrained)
     balls = [_joint_ball(rig, g, reports if _joins(rig, g, reports, constrained) else alone, radius_m, recipe, constraint) for g in groups]
     balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))

@@ -41,16 +41,16 @@ __all__ = [
 #: +-70 degrees in that component: the image does not fix it
 MAX_VELOCITY_SIGMA_RATIO = 3.0
 
-#: a velocity component in the covariance's eigenbasis enters the speed
-#: where its square exceeds this many variances, by its square less one
-#: variance (:func:`significant_square`): one camera's depth velocity is
-#: mostly far below its own sigma (on the POV-Ray set's tuning half 0.23 of
-#: it in median), and a component that noise alone lifts above one variance
-#: would raise the speed by that noise.  3 (1.7 sigma): on the tuning half
-#: the median speed error 1.229 -> 0.890 %, the reference scenes unchanged
-#: (4 drops a 1.9-sigma depth velocity of theirs; docs/benchmarks.md, "One
-#: camera's speed: the depth velocity where it stands out of its noise")
-WEAK_COMPONENT_VARIANCES = 3.0
+#: a velocity component in the covariance's eigenbasis enters the speed by
+#: its square less its variance (:func:`significant_square`) in full where
+#: that square exceeds the second of these many variances, not at all below
+#: the first, in proportion between (the speed stays continuous in the
+#: measurement).  One camera's depth velocity is mostly far below its own
+#: sigma, and a component that noise alone lifts above one variance would
+#: raise the speed by that noise; a depth velocity from 1.7 sigma on enters
+#: whole (docs/benchmarks.md, "One camera's speed: the depth velocity where
+#: it stands out of its noise")
+SPEED_COMPONENT_VARIANCES = (2.0, 3.0)
 
 
 def param_scale(camera: LineScanCamera, motion: BallMotion) -> np.ndarray:
@@ -401,10 +401,10 @@ class MotionUncertainty:
         ``C_v = Q diag(lambda) Q^T`` with ``a = Q^T V``,
         ``speed^2`` is the sum of :func:`significant_square` of the ``a_k``:
         ``a_k^2 - lambda_k``, which estimates the true ``(Q^T V_true)_k^2``
-        without bias, where ``a_k^2`` exceeds :data:`WEAK_COMPONENT_VARIANCES`
-        variances, and 0 where the component does not stand out of its
-        noise (one camera's depth velocity, mostly far below its sigma,
-        would otherwise raise the speed by its noise alone).  Only the
+        without bias, where ``a_k^2`` exceeds the second of
+        :data:`SPEED_COMPONENT_VARIANCES` variances, 0 below the first and a
+        part between (one camera's depth velocity, mostly far below its
+        sigma, would otherwise raise the speed by its noise alone).  Only the
         poorly determined direction (chiefly ``vz``) is changed noticeably;
         when its true component is about its own sigma the corrected speed
         is biased low (a reference serve: -0.8 % with ``sigma_vz`` 10 m/s on
@@ -450,7 +450,7 @@ class MotionUncertainty:
 
 
 def significant_square(a: np.ndarray, lam) -> np.ndarray:
-    """Each velocity component's square without the bias of its noise where the component stands out of that noise, 0 elsewhere.
+    """Each velocity component's square less the bias of its noise, in the measure the component stands out of that noise.
 
     Parameters
     ----------
@@ -462,11 +462,17 @@ def significant_square(a: np.ndarray, lam) -> np.ndarray:
     Returns
     -------
     ndarray
-        ``a^2 - lambda`` where ``a^2 > c lambda`` (``c =``
-        :data:`WEAK_COMPONENT_VARIANCES`), else 0, (m/s)^2.
+        ``max(a^2 - lambda, 0) * w``, (m/s)^2, with ``w`` rising linearly
+        from 0 to 1 as ``a^2 / lambda`` goes from the first to the second
+        of :data:`SPEED_COMPONENT_VARIANCES` (``w = 1`` where ``lambda =
+        0``); NaN where ``a`` or ``lambda`` is.
     """
+    lo, hi = SPEED_COMPONENT_VARIANCES
     sq = a * a
-    return np.where(sq > WEAK_COMPONENT_VARIANCES * lam, np.maximum(sq - lam, 0.0), 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w = np.clip((sq / lam - lo) / (hi - lo), 0.0, 1.0)
+    w = np.where(np.asarray(lam) == 0, 1.0, w)
+    return np.maximum(sq - lam, 0.0) * w
 
 
 def _debiased_speed(V: np.ndarray, Cv: np.ndarray, at_truth: bool = False) -> tuple[float, float]:
@@ -497,6 +503,8 @@ def _debiased_speed(V: np.ndarray, Cv: np.ndarray, at_truth: bool = False) -> tu
     speed = float(np.sqrt(kept.sum()))
     w = int(np.argmax(lam))
     strong = np.arange(3) != w
+    # the true speeds the measurement allows: its unbiased squares (a strong
+    # component that significant_square leaves out differs by its variance only)
     s_strong2 = float(sq[strong].sum())
     # d speed / d a_k = a_k / speed; where the correction removed (nearly)
     # everything the derivative is taken at the uncorrected strong part, and
