@@ -255,13 +255,19 @@ def test_a_camera_whose_own_fit_is_degenerate_still_enters_the_joint_fit(lane_re
     assert C[5, 5] >= 1e6 and C[5, :5] @ C[5, :5] == 0.0
 
 
-def test_plane_constraint_on_a_rail_ball():
+@pytest.fixture(scope="module")
+def rail_plane():
+    """The paper's rail ball rendered, its plane and the one-camera rig: (preset, image, radius, plane, rig)."""
     p = get_preset("paper-rail")
     img = render(p.camera, [(p.motion, p.appearance)], p.n_lines, seed=4).image
     R = p.motion.radius_m
     # the rail's plane behind the ball, facing the camera: its centre at depth 1 m
     con = Constraint("plane", normal=(0.0, 0.0, -1.0), offset_m=-(1.0 + R), sigma_m=1e-3, sigma_deg=0.1)
-    rig = single_camera_rig(p.camera)
+    return p, img, R, con, single_camera_rig(p.camera)
+
+
+def test_plane_constraint_on_a_rail_ball(rail_plane):
+    p, img, R, con, rig = rail_plane
     b = estimate_rig([img], rig, R, constraint=con).balls[0]
     free = estimate_image(img, p.camera, R).balls[0]
     truth = WorldMotion(R, p.motion.t_c_s, p.motion.position_m, p.motion.velocity_mps)
@@ -279,14 +285,10 @@ def test_plane_constraint_on_a_rail_ball():
     assert "constraint" in b.to_dict()
 
 
-def test_one_camera_beside_a_constraint_is_measured_on_its_refined_background():
+def test_one_camera_beside_a_constraint_is_measured_on_its_refined_background(rail_plane):
     # the plane fixes the depth motion as a second camera would: the camera's estimate that enters
     # the constrained fit is its refined background's, and with the switch off the detector's
-    p = get_preset("paper-rail")
-    img = render(p.camera, [(p.motion, p.appearance)], p.n_lines, seed=4).image
-    R = p.motion.radius_m
-    con = Constraint("plane", normal=(0.0, 0.0, -1.0), offset_m=-(1.0 + R), sigma_m=1e-3, sigma_deg=0.1)
-    rig = single_camera_rig(p.camera)
+    p, img, R, con, rig = rail_plane
     refined = estimate_image(img, p.camera, R, recipe=Recipe(refined_background=True)).balls[0]
     level = estimate_image(img, p.camera, R).balls[0]
     assert not np.array_equal(refined.velocity_mps, level.velocity_mps)
