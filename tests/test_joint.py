@@ -106,6 +106,12 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     free_clock = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], clock_offset_s=None, clock_sigma_s=1e-3))
     assert prig._joins(free_clock, {0: 0}, first, constrained=True) and not prig._joins(free_clock, {1: 0}, first, constrained=True)
     assert not prig._joins(LANE.rig, {0: 0}, first) and prig._joins(LANE.rig, {0: 0, 1: 0}, first)
+    # two usable estimates from cameras whose clocks are both unknown (a third camera's, the rig's clock,
+    # unusable) give no start either: measured again
+    monkeypatch.setattr(prig, "_usable", lambda rig, k, ball: True)
+    free_pair = SimpleNamespace(cameras=[SimpleNamespace(clock_known=False)] * 2)
+    reports = [SimpleNamespace(balls=[None])] * 2
+    assert not prig._joins(free_pair, {0: 0, 1: 0}, reports) and not prig._joins(free_pair, {0: 0}, reports, constrained=True)
 
 
 def test_unknown_clock_offset_recovered():

@@ -208,6 +208,6 @@ def test_significant_square_takes_a_component_in_the_measure_it_stands_out_of_it
     a = np.linspace(0.0, 2.0 * math.sqrt(hi * lam), 20001)
     f = significant_square(a, lam)
     assert np.all(np.diff(f) >= 0.0) and np.max(np.diff(f)) < 1e-2
-    # a component of zero variance counts whole; NaN stays NaN
-    assert significant_square(np.array([0.5]), 0.0)[0] == 0.25
+    # a component of zero (or, rounded, negative) variance counts whole; a plain float works; NaN stays NaN
+    assert significant_square(np.array([0.5]), 0.0)[0] == 0.25 and significant_square(0.5, -1e-18) == pytest.approx(0.25)
     assert np.isnan(significant_square(np.array([np.nan]), lam)[0]) and np.isnan(significant_square(np.array([1.0]), np.nan)[0])

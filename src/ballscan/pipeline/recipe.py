@@ -93,7 +93,8 @@ class Recipe:
         In a rig (:func:`ballscan.pipeline.rig.estimate_rig`), measure every
         camera on its refined background, as ``refined_background`` does,
         and a ball that fewer than two cameras' estimates can join (none,
-        beside a known plane) again as this recipe says (it keeps one
+        beside a known plane; among them none of a camera with a known
+        clock) again as this recipe says (it keeps one
         camera's depth).  The joint fit's direction rests on each camera's
         measurement across its line of sight, which the detector's level
         biases in proportion to the noise; the single camera's depth

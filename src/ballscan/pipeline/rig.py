@@ -620,6 +620,8 @@ def _alone_reports(
         Each camera's first measurement.
     groups : list of dict
         ``{camera index: ball index}`` of :func:`_matches`.
+    constrained : bool
+        A known plane enters every joint fit (one camera's estimate then makes one).
 
     Returns
     -------
@@ -655,9 +657,9 @@ def _refines_first(recipe: Recipe) -> bool:
 
 
 def _joins(rig: Rig, group: dict[int, int], reports, constrained: bool = False) -> bool:
-    """Whether a group's estimates that can enter its joint fit are enough for one: two, or, beside a known plane (``constrained``), one from a camera whose clock is known (the joint fit's start needs one)."""
+    """Whether a group's estimates that can enter its joint fit are enough for one: two, or one beside a known plane (``constrained``), among them one from a camera whose clock is known (the joint fit's start needs one, :func:`combined_start`)."""
     usable = [k for k, j in group.items() if _usable(rig, k, reports[k].balls[j])]
-    return len(usable) >= 2 or (constrained and any(rig.cameras[k].clock_known for k in usable))
+    return any(rig.cameras[k].clock_known for k in usable) and (len(usable) >= 2 or constrained)
 
 
 def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe(), constraint: Constraint | None = None) -> RigReport:
