@@ -93,19 +93,21 @@ def test_a_ball_whose_lines_another_ball_spans_too_keeps_its_first_measurement(l
     cut_short = (first[0], replace(first[1], balls=(replace(first[1].balls[0], fitted_edges=None),)))
     for reports, groups in ((first, [{0: 0}, {1: 0}]), (cut_short, [{0: 0, 1: 0}])):
         # each ball alone, or a pair of which one camera's estimate cannot enter a joint fit
+        assert not any(prig._joins(LANE.rig, g, reports) for g in groups)
         out = prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), reports, groups)
         assert out[0].balls[0] is again[0].balls[0] and out[1].balls[0] is reports[1].balls[0]
-    # a ball that enters a joint fit is not measured again, nor any where the first measurement was the recipe's own
+    # with every group in a joint fit nothing is measured again, nor where the first measurement was the recipe's own
     monkeypatch.setattr(prig, "estimate_image", lambda *a, **kw: pytest.fail("measured again"))
-    assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0, 1: 0}]) is first
+    assert prig._joins(LANE.rig, {0: 0, 1: 0}, first)
+    assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, []) is first
     for recipe in (Recipe(refined_background=True), Recipe(rig_refined_background=False)):
         assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, recipe, first, [{0: 0}, {1: 0}]) is first
-    # beside a plane one estimate is enough for a joint fit: a ball one camera sees alone is not measured again,
-    # unless that camera's clock is unknown (the joint fit's start needs a camera with a known clock)
-    assert prig._alone_reports(lane_render.images, LANE.rig, LANE.motion.radius_m, Recipe(), first, [{0: 0}, {1: 0}], constrained=True) is first
+    # beside a plane one estimate is enough for a joint fit, unless that camera's clock is unknown
+    # (the joint fit's start needs a camera with a known clock)
+    assert prig._joins(LANE.rig, {0: 0}, first, constrained=True) and prig._joins(LANE.rig, {1: 0}, first, constrained=True)
     free_clock = LANE.rig.with_camera(1, replace(LANE.rig.cameras[1], clock_offset_s=None, clock_sigma_s=1e-3))
     assert prig._joins(free_clock, {0: 0}, first, constrained=True) and not prig._joins(free_clock, {1: 0}, first, constrained=True)
-    assert not prig._joins(LANE.rig, {0: 0}, first) and prig._joins(LANE.rig, {0: 0, 1: 0}, first)
+    assert not prig._joins(LANE.rig, {0: 0}, first)
     # two usable estimates from cameras whose clocks are both unknown (a third camera's, the rig's clock,
     # unusable) give no start either: measured again
     monkeypatch.setattr(prig, "_usable", lambda rig, k, ball: True)

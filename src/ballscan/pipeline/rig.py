@@ -588,8 +588,7 @@ def _implausible(rig: Rig, ball: RigBall, limits: PlausibilityLimits = Plausibil
 
 
 def _alone_reports(
-    images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], groups: list[dict[int, int]],
-    constrained: bool = False,
+    images: list, rig: Rig, radius_m: float, recipe: Recipe, reports: tuple[EstimateReport, ...], apart: list[dict[int, int]]
 ) -> tuple[EstimateReport, ...]:
     """Each camera's report with the balls that enter no joint fit measured again on the detector's background.
 
@@ -600,8 +599,7 @@ def _alone_reports(
     (``Recipe.refined_background``), and the depth velocity that the
     refined level moves in one camera is fixed there by the others, or by
     a known plane.  A ball whose group has fewer estimates that can join a
-    fit (:func:`_usable`) than its fit needs (:func:`_joins`: two; one from
-    a camera with a known clock beside a plane, ``constrained``) keeps one
+    fit (:func:`_usable`) than its fit needs (:func:`_joins`) keeps one
     camera's estimate, depth and all, so it is measured again with
     ``recipe`` itself.  It is taken from that second
     measurement where exactly one of its balls spans the same lines, and
@@ -618,10 +616,9 @@ def _alone_reports(
     recipe : Recipe
     reports : tuple of EstimateReport
         Each camera's first measurement.
-    groups : list of dict
-        ``{camera index: ball index}`` of :func:`_matches`.
-    constrained : bool
-        A known plane enters every joint fit (one camera's estimate then makes one).
+    apart : list of dict
+        The groups (``{camera index: ball index}`` of :func:`_matches`) that
+        no joint fit takes.
 
     Returns
     -------
@@ -632,10 +629,9 @@ def _alone_reports(
     if not _refines_first(recipe):
         return reports
     wanted: dict[int, set[int]] = {}
-    for g in groups:
-        if not _joins(rig, g, reports, constrained):
-            for k, j in g.items():
-                wanted.setdefault(k, set()).add(j)
+    for g in apart:
+        for k, j in g.items():
+            wanted.setdefault(k, set()).add(j)
     if not wanted:
         return reports
     out = list(reports)
@@ -696,8 +692,9 @@ def estimate_rig(images, rig: Rig, radius_m: float, *, recipe: Recipe = Recipe()
     groups = _matches(rig, reports)
     # a plane fixes the depth motion as a second camera would; a point need not (near the viewing plane)
     constrained = constraint is not None and constraint.kind == "plane"
-    alone = _alone_reports(images, rig, radius_m, recipe, reports, groups, constrained)
-    balls = [_joint_ball(rig, g, reports if _joins(rig, g, reports, constrained) else alone, radius_m, recipe, constraint) for g in groups]
+    joins = [_joins(rig, g, reports, constrained) for g in groups]
+    alone = _alone_reports(images, rig, radius_m, recipe, reports, [g for g, j in zip(groups, joins) if not j])
+    balls = [_joint_ball(rig, g, reports if j else alone, radius_m, recipe, constraint) for g, j in zip(groups, joins)]
     balls.sort(key=lambda b: (math.isnan(b.t_c_s), b.t_c_s))
     return RigReport(rig, tuple(r.image for r in reports), tuple(balls), reports)
 
