@@ -1,6 +1,6 @@
 """New noise on the POV-Ray set's clean renders: how far the estimate's scatter and its bias are from its reported sigma, scene by scene.
 
-    python benchmarks/povray_set/renoise.py [--split tune] [--every K] [--reps N] [--jobs J] [--recipe R.toml] [--plane] [NAME ...]
+    python benchmarks/povray_set/renoise.py [--split tune] [--every K] [--reps N] [--jobs J] [--recipe R.toml] [--plane | --twin] [NAME ...]
 
 Each scene's noise-free render (``scenes/clean/``, linear grey) gets ``N``
 new draws of the scene's own sensor model (``render.add_noise``: shot and
@@ -27,6 +27,17 @@ constraint, not the image, fixes the depth motion), and the camera the true
 crossing direction; the speed across the line of sight and the direction
 angles are then not compared (the constrained fit's JSON gives elevation
 and azimuth instead).
+
+Without ``--plane`` the speed's scatter and bias are also compared with
+the scene's Cramér-Rao sigma (the pixel bound with its sensor noise, as
+``score.py`` takes it: ``std_cr``, ``bias_cr``), grouped by the noise-free
+fit's edge residual: how far the fit is from an efficient estimator, and
+whether by noise or by the model's error.
+
+``--twin`` draws the same noise on ballscan's own render of each scene's
+ball instead (its camera, motion and line count, a uniform disc at the
+truth's ball and background levels): the fit's scatter against the bound
+there is the estimator's efficiency on a ball its model describes exactly.
 
 Scenes with one true ball that the default fit measures (velocity
 determined) on at least 3 draws.  The last lines give the medians over the
@@ -118,11 +129,54 @@ def _estimate(image: Path, camera: Path, radius_m: float, t_c_s: float, extra: l
     return min(balls, key=lambda b: abs((b.get("t_c_s") or 0.0) - t_c_s)) if balls else None
 
 
-def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, plane: bool = False) -> dict | None:
+def cramer_rao_speed(scenes: Path, name: str, truth: dict) -> float | None:
+    """The Cramér-Rao 1-sigma of the true ball's speed (m/s) with the scene's sensor noise (``ballscan precision``, in-process).
+
+    The bound of any unbiased estimator on the pixels, for a uniform disc of
+    the contrast and pixel noise of the truth's ``precision_inputs`` (as the
+    set's scoring takes it); None where the truth has none.
+    """
+    from ballscan.cli.app import main
+
+    pi = truth.get("precision_inputs") or {}
+    if not pi or pi["contrast_dn"] <= 0:
+        return None
+    v = truth["velocity_mps"]
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
+        code = main(["precision", "--camera", str(scenes / f"{name}.camera.toml"), "--radius", repr(truth["radius_m"]),
+                     f"--velocity={abs(v[0])!r},{v[1]!r},{v[2]!r}", "--position=" + ",".join(repr(x) for x in truth["position_m"]),
+                     "--pixel-noise", repr(pi["pixel_sigma_dn"]), "--contrast", repr(pi["contrast_dn"]),
+                     "--prnu", repr(truth["noise"]["prnu_sigma"]), "--json"])
+    return json.loads(buf.getvalue())["bounds"][0].get("speed_sigma_mps") if code == 0 else None
+
+
+def twin_render(scenes: Path, name: str, truth: dict) -> np.ndarray:
+    """ballscan's own noise-free render of the scene's ball (linear grey): its camera, motion and line count, a uniform disc at the truth's ball and background levels.
+
+    What the scene would be if ballscan's model of it were exact: with the
+    scene's sensor model on it, the fit's scatter against the bound is the
+    estimator's efficiency alone (no shading, texture, flicker or defocus).
+    """
+    from ballscan.geometry.camera import load_camera
+    from ballscan.geometry.motion import BallMotion
+    from ballscan.model.render import Appearance, render
+
+    pi = truth["precision_inputs"]
+    ball = BallMotion(truth["radius_m"], truth["t_c_s"], tuple(truth["position_m"]), tuple(truth["velocity_mps"]))
+    camera = load_camera(scenes / f"{name}.camera.toml")
+    out = render(camera, [(ball, Appearance(ball_level=pi["ball_level"], shading=False))], truth["image_shape"][0],
+                 background_level=pi["background_level"], noise="none")
+    return out.clean
+
+
+def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, plane: bool = False, twin: bool = False) -> dict | None:
     """One scene's figures (see the module's notes), None where it does not qualify.
 
     With ``plane`` every estimate has the true path's plane as a known
     constraint (:func:`plane_through_path`) and its camera the true crossing.
+    With ``twin`` the draws (and the noise-free estimate) are made on
+    :func:`twin_render` instead of the POV-Ray render.
     """
     truth = json.loads((scenes / f"{name}.truth.json").read_text())
     if "balls" in truth:
@@ -131,8 +185,15 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
     if plane:
         camera = _camera_with_crossing(scenes, name, truth, tmp)
         extra = [*extra, "--constraint", plane_through_path(truth)]
-    clean16 = np.asarray(Image.open(scenes / "clean" / f"{name}.png"))
-    y = clean16.astype(float) / 65535.0
+    clean_path = scenes / "clean" / f"{name}.png"
+    if twin:
+        if not truth.get("precision_inputs"):
+            return None
+        y = twin_render(scenes, name, truth)
+        clean_path = tmp / f"{name}_twin.png"
+        Image.fromarray(np.clip(np.rint(y * 65535), 0, 65535).astype(np.uint16)).save(clean_path)
+    else:
+        y = np.asarray(Image.open(clean_path)).astype(float) / 65535.0
     true = _truth(truth)
     draws: dict[str, list[tuple[float, float]]] = {q: [] for q in QUANTITIES}
     for k in range(reps):
@@ -143,16 +204,18 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
         for q, vs in (_values(ball) if ball else {}).items():
             if vs is not None and math.isfinite(vs[0]) and math.isfinite(vs[1]) and vs[1] > 0:
                 draws[q].append(vs)
-    if len(draws["vx"]) < 3:
-        if plane:
-            camera.unlink()
-        return None
     # the noise-free render itself (16-bit linear grey)
-    clean_ball = _estimate(scenes / "clean" / f"{name}.png", camera, truth["radius_m"], truth["t_c_s"], extra)
+    clean_ball = _estimate(clean_path, camera, truth["radius_m"], truth["t_c_s"], extra) if len(draws["vx"]) >= 3 else None
     clean = _values(clean_ball) if clean_ball else dict.fromkeys(QUANTITIES)
     if plane:
         camera.unlink()
-    row = {"scene": name, "conditions": truth["conditions"], "n": len(draws["vx"])}
+    if twin:
+        clean_path.unlink()
+    if len(draws["vx"]) < 3:
+        return None
+    row = {"scene": name, "conditions": truth["conditions"], "n": len(draws["vx"]),
+           "residual_rms_px": clean_ball.get("residual_rms_px") if clean_ball else None,
+           "cr_speed_sigma_mps": None if plane else cramer_rao_speed(scenes, name, truth)}
     for q in QUANTITIES:
         if len(draws[q]) < 3:
             continue
@@ -166,6 +229,11 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
             "rms": float(np.sqrt(np.mean((val - true[q]) ** 2))),
             "cover1": float(np.mean(np.abs(val - true[q]) <= sig)),
         }
+    cr = row["cr_speed_sigma_mps"]
+    if "speed" in row and cr:
+        val = np.array([v for v, _ in draws["speed"]])
+        row["speed"]["std_cr"] = float(np.std(val, ddof=1)) / cr
+        row["speed"]["bias_cr"] = float(np.mean(val) - true["speed"]) / cr
     return row
 
 
@@ -189,6 +257,28 @@ def _table(rows: list[dict]) -> None:
             f" (noise-free {np.median(cl) if cl else math.nan:.2f}), within 1 sigma {100 * med('cover1', float):.0f} % (median scene),"
             f" RMS error median {med('rms', float):.4g} {UNITS[q]}"
         )
+    _bound_table(rows)
+
+
+#: the groups of :func:`_bound_table`: the noise-free render's edge residual RMS (px)
+RESIDUAL_GROUPS = ((0.0, 0.05), (0.05, 0.1), (0.1, math.inf))
+
+
+def _bound_table(rows: list[dict]) -> None:
+    """The speed's scatter and bias over the draws against its Cramér-Rao sigma, by the noise-free fit's edge residual."""
+    fs = [r for r in rows if "std_cr" in r.get("speed", {})]
+    if not fs:
+        return
+    print()
+    print("speed against its Cramér-Rao sigma (medians over the scenes; an efficient, unbiased fit has scatter / CR 1, bias / CR 0):")
+    groups = [("all", fs)] + [
+        (f"residual {lo:g}-{hi:g} px", [r for r in fs if r["residual_rms_px"] is not None and lo <= r["residual_rms_px"] < hi])
+        for lo, hi in RESIDUAL_GROUPS
+    ]
+    for label, g in groups:
+        if g:
+            print(f"  {label:<22} {len(g):3d} scenes: scatter / CR {np.median([r['speed']['std_cr'] for r in g]):6.2f},"
+                  f" |bias| / CR {np.median([abs(r['speed']['bias_cr']) for r in g]):6.2f}")
 
 
 def main() -> None:
@@ -201,10 +291,13 @@ def main() -> None:
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--recipe", type=Path, help="a recipe file for every estimate")
     ap.add_argument("--plane", action="store_true", help="give every estimate the true path's plane as a known constraint (--constraint), and the true crossing")
+    ap.add_argument("--twin", action="store_true", help="draw the noise on ballscan's own render of each scene's ball (uniform, at its levels) instead of the POV-Ray render")
     ap.add_argument("--save", type=Path, help="write the rows as JSON")
     a = ap.parse_args()
     if a.reps < 3 or a.every < 1:
         raise SystemExit("error: --reps must be at least 3 and --every at least 1")
+    if a.plane and a.twin:
+        raise SystemExit("error: --plane and --twin do not go together")
     names = a.names
     if not names:
         picks = []
@@ -219,7 +312,7 @@ def main() -> None:
     from joblib import Parallel, delayed
 
     with tempfile.TemporaryDirectory() as tmp:
-        rows = Parallel(n_jobs=a.jobs)(delayed(scene_row)(a.scenes, n, a.reps, extra, Path(tmp), a.plane) for n in names)
+        rows = Parallel(n_jobs=a.jobs)(delayed(scene_row)(a.scenes, n, a.reps, extra, Path(tmp), a.plane, a.twin) for n in names)
     rows = [r for r in rows if r is not None]
     _table(rows)
     if a.save:
