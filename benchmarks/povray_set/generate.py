@@ -2,6 +2,7 @@
 
     python benchmarks/povray_set/generate.py [--first 0] [--count 200] [--out DIR]
     python benchmarks/povray_set/generate.py --seeds 7,9 --rig 0,90,30 --out DIR   # two-camera rigs
+    python benchmarks/povray_set/generate.py --uniform --first 0 --count 40        # uniform balls, pu####
 
 Each scene is drawn from its seed (``scene.draw_scene``; even seeds are the
 tuning half, odd seeds the report half).  Writes ``DIR/src/NAME.pov``,
@@ -20,7 +21,7 @@ import argparse
 import json
 import math
 import sys
-from dataclasses import asdict
+from dataclasses import asdict, replace
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -106,11 +107,26 @@ def write_scene(scene: Scene, out: Path) -> None:
     (out / f"{scene.name}.truth.json").write_text(json.dumps(scene_truth(scene), indent=1) + "\n")
 
 
-def scenes_for(seeds: list[int], rig: tuple[float, ...] | None) -> list[Scene]:
-    """The scenes of ``seeds`` (every view of each when ``rig`` gives camera angles)."""
+def uniform_scene(scene: Scene) -> Scene:
+    """The scene with plain balls lit by ambient light alone (no shading, highlight or second lamp), named ``pu####``.
+
+    The ball the paper's model describes (a uniform disc) in the set's
+    independent rendering and sensor model: its motion, camera, optics,
+    flicker and sensor are the seed's.
+    """
+    balls = tuple(replace(b, kind="plain", phong=0.0) for b in scene.balls)
+    light = replace(scene.light, ambient=1.0, second_dir=None, second_intensity=0.0)
+    tags = tuple(t for t in scene.conditions if t != "second_lamp") + ("uniform",)
+    return replace(scene, name=f"pu{scene.seed:04d}", balls=balls, light=light, conditions=tags)
+
+
+def scenes_for(seeds: list[int], rig: tuple[float, ...] | None, uniform: bool = False) -> list[Scene]:
+    """The scenes of ``seeds`` (every view of each when ``rig`` gives camera angles; with ``uniform`` their :func:`uniform_scene`)."""
     out = []
     for s in seeds:
         sc = draw_scene(s)
+        if uniform:
+            sc = uniform_scene(sc)
         out.extend(rig_views(sc, rig) if rig else [sc])
     return out
 
@@ -121,11 +137,12 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--count", type=int, default=200)
     ap.add_argument("--seeds", help="comma-separated seeds (instead of --first/--count)")
     ap.add_argument("--rig", help="comma-separated camera angles about the lane's axis, degrees")
+    ap.add_argument("--uniform", action="store_true", help="plain balls in ambient light alone (uniform discs), named pu####")
     ap.add_argument("--out", type=Path, default=DEFAULT_OUT)
     a = ap.parse_args(argv)
     seeds = [int(s) for s in a.seeds.split(",")] if a.seeds else list(range(a.first, a.first + a.count))
     rig = tuple(float(x) for x in a.rig.split(",")) if a.rig else None
-    scenes = scenes_for(seeds, rig)
+    scenes = scenes_for(seeds, rig, a.uniform)
     for sc in scenes:
         write_scene(sc, a.out)
     frames = sum(frame_count(sc) for sc in scenes)

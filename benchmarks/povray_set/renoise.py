@@ -165,8 +165,10 @@ def twin_render(scenes: Path, name: str, truth: dict) -> np.ndarray:
     pi = truth["precision_inputs"]
     ball = BallMotion(truth["radius_m"], truth["t_c_s"], tuple(truth["position_m"]), tuple(truth["velocity_mps"]))
     camera = load_camera(scenes / f"{name}.camera.toml")
-    out = render(camera, [(ball, Appearance(ball_level=pi["ball_level"], shading=False))], truth["image_shape"][0],
-                 background_level=pi["background_level"], noise="none")
+    # the background's level is the clean render's, flicker included, which may pass 1 (clipped by the sensor's full well)
+    level = lambda x: min(max(float(x), 0.0), 1.0)  # noqa: E731
+    out = render(camera, [(ball, Appearance(ball_level=level(pi["ball_level"]), shading=False))], truth["image_shape"][0],
+                 background_level=level(pi["background_level"]), noise="none")
     return out.clean
 
 
@@ -286,6 +288,7 @@ def main() -> None:
     ap.add_argument("names", nargs="*", help="scenes (default: every K-th single-ball scene of the split)")
     ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
     ap.add_argument("--split", default="tune", choices=("tune", "report", "all"))
+    ap.add_argument("--only", default="pv*", help="glob on scene names (default the main set, pv*; pu* the uniform balls)")
     ap.add_argument("--every", type=int, default=4, help="every K-th scene of the split (default 4)")
     ap.add_argument("--reps", type=int, default=8, help="noise draws per scene (default 8)")
     ap.add_argument("--jobs", type=int, default=1)
@@ -301,7 +304,7 @@ def main() -> None:
     names = a.names
     if not names:
         picks = []
-        for p in sorted(a.scenes.glob("pv*.truth.json")):
+        for p in sorted(a.scenes.glob(f"{a.only}.truth.json")):
             t = json.loads(p.read_text())
             if (a.split == "all" or t["split"] == a.split) and "balls" not in t:
                 picks.append(t["scene"])

@@ -333,7 +333,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", type=Path, default=HERE / "scenes")
     ap.add_argument("--split", choices=("report", "tune", "all"), default="report")
-    ap.add_argument("--only", default="*", help="glob on scene names")
+    ap.add_argument("--only", default="pv*", help="glob on scene names (default the main set, pv*; pu* the uniform balls)")
     ap.add_argument("--ballscan", default=shutil.which("ballscan") or "ballscan")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--save", type=Path, help="write the per-ball rows (JSON) here")
