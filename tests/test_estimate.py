@@ -171,7 +171,9 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
     # edges; the same ball with 0.8 % PRNU (the ball's interior shows it:
     # 0.0063 measured) gets them on the crop with the measured gains divided
     # out only with flat_field and a long ball (this one has ~110 lines: the
-    # windows by default); a tennis ball, or matched=False keep the windows.
+    # windows by default), or with matched_max_prnu on the image as it is
+    # with the gains' errors in their sigmas; a tennis ball, or matched=False
+    # keep the windows.
     cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
     m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
     seen = {}
@@ -201,6 +203,10 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
     assert all(seen[k].extra["pixels"] == "off" and seen[k].extra["edges"] == "window" for k in seen if k != (0.0, "none", True))
     assert not any(b.extra["flat_fielded"] for b in seen.values())
     assert seen[0.008, "none", True].extra["column_gain_sigma"] > 0.005
+    # matched_max_prnu: the short PRNU ball's matched edges on the image as it is, the ends' pixels beside them
+    prnu = estimate_image(img_prnu, cam, 0.0335, recipe=Recipe(matched_max_prnu=0.05)).balls[0]
+    assert prnu.extra["edges"] == "matched" and prnu.extra["pixels"] == "spread" and not prnu.extra["flat_fielded"]
+    assert abs(prnu.speed_mps - m.speed_mps) < 3.0 * prnu.speed_sigma_mps
     # the matched edges move the estimate (their accuracy: tests/test_edges.py)
     assert flat.velocity_mps != seen[0.0, "none", False].velocity_mps
 

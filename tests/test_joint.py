@@ -189,30 +189,46 @@ def test_a_ball_seen_by_one_camera_only_is_measured_by_it_and_flagged():
 def test_a_uniform_balls_window_edges_enter_the_joint_fit_as_their_pixels():
     # a flat ball on the default sensor (column gains scatter): each camera's own fit takes window edges,
     # the joint fit those windows' pixels (the pixel model describes the ball)
+    windows = Recipe()
     sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, Appearance(ball_level=0.65, shading=False), seed=14)
-    b = estimate_rig(sim.images, LANE.rig, LANE.motion.radius_m).balls[0]
+    b = estimate_rig(sim.images, LANE.rig, LANE.motion.radius_m, recipe=windows).balls[0]
     assert b.cameras == ("side", "top") and b.flags == ()
     for e in b.estimates.values():
         assert e.record.final_fit == "edges" and e.pixel_limb is not None
-        edges, settings = own_block(e, Recipe())
+        edges, settings = own_block(e, windows)
         # the sensor's column gains (0.8 %) measured on the ball's interior: the pixels' gains take that prior
-        gain = gain_prior(e, Recipe())
+        gain = gain_prior(e, windows)
         assert 0.004 < gain < 0.012 and gain == e.record.column_gain_sigma
-        assert settings == replace(Recipe().pixel_fit, pixel_gain_sigma=gain) and edges.profile_shade is not None
+        assert settings == replace(windows.pixel_fit, pixel_gain_sigma=gain) and edges.profile_shade is not None
         # without the limb model the block keeps the edges
-        assert own_block(replace(e, pixel_limb=None), Recipe())[1] == Recipe().edge_fit
+        assert own_block(replace(e, pixel_limb=None), windows)[1] == windows.edge_fit
         # gains counted as known: on a flat-fielded image, or a scatter within what the recipe takes for a flat sensor
-        assert gain_prior(replace(e, record=replace(e.record, flat_fielded=True)), Recipe()) == 0.0
+        assert gain_prior(replace(e, record=replace(e.record, flat_fielded=True)), windows) == 0.0
         assert gain_prior(e, Recipe(matched_max_gain_sigma=gain)) == 0.0
-        assert gain_prior(replace(e, record=replace(e.record, column_gain_sigma=math.nan)), Recipe()) == 0.0
+        assert gain_prior(replace(e, record=replace(e.record, column_gain_sigma=math.nan)), windows) == 0.0
     assert all(c.consistent for c in b.joint.cameras)
     assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
     # the pixels hold more than the edges: the speed's and the direction's sigmas shrink
     picks = {k: replace(b.estimates[rc.name], pixel_limb=None) for k, rc in enumerate(LANE.rig.cameras)}
-    edges_only = measure_group(LANE.rig, picks, LANE.motion.radius_m)
+    edges_only = measure_group(LANE.rig, picks, LANE.motion.radius_m, windows)
     assert edges_only.flags == ()
     assert b.speed()[1] < 0.9 * edges_only.speed()[1]
     assert b.direction()[1] < 0.9 * edges_only.direction()[1] and b.direction()[3] < 0.9 * edges_only.direction()[3]
+
+
+def test_a_uniform_balls_matched_edges_on_a_prnu_sensor_enter_the_joint_fit_with_the_gains_prior():
+    # the same ball with matched_max_prnu: each camera matches its edges on the image as it is and fits the
+    # ends' pixels with the column gains as nuisance parameters; the joint fit takes them alike
+    matched = Recipe(matched_max_prnu=0.05)
+    sim = simulate_rig(LANE.rig, LANE.motion, LANE.n_lines, Appearance(ball_level=0.65, shading=False), seed=14)
+    b = estimate_rig(sim.images, LANE.rig, LANE.motion.radius_m, recipe=matched).balls[0]
+    assert b.cameras == ("side", "top") and b.flags == ()
+    for e in b.estimates.values():
+        gain = gain_prior(e, matched)
+        assert e.record.final_fit == "spread" and 0.004 < gain < 0.012
+        assert own_block(e, matched)[1] == replace(matched.spread_fit, pixel_gain_sigma=gain)
+    assert all(c.consistent for c in b.joint.cameras)
+    assert np.all(np.abs(_errors_in_sigmas(b, LANE.motion)) < 3.0)
 
 
 def test_a_wrong_pose_is_flagged(lane_render):

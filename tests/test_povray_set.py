@@ -129,6 +129,19 @@ def test_truth_and_camera_files_agree_with_the_scene(tmp_path, scenes):
         assert truth["split"] == s.split and truth["seed"] == s.seed
 
 
+def test_a_uniform_scene_is_the_seeds_scene_with_plain_balls_in_ambient_light():
+    base = scene.draw_scene(2026)
+    s = generate.uniform_scene(base)
+    assert s.name == "pu2026" and s.split == base.split and "uniform" in s.conditions and "second_lamp" not in s.conditions
+    assert all(b.kind == "plain" and b.phong == 0.0 for b in s.balls)
+    assert [b.velocity_mps for b in s.balls] == [b.velocity_mps for b in base.balls] and s.camera == base.camera
+    assert s.light.ambient == 1.0 and s.light.second_dir is None and s.sensor == base.sensor and s.optics == base.optics
+    # the ball takes no lamp: the whole brightness is its ambient term
+    assert "finish { ambient 1 diffuse 0 }" in pov.pov_source(s)
+    committed = ROOT / "benchmarks" / "povray_set" / "scenes" / "pu2026.camera.toml"
+    assert generate.camera_toml(s) == committed.read_text()
+
+
 def test_pov_source_places_the_ball_and_the_film(scenes):
     """The source moves each ball as C0 + V (T - t_c) in millimetres and spans the sensor's undistorted range."""
     s = next(x for x in scenes if x.camera.k1 and x.optics.aperture_m > 0) if any(
@@ -400,6 +413,24 @@ def _rows(speed_errs, transverse_errs, scene_names=None, lines=None):
     lines = lines or [100.0] * len(names)
     return [{"scene": n, "lines": ln, "vz_share": 0.1, "fit": {"measured": s is not None, "speed_err": s, "transverse_err": t}}
             for n, s, t, ln in zip(names, speed_errs, transverse_errs, lines)]
+
+
+def test_a_uniform_ball_on_a_sensor_whose_gains_scatter_with_matched_edges(capsys):
+    # pu2026: a plain bright ball in ambient light, 8-bit, 0.8 % PRNU; its window edges put the speed
+    # 3.4 sigmas off (-3.7 %) and the direction 8.2 degrees; with matched_max_prnu its matched edges and
+    # the ends' pixels 1.2 sigmas (-1.5 %) and 2.7 degrees
+    truth = score.truth_balls(json.loads((SCENES / "pu2026.truth.json").read_text()))[0]
+    args = ["estimate", str(SCENES / "pu2026.png"), "--camera", str(SCENES / "pu2026.camera.toml"), "--radius", repr(truth["radius_m"]), "--json"]
+    rows = {}
+    for name, extra in (("windows", []), ("matched", ["--recipe", str(ROOT / "tests" / "data" / "matched_prnu.toml")])):
+        assert main([*args, *extra]) == 0
+        (ball,) = json.loads(capsys.readouterr().out)["balls"]
+        rows[name] = (ball, score.compare(ball, truth))
+    assert rows["windows"][0]["edges"] == "window" and rows["windows"][1]["z_speed"] > 3.0
+    ball, row = rows["matched"]
+    assert ball["edges"] == "matched" and ball["pixels"] == "spread"
+    assert all(row[k] < 3.0 for k in ("z_speed", "z_psi_y", "z_psi_z"))
+    assert row["dir_err_deg"] < 0.5 * rows["windows"][1]["dir_err_deg"]
 
 
 def test_the_paired_comparison_counts_ratios_and_tests_ball_by_ball():

@@ -43,7 +43,7 @@ _INTS = {
 }
 #: non-negative real fields
 _REALS = (
-    "matched_max_gain_sigma", "uniform_max_light", "uniform_max_level_rel_sigma", "max_lateral_px", "background_window_sigma",
+    "matched_max_gain_sigma", "matched_max_prnu", "uniform_max_light", "uniform_max_level_rel_sigma", "max_lateral_px", "background_window_sigma",
     "defocus_min_px", "defocus_min_sigmas",
 )
 _FITS = ("loose_fit", "pixel_fit", "spread_fit", "edge_fit")
@@ -110,6 +110,16 @@ class Recipe:
         (:func:`ballscan.measure.flatfield.column_gains`) at which the sensor
         counts as flat-fielded and the matched edges are measured on the
         image as it is: beyond, their sigmas come out too small.
+    matched_max_prnu : float
+        Largest column-gain scatter at which a ball that the flat-fielded
+        matched edges do not take (too short, too few columns, or
+        ``flat_field`` off) takes matched edges on the image as it is, each
+        edge's sigma widened by its pixel's unknown gain error (that scatter,
+        repeated on every line whose edge sits in the pixel), and the ends'
+        pixels with the column gains as nuisance parameters; beyond, and at
+        0 (the default), its window edges.  On uniform balls it trades the
+        estimator's time (1.6-2x a ball) for accuracy (docs/benchmarks.md,
+        "Uniform balls on a sensor whose column gains scatter").
     flat_field_min_columns : int
         Fewest measured columns for the flat-fielded matched edges: fewer
         columns give gains too uncertain to divide out.
@@ -186,6 +196,7 @@ class Recipe:
     rig_refined_background: bool = True
     refit_law: bool = False
     matched_max_gain_sigma: float = 0.0015
+    matched_max_prnu: float = 0.0
     flat_field_min_columns: int = 64
     long_ball_min_lines: int = 250
     spread_min_lines: int = 20

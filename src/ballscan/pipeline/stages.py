@@ -468,7 +468,11 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
     long ball's speed by several of its sigmas.  Where the interior shows
     more scatter (PRNU), with ``recipe.flat_field``, on balls with enough
     measured columns and lines, the matched edges on the image with the
-    measured gains divided out (:func:`_flat_fielded_matched`).
+    measured gains divided out (:func:`_flat_fielded_matched`); on the
+    others, up to ``recipe.matched_max_prnu`` of scatter, the matched edges
+    on the image as it is with their pixels' unknown gain errors in their
+    sigmas (:func:`_with_gain_errors`, every gain's sigma that scatter),
+    unless another ball shares its lines (:func:`_shares_lines`).
     """
     recipe = ball.recipe
     window = SecondMeasurement("window", shading.edges, shading.limb)
@@ -487,9 +491,20 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
         if found is None:
             m = matched_edges(edges, shading.limb)
             found = SecondMeasurement("matched", m, shading.limb) if m is not edges else None
-    elif recipe.flat_field and math.isfinite(sigma) and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
-        found = _flat_fielded_matched(ball, first, divide_gains=True)
+    elif math.isfinite(sigma):
+        if recipe.flat_field and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
+            found = _flat_fielded_matched(ball, first, divide_gains=True)
+        elif sigma <= recipe.matched_max_prnu and not _shares_lines(ball):
+            m = matched_edges(edges, shading.limb)
+            unknown = replace(gains, gain_sigma=np.full(gains.gain.shape, sigma))
+            found = SecondMeasurement("matched", _with_gain_errors(m, unknown), shading.limb) if m is not edges else None
     return replace(found or window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
+
+
+def _shares_lines(ball: BallInput, margin: int = 3) -> bool:
+    """Whether another ball's region comes within ``margin`` lines of this one's: the ends' pixel model would take in its pixels."""
+    r = ball.region
+    return any(o.line_start < r.line_stop + margin and o.line_stop > r.line_start - margin for o in ball.others)
 
 
 def _flat_fielded_matched(ball: BallInput, first: FirstFit, divide_gains: bool) -> SecondMeasurement | None:
@@ -636,9 +651,14 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
     if second.kind != "window" and int(np.sum(edges.left_ok & edges.right_ok)) >= recipe.spread_min_lines:
         # the narrow edges matched: the ends' and the spread edges' pixels in their place
         shaded = replace(edges, profile_shade=shade_profile(limb, edges))
-        spread = fit_motion(camera, shaded, first.start, recipe.spread_fit)
+        settings = recipe.spread_fit
+        gain = second.column_gain_sigma
+        if second.kind == "matched" and gain is not None and math.isfinite(gain) and gain > recipe.matched_max_gain_sigma:
+            # on the image as it is, the pixels' column gains repeat on every line: nuisance parameters of that scatter
+            settings = replace(settings, pixel_gain_sigma=float(gain))
+        spread = fit_motion(camera, shaded, first.start, settings)
         if spread.converged:
-            return FinalFit("spread", spread, shaded, recipe.spread_fit, limb.shading)
+            return FinalFit("spread", spread, shaded, settings, limb.shading)
     fit = fit_motion(camera, edges, first.start, recipe.edge_fit)
     if not (recipe.refit_law and second.kind == "window" and fit.converged):
         return FinalFit("edges", fit, edges, recipe.edge_fit, limb.shading)
