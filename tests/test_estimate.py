@@ -211,6 +211,43 @@ def test_matched_edges_on_uniform_balls_flat_fielded_where_needed():
     assert flat.velocity_mps != seen[0.0, "none", False].velocity_mps
 
 
+def test_matched_edges_on_a_prnu_sensor_carry_the_gains_errors(monkeypatch):
+    # matched_max_prnu: the matched edges' sigmas widened by their pixels' unknown gains (every column's
+    # sigma at least the measured scatter), and the ends' pixels fitted with the gains as nuisance parameters
+    from ballscan.pipeline import stages
+
+    cam = LineScanCamera(240, 3000.0, 119.5, 50000.0, None)
+    m = BallMotion(0.0335, 0.002, (0.0, 0.001, 3.0), (30.0, 0.0, 0.0))
+    noise = SensorNoise(bits=16, white_dn=1000.0, black_dn=0.0, read_dn=5.0, full_well_e=None, prnu_sigma=0.008)
+    img = LineImage(render(cam, (m, Appearance.flat(0.8)), 200, background_level=0.1, noise=noise, seed=4).image.astype(float), 65535.0, 16, "flat")
+    widened, settings = [], []
+    with_gain_errors, fit_motion = stages._with_gain_errors, stages.fit_motion
+    monkeypatch.setattr(stages, "_with_gain_errors", lambda e, g: widened.append((e, g, with_gain_errors(e, g))) or widened[-1][2])
+    monkeypatch.setattr(stages, "fit_motion", lambda c, e, st, s: settings.append(s) or fit_motion(c, e, st, s))
+    b = estimate_image(img, cam, 0.0335, recipe=Recipe(matched_max_prnu=0.05)).balls[0]
+    sigma = b.extra["column_gain_sigma"]
+    (before, gains, after), = widened
+    assert np.all(gains.gain_sigma >= sigma)
+    for side in ("left", "right"):
+        flag = getattr(after, f"{side}_matched")
+        wide, narrow = getattr(after, f"{side}_sigma_px")[flag], getattr(before, f"{side}_sigma_px")[flag]
+        assert flag.sum() > 50 and np.all(wide >= narrow) and np.median(wide / narrow) > 1.05
+    assert b.extra["pixels"] == "spread" and any(s.pixels and s.pixel_gain_sigma == sigma for s in settings)
+
+
+def test_a_ball_within_three_lines_of_another_shares_its_lines():
+    from types import SimpleNamespace
+
+    from ballscan.pipeline.stages import _shares_lines
+
+    def ball(*others):
+        return SimpleNamespace(region=SimpleNamespace(line_start=100, line_stop=150), others=[SimpleNamespace(line_start=a, line_stop=b) for a, b in others])
+
+    # three empty lines between them (stops exclusive) on either side: apart; two: shared
+    assert not _shares_lines(ball()) and not _shares_lines(ball((153, 200), (20, 97)))
+    assert _shares_lines(ball((152, 200))) and _shares_lines(ball((20, 98))) and _shares_lines(ball((120, 130)))
+
+
 def _flat_16bit_ball(m: BallMotion, line_rate_hz: float, n_lines: int, prnu: float, seed: int):
     """The default estimate of a flat ball on a 240-px 16-bit sensor (5 DN read noise, ``prnu`` column gains)."""
     cam = LineScanCamera(240, 3000.0, 119.5, line_rate_hz, None)

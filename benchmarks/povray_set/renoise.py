@@ -157,6 +157,8 @@ def twin_render(scenes: Path, name: str, truth: dict) -> np.ndarray:
     What the scene would be if ballscan's model of it were exact: with the
     scene's sensor model on it, the fit's scatter against the bound is the
     estimator's efficiency alone (no shading, texture, flicker or defocus).
+    A level beyond 1 (a flickering backdrop at its peak) is clipped; the
+    bound keeps the truth's contrast.
     """
     from ballscan.geometry.camera import load_camera
     from ballscan.geometry.motion import BallMotion
@@ -180,6 +182,8 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
     With ``twin`` the draws (and the noise-free estimate) are made on
     :func:`twin_render` instead of the POV-Ray render.
     """
+    if plane and twin:
+        raise ValueError("plane and twin: a constraint's scene is the POV-Ray render's")
     truth = json.loads((scenes / f"{name}.truth.json").read_text())
     if "balls" in truth:
         return None
@@ -277,6 +281,7 @@ def _bound_table(rows: list[dict]) -> None:
         (f"residual {lo:g}-{hi:g} px", [r for r in fs if r["residual_rms_px"] is not None and lo <= r["residual_rms_px"] < hi])
         for lo, hi in RESIDUAL_GROUPS
     ]
+    groups.append(("no noise-free fit", [r for r in fs if r["residual_rms_px"] is None]))
     for label, g in groups:
         if g:
             print(f"  {label:<22} {len(g):3d} scenes: scatter / CR {np.median([r['speed']['std_cr'] for r in g]):6.2f},"

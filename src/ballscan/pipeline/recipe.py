@@ -111,15 +111,19 @@ class Recipe:
         counts as flat-fielded and the matched edges are measured on the
         image as it is: beyond, their sigmas come out too small.
     matched_max_prnu : float
-        Largest column-gain scatter at which a ball that the flat-fielded
-        matched edges do not take (too short, too few columns, or
-        ``flat_field`` off) takes matched edges on the image as it is, each
-        edge's sigma widened by its pixel's unknown gain error (that scatter,
-        repeated on every line whose edge sits in the pixel), and the ends'
-        pixels with the column gains as nuisance parameters; beyond, and at
-        0 (the default), its window edges.  On uniform balls it trades the
-        estimator's time (1.6-2x a ball) for accuracy (docs/benchmarks.md,
-        "Uniform balls on a sensor whose column gains scatter").
+        Largest relative column-gain scatter of the ball's interior at which
+        a uniform ball beyond ``matched_max_gain_sigma`` that the
+        flat-fielded matched edges do not take (too short, too few columns,
+        ``flat_field`` off, or the flat-fielded edges not found) takes
+        matched edges on the image as it is, each edge's sigma widened by
+        its pixel's unknown gain error (that scatter, repeated on every line
+        whose edge sits in the pixel), and the final fit of the ends' and
+        the spread lines' pixels with the column gains as nuisance
+        parameters; a ball within 3 lines of another keeps its window edges.
+        Beyond, and at 0 (the default), the window edges.  On uniform balls
+        it trades the estimator's time (about 2x a ball) for accuracy
+        (docs/benchmarks.md, "Uniform balls on a sensor whose column gains
+        scatter").
     flat_field_min_columns : int
         Fewest measured columns for the flat-fielded matched edges: fewer
         columns give gains too uncertain to divide out.

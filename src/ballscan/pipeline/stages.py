@@ -494,15 +494,24 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
     elif math.isfinite(sigma):
         if recipe.flat_field and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
             found = _flat_fielded_matched(ball, first, divide_gains=True)
-        elif sigma <= recipe.matched_max_prnu and not _shares_lines(ball):
+        if found is None and sigma <= recipe.matched_max_prnu and not _shares_lines(ball):
             m = matched_edges(edges, shading.limb)
-            unknown = replace(gains, gain_sigma=np.full(gains.gain.shape, sigma))
+            # every column's gain unknown to the sensor's scatter (a defective column's wider sigma kept)
+            spread = sigma if gains.gain_sigma is None else np.maximum(gains.gain_sigma, sigma)
+            unknown = replace(gains, gain_sigma=np.broadcast_to(spread, gains.gain.shape).copy())
             found = SecondMeasurement("matched", _with_gain_errors(m, unknown), shading.limb) if m is not edges else None
     return replace(found or window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
 
 
 def _shares_lines(ball: BallInput, margin: int = 3) -> bool:
-    """Whether another ball's region comes within ``margin`` lines of this one's: the ends' pixel model would take in its pixels."""
+    """Whether another ball's region comes within ``margin`` lines of this one's, whatever its columns.
+
+    The matched path on the image as it is measures the column gains' scatter
+    on the ball's interior and fits its ends' pixels with the gains as
+    nuisance parameters, both for the ball alone on its lines; a ball that
+    shares them keeps its window edges, which leave the other ball's pixels
+    out.
+    """
     r = ball.region
     return any(o.line_start < r.line_stop + margin and o.line_stop > r.line_start - margin for o in ball.others)
 
@@ -605,7 +614,9 @@ class FinalFit:
         measured with, from which the pixels of their windows can be fitted
         in their place (a rig's joint fit, :mod:`ballscan.pipeline.rig`).
     settings : FitSettings
-        The settings ``fit`` was made with (the recipe's for its path).
+        The settings ``fit`` was made with: the recipe's for its path, with
+        the column gains' prior (``pixel_gain_sigma``) on the matched path
+        on the image as it is (``Recipe.matched_max_prnu``).
     """
 
     path: FinalPath
