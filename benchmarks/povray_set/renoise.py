@@ -137,17 +137,14 @@ def cramer_rao_speed(scenes: Path, name: str, truth: dict) -> float | None:
     set's scoring takes it); None where the truth has none.
     """
     from ballscan.cli.app import main
+    from score import precision_args
 
-    pi = truth.get("precision_inputs") or {}
-    if not pi or pi["contrast_dn"] <= 0:
+    args = precision_args(scenes / f"{name}.camera.toml", truth, truth["noise"]["prnu_sigma"])
+    if args is None:
         return None
-    v = truth["velocity_mps"]
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf), contextlib.redirect_stderr(io.StringIO()):
-        code = main(["precision", "--camera", str(scenes / f"{name}.camera.toml"), "--radius", repr(truth["radius_m"]),
-                     f"--velocity={abs(v[0])!r},{v[1]!r},{v[2]!r}", "--position=" + ",".join(repr(x) for x in truth["position_m"]),
-                     "--pixel-noise", repr(pi["pixel_sigma_dn"]), "--contrast", repr(pi["contrast_dn"]),
-                     "--prnu", repr(truth["noise"]["prnu_sigma"]), "--json"])
+        code = main(args)
     return json.loads(buf.getvalue())["bounds"][0].get("speed_sigma_mps") if code == 0 else None
 
 

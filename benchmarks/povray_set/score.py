@@ -64,20 +64,23 @@ def run_json(cmd: list[str], timeout: float = 300) -> tuple[dict | None, str]:
         return None, f"unreadable JSON ({e})"
 
 
-def cramer_rao(ballscan: str, cam: Path, ball: dict, prnu: float) -> float | None:
-    """Cramér-Rao 1-sigma of the speed (m/s) of one true ball with its scene's noise."""
+def precision_args(cam: Path, ball: dict, prnu: float) -> list[str] | None:
+    """``ballscan precision``'s arguments for one true ball's bound with its scene's noise, None where the truth has no contrast."""
     pi = ball.get("precision_inputs") or {}
     if not pi or pi["contrast_dn"] <= 0:
         return None
     v = ball["velocity_mps"]
-    cmd = [ballscan, "precision", "--camera", str(cam), "--radius", repr(ball["radius_m"]),
-           f"--velocity={abs(v[0])!r},{v[1]!r},{v[2]!r}", "--position=" + ",".join(repr(x) for x in ball["position_m"]),
-           "--pixel-noise", repr(pi["pixel_sigma_dn"]), "--contrast", repr(pi["contrast_dn"]),
-           "--prnu", repr(prnu), "--json"]
-    out, _ = run_json(cmd)
-    if not out:
-        return None
-    return out["bounds"][0].get("speed_sigma_mps")
+    return ["precision", "--camera", str(cam), "--radius", repr(ball["radius_m"]),
+            f"--velocity={abs(v[0])!r},{v[1]!r},{v[2]!r}", "--position=" + ",".join(repr(x) for x in ball["position_m"]),
+            "--pixel-noise", repr(pi["pixel_sigma_dn"]), "--contrast", repr(pi["contrast_dn"]),
+            "--prnu", repr(prnu), "--json"]
+
+
+def cramer_rao(ballscan: str, cam: Path, ball: dict, prnu: float) -> float | None:
+    """Cramér-Rao 1-sigma of the speed (m/s) of one true ball with its scene's noise."""
+    args = precision_args(cam, ball, prnu)
+    out, _ = run_json([ballscan, *args]) if args else (None, "")
+    return out["bounds"][0].get("speed_sigma_mps") if out else None
 
 
 def angle_deg(a: list[float], b: list[float]) -> float:

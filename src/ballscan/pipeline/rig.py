@@ -37,6 +37,7 @@ from .estimate import estimate_image
 from .plausibility import PlausibilityLimits
 from .recipe import Recipe
 from .results import BallEstimate, EstimateReport, jsonable
+from .stages import unknown_gain_sigma
 
 __all__ = [
     "RIG_FLAGS",
@@ -490,12 +491,9 @@ def _with_blur(camera: LineScanCamera, e: BallEstimate) -> LineScanCamera:
 def gain_prior(e: BallEstimate, recipe: Recipe) -> float:
     """The relative 1-sigma of the column gains in a camera's pixels, 0 where they count as known.
 
-    The scatter of the gains measured on the ball's own interior
-    (:attr:`ballscan.pipeline.stages.StageRecord.column_gain_sigma`,
-    :func:`ballscan.measure.flatfield.column_gains`) where it exceeds what
-    the recipe takes for a flat-fielded sensor
-    (``recipe.matched_max_gain_sigma``) and the edges were not measured on
-    the image with the gains divided out (``flat_fielded``); else 0.
+    :func:`ballscan.pipeline.stages.unknown_gain_sigma` of the camera's
+    stage record (:attr:`ballscan.pipeline.stages.StageRecord.column_gain_sigma`
+    and ``flat_fielded``): the prior its own fit's pixels took, if any.
 
     Parameters
     ----------
@@ -504,10 +502,7 @@ def gain_prior(e: BallEstimate, recipe: Recipe) -> float:
     recipe : Recipe
     """
     r = e.record
-    if r is None or r.column_gain_sigma is None or r.flat_fielded:
-        return 0.0
-    sigma = float(r.column_gain_sigma)
-    return sigma if math.isfinite(sigma) and sigma > recipe.matched_max_gain_sigma else 0.0
+    return 0.0 if r is None else unknown_gain_sigma(r.column_gain_sigma, r.flat_fielded, recipe)
 
 
 def _block(e: BallEstimate, recipe: Recipe, clock_offset_s: float | None) -> tuple:

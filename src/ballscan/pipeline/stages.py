@@ -62,6 +62,7 @@ __all__ = [
     "StageRecord",
     "normalised_box",
     "shading_background",
+    "unknown_gain_sigma",
     "detect_stage",
     "key_points_stage",
     "first_fit_stage",
@@ -489,18 +490,40 @@ def second_measurement_stage(ball: BallInput, first: FirstFit, shading: Shading)
         if long_ball:
             found = _flat_fielded_matched(ball, first, divide_gains=False)
         if found is None:
-            m = matched_edges(edges, shading.limb)
-            found = SecondMeasurement("matched", m, shading.limb) if m is not edges else None
+            found = _matched(edges, shading.limb)
     elif math.isfinite(sigma):
         if recipe.flat_field and gains.n_columns >= recipe.flat_field_min_columns and long_ball:
             found = _flat_fielded_matched(ball, first, divide_gains=True)
         if found is None and sigma <= recipe.matched_max_prnu and not _shares_lines(ball):
-            m = matched_edges(edges, shading.limb)
             # every column's gain unknown to the sensor's scatter (a defective column's wider sigma kept)
-            spread = sigma if gains.gain_sigma is None else np.maximum(gains.gain_sigma, sigma)
-            unknown = replace(gains, gain_sigma=np.broadcast_to(spread, gains.gain.shape).copy())
-            found = SecondMeasurement("matched", _with_gain_errors(m, unknown), shading.limb) if m is not edges else None
+            spread = np.full(gains.gain.shape, sigma) if gains.gain_sigma is None else np.maximum(gains.gain_sigma, sigma)
+            found = _matched(edges, shading.limb, replace(gains, gain_sigma=spread))
     return replace(found or window, column_gain_sigma=sigma, time_s=time.perf_counter() - t0)
+
+
+def _matched(edges: EdgeMeasurements, limb: LimbProfile, gains: ColumnGains | None = None) -> SecondMeasurement | None:
+    """The matched edges on the image as it is (their sigmas with ``gains``' errors, :func:`_with_gain_errors`), None where none matched."""
+    m = matched_edges(edges, limb)
+    if m is edges:
+        return None
+    return SecondMeasurement("matched", m if gains is None else _with_gain_errors(m, gains), limb)
+
+
+def unknown_gain_sigma(column_gain_sigma: float | None, flat_fielded: bool, recipe: Recipe) -> float:
+    """The relative 1-sigma of the column gains that the pixels of a ball's edges carry, 0 where they count as known.
+
+    The scatter measured on the ball's interior
+    (:func:`ballscan.measure.flatfield.column_gains`) where it exceeds what
+    ``recipe`` takes for a flat-fielded sensor (``matched_max_gain_sigma``)
+    and the edges were not measured with the gains divided out
+    (``flat_fielded``); 0 otherwise, and where it was not measured (None,
+    NaN).  The prior of the gains as nuisance parameters of a pixel fit
+    (``FitSettings.pixel_gain_sigma``).
+    """
+    if column_gain_sigma is None or flat_fielded:
+        return 0.0
+    sigma = float(column_gain_sigma)
+    return sigma if math.isfinite(sigma) and sigma > recipe.matched_max_gain_sigma else 0.0
 
 
 def _shares_lines(ball: BallInput, margin: int = 3) -> bool:
@@ -662,11 +685,9 @@ def _shaded_fit(ball: BallInput, first: FirstFit, second: SecondMeasurement) -> 
     if second.kind != "window" and int(np.sum(edges.left_ok & edges.right_ok)) >= recipe.spread_min_lines:
         # the narrow edges matched: the ends' and the spread edges' pixels in their place
         shaded = replace(edges, profile_shade=shade_profile(limb, edges))
-        settings = recipe.spread_fit
-        gain = second.column_gain_sigma
-        if second.kind == "matched" and gain is not None and math.isfinite(gain) and gain > recipe.matched_max_gain_sigma:
-            # on the image as it is, the pixels' column gains repeat on every line: nuisance parameters of that scatter
-            settings = replace(settings, pixel_gain_sigma=float(gain))
+        # on the image as it is, the pixels' column gains repeat on every line: nuisance parameters of their scatter
+        gain = unknown_gain_sigma(second.column_gain_sigma, second.kind == "flat_fielded", recipe)
+        settings = replace(recipe.spread_fit, pixel_gain_sigma=gain) if gain > 0.0 else recipe.spread_fit
         spread = fit_motion(camera, shaded, first.start, settings)
         if spread.converged:
             return FinalFit("spread", spread, shaded, settings, limb.shading)
