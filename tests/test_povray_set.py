@@ -480,7 +480,26 @@ def test_the_speed_errors_vx_part_and_the_fits_residual_are_kept_and_tabulated()
     table = score.table(rows)
     for group, z in (("fit residual < 0.05 px", "2.00"), ("fit residual 0.05-0.1 px", "4.00"), ("fit residual >= 0.1 px", "6.00")):
         line = next(x for x in table if x.startswith(f"| {group} |"))
-        assert line.split(" | ")[1] == "1" and line.rstrip(" |").endswith(z)
+        cells = line.rstrip(" |").split(" | ")
+        # the flat ball's bound, then the limb's (these rows have none)
+        assert cells[1] == "1" and cells[-2] == z and cells[-1] == "-"
+
+
+def test_the_limb_bound_reads_each_balls_limb_off_the_clean_render():
+    # the committed rows hold this bound; pv0024's dim side (a bright ball lit from one side, its
+    # shaded limb at the backdrop's level) carries little: 3.0x the flat ball's bound at its centre's
+    # contrast; pv0034, a dark ball whose limb is darker still: 0.70x; pv0010, cut by the sensor's
+    # start: only its visible part, 5.3x
+    import limb_bound
+
+    rows = {r["scene"]: r for r in json.loads((ROOT / "benchmarks" / "povray_set" / "tune_rows.json").read_text())}
+    for name, lo, hi in (("pv0024", 2.0, 5.0), ("pv0034", 0.5, 0.9), ("pv0010", 3.0, 8.0)):
+        (sigma,) = limb_bound.limb_speed_sigma(SCENES, name)
+        assert sigma == pytest.approx(rows[name]["cr_limb_speed_sigma"], rel=1e-6)
+        assert lo < sigma / rows[name]["cr_speed_sigma"] < hi, (name, sigma / rows[name]["cr_speed_sigma"])
+    # a scene's two balls: each bounded on its own pixels
+    two = [r for r in rows.values() if r["n_true"] == 2]
+    assert two and all(s is not None and s > 0 for s in limb_bound.limb_speed_sigma(SCENES, two[0]["scene"]))
 
 
 # ------------------------------------------------------------------ new noise on the clean renders

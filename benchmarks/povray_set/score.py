@@ -8,7 +8,10 @@ Each rendered scene is measured with ``ballscan estimate --json`` by both
 methods (``--method fit`` and ``--method paper``), and each true ball's
 Cramér-Rao speed sigma is taken from ``ballscan precision`` with the scene's
 noise (the pixel noise and the ball/background contrast measured on the
-clean render, the column gains' PRNU).  Estimated balls are matched to true
+clean render, the column gains' PRNU); beside it the bound with each pixel's
+own contrast, the limb's, read off the clean render (``limb_bound.py``: a
+shaded ball's limb is not its centre, a cut ball shows only part of it, a
+defocused one is blurred).  Estimated balls are matched to true
 ones by the nearest ``t_c_s``, as ``shared/tools/score_scenes.py`` does.
 
 Columns (fit/paper where two values): balls measured (a speed reported), the
@@ -18,7 +21,7 @@ line camera sees directly, free of the weak depth axis), the median direction
 error (degrees between the velocities with V.x >= 0), the share of errors
 within 1 and 3 reported sigmas for the speed, for each direction angle
 (``direction_deg`` against ``direction_sigma_deg``) and, for the fit, for the
-depth velocity V.z and ``|V.x|`` (the speed along the lane, the line camera's best-measured component); the fit's median speed error over the Cramér-Rao sigma; the ratio of the fit's median speed error to the paper
+depth velocity V.z and ``|V.x|`` (the speed along the lane, the line camera's best-measured component); the fit's median speed error over the Cramér-Rao sigma, of the flat ball and of the limb's contrast; the ratio of the fit's median speed error to the paper
 method's on the balls both measured, and the number of the fit's speed errors
 beyond 4 reported sigmas (the paper method reports no sigma).  Rows: all balls, the subset with |V.z| <= 0.1 |V|, at least
 100 lines and not cut, each ball kind, each condition tag of the truth files.
@@ -43,7 +46,10 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 METHODS = ("fit", "paper")
+
+from limb_bound import limb_speed_sigma  # noqa: E402
 
 
 def truth_balls(t: dict) -> list[dict]:
@@ -166,12 +172,14 @@ def score_scene(ballscan: str, scenes: Path, name: str, recipe: Path | None = No
         out, why = run_json(cmd)
         ests[m] = (out or {}).get("balls", []), why, len((out or {}).get("balls", []))
     rows = []
-    for tb in balls:
+    limb = limb_speed_sigma(scenes, name)
+    for tb, cr_limb in zip(balls, limb):
         v = tb["velocity_mps"]
         lines = lr * (2 * tb["radius_m"] + tb["position_m"][2] / f) / abs(v[0])
         row = {"scene": name, "kind": truth["kind"], "conditions": truth["conditions"], "cut": truth["cut"],
                "split": truth["split"], "lines": lines, "vz_share": abs(v[2]) / tb["speed_mps"],
-               "n_true": len(balls), "cr_speed_sigma": cramer_rao(ballscan, cam, tb, truth["noise"]["prnu_sigma"])}
+               "n_true": len(balls), "cr_speed_sigma": cramer_rao(ballscan, cam, tb, truth["noise"]["prnu_sigma"]),
+               "cr_limb_speed_sigma": cr_limb}
         for m in METHODS:
             found, why, n_found = ests[m]
             est = min(found, key=lambda e: abs((e.get("t_c_s") or 0) - tb["t_c_s"])) if found else None
@@ -182,6 +190,8 @@ def score_scene(ballscan: str, scenes: Path, name: str, recipe: Path | None = No
             row["fit"]["z_cr"] = abs(row["fit"]["speed_err"]) * tb["speed_mps"] / row["cr_speed_sigma"]
             if row["fit"].get("speed_err_vx") is not None:
                 row["fit"]["z_cr_vx"] = abs(row["fit"]["speed_err_vx"]) * tb["speed_mps"] / row["cr_speed_sigma"]
+        if row["fit"].get("measured") and cr_limb:
+            row["fit"]["z_cr_limb"] = abs(row["fit"]["speed_err"]) * tb["speed_mps"] / cr_limb
         rows.append(row)
     return rows
 
@@ -230,7 +240,8 @@ def summarise(rows: list[dict]) -> list[str]:
     cells.append(_fmt(med_fit / med_paper if both and med_paper else None, ".2f"))
     beyond = [r["fit"]["z_speed"] > 4 for r in rows if r["fit"].get("z_speed") is not None]
     cells.append(f"{sum(beyond)}" if beyond else "-")
-    cells.append(_fmt(_med([r["fit"]["z_cr"] for r in rows if r["fit"].get("z_cr") is not None]), ".2f"))
+    for key in ("z_cr", "z_cr_limb"):
+        cells.append(_fmt(_med([r["fit"][key] for r in rows if r["fit"].get(key) is not None]), ".2f"))
     return cells
 
 
@@ -248,7 +259,8 @@ def table(rows: list[dict]) -> list[str]:
         groups.append((name, [r for r in rows if r["fit"].get("residual_rms_px") is not None and lo <= r["fit"]["residual_rms_px"] < hi]))
     head = ["group", "balls", "measured", "speed err median %", "worst %", "transverse speed err median %",
             "direction err median deg", "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %",
-            "V.z 1σ / 3σ % (fit)", "|V.x| 1σ / 3σ % (fit)", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)"]
+            "V.z 1σ / 3σ % (fit)", "|V.x| 1σ / 3σ % (fit)", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)",
+            "err / limb CR σ median (fit)"]
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for name, g in groups:
         if g:

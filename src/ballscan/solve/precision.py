@@ -1,6 +1,6 @@
 """Cramér–Rao lower bounds on the ball's position and velocity.
 
-Two bounds are provided:
+Two kinds of bound are provided:
 
 :func:`edge_crlb`
     Fisher information of the *edge measurements* under the fit's own model
@@ -14,8 +14,12 @@ Two bounds are provided:
     ``coverage_ij`` the exposure- and pixel-height-averaged overlap of the
     ball's segment with pixel ``j`` of line ``i``.  This bounds every
     estimator working on the image, whatever its edge detector.
+    :func:`sensor_crlb` is the same with a sensor's read, shot and
+    quantisation noise; :func:`image_crlb` gives each pixel the contrast
+    the ball's noise-free image shows there (a shaded or textured ball's
+    limb is not its centre).
 
-Both return a :class:`PrecisionBound` with 1-sigma bounds on ``t_c``, the
+All return a :class:`PrecisionBound` with 1-sigma bounds on ``t_c``, the
 centre at ``t_c``, the velocity, the speed and the direction, and the
 quartiles of the speed's absolute error that an efficient estimate reaches
 (:func:`speed_error_quantiles`).  The speed's error is not Gaussian where
@@ -46,7 +50,7 @@ from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
 
-__all__ = ["PrecisionBound", "edge_crlb", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
+__all__ = ["PrecisionBound", "edge_crlb", "image_crlb", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
 
 
 @dataclass(frozen=True)
@@ -485,9 +489,7 @@ def sensor_crlb(
         raise ValueError("ball_level: must differ from background_level (no contrast, no bound)")
     cov, dcov = _pixel_model(camera, motion, n_nodes)
     dy = ball_level - background_level
-    y = background_level + dy * cov
-    var = noise.read_dn**2 + 1.0 / 12.0 + (y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else 0.0)
-    var = np.broadcast_to(var, cov.shape)
+    var = np.broadcast_to(_sensor_variance(noise, background_level + dy * cov), cov.shape)
     prnu = 0.0 if flat_field else noise.prnu_sigma
     G = noise.white_dn * dy * dcov
     F = _pixel_fisher(G, var, noise.white_dn * dy * cov, prnu)
@@ -498,6 +500,119 @@ def sensor_crlb(
         f"PRNU {noise.prnu_sigma:g}" + (" (flat-fielded)" if flat_field else "") + f"; levels {ball_level:g} / {background_level:g}"
     )
     return _bound("pixels", motion, camera, F, n_pix, desc)
+
+
+def image_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise: SensorNoise,
+    expected: np.ndarray,
+    background: np.ndarray,
+    t_lines_s: np.ndarray,
+    *,
+    readable: np.ndarray | None = None,
+    flat_field: bool = False,
+    min_coverage: float = 0.2,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixels of a ball whose brightness varies over its surface, read off its noise-free image.
+
+    :func:`sensor_crlb` with each pixel's own contrast: the mean of pixel
+    ``(i, j)`` is ``bg_ij + c_ij coverage_ij(theta)`` (linear grey), where
+    ``c_ij`` is what the ball shows there above the background.  A shaded
+    ball's limb is dimmer (or, for a ball darker than the background,
+    darker) than its centre, and a textured one's varies with the pattern
+    that reaches it; the edges carry the limb's contrast, not the
+    centre's.  ``c_ij`` is read off ``expected`` on the pixels the ball
+    covers by at least ``min_coverage`` (``(expected - background) /
+    coverage``, the coverage with the camera's blur circle,
+    ``camera.defocus_px``, if any) and taken from the nearest such pixel of
+    the same line on the others.  The derivatives are ``c_ij`` times the
+    coverage's: the limb's motion.  The surface pattern's own motion inside
+    the silhouette is left out, so this bounds an estimator that does not
+    know the pattern (an unbiased one that did could do better).  Noise,
+    column gains and their prior as :func:`sensor_crlb`.
+
+    Parameters
+    ----------
+    camera : LineScanCamera
+    motion : BallMotion
+        The ball's true motion (the one ``expected`` shows).
+    noise : SensorNoise
+    expected : ndarray (n_lines, W)
+        The image's noise-free linear grey, 0..1.
+    background : ndarray (n_lines, W) or (W,)
+        Its linear grey without the ball.
+    t_lines_s : ndarray (n_lines,)
+        Each line's centre time, seconds.
+    readable : ndarray of bool (n_lines, W), optional
+        Pixels whose contrast may be read (False: another ball's, say);
+        default all.
+    flat_field : bool
+        The column gains are known.
+    min_coverage : float
+        Least coverage of a pixel whose contrast is read, in (0, 1].
+    n_nodes : int
+        Quadrature nodes per piece of the averaged model.
+
+    Raises
+    ------
+    ValueError
+        If the arrays' shapes disagree, or the ball is not seen on any
+        line, or no pixel of it can be read.
+    """
+    expected = np.asarray(expected, dtype=float)
+    t = np.asarray(t_lines_s, dtype=float)
+    if expected.ndim != 2 or expected.shape[1] != camera.width or t.shape != (expected.shape[0],):
+        raise ValueError(f"expected: need (n_lines, {camera.width}) with one line time each, got {expected.shape} and {t.shape}")
+    background = np.broadcast_to(np.asarray(background, dtype=float), expected.shape)
+    readable = np.ones(expected.shape, dtype=bool) if readable is None else np.broadcast_to(np.asarray(readable, dtype=bool), expected.shape)
+    if not 0.0 < min_coverage <= 1.0:
+        raise ValueError(f"min_coverage: must be in (0, 1], got {min_coverage!r}")
+    _check_prnu(noise.prnu_sigma)
+    me = averaged_model(camera, motion.to_params()[None], motion.radius_m, t, motion.acceleration_mps2, n_nodes)
+    seen = np.flatnonzero(me.presence[0] > 0)
+    if seen.size == 0:
+        raise ValueError("image_crlb: the ball is not seen on any line")
+    lo = max(int(math.floor(np.nanmin(me.left_px[0, seen]))) - 2, 0)
+    hi = min(int(math.ceil(np.nanmax(me.right_px[0, seen]))) + 3, camera.width)
+    cols = np.arange(lo, hi)
+    cov, dcov = pixel_expectation(camera, motion, t[seen], cols.astype(float), n_nodes)
+    box = np.ix_(seen, cols)
+    contrast = _limb_contrast(expected[box] - background[box], cov, readable[box], min_coverage)
+    y = background[box] + contrast * cov
+    prnu = 0.0 if flat_field else noise.prnu_sigma
+    G = noise.white_dn * contrast * dcov
+    F = _pixel_fisher(G, _sensor_variance(noise, y), noise.white_dn * contrast * cov, prnu)
+    n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
+    desc = f"sensor: read {noise.read_dn:g} DN, white {noise.white_dn:g} DN, PRNU {prnu:g}; each pixel's contrast read off the noise-free image"
+    return _bound("pixels", motion, camera, F, n_pix, desc)
+
+
+def _limb_contrast(signal: np.ndarray, cov: np.ndarray, readable: np.ndarray, min_coverage: float) -> np.ndarray:
+    """Each pixel's contrast ``signal / cov`` where readable and covered by ``min_coverage``, else its line's nearest such pixel's.
+
+    A line with no such pixel (the ball's first and last lines, which it
+    crosses only in part during the exposure) takes the nearest line's.
+    """
+    ok = readable & (cov >= min_coverage)
+    if not ok.any():
+        raise ValueError("image_crlb: no pixel of the ball can be read (coverage or readable)")
+    c = np.where(ok, signal / np.where(ok, cov, 1.0), 0.0)
+    j = np.arange(c.shape[1])
+    rows = np.flatnonzero(ok.any(axis=1))
+    for i in rows:
+        have = np.flatnonzero(ok[i])
+        c[i] = c[i, have[np.abs(j[:, None] - have[None, :]).argmin(axis=1)]]
+    empty = np.flatnonzero(~ok.any(axis=1))
+    if empty.size:
+        c[empty] = c[rows[np.abs(empty[:, None] - rows[None, :]).argmin(axis=1)]]
+    return c
+
+
+def _sensor_variance(noise: SensorNoise, y: np.ndarray) -> np.ndarray:
+    """White-noise variance (DN^2) of pixels of linear grey ``y``: read, shot and uniform quantisation noise."""
+    return noise.read_dn**2 + 1.0 / 12.0 + (y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else 0.0 * y)
 
 
 def _check_prnu(prnu_sigma: float) -> None:
