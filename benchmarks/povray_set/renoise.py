@@ -30,9 +30,11 @@ and azimuth instead).
 
 Without ``--plane`` the speed's scatter and bias are also compared with
 the scene's Cramér-Rao sigma (the pixel bound with its sensor noise, as
-``score.py`` takes it: ``std_cr``, ``bias_cr``), grouped by the noise-free
-fit's edge residual: how far the fit is from an efficient estimator, and
-whether by noise or by the model's error.
+``score.py`` takes it: ``std_cr``, ``bias_cr``) and with the bound of the
+ball's own limb (``limb_bound.py``: ``std_cr_limb``, ``bias_cr_limb``; not
+with ``--twin``), grouped by the noise-free fit's edge residual: how far
+the fit is from an efficient estimator, and whether by noise or by the
+model's error.
 
 ``--twin`` draws the same noise on ballscan's own render of each scene's
 ball instead (its camera, motion and line count, a uniform disc at the
@@ -62,6 +64,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 from render import add_noise  # noqa: E402
+from limb_bound import limb_speed_sigma  # noqa: E402
 
 #: the quantities compared: |V.x|, |(V.x, V.y)|, V.z, the speed (m/s) and the direction angles (degrees)
 QUANTITIES = ("vx", "across", "vz", "speed", "psi_y", "psi_z")
@@ -218,7 +221,8 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
         return None
     row = {"scene": name, "conditions": truth["conditions"], "n": len(draws["vx"]),
            "residual_rms_px": clean_ball.get("residual_rms_px") if clean_ball else None,
-           "cr_speed_sigma_mps": None if plane else cramer_rao_speed(scenes, name, truth)}
+           "cr_speed_sigma_mps": None if plane else cramer_rao_speed(scenes, name, truth),
+           "cr_limb_speed_sigma_mps": None if plane or twin else limb_speed_sigma(scenes, name)[0]}
     for q in QUANTITIES:
         if len(draws[q]) < 3:
             continue
@@ -232,11 +236,11 @@ def scene_row(scenes: Path, name: str, reps: int, extra: list[str], tmp: Path, p
             "rms": float(np.sqrt(np.mean((val - true[q]) ** 2))),
             "cover1": float(np.mean(np.abs(val - true[q]) <= sig)),
         }
-    cr = row["cr_speed_sigma_mps"]
-    if "speed" in row and cr:
-        val = np.array([v for v, _ in draws["speed"]])
-        row["speed"]["std_cr"] = float(np.std(val, ddof=1)) / cr
-        row["speed"]["bias_cr"] = float(np.mean(val) - true["speed"]) / cr
+    for key, cr in (("cr", row["cr_speed_sigma_mps"]), ("cr_limb", row["cr_limb_speed_sigma_mps"])):
+        if "speed" in row and cr:
+            val = np.array([v for v, _ in draws["speed"]])
+            row["speed"][f"std_{key}"] = float(np.std(val, ddof=1)) / cr
+            row["speed"][f"bias_{key}"] = float(np.mean(val) - true["speed"]) / cr
     return row
 
 
@@ -281,8 +285,11 @@ def _bound_table(rows: list[dict]) -> None:
     groups.append(("no noise-free fit", [r for r in fs if r["residual_rms_px"] is None]))
     for label, g in groups:
         if g:
+            limb = [r["speed"] for r in g if "std_cr_limb" in r["speed"]]
             print(f"  {label:<22} {len(g):3d} scenes: scatter / CR {np.median([r['speed']['std_cr'] for r in g]):6.2f},"
-                  f" |bias| / CR {np.median([abs(r['speed']['bias_cr']) for r in g]):6.2f}")
+                  f" |bias| / CR {np.median([abs(r['speed']['bias_cr']) for r in g]):6.2f}"
+                  + (f"; over the limb's bound ({len(limb)}): {np.median([f['std_cr_limb'] for f in limb]):6.2f},"
+                     f" {np.median([abs(f['bias_cr_limb']) for f in limb]):6.2f}" if limb else ""))
 
 
 def main() -> None:
