@@ -48,8 +48,10 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 METHODS = ("fit", "paper")
+#: a ball whose limb puts more than this share of its information on pixels of the other sign than its centre
+LIMB_OTHER_SIGN = 0.1
 
-from limb_bound import limb_speed_sigma  # noqa: E402
+from limb_bound import limb_bounds  # noqa: E402
 
 
 def truth_balls(t: dict) -> list[dict]:
@@ -172,14 +174,14 @@ def score_scene(ballscan: str, scenes: Path, name: str, recipe: Path | None = No
         out, why = run_json(cmd)
         ests[m] = (out or {}).get("balls", []), why, len((out or {}).get("balls", []))
     rows = []
-    limb = limb_speed_sigma(scenes, name)
-    for tb, cr_limb in zip(balls, limb):
+    for tb, lb in zip(balls, limb_bounds(scenes, name)):
+        cr_limb = None if lb is None else lb.speed_sigma_mps
         v = tb["velocity_mps"]
         lines = lr * (2 * tb["radius_m"] + tb["position_m"][2] / f) / abs(v[0])
         row = {"scene": name, "kind": truth["kind"], "conditions": truth["conditions"], "cut": truth["cut"],
                "split": truth["split"], "lines": lines, "vz_share": abs(v[2]) / tb["speed_mps"],
                "n_true": len(balls), "cr_speed_sigma": cramer_rao(ballscan, cam, tb, truth["noise"]["prnu_sigma"]),
-               "cr_limb_speed_sigma": cr_limb}
+               "cr_limb_speed_sigma": cr_limb, "limb_other_sign": None if lb is None else lb.other_sign_share}
         for m in METHODS:
             found, why, n_found = ests[m]
             est = min(found, key=lambda e: abs((e.get("t_c_s") or 0) - tb["t_c_s"])) if found else None
@@ -257,6 +259,10 @@ def table(rows: list[dict]) -> list[str]:
     # how well the fit's model matched the ball: its edges' residual RMS (a measured ball's only; rows scored before it was kept have none)
     for name, lo, hi in (("fit residual < 0.05 px", 0.0, 0.05), ("fit residual 0.05-0.1 px", 0.05, 0.1), ("fit residual >= 0.1 px", 0.1, math.inf)):
         groups.append((name, [r for r in rows if r["fit"].get("residual_rms_px") is not None and lo <= r["fit"]["residual_rms_px"] < hi]))
+    # the limb's information on pixels of the other sign than the centre (limb_bound.py): more than a tenth of it, or less
+    with_sign = [r for r in rows if r.get("limb_other_sign") is not None]
+    groups.append(("limb of both signs (> 10 % other)", [r for r in with_sign if r["limb_other_sign"] > LIMB_OTHER_SIGN]))
+    groups.append(("limb of one sign", [r for r in with_sign if r["limb_other_sign"] <= LIMB_OTHER_SIGN]))
     head = ["group", "balls", "measured", "speed err median %", "worst %", "transverse speed err median %",
             "direction err median deg", "speed 1σ %", "speed 3σ %", "psi_y 1σ %", "psi_y 3σ %", "psi_z 1σ %", "psi_z 3σ %",
             "V.z 1σ / 3σ % (fit)", "|V.x| 1σ / 3σ % (fit)", "fit / paper median (same balls)", "fit > 4σ", "err / CR σ median (fit)",

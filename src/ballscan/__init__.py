@@ -48,6 +48,7 @@ _EXPORTS = {
     "edge_crlb": "ballscan.solve.precision",
     "pixel_crlb": "ballscan.solve.precision",
     "sensor_crlb": "ballscan.solve.precision",
+    "image_crlb": "ballscan.solve.precision",
     "PrecisionBound": "ballscan.solve.precision",
     "BallscanError": "ballscan.errors",
 }
@@ -94,4 +95,4 @@ if TYPE_CHECKING:  # what static checkers and IDEs see
     from .pipeline.recipe import Recipe
     from .pipeline.results import BallEstimate, EstimateReport
     from .pipeline.warmup import warm_up
-    from .solve.precision import PrecisionBound, edge_crlb, pixel_crlb, sensor_crlb
+    from .solve.precision import PrecisionBound, edge_crlb, image_crlb, pixel_crlb, sensor_crlb

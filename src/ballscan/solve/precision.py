@@ -40,6 +40,7 @@ import numpy as np
 
 from ..geometry.camera import LineScanCamera
 from ..model.averaged import averaged_model
+from ..model.blur import ALONG_NODES, blur_diameter, semicircle_nodes
 from ..model.pixels import pixel_coverage
 from .derived import COVARIANCE_PARAMETERS
 from .problem import whitened_jacobian
@@ -50,7 +51,7 @@ from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
 
-__all__ = ["PrecisionBound", "edge_crlb", "image_crlb", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
+__all__ = ["LimbContrast", "PrecisionBound", "edge_crlb", "image_crlb", "limb_contrast", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
 
 
 @dataclass(frozen=True)
@@ -308,7 +309,9 @@ def pixel_expectation(
     The exposure- and pixel-height-averaged overlap (Eq. (1) and (8)
     integrated over the exposure, :func:`ballscan.model.averaged.averaged_model`
     and :func:`ballscan.model.pixels.pixel_coverage`) of the ball's segment
-    with pixel ``cols_px[j]`` of the line at ``t_s[i]``: what the bounds'
+    with pixel ``cols_px[j]`` of the line at ``t_s[i]``, blurred by the
+    camera's blur circle (``defocus_px``) across the sensor and along it
+    (:func:`ballscan.model.blur.semicircle_nodes`): what the bounds'
     pixel model expects, and what a maximum-likelihood fit of the pixels
     iterates on.  Derivatives by central differences (step ``1e-3`` of
     :func:`ballscan.solve.uncertainty.param_scale`).
@@ -338,12 +341,15 @@ def pixel_expectation(
     thetas = np.vstack([theta[None], theta + np.diag(h), theta - np.diag(h)])
     ms = averaged_model(camera, thetas, motion.radius_m, t, motion.acceleration_mps2, n_nodes, return_samples=True)
     u_lo, u_hi, wgt = ms.samples  # type: ignore[misc]
-    cov = np.nan_to_num(pixel_coverage(u_lo, u_hi, wgt, cols))  # (13, N, C); NaN: a line without the ball
+    # the blur circle along the sensor: the coverage at its marginal's shifts (the samples carry it across the sensor)
+    shifts, weights = semicircle_nodes(blur_diameter(camera), ALONG_NODES)
+    # (13, N, C); NaN: a line without the ball
+    cov = sum(w * np.nan_to_num(pixel_coverage(u_lo, u_hi, wgt, cols - s)) for s, w in zip(shifts, weights))
     return cov[0], (cov[1:7] - cov[7:]) / (2.0 * h[:, None, None])
 
 
 def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`pixel_expectation` on the lines that see the ball and the columns it touches plus two on each side.
+    """:func:`pixel_expectation` on the lines that see the ball and the columns it touches plus two (and the blur circle's radius) on each side.
 
     Returns ``(coverage, d_coverage)``: ``(N, C)`` and ``(6, N, C)``.
     """
@@ -356,7 +362,8 @@ def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tu
         raise ValueError("pixel_crlb: the ball is not seen on any line")
     lo = np.nanmin(me.left_px[0, keep])
     hi = np.nanmax(me.right_px[0, keep])
-    cols = np.arange(math.floor(lo) - 2, math.ceil(hi) + 3, dtype=float)
+    reach = 2 + math.ceil(0.5 * blur_diameter(camera))
+    cols = np.arange(math.floor(lo) - reach, math.ceil(hi) + reach + 1, dtype=float)
     return pixel_expectation(camera, motion, t[keep], cols, n_nodes)
 
 
@@ -502,43 +509,62 @@ def sensor_crlb(
     return _bound("pixels", motion, camera, F, n_pix, desc)
 
 
-def image_crlb(
+@dataclass(frozen=True)
+class LimbContrast:
+    """Each pixel's contrast around a ball, read off its noise-free image (:func:`limb_contrast`).
+
+    Attributes
+    ----------
+    lines : ndarray of int (N,)
+        The image lines that see the ball.
+    cols : ndarray of int (C,)
+        The image columns it touches, with the blur circle's radius and two
+        pixels on either side.
+    contrast : ndarray (N, C)
+        What the ball shows at each pixel above the background, linear grey
+        (negative where darker).
+    coverage, d_coverage : ndarray (N, C) and (6, N, C)
+        The pixels' coverage and its derivatives (:func:`pixel_expectation`).
+    """
+
+    lines: np.ndarray
+    cols: np.ndarray
+    contrast: np.ndarray
+    coverage: np.ndarray
+    d_coverage: np.ndarray
+
+    def other_sign_share(self, sign: float) -> float:
+        """Share of the limb's information (coverage derivatives squared, summed over the parameters) on pixels whose contrast is not of ``sign``."""
+        w = np.square(self.d_coverage).sum(axis=0)
+        total = float(w.sum())
+        return float(np.sum(w * (np.sign(self.contrast) != np.sign(sign))) / total) if total > 0 else math.nan
+
+
+def limb_contrast(
     camera: LineScanCamera,
     motion: BallMotion,
-    noise: SensorNoise,
     expected: np.ndarray,
     background: np.ndarray,
     t_lines_s: np.ndarray,
     *,
     readable: np.ndarray | None = None,
-    flat_field: bool = False,
     min_coverage: float = 0.2,
     n_nodes: int = 8,
-) -> PrecisionBound:
-    """Cramér–Rao bound of the pixels of a ball whose brightness varies over its surface, read off its noise-free image.
+) -> LimbContrast:
+    """What a ball shows at each of its pixels above the background, read off its noise-free image.
 
-    :func:`sensor_crlb` with each pixel's own contrast: the mean of pixel
-    ``(i, j)`` is ``bg_ij + c_ij coverage_ij(theta)`` (linear grey), where
-    ``c_ij`` is what the ball shows there above the background.  A shaded
-    ball's limb is dimmer (or, for a ball darker than the background,
-    darker) than its centre, and a textured one's varies with the pattern
-    that reaches it; the edges carry the limb's contrast, not the
-    centre's.  ``c_ij`` is read off ``expected`` on the pixels the ball
-    covers by at least ``min_coverage`` (``(expected - background) /
-    coverage``, the coverage with the camera's blur circle,
-    ``camera.defocus_px``, if any) and taken from the nearest such pixel of
-    the same line on the others.  The derivatives are ``c_ij`` times the
-    coverage's: the limb's motion.  The surface pattern's own motion inside
-    the silhouette is left out, so this bounds an estimator that does not
-    know the pattern (an unbiased one that did could do better).  Noise,
-    column gains and their prior as :func:`sensor_crlb`.
+    On the pixels the ball covers by at least ``min_coverage``,
+    ``(expected - background) / coverage`` (the coverage of
+    :func:`pixel_expectation`, blurred by the camera's blur circle,
+    ``camera.defocus_px``, if any); elsewhere the nearest such pixel's of
+    the same line, and on a line with none (the ends, crossed in part
+    during the exposure) the nearest line's.
 
     Parameters
     ----------
     camera : LineScanCamera
     motion : BallMotion
         The ball's true motion (the one ``expected`` shows).
-    noise : SensorNoise
     expected : ndarray (n_lines, W)
         The image's noise-free linear grey, 0..1.
     background : ndarray (n_lines, W) or (W,)
@@ -546,12 +572,9 @@ def image_crlb(
     t_lines_s : ndarray (n_lines,)
         Each line's centre time, seconds.
     readable : ndarray of bool (n_lines, W), optional
-        Pixels whose contrast may be read (False: another ball's, say);
-        default all.
-    flat_field : bool
-        The column gains are known.
+        Pixels that may be read (False: another ball's, say); default all.
     min_coverage : float
-        Least coverage of a pixel whose contrast is read, in (0, 1].
+        Least coverage of a pixel that is read, in (0, 1].
     n_nodes : int
         Quadrature nodes per piece of the averaged model.
 
@@ -569,21 +592,69 @@ def image_crlb(
     readable = np.ones(expected.shape, dtype=bool) if readable is None else np.broadcast_to(np.asarray(readable, dtype=bool), expected.shape)
     if not 0.0 < min_coverage <= 1.0:
         raise ValueError(f"min_coverage: must be in (0, 1], got {min_coverage!r}")
-    _check_prnu(noise.prnu_sigma)
     me = averaged_model(camera, motion.to_params()[None], motion.radius_m, t, motion.acceleration_mps2, n_nodes)
-    seen = np.flatnonzero(me.presence[0] > 0)
-    if seen.size == 0:
-        raise ValueError("image_crlb: the ball is not seen on any line")
-    lo = max(int(math.floor(np.nanmin(me.left_px[0, seen]))) - 2, 0)
-    hi = min(int(math.ceil(np.nanmax(me.right_px[0, seen]))) + 3, camera.width)
+    lines = np.flatnonzero(me.presence[0] > 0)
+    if lines.size == 0:
+        raise ValueError("limb_contrast: the ball is not seen on any line")
+    reach = 2 + int(math.ceil(0.5 * blur_diameter(camera)))
+    lo = max(int(math.floor(np.nanmin(me.left_px[0, lines]))) - reach, 0)
+    hi = min(int(math.ceil(np.nanmax(me.right_px[0, lines]))) + reach + 1, camera.width)
     cols = np.arange(lo, hi)
-    cov, dcov = pixel_expectation(camera, motion, t[seen], cols.astype(float), n_nodes)
-    box = np.ix_(seen, cols)
+    cov, dcov = pixel_expectation(camera, motion, t[lines], cols.astype(float), n_nodes)
+    box = np.ix_(lines, cols)
     contrast = _limb_contrast(expected[box] - background[box], cov, readable[box], min_coverage)
-    y = background[box] + contrast * cov
+    return LimbContrast(lines, cols, contrast, cov, dcov)
+
+
+def image_crlb(
+    camera: LineScanCamera,
+    motion: BallMotion,
+    noise: SensorNoise,
+    expected: np.ndarray,
+    background: np.ndarray,
+    t_lines_s: np.ndarray,
+    *,
+    readable: np.ndarray | None = None,
+    flat_field: bool = False,
+    min_coverage: float = 0.2,
+    n_nodes: int = 8,
+) -> PrecisionBound:
+    """Cramér–Rao bound of the pixels of a ball whose brightness varies over its surface, read off its noise-free image.
+
+    :func:`sensor_crlb` with each pixel's own contrast: the mean of pixel
+    ``(i, j)`` is ``bg_ij + c_ij coverage_ij(theta)`` (linear grey), where
+    ``c_ij`` is what the ball shows there above the background
+    (:func:`limb_contrast`).  A shaded ball's limb is dimmer (or, for a
+    ball darker than the background, darker) than its centre, and a
+    textured one's varies with the pattern that reaches it; the edges carry
+    the limb's contrast, not the centre's.  The derivatives are ``c_ij``
+    times the coverage's: the limb's motion, its contrast held as read.
+    The surface pattern's own motion inside the silhouette is left out:
+    the figure is the bound of the silhouette's information at the limb's
+    contrast, a reference for estimators that measure the silhouette (one
+    that knew the pattern could do better).  Only the lines and columns the
+    image holds count (a cut ball's visible part), with the camera's blur
+    circle.  Noise, column gains and their prior as :func:`sensor_crlb`.
+
+    Parameters
+    ----------
+    camera, motion, expected, background, t_lines_s, readable, min_coverage, n_nodes
+        As for :func:`limb_contrast`.
+    noise : SensorNoise
+    flat_field : bool
+        The column gains are known.
+
+    Raises
+    ------
+    ValueError
+        As :func:`limb_contrast`.
+    """
+    _check_prnu(noise.prnu_sigma)
+    lc = limb_contrast(camera, motion, expected, background, t_lines_s, readable=readable, min_coverage=min_coverage, n_nodes=n_nodes)
+    bg = np.broadcast_to(np.asarray(background, dtype=float), np.shape(expected))[np.ix_(lc.lines, lc.cols)]
     prnu = 0.0 if flat_field else noise.prnu_sigma
-    G = noise.white_dn * contrast * dcov
-    F = _pixel_fisher(G, _sensor_variance(noise, y), noise.white_dn * contrast * cov, prnu)
+    G = noise.white_dn * lc.contrast * lc.d_coverage
+    F = _pixel_fisher(G, _sensor_variance(noise, bg + lc.contrast * lc.coverage), noise.white_dn * lc.contrast * lc.coverage, prnu)
     n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
     desc = f"sensor: read {noise.read_dn:g} DN, white {noise.white_dn:g} DN, PRNU {prnu:g}; each pixel's contrast read off the noise-free image"
     return _bound("pixels", motion, camera, F, n_pix, desc)
@@ -597,7 +668,7 @@ def _limb_contrast(signal: np.ndarray, cov: np.ndarray, readable: np.ndarray, mi
     """
     ok = readable & (cov >= min_coverage)
     if not ok.any():
-        raise ValueError("image_crlb: no pixel of the ball can be read (coverage or readable)")
+        raise ValueError("limb_contrast: no pixel of the ball can be read (coverage or readable)")
     c = np.where(ok, signal / np.where(ok, cov, 1.0), 0.0)
     j = np.arange(c.shape[1])
     rows = np.flatnonzero(ok.any(axis=1))
