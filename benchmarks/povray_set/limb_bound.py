@@ -44,7 +44,7 @@ from ballscan.geometry.motion import BallMotion  # noqa: E402
 from ballscan.measure.images import load_image  # noqa: E402
 from ballscan.model.averaged import averaged_model  # noqa: E402
 from ballscan.model.render import SensorNoise  # noqa: E402
-from ballscan.solve.precision import image_crlb, limb_contrast  # noqa: E402
+from ballscan.solve.precision import limb_contrast, limb_crlb  # noqa: E402
 
 __all__ = ["LimbBound", "limb_bounds", "limb_speed_sigma", "scene_background"]
 
@@ -135,10 +135,9 @@ def limb_bounds(scenes: Path, name: str) -> list[LimbBound | None]:
         blur = ball_blur_px(truth, cam.focal_px, m.position_m[2])
         cam_k = replace(cam, defocus_px=blur) if blur > 0 else cam
         try:
-            sigma = image_crlb(cam_k, m, noise, clean, bg, t, readable=~others).speed_sigma_mps
+            lc = limb_contrast(cam_k, m, clean, bg, t, readable=~others)
             centre = ball["precision_inputs"]["ball_level"] - ball["precision_inputs"]["background_level"] if ball.get("precision_inputs") else 1.0
-            share = limb_contrast(cam_k, m, clean, bg, t, readable=~others).other_sign_share(centre)
-            out.append(LimbBound(float(sigma), share))
+            out.append(LimbBound(float(limb_crlb(cam_k, m, noise, lc).speed_sigma_mps), lc.other_sign_share(centre)))
         except ValueError:
             out.append(None)
     return out

@@ -51,7 +51,7 @@ from ..geometry.motion import BallMotion
 from ..model.render import SensorNoise
 from ..model.silhouette import visible_line_count
 
-__all__ = ["LimbContrast", "PrecisionBound", "edge_crlb", "image_crlb", "limb_contrast", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
+__all__ = ["LimbContrast", "PrecisionBound", "edge_crlb", "image_crlb", "limb_contrast", "limb_crlb", "pixel_crlb", "sensor_crlb", "pixel_expectation", "speed_error_quantiles"]
 
 
 @dataclass(frozen=True)
@@ -360,11 +360,13 @@ def _pixel_model(camera: LineScanCamera, motion: BallMotion, n_nodes: int) -> tu
     keep = np.flatnonzero(me.presence[0] > 0)
     if keep.size == 0:
         raise ValueError("pixel_crlb: the ball is not seen on any line")
-    lo = np.nanmin(me.left_px[0, keep])
-    hi = np.nanmax(me.right_px[0, keep])
+    return pixel_expectation(camera, motion, t[keep], _ball_columns(camera, me, keep).astype(float), n_nodes)
+
+
+def _ball_columns(camera: LineScanCamera, me, lines: np.ndarray) -> np.ndarray:
+    """The columns the averaged model ``me`` touches on ``lines``, with two and the blur circle's radius on either side (not clipped to the sensor)."""
     reach = 2 + math.ceil(0.5 * blur_diameter(camera))
-    cols = np.arange(math.floor(lo) - reach, math.ceil(hi) + reach + 1, dtype=float)
-    return pixel_expectation(camera, motion, t[keep], cols, n_nodes)
+    return np.arange(math.floor(np.nanmin(me.left_px[0, lines])) - reach, math.ceil(np.nanmax(me.right_px[0, lines])) + reach + 1)
 
 
 def _pixel_fisher(G: np.ndarray, var: np.ndarray, signal: np.ndarray | None = None, prnu_sigma: float = 0.0) -> np.ndarray:
@@ -523,6 +525,8 @@ class LimbContrast:
     contrast : ndarray (N, C)
         What the ball shows at each pixel above the background, linear grey
         (negative where darker).
+    background : ndarray (N, C)
+        The background at those pixels, linear grey.
     coverage, d_coverage : ndarray (N, C) and (6, N, C)
         The pixels' coverage and its derivatives (:func:`pixel_expectation`).
     """
@@ -530,6 +534,7 @@ class LimbContrast:
     lines: np.ndarray
     cols: np.ndarray
     contrast: np.ndarray
+    background: np.ndarray
     coverage: np.ndarray
     d_coverage: np.ndarray
 
@@ -596,14 +601,12 @@ def limb_contrast(
     lines = np.flatnonzero(me.presence[0] > 0)
     if lines.size == 0:
         raise ValueError("limb_contrast: the ball is not seen on any line")
-    reach = 2 + int(math.ceil(0.5 * blur_diameter(camera)))
-    lo = max(int(math.floor(np.nanmin(me.left_px[0, lines]))) - reach, 0)
-    hi = min(int(math.ceil(np.nanmax(me.right_px[0, lines]))) + reach + 1, camera.width)
-    cols = np.arange(lo, hi)
+    cols = _ball_columns(camera, me, lines)
+    cols = cols[(cols >= 0) & (cols < camera.width)]
     cov, dcov = pixel_expectation(camera, motion, t[lines], cols.astype(float), n_nodes)
     box = np.ix_(lines, cols)
     contrast = _limb_contrast(expected[box] - background[box], cov, readable[box], min_coverage)
-    return LimbContrast(lines, cols, contrast, cov, dcov)
+    return LimbContrast(lines, cols, contrast, background[box], cov, dcov)
 
 
 def image_crlb(
@@ -651,10 +654,16 @@ def image_crlb(
     """
     _check_prnu(noise.prnu_sigma)
     lc = limb_contrast(camera, motion, expected, background, t_lines_s, readable=readable, min_coverage=min_coverage, n_nodes=n_nodes)
-    bg = np.broadcast_to(np.asarray(background, dtype=float), np.shape(expected))[np.ix_(lc.lines, lc.cols)]
+    return limb_crlb(camera, motion, noise, lc, flat_field=flat_field)
+
+
+def limb_crlb(camera: LineScanCamera, motion: BallMotion, noise: SensorNoise, limb: LimbContrast, *, flat_field: bool = False) -> PrecisionBound:
+    """The bound of :func:`image_crlb` from a contrast map already read (:func:`limb_contrast` at ``camera`` and ``motion``)."""
+    _check_prnu(noise.prnu_sigma)
     prnu = 0.0 if flat_field else noise.prnu_sigma
-    G = noise.white_dn * lc.contrast * lc.d_coverage
-    F = _pixel_fisher(G, _sensor_variance(noise, bg + lc.contrast * lc.coverage), noise.white_dn * lc.contrast * lc.coverage, prnu)
+    signal = limb.contrast * limb.coverage
+    G = noise.white_dn * limb.contrast * limb.d_coverage
+    F = _pixel_fisher(G, _sensor_variance(noise, limb.background + signal), noise.white_dn * signal, prnu)
     n_pix = int((np.abs(G).sum(axis=0) > 0).sum())
     desc = f"sensor: read {noise.read_dn:g} DN, white {noise.white_dn:g} DN, PRNU {prnu:g}; each pixel's contrast read off the noise-free image"
     return _bound("pixels", motion, camera, F, n_pix, desc)
@@ -683,7 +692,9 @@ def _limb_contrast(signal: np.ndarray, cov: np.ndarray, readable: np.ndarray, mi
 
 def _sensor_variance(noise: SensorNoise, y: np.ndarray) -> np.ndarray:
     """White-noise variance (DN^2) of pixels of linear grey ``y``: read, shot and uniform quantisation noise."""
-    return noise.read_dn**2 + 1.0 / 12.0 + (y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else 0.0 * y)
+    y = np.asarray(y, dtype=float)
+    shot = y * noise.white_dn**2 / noise.full_well_e if noise.full_well_e else np.zeros_like(y)
+    return noise.read_dn**2 + 1.0 / 12.0 + shot
 
 
 def _check_prnu(prnu_sigma: float) -> None:
