@@ -155,6 +155,22 @@ def test_single_disc_bright_and_dark():
     assert len(det.regions) == 1 and det.regions[0].polarity == -1
 
 
+def test_a_disc_of_both_signs_has_its_larger_sides_contrast():
+    """A disc whose third is darker than the backdrop and the rest brighter: the bright part's contrast, not the near-zero median of both."""
+    img, inside = _disc((200, 400), (100, 200), (40, 25), 150.0)
+    dark = inside & (np.arange(400)[None, :] < 192)
+    img[dark] = 20.0 - 60.0
+    det = detect(_image(_noisy(img, 1.5, 1)))
+    assert len(det.regions) == 1
+    r = det.regions[0]
+    # measured: 129.9 DN (the median of all the disc's pixels: about 100 DN
+    # less for a third of the other sign, and 0 at half)
+    assert r.polarity == 1 and abs(r.contrast_dn - 130.0) < 3
+    img[inside & (np.arange(400)[None, :] < 200)] = 20.0 - 60.0
+    r = detect(_image(_noisy(img, 1.5, 1))).regions[0]
+    assert abs(abs(r.contrast_dn) - (130.0 if r.polarity > 0 else 60.0)) < 3
+
+
 def test_ball_covering_most_of_its_columns():
     # 200 lines, the ball spans 160 of them on its central columns: a plain
     # per-column median would call the ball the background.

@@ -345,12 +345,13 @@ def test_a_neighbours_mask_is_cut_to_the_window_as_the_whole_images_would_be():
 
 
 # --------------------------------------------------- a side-lit ball's shaded limb
-def _side_lit_ball(ambient: float = 0.12, scale_dn: float = 4000.0, noise_dn: float = 0.5, seed: int = 1):
+def _side_lit_ball(ambient: float = 0.12, scale_dn: float = 4000.0, noise_dn: float = 0.5, seed: int = 1, background: float = 0.02):
     """A bright ball lit from the side with little ambient light, its camera, motion, image, line times, detection, background and the truth's mean edges.
 
     Its shaded half, at the ambient level (``ambient`` of the ball's), is a
     plateau below a quarter of the lit side's peak about half the diameter
-    (28 px) wide.  The image is ``scale_dn`` times the renderer's noise-free
+    (28 px) wide; darker than the backdrop where ``0.9 ambient <
+    background``.  The image is ``scale_dn`` times the renderer's noise-free
     grey plus ``noise_dn`` of Gaussian noise.
     """
     from ballscan.geometry.camera import LineScanCamera, line_times
@@ -365,7 +366,7 @@ def _side_lit_ball(ambient: float = 0.12, scale_dn: float = 4000.0, noise_dn: fl
     m = BallMotion(0.0335, 0.025, (0.0, 0.002, 3.0), (2.0, 0.1, 0.0))
     app = Appearance(ball_level=0.9, light_dir=(0.3, 0.9, -0.3), ambient=ambient)
     n = 200
-    clean = render(cam, (m, app), n, background_level=0.02, noise=None).clean
+    clean = render(cam, (m, app), n, background_level=background, noise=None).clean
     img = LineImage(clean * scale_dn + noise_dn * np.random.default_rng(seed).standard_normal(clean.shape), 1e12, 16, "side-lit ball")
     t = line_times(cam, n)
     det = detect(img)
@@ -394,6 +395,51 @@ def test_edges_reach_the_limb_of_a_side_lit_balls_shaded_half():
     assert np.median(offsets[12][0]) > 5.0
 
 
+@pytest.mark.parametrize("background", [0.2, 0.3])
+def test_edges_reach_the_limb_of_a_shaded_half_darker_than_the_backdrop(background):
+    """Its side in shadow darker than the backdrop: each edge is measured on its own limb's sign, not where the lit side begins."""
+    _, _, img, t, det, bg, me = _side_lit_ball(ambient=0.12, background=background, noise_dn=2.0)
+    (region,) = det.regions
+    e = measure_edges(img.data, region, bg, det.noise_dn, t)
+    sharp = (me.presence[0][e.lines] > 0.999) & (me.spread_px[0][e.lines] < 0.3)
+    dl = (e.left_px - me.left_px[0][e.lines])[e.left_ok & sharp]
+    dr = (me.right_px[0][e.lines] - e.right_px)[e.right_ok & sharp]
+    # the lit side is of one sign, the side in shadow of the other on every line
+    assert dl.size > 80 and dr.size > 80
+    # measured: medians 0.000-0.002 / 0.011-0.013 px, worst 0.019-0.028 px, as
+    # the ball of one sign's (one sign only: 23.6 / 29.9 px inwards, at the terminator)
+    assert abs(np.median(dl)) < 0.01 and abs(np.median(dr)) < 0.02
+    assert np.abs(dl).max() < 0.05 and np.abs(dr).max() < 0.05
+    # the lines of both signs keep their summed coverage out of the fit
+    assert e.area_excluded is not None and e.area_excluded.sum() > 80
+
+
+def test_edges_of_one_sign_do_not_move_on_noise():
+    """A ball of one sign on a noisy line: no edge moves onto the other sign, bit for bit the edges of the one-sign search."""
+    from ballscan.measure._edge_kernels import other_sign_edges
+
+    rng = np.random.default_rng(5)
+    n, w = 400, 90
+    p = rng.normal(0.0, 0.05, (n, w))
+    p[:, 30:60] += 1.0
+    k_left, k_right = np.full(n, 30), np.full(n, 59)
+    hs = np.ones(n, dtype=bool)
+    floor, peak = np.full(n, 0.15), np.full(n, 0.3)
+    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2)
+    assert np.array_equal(kl, k_left) and np.array_equal(kr, k_right) and (sl == 1).all() and (sr == 1).all() and h.all()
+    # a limb of the other sign 3 px wide beside the right edge, beyond one pixel
+    # at the backdrop's level (the terminator), and a line of the other sign only
+    p[:, 61:64] = -0.6
+    p[7, :] = rng.normal(0.0, 0.05, w)
+    p[7, 40:50] = -0.8
+    hs[7] = False
+    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2)
+    rows = np.arange(n) != 7
+    # (the walk goes on where a noise pixel beyond holds the floor: 3 sigma)
+    assert (kr[rows] >= 63).all() and np.mean(kr[rows] == 63) > 0.98 and (sr[rows] == -1).all() and (sl[rows] == 1).all() and np.array_equal(kl[rows], k_left[rows])
+    assert (kl[7], kr[7], sl[7], sr[7], h[7]) == (40, 49, -1, -1, True)
+
+
 def test_side_lit_ball_measured_to_its_sigmas():
     from ballscan.pipeline.estimate import estimate_image
 
@@ -402,6 +448,22 @@ def test_side_lit_ball_measured_to_its_sigmas():
     # measured: V.z 0.035 +- 0.045 m/s, speed +0.13 %
     assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
     assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.003
+
+
+@pytest.mark.parametrize("background, ambient", [(0.3, 0.12), (0.3, 0.05), (0.2, 0.12), (0.1, 0.05)])
+def test_ball_of_both_signs_measured_to_its_sigmas(background, ambient):
+    """A bright ball whose side in shadow is darker than the backdrop is measured, not refused as ``not_a_ball``."""
+    from ballscan.pipeline.estimate import estimate_image
+
+    cam, m, img, *_ = _side_lit_ball(ambient=ambient, background=background, noise_dn=2.0)
+    (b,) = estimate_image(img, cam, m.radius_m).balls
+    # measured (seeds 1, 2): V.z -0.05 to +0.08 +- 0.06-0.14 m/s, speed
+    # -0.007 % to +0.05 %, within 0.2 sigma (one sign only: not_a_ball or
+    # degenerate, or the speed 9 to 31 times the truth)
+    assert "not_a_ball" not in b.flags and "degenerate" not in b.flags
+    assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
+    assert abs(b.speed_mps - math.hypot(*m.velocity_mps)) < 3 * b.speed_sigma_mps
+    assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.002
 
 
 def test_edges_reach_a_dim_shaded_limb_through_the_noise():

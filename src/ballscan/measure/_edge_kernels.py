@@ -42,6 +42,89 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
     return kl, kr
 
 
+@jit()
+def other_sign_edges(
+    q: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, min_peak: np.ndarray, floor_q: np.ndarray, fraction: float,
+    max_walk: int, max_gap: int,
+):
+    """The rough edges of :func:`ballscan.measure.edges._edge_pass` moved out onto a limb of the other sign.
+
+    ``q`` is the profile of the other sign (``-p``): a bright ball's side in
+    shadow darker than the backdrop, a football's black panel at the limb.
+    Only lines whose ``q`` peaks above ``min_peak`` (the significance of a
+    line's signal) are searched.  On a line with signal of the ball's sign
+    an edge moves where, within ``max_gap`` pixels outside it (the limb's
+    sign changes over them), two pixels in a row hold at least ``floor_q``
+    (3 noise sigmas); on a line without, the outermost two pixels in a row
+    that hold ``fraction`` of the peak and ``floor_q`` are the edges.  A
+    moved edge is walked outwards as :func:`walk_edges` walks.
+
+    Returns
+    -------
+    k_left, k_right : ndarray of int64 (n,)
+    sign_left, sign_right : ndarray of int64 (n,)
+        +1 where the edge stays the ball's sign, -1 where it moved.
+    has_signal : ndarray of bool (n,)
+        The lines with signal of either sign.
+    """
+    n, w = q.shape
+    kl = k_left.copy()
+    kr = k_right.copy()
+    sl = np.ones(n, dtype=np.int64)
+    sr = np.ones(n, dtype=np.int64)
+    hs = has_signal.copy()
+    for r in range(n):
+        peak = q[r, 0]
+        for j in range(1, w):
+            peak = max(peak, q[r, j])
+        if not peak > min_peak[r]:
+            continue
+        f = floor_q[r]
+        t = max(fraction * peak, f)
+        if has_signal[r]:
+            kl[r], sl[r] = _other_sign_side(q, r, k_left[r], -1, f, t, fraction, max_walk, max_gap)
+            kr[r], sr[r] = _other_sign_side(q, r, k_right[r], 1, f, t, fraction, max_walk, max_gap)
+            continue
+        for j in range(0, w - 1):
+            if q[r, j] >= t and q[r, j + 1] >= t:
+                kl[r] = _walk(q, r, j, -1, f, fraction, max_walk)
+                sl[r] = -1
+                break
+        for j in range(w - 1, 0, -1):
+            if q[r, j] >= t and q[r, j - 1] >= t:
+                kr[r] = _walk(q, r, j, 1, f, fraction, max_walk)
+                sr[r] = -1
+                break
+        hs[r] = sl[r] < 0 and sr[r] < 0
+        if not hs[r]:
+            kl[r], kr[r], sl[r], sr[r] = k_left[r], k_right[r], 1, 1
+    return kl, kr, sl, sr, hs
+
+
+@jit(inline="always")
+def _other_sign_side(q: np.ndarray, r: int, k: int, step: int, floor: float, t: float, fraction: float, max_walk: int, max_gap: int):
+    """Line ``r``'s edge ``k`` moved outwards (``step``) onto a limb of the other sign, and its sign (see :func:`other_sign_edges`).
+
+    Within ``max_gap`` pixels beyond ``k`` two pixels in a row at ``floor``;
+    else, further out, the outermost two in a row at ``t``.  ``(k, 1)``
+    where neither is found.
+    """
+    w = q.shape[1]
+    for g in range(1, max_gap + 2):
+        j = k + g * step
+        if j + step < 0 or j + step > w - 1:
+            break
+        if q[r, j] >= floor and q[r, j + step] >= floor:
+            return _walk(q, r, j, step, floor, fraction, max_walk), -1
+    # from the box's end inwards, up to the pixel beside the edge
+    j = 0 if step < 0 else w - 1
+    while (j < k - 1) if step < 0 else (j > k + 1):
+        if q[r, j] >= t and q[r, j - step] >= t:
+            return _walk(q, r, j, step, floor, fraction, max_walk), -1
+        j -= step
+    return k, 1
+
+
 @jit(inline="always")
 def _walk(p: np.ndarray, r: int, k: int, step: int, floor: float, fraction: float, max_walk: int) -> int:
     """Pixel ``k`` of line ``r`` walked by ``step`` (-1 left, +1 right), see :func:`walk_edges`."""
@@ -679,6 +762,7 @@ def warm_up() -> None:
     k1 = np.full(1, 7, dtype=np.int64)
     yes = np.ones(1, dtype=np.bool_)
     walk_edges(prof, k0, k1, yes, np.zeros(1), 0.25, 1)
+    other_sign_edges(prof, k0, k1, yes, np.ones(1), np.ones(1), 0.25, 1, 2)
     inner_differences(prof, prof, k0, k1, yes)
     flags = np.zeros((1, 8), dtype=np.bool_)
     edge_windows(prof, prof, flags, flags, k0, k1, k0, k0, 1)

@@ -903,6 +903,30 @@ def _mid_line(raw: _RawRegion) -> float:
     return raw.line_start + 0.5 * (raw.mask.shape[0] - 1)
 
 
+#: share of a region's pixels on the other side of the backdrop from its
+#: median beyond which the region is a ball of both signs (a bright ball's
+#: side in shadow darker than the backdrop): noise alone puts well under
+#: 0.1 % of a detected ball's pixels there
+OTHER_SIGN_SHARE = 0.1
+
+
+def _region_contrast(vals: np.ndarray) -> float:
+    """A region's contrast (DN, signed): the median of its pixels' levels over the backdrop.
+
+    Where more than :data:`OTHER_SIGN_SHARE` of them lie on the median's
+    other side of the backdrop, the median of those on its side: the median
+    of all would mix the two signs' levels towards 0, and the contrast is
+    the unit of every normalised profile of the ball.
+    """
+    if vals.size == 0:
+        return 0.0
+    contrast = float(median(vals))
+    other = vals < 0.0 if contrast >= 0 else vals > 0.0
+    if np.count_nonzero(other) > OTHER_SIGN_SHARE * vals.size:
+        contrast = float(median(vals[~other]))
+    return contrast
+
+
 def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, sat: float) -> BallRegion:
     """The region of a raw mask: its holes filled, its contrast, polarity and flags."""
     n, w = x64.shape
@@ -911,7 +935,7 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
     filled = fill_lines_and_cols(as_arg(raw.mask, np.bool_))
     h, wd = filled.shape
     vals, saturated = region_values(x64, bg.line_gain, bg.background_dn, bg.line_offset_dn, l0, c0, filled, sat)
-    contrast = float(median(vals)) if vals.size else 0.0
+    contrast = _region_contrast(vals)
     flags = []
     if l0 == 0:
         flags.append("cut_first_line")

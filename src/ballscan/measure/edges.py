@@ -45,7 +45,7 @@ import numpy as np
 from ..compiled import as_arg
 from ._edge_kernels import (
     edge_windows, finished_edges, finite_rows, inner_differences, level_gradients, limb_pixels, line_coverage,
-    rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
+    other_sign_edges, rough_edges, running_medians, shaded_sides, shot_noise, walk_edges, window_edges,
 )
 from ._shading_kernels import limb_levels
 from ..errors import GeometryError
@@ -739,12 +739,19 @@ class _Box:
 
 @dataclass(frozen=True)
 class _RoughEdges:
-    """Per line of a box: the profile's peak, whether it shows the ball, and the rough edge pixels (box columns)."""
+    """Per line of a box: the profile's peak, whether it shows the ball, the rough edge pixels (box columns) and each edge's sign.
+
+    ``sign_left`` and ``sign_right`` are +1 where the limb has the ball's
+    sign and -1 where it has the other (darker than the backdrop on a
+    bright ball); None where every edge has the ball's sign.
+    """
 
     peak: np.ndarray
     has_signal: np.ndarray
     k_left: np.ndarray
     k_right: np.ndarray
+    sign_left: np.ndarray | None = None
+    sign_right: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -883,7 +890,16 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     # ball's real edge (compiled, line by line).
     floor_p = s.walk_snr * noise_row
     k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
-    return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
+    min_peak = s.min_snr * noise_row
+    if not np.any(-p.min(axis=1) > min_peak):
+        return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
+    # a limb of the other sign beyond the edges (compiled)
+    k_left, k_right, sl, sr, has_signal = other_sign_edges(
+        -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px), 2
+    )
+    if np.all(sl > 0) and np.all(sr > 0):
+        return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
+    return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right, sign_left=sl, sign_right=sr)
 
 
 def _ball_noise(box: _Box, rough: _RoughEdges, s: EdgeSettings) -> np.ndarray:
@@ -915,6 +931,28 @@ def _ball_noise(box: _Box, rough: _RoughEdges, s: EdgeSettings) -> np.ndarray:
         # not its own value (compiled: see _edge_kernels.shot_noise)
         return shot_noise(p, as_arg(sp), sig_in**2 - sig_bg**2, p_in)
     return sp
+
+
+def _window_sums(p: np.ndarray, sp: np.ndarray, box: _Box, rough: _RoughEdges, n_out: np.ndarray, n_in: np.ndarray, s: EdgeSettings) -> _WindowSums:
+    """The window and level-run sums of every edge estimate, each edge on its limb's sign (:func:`ballscan.measure._edge_kernels.edge_windows`).
+
+    An edge of the other sign is measured on the line's profile times -1,
+    so that its window, level and the rules on them read as a limb of the
+    ball's sign; the shading model's profile of that side is of the other
+    sign as well, and only its ratios enter (:func:`_limb_levels`).
+    """
+    def sums(prof: np.ndarray) -> _WindowSums:
+        return _WindowSums(
+            *edge_windows(prof, as_arg(sp), as_arg(box.saturated_px, np.bool_), box.other_px, rough.k_left, rough.k_right, n_out, n_in, int(s.n_level))
+        )
+
+    if rough.sign_left is None:
+        return sums(p)
+    left = sums(p * rough.sign_left[:, None].astype(float))
+    right = sums(p * rough.sign_right[:, None].astype(float))
+    # rows: per window variant the left edges of the n lines, then the right ones
+    is_left = left.sgn > 0
+    return _WindowSums(*(np.where(is_left.reshape((-1,) + (1,) * (a.ndim - 1)), a, b) for a, b in zip(vars(left).values(), vars(right).values())))
 
 
 def _window_edges(ws: _WindowSums, hs4: np.ndarray, n_in: np.ndarray, s: EdgeSettings, quarters: tuple[slice, ...]) -> _WindowEdges:
@@ -1012,12 +1050,15 @@ def _edge_pass(
     n_in = np.array([v[1] for v in variants], dtype=np.int64)
     n_out = np.array([v[0] for v in variants], dtype=np.int64)
     # the windows' and runs' pixels and sums (compiled)
-    ws = _WindowSums(
-        *edge_windows(p, as_arg(sp), as_arg(box.saturated_px, np.bool_), box.other_px, rough.k_left, rough.k_right, n_out, n_in, int(s.n_level))
-    )
+    ws = _window_sums(p, sp, box, rough, n_out, n_in, s)
     we = _window_edges(ws, hs4, n_in, s, quarters)
     use = _usability(box, rough, ws, hs4, s, quarters)
     usable = use.usable & ~_windows_meet(ws.lo, ws.hi, np.asarray(blind_columns, dtype=np.int64) - box.c0)
+    spoiled, excluded = use.spoiled, None
+    if rough.sign_left is not None:
+        # a line's summed coverage adds the limb's two signs: not its area
+        excluded = (rough.sign_left < 0) | (rough.sign_right < 0)
+        spoiled = spoiled | excluded
     # texture indicator from pixels the edge does not use (the deep run and
     # the run inside it, pdd and sdd2), so that its noise is independent of
     # the edge's: a weight correlated with the edge's own error would bias the fit
@@ -1053,7 +1094,8 @@ def _edge_pass(
         dlev=np.maximum(dlev, 0.0),
         usable=usable,
         run_ok=ws.L_run > 3.0 * np.sqrt(ws.sl2),
-        spoiled=use.spoiled,
+        spoiled=spoiled,
+        excluded=excluded,
         common=_Unchanged(
             lines=box.lines,
             t_s=box.t_s,
