@@ -53,7 +53,7 @@ def other_sign_edges(
     shadow darker than the backdrop, a football's black panel at the limb.
     Only lines whose ``q`` peaks above ``min_peak`` (the significance of a
     line's signal) are searched.  On a line with signal of the ball's sign
-    an edge moves where, within ``max_gap`` pixels outside it (the limb's
+    (two pixels in a row at ``floor_q`` at each rough edge) an edge moves where, within ``max_gap`` pixels outside it (the limb's
     sign changes over them), two pixels in a row hold at least ``floor_q``
     (3 noise sigmas); on a line without, the outermost two pixels in a row
     that hold ``fraction`` of the peak and ``floor_q`` are the edges.  A
@@ -81,24 +81,34 @@ def other_sign_edges(
             continue
         f = floor_q[r]
         t = max(fraction * peak, f)
-        if has_signal[r]:
+        a, b = k_left[r], k_right[r]
+        # the ball's sign holds its rough edges where two pixels in a row are at the floor
+        held = has_signal[r] and b - a >= 1 and -q[r, a] >= f and -q[r, a + 1] >= f and -q[r, b] >= f and -q[r, b - 1] >= f
+        if held:
             kl[r], sl[r] = _other_sign_side(q, r, k_left[r], -1, f, t, fraction, max_walk, max_gap)
             kr[r], sr[r] = _other_sign_side(q, r, k_right[r], 1, f, t, fraction, max_walk, max_gap)
             continue
-        for j in range(0, w - 1):
-            if q[r, j] >= t and q[r, j + 1] >= t:
-                kl[r] = _walk(q, r, j, -1, f, fraction, max_walk)
-                sl[r] = -1
-                break
-        for j in range(w - 1, 0, -1):
-            if q[r, j] >= t and q[r, j - 1] >= t:
-                kr[r] = _walk(q, r, j, 1, f, fraction, max_walk)
-                sr[r] = -1
-                break
-        hs[r] = sl[r] < 0 and sr[r] < 0
-        if not hs[r]:
+        # from each end inwards, to the first two pixels in a row of either sign
+        kl[r], sl[r] = _first_pair(q, r, 0, 1, t, f, fraction, max_walk)
+        kr[r], sr[r] = _first_pair(q, r, w - 1, -1, t, f, fraction, max_walk)
+        if not (sl[r] < 0 or sr[r] < 0) or sl[r] == 0 or sr[r] == 0:
             kl[r], kr[r], sl[r], sr[r] = k_left[r], k_right[r], 1, 1
+        hs[r] = has_signal[r] or sl[r] < 0
     return kl, kr, sl, sr, hs
+
+
+@jit(inline="always")
+def _first_pair(q: np.ndarray, r: int, start: int, step: int, t: float, floor: float, fraction: float, max_walk: int):
+    """Line ``r``'s first two pixels in a row from ``start`` on (``step``) of either sign: ``(k, -1)`` at ``t`` of the other sign (walked outwards), ``(k, 1)`` at ``floor`` of the ball's, ``(start, 0)`` where none (see :func:`other_sign_edges`)."""
+    w = q.shape[1]
+    j = start
+    while 0 <= j + step <= w - 1:
+        if q[r, j] >= t and q[r, j + step] >= t:
+            return _walk(q, r, j, -step, floor, fraction, max_walk), -1
+        if -q[r, j] >= floor and -q[r, j + step] >= floor:
+            return j, 1
+        j += step
+    return start, 0
 
 
 @jit(inline="always")
