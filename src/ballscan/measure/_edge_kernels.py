@@ -52,12 +52,22 @@ def other_sign_edges(
     ``q`` is the profile of the other sign (``-p``): a bright ball's side in
     shadow darker than the backdrop, a football's black panel at the limb.
     Only lines whose ``q`` peaks above ``min_peak`` (the significance of a
-    line's signal) are searched.  On a line with signal of the ball's sign
-    (two pixels in a row at ``floor_q`` at each rough edge) an edge moves where, within ``max_gap`` pixels outside it (the limb's
-    sign changes over them), two pixels in a row hold at least ``floor_q``
-    (3 noise sigmas); on a line without, the outermost two pixels in a row
-    that hold ``fraction`` of the peak and ``floor_q`` are the edges.  A
-    moved edge is walked outwards as :func:`walk_edges` walks.
+    line's signal) are searched:
+
+    * where the ball's sign holds both rough edges (two pixels in a row at
+      ``floor_q``, 3 noise sigmas), each edge moves where two pixels in a
+      row of ``q`` hold ``floor_q`` within ``max_gap`` pixels beyond it
+      (the limb's sign changes over them), else where the outermost two in
+      a row beyond it hold ``fraction`` of ``q``'s peak and ``floor_q``;
+    * elsewhere (a faint line, whose rough edges sit on the noise) each
+      edge is the first two pixels in a row from the box's end that hold
+      that much of ``q``, or ``floor_q`` of the ball's sign (the edge keeps
+      that sign); at least one edge of the other sign, else the line keeps
+      its rough edges.
+
+    A moved edge is walked outwards as :func:`walk_edges` walks.  Two pixels
+    in a row keep the noise of a ball of one sign's lines from moving an
+    edge.
 
     Returns
     -------

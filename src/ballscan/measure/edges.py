@@ -29,6 +29,12 @@ there the edges are marked unusable and the line's summed coverage
 ``area_px = sum_j p_j`` (pixels) and its centroid are what the fit uses; they
 are provided on every line.
 
+A limb of the other sign (a bright ball's side in shadow darker than the
+backdrop, a football's black panel) is found beyond the rough edge
+(:func:`ballscan.measure._edge_kernels.other_sign_edges`) and its edge
+measured on ``-p``, so that the same estimator and rules apply; such a
+line's area mixes both signs and is kept out of the fit.
+
 Edges are never dropped silently: an edge whose window reaches the sensor's
 first or last pixel, contains a saturated pixel, meets another ball's region
 or gives an estimate outside its window has ``left_ok`` / ``right_ok`` False.
@@ -284,7 +290,8 @@ class EdgeMeasurements:
         ``edge_floor_px``); None: none (see :attr:`edges_method`).
     area_excluded : ndarray of bool or None
         Lines whose area the fit must not use although the ball is on them
-        (their edges left out by :func:`without_edges`); None: none.
+        (their edges left out by :func:`without_edges`, or an edge on a
+        limb of the other sign: the area adds both signs); None: none.
     """
 
     lines: np.ndarray
