@@ -15,7 +15,6 @@ from ballscan.solve.initial import (
     fit_silhouette_ellipse,
     half_contrast_edges,
     initial_guess,
-    signed_half_contrast_edges,
 )
 from ballscan.geometry.motion import BallMotion
 from ballscan.model.silhouette import silhouette
@@ -108,21 +107,6 @@ def test_half_contrast_edges_follow_a_shaded_limb():
     left, right = half_contrast_edges(p)
     assert left == pytest.approx(2.0)
     assert right == pytest.approx(10 - 0.025 / 0.15)  # 0.15 between 0.3 (px 9) and 0.15 (px 10)
-
-
-def test_signed_half_contrast_edges_reach_a_limb_darker_than_the_backdrop():
-    # lit right side, the left side in shadow below the backdrop (-0.4) beyond
-    # a pixel at its level (the terminator)
-    p = np.array([0.0, 0.0, -0.2, -0.4, -0.4, -0.35, 0.0, 0.5, 1.0, 1.0, 0.5, 0.0, 0.0])
-    left, right = signed_half_contrast_edges(p, np.full(p.size, 0.02))
-    assert left == pytest.approx(2.0)  # half of the dark level 0.4, between px 2 and 3
-    assert right == pytest.approx(half_contrast_edges(p)[1])
-    assert half_contrast_edges(p)[0] == pytest.approx(7.0)  # one sign only: the lit side's start
-    # noise of either sign (one pixel, or two below 3 sigma) changes nothing
-    rng = np.random.default_rng(0)
-    for _ in range(50):
-        q = np.array([0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 0.5, 0.0, 0.0]) + rng.normal(0.0, 0.05, 9)
-        assert signed_half_contrast_edges(q, np.full(9, 0.1)) == half_contrast_edges(q)
 
 
 def test_keypoints_the_same_with_a_row_or_a_box_of_sigmas():

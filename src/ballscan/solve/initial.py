@@ -147,31 +147,6 @@ def half_contrast_edges(profile: np.ndarray, level: float = 0.5, detect: float =
     return _crossing(profile, lvl_left, jl, 1), _crossing(profile, lvl_right, jr, -1)
 
 
-def signed_half_contrast_edges(profile: np.ndarray, sigma: np.ndarray, level: float = 0.5, detect: float = 0.25) -> tuple[float, float]:
-    """:func:`half_contrast_edges` on a line whose limb may be of the other sign (darker than the backdrop on a bright ball).
-
-    Beyond each edge of the ball's sign, a run of at least two pixels of
-    the other sign at ``detect`` and 3 noise sigmas (``sigma``, per pixel)
-    is the ball's too: that side's edge is then the half-contrast crossing
-    of ``-profile`` over the run.  Equal to :func:`half_contrast_edges`
-    where no such run lies beyond the edges.
-    """
-    left, right = half_contrast_edges(profile, level, detect)
-    q = -np.asarray(profile, dtype=float)
-    deep = (q >= np.maximum(detect, 3.0 * np.broadcast_to(sigma, q.shape))).astype(np.int8)
-    pairs = np.flatnonzero(deep[:-1] & deep[1:])
-    if pairs.size == 0:
-        return left, right
-    above = np.flatnonzero(np.asarray(profile) >= detect)
-    lo, hi = (int(above[0]), int(above[-1])) if above.size else (q.size, -1)
-    out_l, out_r = pairs[pairs + 1 < lo], pairs[pairs > hi]
-    if out_l.size:
-        left = half_contrast_edges(np.where(np.arange(q.size) <= out_l[-1] + 1, q, 0.0), level, detect)[0]
-    if out_r.size:
-        right = half_contrast_edges(np.where(np.arange(q.size) >= out_r[0], q, 0.0), level, detect)[1]
-    return left, right
-
-
 def _centroid(row: np.ndarray, sigma: np.ndarray) -> tuple[float, float]:
     """Centroid of a non-negative profile and its 1-sigma from per-pixel noise."""
     w = np.maximum(row, 0.0)  # np.clip's values (it calls np.maximum without an upper bound)
@@ -439,7 +414,7 @@ def find_keypoints(
         return c + lo, math.hypot(s, 0.05)
 
     def line_edges(r: int) -> tuple[float, float]:
-        return signed_half_contrast_edges(box[r], sig[r] if sig.ndim == 2 else sig)
+        return half_contrast_edges(box[r])
 
     u_a, s_a = line_centroid(r_a)
     u_b, s_b = line_centroid(r_b)
