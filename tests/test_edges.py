@@ -425,7 +425,7 @@ def test_edges_of_one_sign_do_not_move_on_noise():
     k_left, k_right = np.full(n, 30), np.full(n, 59)
     hs = np.ones(n, dtype=bool)
     floor, peak = np.full(n, 0.15), np.full(n, 0.3)
-    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2)
+    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2, 3)
     assert np.array_equal(kl, k_left) and np.array_equal(kr, k_right) and (sl == 1).all() and (sr == 1).all() and h.all()
     # a limb of the other sign 3 px wide beside the right edge, beyond one pixel
     # at the backdrop's level (the terminator), and a line of the other sign only
@@ -433,7 +433,7 @@ def test_edges_of_one_sign_do_not_move_on_noise():
     p[7, :] = rng.normal(0.0, 0.05, w)
     p[7, 40:50] = -0.8
     hs[7] = False
-    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2)
+    kl, kr, sl, sr, h = other_sign_edges(-p, k_left, k_right, hs, peak, floor, 0.25, 4096, 2, 3)
     rows = np.arange(n) != 7
     # (the walk goes on where a noise pixel beyond holds the floor: 3 sigma)
     assert (kr[rows] >= 63).all() and np.mean(kr[rows] == 63) > 0.98 and (sr[rows] == -1).all() and (sl[rows] == 1).all() and np.array_equal(kl[rows], k_left[rows])

@@ -45,37 +45,38 @@ def walk_edges(p: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signa
 @jit()
 def other_sign_edges(
     q: np.ndarray, k_left: np.ndarray, k_right: np.ndarray, has_signal: np.ndarray, min_peak: np.ndarray, floor_q: np.ndarray, fraction: float,
-    max_walk: int, max_gap: int,
+    max_walk: int, max_gap: int, run: int,
 ):
     """The rough edges of :func:`ballscan.measure.edges._edge_pass` moved out onto a limb of the other sign.
 
-    ``q`` is the profile of the other sign (``-p``): a bright ball's side in
-    shadow darker than the backdrop, a football's black panel at the limb.
-    Only lines whose ``q`` peaks above ``min_peak`` (the significance of a
-    line's signal) are searched:
+    ``q`` is the profile of the other sign (``-p``, in units of the ball's
+    contrast): a bright ball's side in shadow darker than the backdrop, a
+    football's black panel at the limb.  Only lines whose ``q`` peaks above
+    ``min_peak`` (their signal's significance, and a depth that a camera's
+    sharpening undershoot or a background a few sigmas off does not reach)
+    are searched, and only ``run`` pixels in a row that hold ``floor_q`` (3
+    noise sigmas) count as the other sign:
 
-    * where the ball's sign holds both rough edges (two pixels in a row at
-      ``floor_q``, 3 noise sigmas), each edge moves where two pixels in a
-      row of ``q`` hold ``floor_q`` within ``max_gap`` pixels beyond it
-      (the limb's sign changes over them), else where the outermost two in
-      a row beyond it hold ``fraction`` of ``q``'s peak and ``floor_q``;
-    * elsewhere (a faint line, whose rough edges sit on the noise) each
-      edge is the first two pixels in a row from the box's end that hold
-      that much of ``q``, or ``floor_q`` of the ball's sign (the edge keeps
-      that sign); at least one edge of the other sign, else the line keeps
-      its rough edges.
+    * where the ball's sign holds both rough edges (their pixels at
+      ``floor_q``), each edge moves onto such a run that starts within
+      ``max_gap`` pixels beyond it (the limb's sign changes over them), else
+      onto the outermost run beyond it that also holds ``fraction`` of
+      ``q``'s peak;
+    * elsewhere (a faint line, whose rough edges may sit on the noise) each
+      edge is the first run from the box's end that holds that much of
+      ``q``, or the first two pixels in a row at ``floor_q`` of the ball's
+      sign (the edge keeps that sign, unwalked); at least one edge of the
+      other sign, else the line keeps its rough edges.
 
-    A moved edge is walked outwards as :func:`walk_edges` walks.  Two pixels
-    in a row keep the noise of a ball of one sign's lines from moving an
-    edge.
+    A moved edge is walked outwards as :func:`walk_edges` walks.
 
     Returns
     -------
     k_left, k_right : ndarray of int64 (n,)
     sign_left, sign_right : ndarray of int64 (n,)
-        +1 where the edge stays the ball's sign, -1 where it moved.
+        -1 where the edge lies on the other sign, +1 elsewhere.
     has_signal : ndarray of bool (n,)
-        The lines with signal of either sign.
+        ``has_signal``, and the lines with an edge of the other sign.
     """
     n, w = q.shape
     kl = k_left.copy()
@@ -92,28 +93,37 @@ def other_sign_edges(
         f = floor_q[r]
         t = max(fraction * peak, f)
         a, b = k_left[r], k_right[r]
-        # the ball's sign holds its rough edges where two pixels in a row are at the floor
-        held = has_signal[r] and b - a >= 1 and -q[r, a] >= f and -q[r, a + 1] >= f and -q[r, b] >= f and -q[r, b - 1] >= f
-        if held:
-            kl[r], sl[r] = _other_sign_side(q, r, k_left[r], -1, f, t, fraction, max_walk, max_gap)
-            kr[r], sr[r] = _other_sign_side(q, r, k_right[r], 1, f, t, fraction, max_walk, max_gap)
-            continue
-        # from each end inwards, to the first two pixels in a row of either sign
-        kl[r], sl[r] = _first_pair(q, r, 0, 1, t, f, fraction, max_walk)
-        kr[r], sr[r] = _first_pair(q, r, w - 1, -1, t, f, fraction, max_walk)
-        if not (sl[r] < 0 or sr[r] < 0) or sl[r] == 0 or sr[r] == 0:
-            kl[r], kr[r], sl[r], sr[r] = k_left[r], k_right[r], 1, 1
-        hs[r] = has_signal[r] or sl[r] < 0
+        if has_signal[r] and -q[r, a] >= f and -q[r, b] >= f:
+            kl[r], sl[r] = _other_sign_side(q, r, a, -1, f, t, fraction, max_walk, max_gap, run)
+            kr[r], sr[r] = _other_sign_side(q, r, b, 1, f, t, fraction, max_walk, max_gap, run)
+        else:
+            # from each end inwards, to the first run of either sign
+            kl[r], sl[r] = _first_run(q, r, 0, 1, t, f, fraction, max_walk, run)
+            kr[r], sr[r] = _first_run(q, r, w - 1, -1, t, f, fraction, max_walk, run)
+            if not (sl[r] < 0 or sr[r] < 0) or sl[r] == 0 or sr[r] == 0:
+                kl[r], kr[r], sl[r], sr[r] = k_left[r], k_right[r], 1, 1
+        hs[r] = has_signal[r] or sl[r] < 0 or sr[r] < 0
     return kl, kr, sl, sr, hs
 
 
 @jit(inline="always")
-def _first_pair(q: np.ndarray, r: int, start: int, step: int, t: float, floor: float, fraction: float, max_walk: int):
-    """Line ``r``'s first two pixels in a row from ``start`` on (``step``) of either sign: ``(k, -1)`` at ``t`` of the other sign (walked outwards), ``(k, 1)`` at ``floor`` of the ball's, ``(start, 0)`` where none (see :func:`other_sign_edges`)."""
+def _holds(q: np.ndarray, r: int, j: int, step: int, level: float, run: int) -> bool:
+    """Whether ``run`` pixels of line ``r`` from ``j`` on (``step``) lie in the box and hold ``q >= level``."""
+    w = q.shape[1]
+    for i in range(run):
+        c = j + i * step
+        if c < 0 or c > w - 1 or not q[r, c] >= level:
+            return False
+    return True
+
+
+@jit(inline="always")
+def _first_run(q: np.ndarray, r: int, start: int, step: int, t: float, floor: float, fraction: float, max_walk: int, run: int):
+    """Line ``r``'s first run of either sign from ``start`` on (``step``): ``(k, -1)`` for ``run`` pixels at ``t`` of the other sign (walked outwards), ``(k, 1)`` for two at ``floor`` of the ball's, ``(start, 0)`` where none (see :func:`other_sign_edges`)."""
     w = q.shape[1]
     j = start
     while 0 <= j + step <= w - 1:
-        if q[r, j] >= t and q[r, j + step] >= t:
+        if _holds(q, r, j, step, t, run):
             return _walk(q, r, j, -step, floor, fraction, max_walk), -1
         if -q[r, j] >= floor and -q[r, j + step] >= floor:
             return j, 1
@@ -122,24 +132,25 @@ def _first_pair(q: np.ndarray, r: int, start: int, step: int, t: float, floor: f
 
 
 @jit(inline="always")
-def _other_sign_side(q: np.ndarray, r: int, k: int, step: int, floor: float, t: float, fraction: float, max_walk: int, max_gap: int):
+def _other_sign_side(q: np.ndarray, r: int, k: int, step: int, floor: float, t: float, fraction: float, max_walk: int, max_gap: int, run: int):
     """Line ``r``'s edge ``k`` moved outwards (``step``) onto a limb of the other sign, and its sign (see :func:`other_sign_edges`).
 
-    Within ``max_gap`` pixels beyond ``k`` two pixels in a row at ``floor``;
-    else, further out, the outermost two in a row at ``t``.  ``(k, 1)``
+    A run at ``floor`` whose inner end lies within ``max_gap`` pixels beyond
+    ``k``; else, further out, the outermost run at ``t``.  ``(k, 1)``
     where neither is found.
     """
     w = q.shape[1]
     for g in range(1, max_gap + 2):
         j = k + g * step
-        if j + step < 0 or j + step > w - 1:
+        if j < 0 or j > w - 1:
             break
-        if q[r, j] >= floor and q[r, j + step] >= floor:
+        if _holds(q, r, j, step, floor, run):
             return _walk(q, r, j, step, floor, fraction, max_walk), -1
     # from the box's end inwards, up to the pixel beside the edge
     j = 0 if step < 0 else w - 1
     while (j < k - 1) if step < 0 else (j > k + 1):
-        if q[r, j] >= t and q[r, j - step] >= t:
+        # the run from its outer end j inwards
+        if _holds(q, r, j, -step, t, run) and ((j - step * (run - 1)) < k if step < 0 else (j - step * (run - 1)) > k):
             return _walk(q, r, j, step, floor, fraction, max_walk), -1
         j -= step
     return k, 1
@@ -782,7 +793,7 @@ def warm_up() -> None:
     k1 = np.full(1, 7, dtype=np.int64)
     yes = np.ones(1, dtype=np.bool_)
     walk_edges(prof, k0, k1, yes, np.zeros(1), 0.25, 1)
-    other_sign_edges(prof, k0, k1, yes, np.ones(1), np.ones(1), 0.25, 1, 2)
+    other_sign_edges(prof, k0, k1, yes, np.ones(1), np.ones(1), 0.25, 1, 2, 3)
     inner_differences(prof, prof, k0, k1, yes)
     flags = np.zeros((1, 8), dtype=np.bool_)
     edge_windows(prof, prof, flags, flags, k0, k1, k0, k0, 1)

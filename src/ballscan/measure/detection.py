@@ -125,6 +125,11 @@ class BallRegion:
         Words from :data:`FLAG_WORDS` (geometry.md).
     n_pixels : int
         Number of pixels above threshold (before hole filling).
+    both_signs : bool
+        More than :data:`OTHER_SIGN_SHARE` of the mask's pixels lie on the
+        other side of the backdrop (a bright ball's side in shadow darker
+        than the backdrop): its edges may lie on either sign
+        (:func:`ballscan.measure.edges.measure_edges`).
     """
 
     index: int
@@ -137,6 +142,7 @@ class BallRegion:
     contrast_dn: float
     flags: tuple[str, ...]
     n_pixels: int = 0
+    both_signs: bool = False
 
     def __post_init__(self) -> None:
         if not (0 <= self.line_start < self.line_stop and 0 <= self.col_start < self.col_stop):
@@ -905,13 +911,13 @@ def _mid_line(raw: _RawRegion) -> float:
 
 #: share of a region's pixels on the other side of the backdrop from its
 #: median beyond which the region is a ball of both signs (a bright ball's
-#: side in shadow darker than the backdrop): noise alone puts well under
-#: 0.1 % of a detected ball's pixels there
+#: side in shadow darker than the backdrop): noise alone puts 0.2-0.3 % of
+#: the pixels of a ball at the detection limit there
 OTHER_SIGN_SHARE = 0.1
 
 
-def _region_contrast(vals: np.ndarray) -> float:
-    """A region's contrast (DN, signed): the median of its pixels' levels over the backdrop.
+def _region_contrast(vals: np.ndarray) -> tuple[float, bool]:
+    """A region's contrast (DN, signed), the median of its pixels' levels over the backdrop, and whether it is of both signs.
 
     Where more than :data:`OTHER_SIGN_SHARE` of them lie on the median's
     other side of the backdrop, the median of those on its side: the median
@@ -919,12 +925,12 @@ def _region_contrast(vals: np.ndarray) -> float:
     the unit of every normalised profile of the ball.
     """
     if vals.size == 0:
-        return 0.0
+        return 0.0, False
     contrast = float(median(vals))
     other = vals < 0.0 if contrast >= 0 else vals > 0.0
     if np.count_nonzero(other) > OTHER_SIGN_SHARE * vals.size:
-        contrast = float(median(vals[~other]))
-    return contrast
+        return float(median(vals[~other])), True
+    return contrast, False
 
 
 def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, sat: float) -> BallRegion:
@@ -935,7 +941,7 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
     filled = fill_lines_and_cols(as_arg(raw.mask, np.bool_))
     h, wd = filled.shape
     vals, saturated = region_values(x64, bg.line_gain, bg.background_dn, bg.line_offset_dn, l0, c0, filled, sat)
-    contrast = _region_contrast(vals)
+    contrast, both_signs = _region_contrast(vals)
     flags = []
     if l0 == 0:
         flags.append("cut_first_line")
@@ -959,6 +965,7 @@ def _ball_region(index: int, raw: _RawRegion, x64: np.ndarray, bg: _Background, 
         contrast_dn=contrast,
         flags=tuple(flags),
         n_pixels=int(raw.mask.sum()),
+        both_signs=both_signs,
     )
 
 

@@ -155,6 +155,17 @@ class EdgeSettings:
         get the model's brightness of their covered part
         (:attr:`EdgeMeasurements.area_level`): the lines whose area the fit
         uses (the ball's ends).
+    other_sign_depth : float
+        On a region of both signs (``region.both_signs``), the least depth,
+        as a fraction of the ball's contrast, that a line's part of the
+        other sign must reach (besides ``min_snr`` noise sigmas) for its
+        edges to move onto it (a limb in shadow darker than the backdrop,
+        :func:`ballscan.measure._edge_kernels.other_sign_edges`; the run
+        they move onto needs ``walk_snr`` sigmas): a camera's sharpening
+        undershoot or a background level a few sigmas off stays below it.
+    other_sign_run_px : int
+        Least run of pixels in a row at that depth: the window's level run
+        and the pixel inside it (``n_in + n_level + 1``) must lie on the limb.
     """
 
     n_out: int = 1
@@ -178,16 +189,19 @@ class EdgeSettings:
     limb_narrow_max_px: float = 0.45
     limb_wide_px: tuple[float, float] = (0.2, 1.0)
     limb_area_min_spread_px: float = 0.8
+    other_sign_depth: float = 0.03
+    other_sign_run_px: int = 3
 
     def __post_init__(self) -> None:
         for name, lo in (
             ("n_out", 0), ("n_in", 0), ("n_level", 1), ("margin_lines", 0), ("pad_px", 0), ("n_out_wide", 0),
             ("n_in_wide", 0), ("max_walk_px", 0), ("slope_lines", 1), ("slope_degree", -1), ("limb_samples", 1),
+            ("other_sign_run_px", 2),
         ):
             v = getattr(self, name)
             if not (isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= lo):
                 raise ValueError(f"EdgeSettings.{name}: must be an integer >= {lo}, got {v!r}")
-        for name in ("min_snr", "walk_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px"):
+        for name in ("min_snr", "walk_snr", "slope_threshold", "limb_texture_tol", "limb_narrow_max_px", "limb_area_min_spread_px", "other_sign_depth"):
             v = getattr(self, name)
             if not (_is_number(v) and v >= 0):
                 raise ValueError(f"EdgeSettings.{name}: must be a finite number >= 0, got {v!r}")
@@ -359,7 +373,7 @@ class _EdgePass:
     but the plausibility of its level, ``run_ok`` the level run's own,
     ``limb_rows`` the rows ``limb`` may correct (signal, deep run inside the
     box), ``spoiled`` the lines whose area is not clean (cut, saturated or
-    overlapped edge), ``common`` the fields of :class:`EdgeMeasurements` that
+    overlapped edge, or an edge on a limb of the other sign), ``common`` the fields of :class:`EdgeMeasurements` that
     ``limb`` does not change.  The other arrays are the arguments of
     :func:`_limb_levels`.
     """
@@ -595,7 +609,8 @@ def measure_edges(
     region : BallRegion-like
         Any object with ``line_start, line_stop`` (exclusive), ``col_start,
         col_stop`` (exclusive), ``polarity`` (+1/-1), ``contrast_dn`` and
-        optionally ``mask`` (bool box), e.g.
+        optionally ``mask`` (bool box) and ``both_signs`` (its edges may
+        lie on a limb of the other sign), e.g.
         :class:`ballscan.measure.detection.BallRegion`.
     background_dn : float or ndarray
         Background level, DN: scalar, per column ``(W,)`` or per pixel.
@@ -742,6 +757,7 @@ class _Box:
     per_column_noise: bool
     saturated_px: np.ndarray
     other_px: np.ndarray
+    both_signs: bool = False
 
 
 @dataclass(frozen=True)
@@ -876,6 +892,7 @@ def _box(
     return _Box(
         n_img=n_img, width_px=W, c0=c0, c1=c1, lines=lines, t_s=t_lines_s[lines], polarity=pol, contrast_dn=contrast,
         profile=p, profile_sigma=sp, per_column_noise=per_column, saturated_px=sat, other_px=other,
+        both_signs=bool(getattr(region, "both_signs", False)),
     )
 
 
@@ -897,12 +914,13 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     # ball's real edge (compiled, line by line).
     floor_p = s.walk_snr * noise_row
     k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
-    min_peak = s.min_snr * noise_row
-    if not np.any(-p.min(axis=1) > min_peak):
+    min_peak = np.maximum(s.min_snr * noise_row, s.other_sign_depth)
+    if not box.both_signs or not np.any(-p.min(axis=1) > min_peak):
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
     # a limb of the other sign beyond the edges (compiled)
     k_left, k_right, sl, sr, has_signal = other_sign_edges(
-        -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px), 2
+        -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px), 2,
+        int(s.other_sign_run_px),
     )
     if np.all(sl > 0) and np.all(sr > 0):
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
