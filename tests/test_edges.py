@@ -462,6 +462,47 @@ def test_ball_lit_from_ahead_or_behind_with_a_half_darker_than_the_backdrop(ligh
     assert abs(b.velocity_mps[0] / m.velocity_mps[0] - 1) < 1e-3
 
 
+def test_a_faint_line_with_a_limb_of_each_sign_has_signal_either_way_round():
+    """A line below the ball's signal threshold, lit on one side and darker than the backdrop on the other: the same edges mirrored."""
+    from ballscan.measure._edge_kernels import other_sign_edges
+
+    w = 30
+    p = np.zeros((2, w))
+    p[0, 8:14] = 0.2  # the faint lit part (4 sigma), then the dark limb
+    p[0, 15:22] = -0.8
+    p[1] = p[0, ::-1]
+    one = np.ones(2)
+    kl, kr, sl, sr, hs = other_sign_edges(-p, np.array([8, 8]), np.array([21, 21]), np.zeros(2, dtype=bool), 0.3 * one, 0.15 * one, 0.25, 4096, 2, 3)
+    assert hs.tolist() == [True, True]
+    assert (kl[0], kr[0], sl[0], sr[0]) == (8, 21, 1, -1)
+    assert (kl[1], kr[1], sl[1], sr[1]) == (w - 1 - 21, w - 1 - 8, -1, 1)
+
+
+@pytest.mark.parametrize("sharpen", [0.01, 0.03])
+def test_a_sharpening_halo_leaves_a_ball_of_one_sign(sharpen):
+    """A camera's sharpening undershoot beside a bright ball (its halo a few per cent of the contrast below the backdrop) is no limb of the other sign."""
+    from ballscan.geometry.camera import LineScanCamera, line_times
+    from ballscan.geometry.motion import BallMotion
+    from ballscan.measure.detection import detect
+    from ballscan.measure.images import LineImage
+    from ballscan.model.render import Appearance, render
+    from ballscan.pipeline.background import full_background
+
+    cam = LineScanCamera(160, 2500.0, 79.5, 4000.0, None)
+    m = BallMotion(0.0335, 0.025, (0.0, 0.002, 3.0), (2.0, 0.1, 0.0))
+    clean = render(cam, (m, Appearance(ball_level=0.9, light_dir=(0.3, 0.3, -1.0), ambient=0.5)), 200, background_level=0.2, noise=None).clean
+    sharp = clean.copy()
+    sharp[:, 1:-1] = (1 + 2 * sharpen) * clean[:, 1:-1] - sharpen * (clean[:, :-2] + clean[:, 2:])
+    img = LineImage(sharp * 4000 + 2.0 * np.random.default_rng(1).standard_normal(clean.shape), 1e12, 16, "sharpened")
+    det = detect(img)
+    (region,) = det.regions
+    e = measure_edges(img.data, region, full_background(det), det.noise_dn, line_times(cam, 200))
+    # (without the region's test, a Gaussian unsharp mask of 1.2 % undershoot
+    # left 54 lines' areas out of the fit and lost 59 right edges)
+    assert not region.both_signs and e.area_excluded is None
+    assert e.left_ok.sum() == e.right_ok.sum() == 137
+
+
 def test_side_lit_ball_measured_to_its_sigmas():
     from ballscan.pipeline.estimate import estimate_image
 
