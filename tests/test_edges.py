@@ -511,6 +511,7 @@ def test_side_lit_ball_measured_to_its_sigmas():
     # measured: V.z 0.035 +- 0.045 m/s, speed +0.13 %
     assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
     assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.003
+    assert "both_signs" not in b.flags
 
 
 @pytest.mark.parametrize("background, ambient", [(0.3, 0.12), (0.3, 0.05), (0.2, 0.12), (0.1, 0.05)])
@@ -523,7 +524,7 @@ def test_ball_of_both_signs_measured_to_its_sigmas(background, ambient):
     # measured (seeds 1, 2): V.z -0.05 to +0.08 +- 0.06-0.14 m/s, speed
     # -0.007 % to +0.05 %, within 0.2 sigma (one sign only: not_a_ball or
     # degenerate, or the speed 9 to 31 times the truth)
-    assert "not_a_ball" not in b.flags and "degenerate" not in b.flags
+    assert "not_a_ball" not in b.flags and "degenerate" not in b.flags and "both_signs" in b.flags
     assert abs(b.velocity_mps[2] - m.velocity_mps[2]) < 3 * b.velocity_sigma_mps[2]
     assert abs(b.speed_mps - math.hypot(*m.velocity_mps)) < 3 * b.speed_sigma_mps
     assert abs(b.speed_mps / math.hypot(*m.velocity_mps) - 1) < 0.002

@@ -263,7 +263,8 @@ class EdgeMeasurements:
         ``|ball - background|`` used for the normalisation, DN.
     flags : tuple of str
         geometry.md flag words that apply (``cut_sensor_end``,
-        ``saturated``, ``overlap``).
+        ``saturated``, ``overlap``, ``both_signs``: an edge on a limb of the
+        other sign).
     left_texture_px, right_texture_px : ndarray or None
         Texture/shading indicator of each edge, pixels: the window's covered
         length ``S / L`` times the relative change of the inner level between
@@ -1130,7 +1131,7 @@ def _edge_pass(
             peak=rough.peak,
             polarity=box.polarity,
             contrast_dn=box.contrast_dn,
-            flags=use.flags,
+            flags=use.flags + (("both_signs",) if excluded is not None else ()),
             profile=np.where(box.saturated_px | box.other_px, np.nan, p),
             profile_sigma=sp,
             profile_col0=int(box.c0),

@@ -138,6 +138,7 @@ def estimate_region(
     record = stage_record(recipe, ball.camera, first, shading, pixel, second, final)
     t_shading = _shading_time(recipe, first, shading, pixel, second, final)
     flags = _guess_flags(detected, guess) + (["texture_at_limb"] if first.n_inward else [])
+    flags += ["both_signs"] if "both_signs" in first.edges.flags else []
     return _fit_estimate(ball, flags, initial, guess.motion, final, record, t0, t_init, first.time_edges_s, t_shading)
 
 

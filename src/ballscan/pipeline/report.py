@@ -24,6 +24,7 @@ FLAG_TEXT = {
     "not_converged": "the fit did not converge: do not trust it",
     "degenerate": "some quantities cannot be determined from this image",
     "texture_at_limb": "texture as dark as the background reaches its limb: edges inside the silhouette left out",
+    "both_signs": "part of its limb is darker than the backdrop (brighter for a dark ball): edges measured on it (a shadow right beside the ball reads the same)",
     "defocus": "the lens is out of focus at the ball (its blur circle is in the edges' model: defocus_px)",
     "not_a_ball": "its silhouette is not a ball's: do not trust it",
     "implausible_radius": "the radius is outside 1 mm to 0.5 m of any ball (the unit is metres)",

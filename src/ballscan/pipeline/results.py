@@ -38,6 +38,7 @@ FLAGS = (
     "not_converged",
     "degenerate",
     "texture_at_limb",
+    "both_signs",
     "defocus",
     "not_a_ball",
     "implausible_radius",
