@@ -57,8 +57,8 @@ def other_sign_edges(
     are searched, and only ``run`` pixels in a row that hold ``floor_q`` (3
     noise sigmas) count as the other sign:
 
-    * where the ball's sign holds both rough edges (their pixels at
-      ``floor_q``), each edge moves onto such a run that starts within
+    * where the ball's sign holds both rough edges (two pixels in a row at
+      ``floor_q`` at each), each edge moves onto such a run that starts within
       ``max_gap`` pixels beyond it (the limb's sign changes over them), else
       onto the outermost run beyond it that also holds ``fraction`` of
       ``q``'s peak;
@@ -76,7 +76,9 @@ def other_sign_edges(
     sign_left, sign_right : ndarray of int64 (n,)
         -1 where the edge lies on the other sign, +1 elsewhere.
     has_signal : ndarray of bool (n,)
-        ``has_signal``, and the lines with an edge of the other sign.
+        ``has_signal``, and the lines whose both edges are of the other sign
+        (a faint line with one edge of each sign stays without: its edge of
+        the ball's sign is not walked).
     """
     n, w = q.shape
     kl = k_left.copy()
@@ -93,7 +95,7 @@ def other_sign_edges(
         f = floor_q[r]
         t = max(fraction * peak, f)
         a, b = k_left[r], k_right[r]
-        if has_signal[r] and -q[r, a] >= f and -q[r, b] >= f:
+        if has_signal[r] and b - a >= 1 and -q[r, a] >= f and -q[r, a + 1] >= f and -q[r, b] >= f and -q[r, b - 1] >= f:
             kl[r], sl[r] = _other_sign_side(q, r, a, -1, f, t, fraction, max_walk, max_gap, run)
             kr[r], sr[r] = _other_sign_side(q, r, b, 1, f, t, fraction, max_walk, max_gap, run)
         else:
@@ -102,7 +104,7 @@ def other_sign_edges(
             kr[r], sr[r] = _first_run(q, r, w - 1, -1, t, f, fraction, max_walk, run)
             if not (sl[r] < 0 or sr[r] < 0) or sl[r] == 0 or sr[r] == 0:
                 kl[r], kr[r], sl[r], sr[r] = k_left[r], k_right[r], 1, 1
-        hs[r] = has_signal[r] or sl[r] < 0 or sr[r] < 0
+        hs[r] = has_signal[r] or (sl[r] < 0 and sr[r] < 0)
     return kl, kr, sl, sr, hs
 
 

@@ -128,8 +128,7 @@ class BallRegion:
     both_signs : bool
         More than :data:`OTHER_SIGN_SHARE` of the mask's pixels lie on the
         other side of the backdrop (a bright ball's side in shadow darker
-        than the backdrop): its edges may lie on either sign
-        (:func:`ballscan.measure.edges.measure_edges`).
+        than the backdrop): ``contrast_dn`` is that of the larger side.
     """
 
     index: int
