@@ -128,7 +128,9 @@ class BallRegion:
     both_signs : bool
         More than :data:`OTHER_SIGN_SHARE` of the mask's pixels lie on the
         other side of the backdrop (a bright ball's side in shadow darker
-        than the backdrop): ``contrast_dn`` is that of the larger side.
+        than the backdrop): ``contrast_dn`` is that of the larger side, and
+        the edges may lie on a limb of either sign
+        (:func:`ballscan.measure.edges.measure_edges`).
     """
 
     index: int

@@ -156,12 +156,13 @@ class EdgeSettings:
         (:attr:`EdgeMeasurements.area_level`): the lines whose area the fit
         uses (the ball's ends).
     other_sign_depth : float
-        Least depth, as a fraction of the ball's contrast, that a line's part
-        of the other sign must reach (besides ``min_snr`` noise sigmas) for
-        its edges to move onto it (a limb in shadow darker than the
-        backdrop, :func:`ballscan.measure._edge_kernels.other_sign_edges`):
-        a camera's sharpening undershoot, a background level a few sigmas
-        off or a faint shadow beside the ball stays below it.
+        On a region of both signs (``region.both_signs``), the least depth,
+        as a fraction of the ball's contrast, that a line's part of the
+        other sign must reach (besides ``min_snr`` noise sigmas) for its
+        edges to move onto it (a limb in shadow darker than the backdrop,
+        :func:`ballscan.measure._edge_kernels.other_sign_edges`).  A ball of
+        one sign never looks: a camera's sharpening halo is a thin ring of
+        the other sign around every edge, under a tenth of the region.
     other_sign_run_px : int
         Pixels in a row, each at ``walk_snr`` noise sigmas, of the run of the
         other sign that an edge moves onto.
@@ -609,7 +610,9 @@ def measure_edges(
     region : BallRegion-like
         Any object with ``line_start, line_stop`` (exclusive), ``col_start,
         col_stop`` (exclusive), ``polarity`` (+1/-1), ``contrast_dn`` and
-        optionally ``mask`` (bool box), e.g.
+        optionally ``mask`` (bool box) and ``both_signs`` (a region of both
+        signs, the only kind whose edges may move onto a limb of the other
+        sign), e.g.
         :class:`ballscan.measure.detection.BallRegion`.
     background_dn : float or ndarray
         Background level, DN: scalar, per column ``(W,)`` or per pixel.
@@ -756,6 +759,7 @@ class _Box:
     per_column_noise: bool
     saturated_px: np.ndarray
     other_px: np.ndarray
+    both_signs: bool = False
 
 
 @dataclass(frozen=True)
@@ -890,6 +894,7 @@ def _box(
     return _Box(
         n_img=n_img, width_px=W, c0=c0, c1=c1, lines=lines, t_s=t_lines_s[lines], polarity=pol, contrast_dn=contrast,
         profile=p, profile_sigma=sp, per_column_noise=per_column, saturated_px=sat, other_px=other,
+        both_signs=bool(getattr(region, "both_signs", False)),
     )
 
 
@@ -912,7 +917,7 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     floor_p = s.walk_snr * noise_row
     k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
     min_peak = np.maximum(s.min_snr * noise_row, s.other_sign_depth)
-    if not np.any(-p.min(axis=1) > min_peak):
+    if not box.both_signs or not np.any(-p.min(axis=1) > min_peak):
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
     # a limb of the other sign beyond the edges (compiled)
     k_left, k_right, sl, sr, has_signal = other_sign_edges(
