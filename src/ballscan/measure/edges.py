@@ -898,6 +898,11 @@ def _box(
     )
 
 
+#: pixels beyond a rough edge over which a limb's sign may change (its
+#: brightness passing the backdrop's) before a run of the other sign starts
+_OTHER_SIGN_GAP_PX = 2
+
+
 def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     """The lines that show the ball and their rough edge pixels, walked out onto a shaded limb."""
     p, sp = box.profile, box.profile_sigma
@@ -921,8 +926,8 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
     # a limb of the other sign beyond the edges (compiled)
     k_left, k_right, sl, sr, has_signal = other_sign_edges(
-        -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px), 2,
-        int(s.other_sign_run_px),
+        -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px),
+        _OTHER_SIGN_GAP_PX, int(s.other_sign_run_px),
     )
     if np.all(sl > 0) and np.all(sr > 0):
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
