@@ -228,6 +228,36 @@ def test_committed_renders_match_their_seed(truth_path):
     assert all(b["precision_inputs"]["contrast_dn"] > 0 for b in balls)
 
 
+CUT = ROOT / "benchmarks" / "povray_set" / "cut"
+
+
+def test_cut_seeds_pick_cut_balls_large_and_long_enough():
+    seeds = generate.cut_seeds(3000, 6, 8.0, 80.0)
+    assert seeds == sorted(seeds) and len(seeds) == 6 and seeds[0] >= 3000
+    for sd in seeds:
+        sc = scene.draw_scene(sd)
+        r_px, lines = generate.crossing(sc)
+        assert sc.cut != "none" and r_px >= 8.0 and lines >= 80.0
+    # every seed between them that is not picked fails one of the three
+    for sd in set(range(seeds[0], seeds[-1])) - set(seeds):
+        sc = scene.draw_scene(sd)
+        r_px, lines = generate.crossing(sc)
+        assert sc.cut == "none" or r_px < 8.0 or lines < 80.0
+
+
+@pytest.mark.skipif(not CUT.is_dir(), reason="no committed cut supplement")
+def test_committed_cut_supplement_is_the_generators():
+    truths = sorted(CUT.glob("*.truth.json"))
+    names = [json.loads(p.read_text())["scene"] for p in truths]
+    assert names == [f"pv{sd:04d}" for sd in generate.cut_seeds(3000, len(names), 8.0, 80.0)]
+    for p in truths[:: max(1, len(truths) // 12)]:
+        truth = json.loads(p.read_text())
+        s = render.scene_of(truth)
+        assert truth["cut"] != "none"
+        assert load_image(CUT / truth["image"]).data.shape == tuple(truth["image_shape"])
+        assert generate.camera_toml(s) == (CUT / f"{truth['scene']}.camera.toml").read_text()
+
+
 def test_audit_coverage_source_keeps_geometry_drops_appearance(scenes):
     """The convention audit's source: every ball flat white and self-lit, no backdrop, no focal blur,
     the camera, timing and motion lines untouched."""

@@ -3,6 +3,7 @@
     python benchmarks/povray_set/generate.py [--first 0] [--count 200] [--out DIR]
     python benchmarks/povray_set/generate.py --seeds 7,9 --rig 0,90,30 --out DIR   # two-camera rigs
     python benchmarks/povray_set/generate.py --uniform --first 0 --count 40        # uniform balls, pu####
+    python benchmarks/povray_set/generate.py --cut --first 3000 --count 120 --out benchmarks/povray_set/cut
 
 Each scene is drawn from its seed (``scene.draw_scene``; even seeds are the
 tuning half, odd seeds the report half).  Writes ``DIR/src/NAME.pov``,
@@ -12,7 +13,11 @@ and ``DIR/clean/NAME.png`` (noise-free linear grey x 65535), and completes the
 truth with the measured contrast.  With ``--rig A,B,..`` each seed is seen by
 cameras turned about the lane's axis by those angles (degrees), each view a
 scene ``NAME_aAAA`` whose camera file has the world -> camera ``[pose]`` (the
-world frame is the camera frame at angle 0).
+world frame is the camera frame at angle 0).  With ``--cut`` the seeds from
+``--first`` on are drawn until ``--count`` scenes whose first ball is cut
+(by a sensor end or by the first or last line) and large and long enough to
+be measured from its visible part (``--min-radius-px``, ``--min-lines``)
+are found: the supplement of cut balls (``cut/``).
 """
 
 from __future__ import annotations
@@ -131,6 +136,27 @@ def scenes_for(seeds: list[int], rig: tuple[float, ...] | None, uniform: bool = 
     return out
 
 
+def crossing(scene: Scene) -> tuple[float, float]:
+    """The first ball's radius (px) and the lines its whole passage would span (``line_rate 2 R / |V.x|``)."""
+    b, cam = scene.balls[0], scene.camera
+    return cam.focal_px * b.radius_m / b.position_m[2], cam.line_rate_hz * 2.0 * b.radius_m / abs(b.velocity_mps[0])
+
+
+def cut_seeds(first: int, count: int, min_radius_px: float, min_lines: float, limit: int = 100_000) -> list[int]:
+    """The first ``count`` seeds from ``first`` on whose scene's first ball is cut, at least ``min_radius_px`` in radius and ``min_lines`` long."""
+    found = []
+    for s in range(first, first + limit):
+        sc = draw_scene(s)
+        if sc.cut == "none":
+            continue
+        r_px, lines = crossing(sc)
+        if r_px >= min_radius_px and lines >= min_lines:
+            found.append(s)
+            if len(found) == count:
+                return found
+    raise SystemExit(f"generate: only {len(found)} cut scenes in seeds {first}-{first + limit - 1}")
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--first", type=int, default=0)
@@ -138,9 +164,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--seeds", help="comma-separated seeds (instead of --first/--count)")
     ap.add_argument("--rig", help="comma-separated camera angles about the lane's axis, degrees")
     ap.add_argument("--uniform", action="store_true", help="plain balls in ambient light alone (uniform discs), named pu####")
+    ap.add_argument("--cut", action="store_true", help="only scenes with a cut ball of --min-radius-px and --min-lines, scanning seeds from --first")
+    ap.add_argument("--min-radius-px", type=float, default=8.0)
+    ap.add_argument("--min-lines", type=float, default=80.0)
     ap.add_argument("--out", type=Path, default=DEFAULT_OUT)
     a = ap.parse_args(argv)
-    seeds = [int(s) for s in a.seeds.split(",")] if a.seeds else list(range(a.first, a.first + a.count))
+    if a.cut:
+        seeds = cut_seeds(a.first, a.count, a.min_radius_px, a.min_lines)
+    else:
+        seeds = [int(s) for s in a.seeds.split(",")] if a.seeds else list(range(a.first, a.first + a.count))
     rig = tuple(float(x) for x in a.rig.split(",")) if a.rig else None
     scenes = scenes_for(seeds, rig, a.uniform)
     for sc in scenes:

@@ -1,0 +1,59 @@
+// validation scene pv3382 (seed 3382)
+#version 3.7;
+#declare NS = 1;
+#declare NLT = 203;
+#declare LINES = array[203] { 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159, 160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214, 215, 216, 217, 218, 219, 220, 221, 222, 223, 224, 225, 226, 227, 228, 229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, 242, 243, 244, 245, 246, 247, 248, 249, 250, 251, 252, 253, 254, 255, 256, 257, 258, 259, 260 };
+#declare LR = 18656.16789076491;  // line rate, Hz
+#declare TAU = 4.305156316485242e-05;  // exposure, s
+#declare BGONLY = (frame_number >= NLT * NS);
+#if (BGONLY)
+  #declare T = 0;
+#else
+  #declare LINE = LINES[div(frame_number, NS)];
+  #declare KS = mod(frame_number, NS);
+  // mid-point of sub-interval KS of [t_i - tau/2, t_i + tau/2]
+  #declare T = LINE / LR + TAU * ((KS + 0.5) / NS - 0.5);
+#end
+#declare FL = (BGONLY ? 1 : 1 + 0.0841345 * sin(753.9822369 * T + 0.893262));
+global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
+#include "transforms.inc"
+// camera frame = POV frame: x across the line, y along the sensor, z forward
+// film: 1376 x 4 samples spanning y/z in [-0.03233890353, 0.04576580178] and one pixel in x
+camera { perspective location <0, 0, 0>
+  direction <0, 7.394275182, 1101.412262>
+  right <0, 86.02548014, 0>
+  up <1, 0, 0> }
+background { rgb 0 }
+// backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
+plane { z, 28912.651
+  pigment { function { max(0.002, min(0.98, 0.105144 * (1 + 0.182313 * ((y / 28912.651) - 0.006713449122) / 0.03905235266 + 0.211598 * sin(14.111411 * ((y / 28912.651) - 0.006713449122) / 0.03905235266 + 1.71012)))) } }
+  finish { ambient 1 diffuse 0 } }
+light_source { <0, 548.395955, 12185.98609> + 365580 * <0.5223934024, 0.6358316373, -0.5681753797> color rgb FL }
+light_source { <0, 548.395955, 12185.98609> + 365580 * <-0.7143579404, -0.5812082601, -0.3897302803> color rgb FL * 0.5518 }
+
+#declare SeamK = 1.6;
+#declare fRad = function(x, y, z) { sqrt(x*x + y*y + z*z) }
+#declare fG = function(X, Y, Z) { Z - SeamK*(X*X - Y*Y) }
+#declare fGs = function(X, Y, Z) {
+  sqrt(max(4*SeamK*SeamK*(X*X + Y*Y) + 1 - pow(-2*SeamK*X*X + 2*SeamK*Y*Y + Z, 2), 1e-12)) }
+#declare fSeamDist = function(x, y, z) {
+  abs(fG(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z))) / fGs(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z)) }
+
+// ball 0: football
+#declare C0_0 = <0, 548.395955, 12185.98609>;  // mm
+#declare V_0 = <21838.6511, -7865.297687, 8852.945856>;  // mm/s
+#declare TC_0 = 0.008522650574918305;  // s
+#declare P_0 = C0_0 + V_0 * (T - TC_0);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { function { max((0.000000*x + -0.525731*y + -0.850651*z)/fRad(x,y,z), (-0.525731*x + -0.850651*y + 0.000000*z)/fRad(x,y,z), (-0.850651*x + 0.000000*y + -0.525731*z)/fRad(x,y,z), (0.000000*x + -0.525731*y + 0.850651*z)/fRad(x,y,z), (-0.525731*x + 0.850651*y + 0.000000*z)/fRad(x,y,z), (0.850651*x + 0.000000*y + -0.525731*z)/fRad(x,y,z), (0.000000*x + 0.525731*y + -0.850651*z)/fRad(x,y,z), (0.525731*x + -0.850651*y + 0.000000*z)/fRad(x,y,z), (-0.850651*x + 0.000000*y + 0.525731*z)/fRad(x,y,z), (0.000000*x + 0.525731*y + 0.850651*z)/fRad(x,y,z), (0.525731*x + 0.850651*y + 0.000000*z)/fRad(x,y,z), (0.850651*x + 0.000000*y + 0.525731*z)/fRad(x,y,z)) }
+    color_map { [0.0 rgb <0.7687547961, 0.7687547961, 0.7687547961>] [0.925 rgb <0.7687547961, 0.7687547961, 0.7687547961>] [0.935 rgb <0.04178015196, 0.04178015196, 0.04178015196>] [1.0 rgb <0.04178015196, 0.04178015196, 0.04178015196>] } }
+  normal { bumps 0.1 scale 0.05 }
+  finish { ambient 0.3743 diffuse 0.6257 phong 0.2333 phong_size 40 } }
+  no_shadow
+  rotate <331.5581683, 32.68517931, 189.2965256>
+  transform { Axis_Rotate_Trans(<0.2276736165, 0.5870271203, -0.7768937407>, 0 * (T - TC_0)) }
+  scale 110
+  translate P_0 }
+#end

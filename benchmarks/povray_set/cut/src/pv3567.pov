@@ -1,0 +1,58 @@
+// validation scene pv3567 (seed 3567)
+#version 3.7;
+#declare NS = 1;
+#declare NLT = 164;
+#declare LINES = array[164] { 57, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68, 69, 70, 71, 72, 73, 74, 75, 76, 77, 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159, 160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214, 215, 216, 217, 218, 219, 220 };
+#declare LR = 414.68126503819775;  // line rate, Hz
+#declare TAU = 0.0006351109881841326;  // exposure, s
+#declare BGONLY = (frame_number >= NLT * NS);
+#if (BGONLY)
+  #declare T = 0;
+#else
+  #declare LINE = LINES[div(frame_number, NS)];
+  #declare KS = mod(frame_number, NS);
+  // mid-point of sub-interval KS of [t_i - tau/2, t_i + tau/2]
+  #declare T = LINE / LR + TAU * ((KS + 0.5) / NS - 0.5);
+#end
+#declare FL = 1;
+global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
+#include "transforms.inc"
+// camera frame = POV frame: x across the line, y along the sensor, z forward
+// film: 2576 x 4 samples spanning y/z in [-0.05393663271, 0.0615901539] and one pixel in x
+camera { perspective location <0, 0, 0>
+  direction <0, 5.328376868, 1392.398802>
+  right <0, 160.8593593, 0>
+  up <1, 0, 0> }
+background { rgb 0 }
+// backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
+plane { z, 43386.395
+  pigment { function { max(0.002, min(0.98, 0.0969606 * (1 + -0.0743825 * ((y / 43386.395) - 0.003826760595) / 0.0577633933 + 0 * sin(24.994104 * ((y / 43386.395) - 0.003826760595) / 0.0577633933 + 0.0401468)))) } }
+  finish { ambient 1 diffuse 0 } }
+light_source { <0, 327.031719, 9245.015607> + 277350 * <-0.1344170662, 0.7818927223, -0.6087493927> color rgb FL }
+
+#declare SeamK = 1.6;
+#declare fRad = function(x, y, z) { sqrt(x*x + y*y + z*z) }
+#declare fG = function(X, Y, Z) { Z - SeamK*(X*X - Y*Y) }
+#declare fGs = function(X, Y, Z) {
+  sqrt(max(4*SeamK*SeamK*(X*X + Y*Y) + 1 - pow(-2*SeamK*X*X + 2*SeamK*Y*Y + Z, 2), 1e-12)) }
+#declare fSeamDist = function(x, y, z) {
+  abs(fG(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z))) / fGs(x/fRad(x,y,z), y/fRad(x,y,z), z/fRad(x,y,z)) }
+
+// ball 0: football
+#declare C0_0 = <0, 327.031719, 9245.015607>;  // mm
+#declare V_0 = <-479.6327553, -278.103626, 48.03686377>;  // mm/s
+#declare TC_0 = 0.37860403456022584;  // s
+#declare P_0 = C0_0 + V_0 * (T - TC_0);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { function { max((0.000000*x + -0.525731*y + -0.850651*z)/fRad(x,y,z), (-0.525731*x + -0.850651*y + 0.000000*z)/fRad(x,y,z), (-0.850651*x + 0.000000*y + -0.525731*z)/fRad(x,y,z), (0.000000*x + -0.525731*y + 0.850651*z)/fRad(x,y,z), (-0.525731*x + 0.850651*y + 0.000000*z)/fRad(x,y,z), (0.850651*x + 0.000000*y + -0.525731*z)/fRad(x,y,z), (0.000000*x + 0.525731*y + -0.850651*z)/fRad(x,y,z), (0.525731*x + -0.850651*y + 0.000000*z)/fRad(x,y,z), (-0.850651*x + 0.000000*y + 0.525731*z)/fRad(x,y,z), (0.000000*x + 0.525731*y + 0.850651*z)/fRad(x,y,z), (0.525731*x + 0.850651*y + 0.000000*z)/fRad(x,y,z), (0.850651*x + 0.000000*y + 0.525731*z)/fRad(x,y,z)) }
+    color_map { [0.0 rgb <0.8824199675, 0.8824199675, 0.8824199675>] [0.925 rgb <0.8824199675, 0.8824199675, 0.8824199675>] [0.935 rgb <0.04795760693, 0.04795760693, 0.04795760693>] [1.0 rgb <0.04795760693, 0.04795760693, 0.04795760693>] } }
+  normal { bumps 0.1 scale 0.05 }
+  finish { ambient 0.2511 diffuse 0.7489 } }
+  no_shadow
+  rotate <87.5242328, 203.380429, 238.9114146>
+  transform { Axis_Rotate_Trans(<0.6560721047, -0.4393422471, 0.6136348942>, 0 * (T - TC_0)) }
+  scale 110
+  translate P_0 }
+#end

@@ -1,0 +1,51 @@
+// validation scene pv3939 (seed 3939)
+#version 3.7;
+#declare NS = 1;
+#declare NLT = 201;
+#declare LINES = array[201] { 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100, 101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144, 145, 146, 147, 148, 149, 150, 151, 152, 153, 154, 155, 156, 157, 158, 159, 160, 161, 162, 163, 164, 165, 166, 167, 168, 169, 170, 171, 172, 173, 174, 175, 176, 177, 178, 179, 180, 181, 182, 183, 184, 185, 186, 187, 188, 189, 190, 191, 192, 193, 194, 195, 196, 197, 198, 199, 200, 201, 202, 203, 204, 205, 206, 207, 208, 209, 210, 211, 212, 213, 214, 215, 216, 217, 218, 219, 220, 221, 222, 223, 224, 225, 226, 227, 228, 229, 230, 231, 232, 233, 234, 235, 236, 237, 238, 239, 240, 241, 242, 243, 244, 245, 246, 247, 248, 249, 250, 251, 252, 253, 254, 255, 256, 257, 258, 259, 260, 261, 262, 263, 264, 265, 266, 267, 268, 269, 270, 271, 272, 273, 274, 275, 276, 277, 278 };
+#declare LR = 804.5809558537007;  // line rate, Hz
+#declare TAU = 0.0001858682624208081;  // exposure, s
+#declare BGONLY = (frame_number >= NLT * NS);
+#if (BGONLY)
+  #declare T = 0;
+#else
+  #declare LINE = LINES[div(frame_number, NS)];
+  #declare KS = mod(frame_number, NS);
+  // mid-point of sub-interval KS of [t_i - tau/2, t_i + tau/2]
+  #declare T = LINE / LR + TAU * ((KS + 0.5) / NS - 0.5);
+#end
+#declare FL = (BGONLY ? 1 : 1 + 0.152369 * sin(753.9822369 * T + 0.605907));
+global_settings { assumed_gamma 1.0 ambient_light rgb FL max_trace_level 5 }
+#include "transforms.inc"
+// camera frame = POV frame: x across the line, y along the sensor, z forward
+// film: 1424 x 4 samples spanning y/z in [-0.01262398556, 0.01274667809] and one pixel in x
+camera { perspective location <0, 0, 0>
+  direction <0, 0.2151987079, 3507.934778>
+  right <0, 88.99863335, 0>
+  up <1, 0, 0> }
+background { rgb 0 }
+// backdrop: self-lit, its level varies along the sensor, lit by the same (flickering) mains
+plane { z, 17847.657
+  pigment { function { max(0.002, min(0.98, 0.630879 * (1 + -0.104124 * ((y / 17847.657) - 6.134626826e-05) / 0.01268533182 + 0 * sin(16.608333 * ((y / 17847.657) - 6.134626826e-05) / 0.01268533182 + 6.10511)))) } }
+  finish { ambient 1 diffuse 0 } }
+light_source { <0, 27.32426004, 8202.459909> + 246074 * <-0.0909648848, 0.1662194773, -0.9818841455> color rgb FL }
+light_source { <0, 27.32426004, 8202.459909> + 246074 * <-0.1589826476, 0.1256519575, -0.9792528291> color rgb FL * 0.3979 }
+
+
+// ball 0: golf
+#declare C0_0 = <0, 27.32426004, 8202.459909>;  // mm
+#declare V_0 = <-138.0877708, 56.59760379, -0.1382010694>;  // mm/s
+#declare TC_0 = 0.2622483150575176;  // s
+#declare P_0 = C0_0 + V_0 * (T - TC_0);
+#if (BGONLY = 0)
+sphere { <0, 0, 0>, 1
+  texture {
+  pigment { rgb <0.1141718652, 0.1141718652, 0.1141718652> }
+  normal { leopard 0.5 scale 0.07 }
+  finish { ambient 0.2938 diffuse 0.7062 phong 0.35 phong_size 40 } }
+  no_shadow
+  rotate <352.1482466, 303.6112276, 285.9835532>
+  transform { Axis_Rotate_Trans(<-0.3122246284, 0.9432705427, 0.1129445209>, 83.266563 * (T - TC_0)) }
+  scale 21.35
+  translate P_0 }
+#end
