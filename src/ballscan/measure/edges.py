@@ -921,10 +921,11 @@ def _rough_edges(box: _Box, s: EdgeSettings) -> _RoughEdges:
     # ball's real edge (compiled, line by line).
     floor_p = s.walk_snr * noise_row
     k_left, k_right = walk_edges(p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px))
-    min_peak = np.maximum(s.min_snr * noise_row, s.other_sign_depth)
-    if not box.both_signs or not np.any(-p.min(axis=1) > min_peak):
+    if not box.both_signs:
         return _RoughEdges(peak=peak, has_signal=has_signal, k_left=k_left, k_right=k_right)
-    # a limb of the other sign beyond the edges (compiled)
+    # a limb of the other sign beyond the edges, on the lines whose part of
+    # that sign is deep enough (compiled)
+    min_peak = np.maximum(s.min_snr * noise_row, s.other_sign_depth)
     k_left, k_right, sl, sr, has_signal = other_sign_edges(
         -p, k_left, k_right, as_arg(has_signal, np.bool_), as_arg(min_peak), as_arg(floor_p), float(s.find_fraction), int(s.max_walk_px),
         _OTHER_SIGN_GAP_PX, int(s.other_sign_run_px),
